@@ -1,0 +1,184 @@
+//! `rendermn.ini`-style configuration: user macros and lobe mappings.
+//!
+//! ```text
+//! # comments and blank lines are ignored, so are keys outside /prman/lpe/
+//! /prman/lpe/macro/myDiffuse   C<RD>[<L.>O]
+//! /prman/lpe/diffuse2          Diffuse,HairDiffuse
+//! /prman/lpe/specular4         Clearcoat
+//! /prman/lpe/user2             Albedo,DiffuseAlbedo
+//! ```
+//!
+//! Every macro is parsed once at load (after all lines are read, so macros may name
+//! macros defined later), so a broken macro is reported with its line, not at first use.
+
+use std::fmt;
+
+use crate::lobes::{LobeCategory, LobeMap};
+use crate::macros::MacroTable;
+use crate::syntax::{Limits, Parser};
+
+/// Macros and lobe mappings, from defaults plus an optional ini file.
+#[derive(Clone, Debug, Default)]
+pub struct Config {
+    /// Built-in plus user macros.
+    pub macros: MacroTable,
+    /// Named lobe -> LPE lobe.
+    pub lobes: LobeMap,
+    /// Parse limits.
+    pub limits: Limits,
+}
+
+/// A problem in an ini file: which line, and what.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct IniError {
+    /// One-based line number.
+    pub line: usize,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl fmt::Display for IniError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "line {}: {}", self.line, self.message)
+    }
+}
+
+impl std::error::Error for IniError {}
+
+impl Config {
+    /// The defaults updated by the lines of an ini file.
+    pub fn from_ini(text: &str) -> Result<Config, IniError> {
+        let mut config = Config::default();
+        config.load_ini(text)?;
+        Ok(config)
+    }
+
+    /// Applies the lines of an ini file on top of this configuration.
+    pub fn load_ini(&mut self, text: &str) -> Result<(), IniError> {
+        let mut defined = Vec::new();
+        for (n, raw) in text.lines().enumerate() {
+            let line = n + 1;
+            let err = |message: String| IniError { line, message };
+            let trimmed = raw.trim();
+            if trimmed.is_empty() || trimmed.starts_with('#') {
+                continue;
+            }
+            let (key, value) = match trimmed.split_once(char::is_whitespace) {
+                Some((k, v)) => (k, v.trim()),
+                None => (trimmed, ""),
+            };
+            let Some(rest) = key.strip_prefix("/prman/lpe/") else {
+                continue;
+            };
+            if let Some(name) = rest.strip_prefix("macro/") {
+                if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+                    return Err(err(format!(
+                        "macro name `{name}` must be letters, digits and `_`"
+                    )));
+                }
+                if value.is_empty() {
+                    return Err(err(format!("macro `{name}` has no expression")));
+                }
+                self.macros.define(name, value);
+                defined.push((line, name.to_string()));
+                continue;
+            }
+            let category = [
+                LobeCategory::Diffuse,
+                LobeCategory::Specular,
+                LobeCategory::User,
+            ]
+            .into_iter()
+            .find(|c| {
+                rest.strip_prefix(c.ini_name())
+                    .is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
+            });
+            let Some(category) = category else {
+                return Err(err(format!(
+                    "unknown key `{key}`: expected /prman/lpe/macro/NAME, /prman/lpe/diffuseN, /prman/lpe/specularN or /prman/lpe/userN"
+                )));
+            };
+            let lobe: u8 = rest[category.ini_name().len()..].parse().unwrap_or(0);
+            let names: Vec<&str> = value
+                .split(',')
+                .map(str::trim)
+                .filter(|s| !s.is_empty())
+                .collect();
+            if names.is_empty() {
+                return Err(err(format!("`{key}` lists no lobe names")));
+            }
+            self.lobes.assign(category, lobe, names).map_err(err)?;
+        }
+        let parser = self.parser();
+        for (line, name) in defined {
+            parser.parse(&name).map_err(|e| IniError {
+                line,
+                message: e.one_line(),
+            })?;
+        }
+        Ok(())
+    }
+
+    /// A parser using these macros and limits.
+    pub fn parser(&self) -> Parser {
+        Parser::new(self.limits.clone(), self.macros.clone())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::path::{Event, EventKind};
+
+    #[test]
+    fn loads_macros_and_lobes() {
+        let c = Config::from_ini(
+            "# studio settings\n\
+             /prman/lpe/macro/myDiffuse  C<RD>[<L.>O]\n\
+             /prman/lpe/macro/alias myDiffuse\n\
+             /prman/lpe/specular4 Sheen, Clearcoat\n\
+             /prman/lpe/user5 Cryptomatte\n\
+             /prman/other/setting 3\n",
+        )
+        .unwrap();
+        let p = c.parser();
+        assert_eq!(
+            p.parse("myDiffuse").unwrap(),
+            p.parse("C<RD>[<L.>O]").unwrap()
+        );
+        assert_eq!(
+            p.parse("alias_key").unwrap(),
+            p.parse("C<RD>[<L.'key'>O]").unwrap()
+        );
+        assert_eq!(
+            c.lobes.event(LobeCategory::Specular, "Sheen"),
+            Event::new(EventKind::S, 4).unwrap()
+        );
+        assert_eq!(
+            c.lobes.event(LobeCategory::User, "Cryptomatte"),
+            Event::new(EventKind::U, 5).unwrap()
+        );
+    }
+
+    #[test]
+    fn errors_name_the_line() {
+        let cases = [
+            ("/prman/lpe/macro/bad C<DR>L", 1, "event"),
+            ("\n/prman/lpe/diffuse5 X", 2, "1 to 4"),
+            ("/prman/lpe/specular Glass", 1, "unknown key"),
+            ("/prman/lpe/user2", 1, "no lobe names"),
+            ("/prman/lpe/macro/x", 1, "no expression"),
+            (
+                "/prman/lpe/macro/a b\n/prman/lpe/macro/b a",
+                1,
+                "nests deeper",
+            ),
+            ("/prman/lpe/glossy2 X", 1, "unknown key"),
+        ];
+        for (text, line, needle) in cases {
+            let e = Config::from_ini(text).expect_err(text);
+            assert_eq!(e.line, line, "{text}: {e}");
+            assert!(e.to_string().contains(needle), "{text}: {e}");
+        }
+    }
+}

@@ -1,0 +1,273 @@
+//! The RenderMan-dialect front end: source text to [`crate::ast::Lpe`].
+//!
+//! ```text
+//! source := ('lpe:')? (prefix ';')* body
+//! body   := macro-name ('_' lightgroup)?  |  expression
+//! ```
+//!
+//! A body that is exactly a macro name, or a macro name, `_` and a light group (the
+//! longest prefix before a `_` that names a macro wins, so groups may contain `_`), is
+//! that macro with `group` written into every `<L.>`. Anything else is parsed as an
+//! expression; an identifier-like body that is neither a macro nor a valid expression
+//! is an "unknown macro" error that lists the nearest names. (`CDL` is identifier-like
+//! but a valid expression, so it stays an expression.)
+//!
+//! The front end is the only dialect-specific part: another dialect (OSL's, with `G`, `V`,
+//! `B`) would be another module producing the same AST.
+
+mod error;
+mod lexer;
+mod parser;
+
+pub(crate) use error::nearest;
+pub use error::{Error, ErrorKind};
+
+use crate::ast::{Atom, EventPos, Item, LabelPos, Lpe, Triple, TypePos};
+use crate::macros::MacroTable;
+use crate::path::VertexType;
+use crate::prefix::{Prefix, Prefixes};
+
+/// Bounds on what one expression may cost, each with its own error.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// Largest `n` or `m` in `{n}`, `{n,}`, `{n,m}` (default 256).
+    pub max_repeat: u32,
+    /// Most atom positions after unrolling counted repetition (default 65 536).
+    pub max_positions: usize,
+    /// Deepest nesting of groups and classes (default 128).
+    pub max_depth: usize,
+    /// Deepest chain of macros naming macros (default 16).
+    pub max_macro_depth: usize,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_repeat: 256,
+            max_positions: 65_536,
+            max_depth: 128,
+            max_macro_depth: 16,
+        }
+    }
+}
+
+/// A configured parser: limits plus the macro table.
+#[derive(Clone, Debug, Default)]
+pub struct Parser {
+    limits: Limits,
+    macros: MacroTable,
+}
+
+/// Parses with the built-in macros and default limits.
+///
+/// ```
+/// let lpe = lpe::parse("lpe:unoccluded;C<RD>[<L.>O]").unwrap();
+/// assert!(lpe.prefixes.contains(lpe::Prefix::Unoccluded));
+/// assert_eq!(lpe.to_string(), "unoccluded;C<RD>[<L.>O]");
+/// ```
+pub fn parse(source: &str) -> Result<Lpe, Error> {
+    Parser::default().parse(source)
+}
+
+fn is_ident(s: &str) -> bool {
+    let mut cs = s.chars();
+    cs.next()
+        .is_some_and(|c| c.is_ascii_alphabetic() || c == '_')
+        && cs.all(|c| c.is_ascii_alphanumeric() || c == '_')
+}
+
+fn skip_ws(s: &str, mut i: usize) -> usize {
+    let b = s.as_bytes();
+    while i < b.len() && b[i].is_ascii_whitespace() {
+        i += 1;
+    }
+    i
+}
+
+impl Parser {
+    /// A parser with these limits and macros.
+    pub fn new(limits: Limits, macros: MacroTable) -> Parser {
+        Parser { limits, macros }
+    }
+
+    /// The limits in force.
+    pub fn limits(&self) -> &Limits {
+        &self.limits
+    }
+
+    /// The macro table in use.
+    pub fn macros(&self) -> &MacroTable {
+        &self.macros
+    }
+
+    /// Parses one expression source.
+    pub fn parse(&self, source: &str) -> Result<Lpe, Error> {
+        self.parse_at_depth(source, 0)
+    }
+
+    fn parse_at_depth(&self, source: &str, depth: usize) -> Result<Lpe, Error> {
+        let mut i = skip_ws(source, 0);
+        if source
+            .get(i..i + 4)
+            .is_some_and(|s| s.eq_ignore_ascii_case("lpe:"))
+        {
+            i = skip_ws(source, i + 4);
+        }
+        let mut prefixes = Prefixes::NONE;
+        // Prefixes: identifiers each followed by `;`.
+        loop {
+            let b = source.as_bytes();
+            let mut j = i;
+            while j < b.len() && (b[j].is_ascii_alphanumeric() || b[j] == b'_') {
+                j += 1;
+            }
+            let k = skip_ws(source, j);
+            if k >= b.len() || b[k] != b';' {
+                break;
+            }
+            let name = &source[i..j];
+            match Prefix::from_name(name) {
+                Some(p) => prefixes.insert(p),
+                None => {
+                    let what = if name.is_empty() {
+                        "empty prefix before `;`".to_string()
+                    } else {
+                        format!("unknown prefix `{name}`")
+                    };
+                    let names = Prefix::ALL.map(Prefix::name);
+                    let near = nearest(name, names, 1);
+                    return Err(Error::new(ErrorKind::UnknownPrefix, i..k + 1, what, source)
+                        .with_help(format!(
+                            "did you mean `{}`? prefixes are {}",
+                            near[0],
+                            names.join(", ")
+                        )));
+                }
+            }
+            i = skip_ws(source, k + 1);
+        }
+        let body_end = source.trim_end().len().max(i);
+        let body = &source[i..body_end];
+        if body.is_empty() {
+            return Err(Error::new(
+                ErrorKind::Empty,
+                i..source.len(),
+                "empty expression",
+                source,
+            ));
+        }
+        if is_ident(body) {
+            if let Some(lpe) = self.expand_macro(source, i..body_end, depth)? {
+                return Ok(Lpe {
+                    prefixes: prefixes.union(lpe.prefixes),
+                    expr: lpe.expr,
+                });
+            }
+        }
+        let expr = lexer::tokenize(source, i).and_then(|tokens| {
+            parser::ExprParser::new(source, tokens, &self.limits).parse(i..body_end)
+        });
+        match expr {
+            Ok(expr) => Ok(Lpe { prefixes, expr }),
+            Err(_) if is_ident(body) => {
+                let near = nearest(body, self.macros.names(), 3);
+                let list = near
+                    .iter()
+                    .map(|n| format!("`{n}`"))
+                    .collect::<Vec<_>>()
+                    .join(", ");
+                Err(Error::new(
+                    ErrorKind::UnknownMacro,
+                    i..body_end,
+                    format!("unknown macro `{body}` (and not a valid expression)"),
+                    source,
+                )
+                .with_help(format!("nearest macros: {list}")))
+            }
+            Err(e) => Err(e),
+        }
+    }
+
+    /// `NAME` or `NAME_group`, if the body names a macro.
+    fn expand_macro(
+        &self,
+        source: &str,
+        span: std::ops::Range<usize>,
+        depth: usize,
+    ) -> Result<Option<Lpe>, Error> {
+        let body = &source[span.clone()];
+        let mut found = self.macros.get(body).map(|s| (body, s, None));
+        if found.is_none() {
+            // Longest macro name before a `_`: scan `_` positions right to left.
+            for (u, _) in body
+                .match_indices('_')
+                .collect::<Vec<_>>()
+                .into_iter()
+                .rev()
+            {
+                if let Some(s) = self.macros.get(&body[..u]) {
+                    let group = &body[u + 1..];
+                    found = Some((&body[..u], s, Some(group)));
+                    break;
+                }
+            }
+        }
+        let Some((name, macro_source, group)) = found else {
+            return Ok(None);
+        };
+        if group == Some("") {
+            return Err(Error::new(
+                ErrorKind::Syntax,
+                span,
+                format!("`{body}`: empty light group after `_`"),
+                source,
+            ));
+        }
+        if depth >= self.limits.max_macro_depth {
+            return Err(Error::new(
+                ErrorKind::Limit,
+                span,
+                format!(
+                    "macro `{name}` nests deeper than the limit of {} (a macro that names itself?)",
+                    self.limits.max_macro_depth
+                ),
+                source,
+            ));
+        }
+        let mut lpe = self
+            .parse_at_depth(macro_source, depth + 1)
+            .map_err(|inner| {
+                Error::new(
+                    inner.kind(),
+                    span.clone(),
+                    format!(
+                        "macro `{name}` = `{macro_source}` is invalid: {}",
+                        inner.one_line()
+                    ),
+                    source,
+                )
+            })?;
+        if let Some(group) = group {
+            set_light_group(&mut lpe, group);
+        }
+        Ok(Some(lpe))
+    }
+}
+
+/// Writes `group` into every `<L.>` (a light triple with any event and any label).
+pub fn set_light_group(lpe: &mut Lpe, group: &str) {
+    let rewrite = |item: &mut Item| {
+        if let Item::Triple(Triple {
+            ty: TypePos::One(VertexType::L),
+            event: EventPos::Any,
+            label: label @ LabelPos::Any,
+        }) = item
+        {
+            *label = LabelPos::One(group.to_string());
+        }
+    };
+    lpe.expr.for_each_atom_mut(&mut |a| match a {
+        Atom::Item(i) => rewrite(i),
+        Atom::Class { items, .. } => items.iter_mut().for_each(rewrite),
+    });
+}

@@ -1,0 +1,1 @@
+//! Cross-crate property tests and conformance vectors live in `tests/`.
