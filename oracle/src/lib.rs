@@ -1,1 +1,6 @@
-pub fn placeholder() {}
+//! Engines, differential checking and the `lpe-check` command line.
+//!
+//! [`engine`] puts every matcher behind one trait so the CLI and the harness run them
+//! side by side on the same inputs.
+
+pub mod engine;
