@@ -25,10 +25,15 @@
 
 #![warn(missing_docs)]
 
+pub mod alphabet;
+pub mod analysis;
+pub mod aov;
 pub mod ast;
+mod dfa;
 pub mod ini;
 pub mod lobes;
 pub mod macros;
+mod nfa;
 pub mod path;
 pub mod prefix;
 pub mod syntax;
@@ -36,6 +41,7 @@ pub mod syntax;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 
+pub use aov::{AovMask, AovSet, Class, State};
 pub use ast::{Expr, Lpe};
 pub use ini::Config;
 pub use lobes::{LobeCategory, LobeMap};

@@ -1,0 +1,444 @@
+//! Alphabet compression: every possible vertex, folded into the few classes that the
+//! compiled expressions can tell apart.
+//!
+//! A vertex is a *raw symbol* `(type and event, label)`:
+//! - type and event: `C`, `L`, `O` (no event) and `R`/`T` with each of the 24 events
+//!   (D1-4, S1-8, U1-12), 51 combinations;
+//! - label: none, one of the `k` labels the compiled expressions mention, or OTHER.
+//!
+//! Expressions only ever compare labels for equality with labels they mention, so every
+//! unmentioned label behaves like every other one: mapping them all to one OTHER symbol is
+//! exact (OSL does the same with a per-state default transition).
+//!
+//! Each distinct atom of the compiled set is evaluated once on every raw symbol (with the
+//! predicate code in this module, written from DESIGN.md §3 and the table in
+//! [`crate::ast`]); raw symbols with the same answers from every atom form one [`Class`].
+//! [`Alphabet::classify`] is then arithmetic plus one label lookup plus one table load.
+
+use std::collections::HashMap;
+
+use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
+use crate::path::{Event, EventKind, Vertex, VertexType};
+
+/// An equivalence class of vertices: no compiled atom tells two vertices of one class
+/// apart. Obtained from [`crate::aov::AovSet::classify`]; only meaningful for the set
+/// that produced it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Class(pub(crate) u32);
+
+impl Class {
+    /// The class number, `0..class_count`.
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+/// Number of `(type, event)` combinations: C, L, O, then R and T with 24 events each.
+pub(crate) const TYPE_EVENTS: usize = 3 + 2 * EVENTS;
+const EVENTS: usize = 24;
+
+/// A raw symbol's label part.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum LabelSym {
+    None,
+    /// Index into the interned labels.
+    Known(u32),
+    /// Any label the compiled expressions never mention.
+    Other,
+}
+
+/// One raw symbol, as the predicates see it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Sym {
+    pub ty: VertexType,
+    pub event: Option<Event>,
+    pub label: LabelSym,
+}
+
+/// The three kinds of place a vertex can take in a path: the camera, a scattering vertex
+/// in the middle, an emitter at the end. Path-shaped searches ([`crate::analysis`]) step
+/// on `(class, group)` letters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) enum Group {
+    Camera,
+    Scatter,
+    Emitter,
+}
+
+impl Group {
+    pub(crate) const ALL: [Group; 3] = [Group::Camera, Group::Scatter, Group::Emitter];
+
+    fn of(ty: VertexType) -> Group {
+        match ty {
+            VertexType::C => Group::Camera,
+            VertexType::R | VertexType::T => Group::Scatter,
+            VertexType::L | VertexType::O => Group::Emitter,
+        }
+    }
+
+    pub(crate) fn index(self) -> usize {
+        self as usize
+    }
+}
+
+fn event_index(e: Event) -> usize {
+    let base = match e.kind() {
+        EventKind::D => 0,
+        EventKind::S => 4,
+        EventKind::U => 12,
+    };
+    base + usize::from(e.lobe()) - 1
+}
+
+fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
+    match (ty, event) {
+        (VertexType::R, Some(e)) => 3 + event_index(e),
+        (VertexType::T, Some(e)) => 3 + EVENTS + event_index(e),
+        (VertexType::L, _) => 1,
+        (VertexType::O, _) => 2,
+        // The camera, and (unconstructible) R/T vertices without an event: the path model
+        // never builds the latter, mapping it to the camera slot keeps this total.
+        _ => 0,
+    }
+}
+
+fn type_event(i: usize) -> (VertexType, Option<Event>) {
+    let event = |j: usize| Event::all().nth(j);
+    match i {
+        0 => (VertexType::C, None),
+        1 => (VertexType::L, None),
+        2 => (VertexType::O, None),
+        i if i < 3 + EVENTS => (VertexType::R, event(i - 3)),
+        i => (VertexType::T, event(i - 3 - EVENTS)),
+    }
+}
+
+/// The labels the compiled expressions mention, with a small open-addressing hash table
+/// (FNV-1a) so [`Alphabet::classify`] costs one short hash, not a `HashMap` with SipHash.
+#[derive(Clone, Debug)]
+struct LabelTable {
+    names: Vec<Box<str>>,
+    /// Slot -> label index + 1 (0 = empty). Power-of-two length, at most half full.
+    slots: Vec<u32>,
+}
+
+fn fnv1a(s: &str) -> u64 {
+    s.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+impl LabelTable {
+    fn new(mut names: Vec<String>) -> LabelTable {
+        names.sort();
+        names.dedup();
+        let mut slots = vec![0u32; (names.len() * 2).next_power_of_two().max(2)];
+        let mask = slots.len() - 1;
+        for (i, n) in names.iter().enumerate() {
+            let mut s = fnv1a(n) as usize & mask;
+            while slots[s] != 0 {
+                s = (s + 1) & mask;
+            }
+            slots[s] = i as u32 + 1;
+        }
+        LabelTable {
+            names: names.into_iter().map(String::into_boxed_str).collect(),
+            slots,
+        }
+    }
+
+    fn get(&self, name: &str) -> Option<u32> {
+        let mask = self.slots.len() - 1;
+        let mut s = fnv1a(name) as usize & mask;
+        loop {
+            match self.slots[s] {
+                0 => return None,
+                i if &*self.names[i as usize - 1] == name => return Some(i - 1),
+                _ => s = (s + 1) & mask,
+            }
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.names.len()
+    }
+}
+
+/// The compressed alphabet of one compiled set.
+#[derive(Clone, Debug)]
+pub(crate) struct Alphabet {
+    labels: LabelTable,
+    /// Raw symbol -> class. Index `type_event * label_syms + label`, where label 0 is
+    /// none, `1..=k` the interned labels and `k + 1` OTHER.
+    raw_to_class: Vec<u32>,
+    class_count: usize,
+    /// Per class, which of the distinct atoms accept it (bitset over atoms).
+    class_atoms: Vec<Vec<u64>>,
+    /// Per `(class, group)`, a raw symbol of that class that can occur in that place, for
+    /// building witness paths.
+    representatives: Vec<[Option<u32>; 3]>,
+    /// A label that none of the expressions mention, to stand for OTHER in witnesses.
+    other_label: String,
+}
+
+impl Alphabet {
+    /// Builds the alphabet for `atoms` (the distinct atoms of the compiled set), whose
+    /// labels are `labels`.
+    pub(crate) fn new(atoms: &[&Atom], labels: Vec<String>) -> Alphabet {
+        let labels = LabelTable::new(labels);
+        let label_syms = labels.len() + 2;
+        let words = atoms.len().div_ceil(64).max(1);
+        let mut by_signature: HashMap<Vec<u64>, u32> = HashMap::new();
+        let mut class_atoms = Vec::new();
+        let mut raw_to_class = Vec::with_capacity(TYPE_EVENTS * label_syms);
+        for raw in 0..TYPE_EVENTS * label_syms {
+            let sym = Self::sym_of(&labels, raw);
+            let mut sig = vec![0u64; words];
+            for (a, atom) in atoms.iter().enumerate() {
+                if atom_accepts(atom, &sym, &labels) {
+                    sig[a / 64] |= 1 << (a % 64);
+                }
+            }
+            let next = by_signature.len() as u32;
+            let class = *by_signature.entry(sig.clone()).or_insert_with(|| {
+                class_atoms.push(sig);
+                next
+            });
+            raw_to_class.push(class);
+        }
+        let class_count = class_atoms.len();
+        let mut representatives = vec![[None; 3]; class_count];
+        for (raw, &class) in raw_to_class.iter().enumerate() {
+            let sym = Self::sym_of(&labels, raw);
+            // The camera carries no label (path.rs): only `C` with no label is a vertex.
+            if sym.ty == VertexType::C && sym.label != LabelSym::None {
+                continue;
+            }
+            let slot = &mut representatives[class as usize][Group::of(sym.ty).index()];
+            slot.get_or_insert(raw as u32);
+        }
+        let mut other_label = "other".to_string();
+        for n in 1.. {
+            if labels.get(&other_label).is_none() {
+                break;
+            }
+            other_label = format!("other{n}");
+        }
+        Alphabet {
+            labels,
+            raw_to_class,
+            class_count,
+            class_atoms,
+            representatives,
+            other_label,
+        }
+    }
+
+    fn sym_of(labels: &LabelTable, raw: usize) -> Sym {
+        let label_syms = labels.len() + 2;
+        let (ty, event) = type_event(raw / label_syms);
+        let l = raw % label_syms;
+        let label = match l {
+            0 => LabelSym::None,
+            l if l <= labels.len() => LabelSym::Known(l as u32 - 1),
+            _ => LabelSym::Other,
+        };
+        Sym { ty, event, label }
+    }
+
+    /// The class of a vertex.
+    #[inline]
+    pub(crate) fn classify(&self, v: &Vertex) -> Class {
+        let label_syms = self.labels.len() + 2;
+        let l = match v.label() {
+            None => 0,
+            Some(name) => match self.labels.get(name) {
+                Some(i) => i as usize + 1,
+                None => label_syms - 1,
+            },
+        };
+        let raw = type_event_index(v.ty(), v.event()) * label_syms + l;
+        Class(self.raw_to_class[raw])
+    }
+
+    pub(crate) fn class_count(&self) -> usize {
+        self.class_count
+    }
+
+    /// Does distinct atom `a` accept class `c`?
+    pub(crate) fn accepts(&self, c: usize, a: usize) -> bool {
+        self.class_atoms[c][a / 64] >> (a % 64) & 1 == 1
+    }
+
+    /// A vertex of class `c` that can stand in place `g` of a path, if there is one.
+    pub(crate) fn representative(&self, c: usize, g: Group) -> Option<Vertex> {
+        let raw = self.representatives[c][g.index()]? as usize;
+        let sym = Self::sym_of(&self.labels, raw);
+        let label = match sym.label {
+            LabelSym::None => None,
+            LabelSym::Known(i) => Some(&*self.labels.names[i as usize]),
+            LabelSym::Other => Some(self.other_label.as_str()),
+        };
+        Some(match (sym.ty, sym.event) {
+            (VertexType::C, _) => Vertex::camera(),
+            (VertexType::L, _) => Vertex::light(label),
+            (VertexType::O, _) => Vertex::emissive(label),
+            (ty, Some(e)) => Vertex::scatter(ty, e, label),
+            // `type_event` gives every R/T slot an event.
+            (_, None) => return None,
+        })
+    }
+
+    /// Bytes held by the tables.
+    pub(crate) fn memory_bytes(&self) -> usize {
+        self.raw_to_class.len() * 4
+            + self.slots_bytes()
+            + self.class_atoms.iter().map(|c| c.len() * 8).sum::<usize>()
+            + self.representatives.len() * 24
+    }
+
+    fn slots_bytes(&self) -> usize {
+        self.labels.slots.len() * 4 + self.labels.names.iter().map(|n| n.len()).sum::<usize>()
+    }
+}
+
+// --- The predicates: one atom against one raw symbol (DESIGN.md §3). ---
+
+/// `.` at the top level: R or T with a D or S event.
+fn dot(s: &Sym) -> bool {
+    s.ty.is_scattering() && s.event.is_some_and(Event::is_transport)
+}
+
+fn event_is(p: EventPattern, s: &Sym) -> bool {
+    s.event
+        .is_some_and(|e| e.kind() == p.kind && p.lobe.is_none_or(|l| l == e.lobe()))
+}
+
+fn label_is(name: &str, s: &Sym, labels: &LabelTable) -> bool {
+    match (s.label, labels.get(name)) {
+        (LabelSym::Known(i), Some(j)) => i == j,
+        _ => false,
+    }
+}
+
+fn atom_accepts(atom: &Atom, s: &Sym, labels: &LabelTable) -> bool {
+    match atom {
+        Atom::Item(item) => item_accepts(item, s, labels),
+        Atom::Class {
+            negated: false,
+            items,
+        } => items.iter().any(|i| item_accepts(i, s, labels)),
+        // Negation: what `.` matches, minus the items.
+        Atom::Class {
+            negated: true,
+            items,
+        } => dot(s) && !items.iter().any(|i| item_accepts(i, s, labels)),
+    }
+}
+
+fn item_accepts(item: &Item, s: &Sym, labels: &LabelTable) -> bool {
+    match item {
+        // `C`, `L`, `O`: the type, any label. `R`, `T`: the type with a D or S event.
+        Item::Type(t) if t.is_scattering() => s.ty == *t && dot(s),
+        Item::Type(t) => s.ty == *t,
+        // `D`, `S2`, `U3`: an R/T vertex with that event (user lobes only this way).
+        Item::Event(p) => s.ty.is_scattering() && event_is(*p, s),
+        Item::Any => dot(s),
+        Item::Label(name) => dot(s) && label_is(name, s, labels),
+        Item::Triple(t) => triple_accepts(t, s, labels),
+    }
+}
+
+/// `<t e l>`: every position must accept; a negated class in a position is that
+/// position's `.` minus its items.
+fn triple_accepts(t: &Triple, s: &Sym, labels: &LabelTable) -> bool {
+    let ty_dot = s.ty.is_scattering();
+    let ty_ok = match &t.ty {
+        TypePos::Any => ty_dot,
+        TypePos::One(ty) => s.ty == *ty,
+        TypePos::Class { negated, types } => {
+            let listed = types.contains(&s.ty);
+            if *negated {
+                ty_dot && !listed
+            } else {
+                listed
+            }
+        }
+    };
+    // `.` in the event position: D or S on R/T, "no event" on C/L/O.
+    let ev_dot = s.event.is_none_or(Event::is_transport);
+    let ev_ok = match &t.event {
+        EventPos::Any => ev_dot,
+        EventPos::One(p) => event_is(*p, s),
+        EventPos::Class { negated, events } => {
+            let listed = events.iter().any(|p| event_is(*p, s));
+            if *negated {
+                ev_dot && !listed
+            } else {
+                listed
+            }
+        }
+    };
+    // `.` in the label position: any label or none; `[^'a']` includes "no label".
+    let label_ok = match &t.label {
+        LabelPos::Any => true,
+        LabelPos::One(name) => label_is(name, s, labels),
+        LabelPos::Class {
+            negated,
+            labels: names,
+        } => names.iter().any(|n| label_is(n, s, labels)) != *negated,
+    };
+    ty_ok && ev_ok && label_ok
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::parse;
+
+    fn alphabet(src: &str) -> (Alphabet, Vec<Atom>) {
+        let e = parse(src).unwrap().expr;
+        let mut atoms = Vec::new();
+        e.for_each_atom(&mut |a| {
+            if !atoms.contains(a) {
+                atoms.push(a.clone())
+            }
+        });
+        let refs: Vec<&Atom> = atoms.iter().collect();
+        (Alphabet::new(&refs, e.labels()), atoms)
+    }
+
+    #[test]
+    fn type_event_index_round_trips() {
+        for i in 0..TYPE_EVENTS {
+            let (ty, ev) = type_event(i);
+            assert_eq!(type_event_index(ty, ev), i);
+        }
+    }
+
+    #[test]
+    fn unmentioned_labels_share_a_class() {
+        let (a, _) = alphabet("C<RD'floor'>L");
+        let d = |l| Vertex::scatter(VertexType::R, Event::new(EventKind::D, 1).unwrap(), Some(l));
+        assert_eq!(a.classify(&d("wall")), a.classify(&d("ceiling")));
+        assert_ne!(a.classify(&d("wall")), a.classify(&d("floor")));
+    }
+
+    #[test]
+    fn basic_set_needs_few_classes() {
+        // C, <RD>, <TD>, <RS>, <TS>, L/O, and the rest (user lobes).
+        let (a, _) = alphabet("C(<RD>|<TD>|<RS>|<TS>).*[<L.>O]");
+        assert!(a.class_count() <= 8, "{}", a.class_count());
+    }
+
+    #[test]
+    fn label_table_finds_every_label_and_nothing_else() {
+        let names: Vec<String> = (0..40).map(|i| format!("l{i}")).collect();
+        let t = LabelTable::new(names.clone());
+        for n in &names {
+            assert_eq!(t.names[t.get(n).unwrap() as usize].as_ref(), n.as_str());
+        }
+        assert_eq!(t.get("nope"), None);
+        assert_eq!(LabelTable::new(Vec::new()).get("x"), None);
+    }
+}

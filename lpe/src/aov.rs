@@ -1,0 +1,479 @@
+//! AOV sets: many expressions compiled into one automaton, stepped once per vertex.
+//!
+//! [`AovSet::compile`] builds, for a list of `(name, expression)` pairs:
+//! 1. the compressed alphabet ([`crate::alphabet`]): vertices grouped into [`Class`]es;
+//! 2. one bitset Glushkov NFA holding every AOV's positions ([`crate::nfa`]);
+//! 3. a minimized dense DFA over it ([`crate::dfa`]), unless that would exceed
+//!    [`Options::dfa_budget`]; then the set steps the NFA instead. Both give the same
+//!    answers (the `fast` and `nfa` engines of the differential harness check that).
+//!
+//! A renderer compiles once, shares the set across threads (`AovSet` is `Send + Sync`,
+//! immutable, lock-free), and per path calls [`AovSet::start`], then [`AovSet::step`] (or
+//! [`AovSet::step_class`] on classes computed once per material lobe at scene load) per
+//! vertex, reads [`AovSet::matches`] at the emitter and may stop early once
+//! [`AovSet::is_dead`]. Stepping never allocates.
+//!
+//! ```
+//! use lpe::aov::AovSet;
+//! use lpe::macros::BASIC;
+//! use lpe::{parse, Event, EventKind, Vertex, VertexType};
+//!
+//! let aovs: Vec<(String, lpe::Lpe)> = BASIC
+//!     .iter()
+//!     .map(|(name, src)| (name.to_string(), parse(src).unwrap()))
+//!     .collect();
+//! let set = AovSet::compile(&aovs).unwrap();
+//!
+//! // Scene load: classify each material lobe once.
+//! let floor = Vertex::scatter(VertexType::R, Event::new(EventKind::D, 2).unwrap(), Some("floor"));
+//! let floor_class = set.classify(&floor);
+//!
+//! // Per path: one table step per vertex.
+//! let mut s = set.start();
+//! s = set.step(s, &Vertex::camera());
+//! s = set.step_class(s, floor_class);
+//! s = set.step_class(s, floor_class);
+//! assert!(!set.is_dead(s));
+//! s = set.step(s, &Vertex::light(Some("key")));
+//! let hits: Vec<&str> = set.matches(s).iter().map(|i| set.names()[i].as_str()).collect();
+//! assert_eq!(hits, ["indirectDiffuse"]);
+//! ```
+
+use std::fmt;
+
+use crate::alphabet::Alphabet;
+pub use crate::alphabet::Class;
+use crate::analysis::{self, Warning};
+use crate::dfa::Dfa;
+use crate::nfa::{self, Builder, Nfa, Parts};
+use crate::path::{Path, Vertex};
+use crate::Lpe;
+
+/// Most AOVs one set holds (the width of [`AovMask`]).
+pub const MAX_AOVS: usize = 256;
+const MASK_WORDS: usize = MAX_AOVS / 64;
+
+/// Which AOVs of a set match: bit `i` is the set's `i`-th AOV.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct AovMask([u64; MASK_WORDS]);
+
+impl AovMask {
+    /// No AOV.
+    pub const EMPTY: AovMask = AovMask([0; MASK_WORDS]);
+
+    /// Whether AOV `i` matches (false for `i >= MAX_AOVS`).
+    #[inline]
+    pub fn contains(&self, i: usize) -> bool {
+        i < MAX_AOVS && self.0[i / 64] >> (i % 64) & 1 == 1
+    }
+
+    /// Adds AOV `i` (ignored for `i >= MAX_AOVS`).
+    pub fn insert(&mut self, i: usize) {
+        if i < MAX_AOVS {
+            self.0[i / 64] |= 1 << (i % 64);
+        }
+    }
+
+    /// No AOV matches.
+    #[inline]
+    pub fn is_empty(&self) -> bool {
+        self.0.iter().all(|&w| w == 0)
+    }
+
+    /// How many AOVs match.
+    pub fn count(&self) -> usize {
+        self.0.iter().map(|w| w.count_ones() as usize).sum()
+    }
+
+    /// The matching AOVs, in increasing order.
+    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
+        Nfa::ones(&self.0)
+    }
+}
+
+/// Widest NFA state a [`State`] holds inline: sets stepped on the NFA (their DFA is over
+/// budget) may have at most `64 * NFA_STATE_WORDS` positions.
+pub const NFA_STATE_WORDS: usize = 4;
+
+/// Where a path is in the automaton: a DFA state id, or the active NFA positions. Small,
+/// `Copy`, and only meaningful for the set that produced it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct State([u64; NFA_STATE_WORDS]);
+
+/// Compile-time knobs.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Options {
+    /// Most bytes the DFA may take (transition table, per-state masks and construction
+    /// scratch). Over it, the set steps the bitset NFA. Default 16 MiB. `0` forces the
+    /// NFA.
+    pub dfa_budget: usize,
+    /// Most bytes the NFA's follow tables may take (`16 KiB * words^2` for states of
+    /// `words` 64-bit words). Over it, compilation fails. Default 16 MiB (about 2 000
+    /// positions).
+    pub nfa_budget: usize,
+    /// The longest path the caller will ever step, in vertices, if known. With it,
+    /// `e{n,m}` with `m >= max_path_len` compiles as `e{n,}` (fewer positions, smaller
+    /// automata); answers for longer paths are then unspecified. Default `None`: exact
+    /// on every path.
+    pub max_path_len: Option<u32>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            dfa_budget: 16 << 20,
+            nfa_budget: 16 << 20,
+            max_path_len: None,
+        }
+    }
+}
+
+/// Why a set did not compile.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum CompileError {
+    /// More than [`MAX_AOVS`] expressions.
+    TooManyAovs(usize),
+    /// The automaton exceeds a limit; the message says which and how to get under it.
+    TooLarge(String),
+}
+
+impl fmt::Display for CompileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            CompileError::TooManyAovs(n) => {
+                write!(
+                    f,
+                    "{n} AOVs in one set, over the limit of {MAX_AOVS}: split the set"
+                )
+            }
+            CompileError::TooLarge(why) => f.write_str(why),
+        }
+    }
+}
+
+impl std::error::Error for CompileError {}
+
+/// A compiled AOV set. See the [module docs](self).
+#[derive(Clone, Debug)]
+pub struct AovSet {
+    names: Vec<String>,
+    lpes: Vec<Lpe>,
+    alphabet: Alphabet,
+    nfa: Nfa,
+    dfa: Option<Dfa>,
+    warnings: Vec<Warning>,
+}
+
+impl AovSet {
+    /// Compiles with default [`Options`].
+    pub fn compile(aovs: &[(String, Lpe)]) -> Result<AovSet, CompileError> {
+        Self::compile_with(aovs, &Options::default())
+    }
+
+    /// Compiles with explicit options.
+    pub fn compile_with(aovs: &[(String, Lpe)], opts: &Options) -> Result<AovSet, CompileError> {
+        if aovs.len() > MAX_AOVS {
+            return Err(CompileError::TooManyAovs(aovs.len()));
+        }
+        let positions = aovs.iter().fold(1u64, |n, (_, l)| {
+            n.saturating_add(nfa::positions(&l.expr, opts.max_path_len))
+        });
+        let words = usize::try_from(positions.div_ceil(64)).unwrap_or(usize::MAX);
+        let table = words
+            .checked_mul(words)
+            .and_then(|w2| w2.checked_mul(nfa::table_bytes(1)));
+        if table.is_none_or(|t| t > opts.nfa_budget) {
+            return Err(CompileError::TooLarge(format!(
+                "the set unrolls to {positions} NFA positions; its step tables would need {} \
+                 MiB, over the NFA budget of {} MiB (lower the repetition counts, or set \
+                 `max_path_len` so long bounded repeats compile as unbounded)",
+                table.map_or("more than 2^64 bytes".into(), |t| (t >> 20).to_string()),
+                opts.nfa_budget >> 20
+            )));
+        }
+        let mut builder = Builder::new(opts.max_path_len);
+        let mut parts = Parts {
+            aov_first: Vec::new(),
+            aov_last: Vec::new(),
+            aov_nullable: Vec::new(),
+        };
+        for (_, l) in aovs {
+            builder.add(&l.expr, &mut parts);
+        }
+        let mut labels: Vec<String> = aovs.iter().flat_map(|(_, l)| l.expr.labels()).collect();
+        labels.sort();
+        labels.dedup();
+        let alphabet = Alphabet::new(&builder.atoms, labels);
+        let atoms: Vec<crate::ast::Atom> = builder.atoms.iter().map(|a| (*a).clone()).collect();
+        let nfa = Nfa::new(builder, parts, &alphabet);
+        let dfa = if opts.dfa_budget > 0 {
+            Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget)
+        } else {
+            None
+        };
+        if dfa.is_none() && nfa.words > NFA_STATE_WORDS {
+            return Err(CompileError::TooLarge(format!(
+                "the set's DFA exceeds the budget of {} MiB and its NFA has {} positions, \
+                 more than the {} a stepping state holds: raise `dfa_budget`, or split the set",
+                opts.dfa_budget >> 20,
+                nfa.positions,
+                64 * NFA_STATE_WORDS
+            )));
+        }
+        let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
+        let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
+        let warnings = analysis::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
+        Ok(AovSet {
+            names,
+            lpes,
+            alphabet,
+            nfa,
+            dfa,
+            warnings,
+        })
+    }
+
+    /// The state before any vertex.
+    #[inline]
+    pub fn start(&self) -> State {
+        match &self.dfa {
+            Some(d) => State::id(d.start()),
+            None => {
+                let mut s = [0u64; NFA_STATE_WORDS];
+                self.nfa.start(&mut s);
+                State(s)
+            }
+        }
+    }
+
+    /// The class of a vertex: compute it once per material lobe and step with
+    /// [`AovSet::step_class`].
+    #[inline]
+    pub fn classify(&self, v: &Vertex) -> Class {
+        self.alphabet.classify(v)
+    }
+
+    /// One vertex.
+    #[inline]
+    pub fn step(&self, s: State, v: &Vertex) -> State {
+        self.step_class(s, self.classify(v))
+    }
+
+    /// One vertex, already classified. A class or state from another set gives an
+    /// unspecified state, never a panic.
+    #[inline]
+    pub fn step_class(&self, s: State, c: Class) -> State {
+        match &self.dfa {
+            Some(d) => State::id(d.next(s.0[0] as u32, c.0)),
+            None => {
+                let mut next = [0u64; NFA_STATE_WORDS];
+                self.nfa.step(&s.0, c.index(), &mut next);
+                State(next)
+            }
+        }
+    }
+
+    /// The AOVs that match a path ending in state `s`.
+    #[inline]
+    pub fn matches(&self, s: State) -> AovMask {
+        match &self.dfa {
+            Some(d) => d.matches(s.0[0] as u32),
+            None => self.nfa.matches(&s.0),
+        }
+    }
+
+    /// No continuation of the path can match any AOV.
+    #[inline]
+    pub fn is_dead(&self, s: State) -> bool {
+        match &self.dfa {
+            Some(_) => s.0[0] == 0,
+            None => s.0 == [0; NFA_STATE_WORDS],
+        }
+    }
+
+    /// Steps a whole path from the start.
+    pub fn match_path(&self, path: &Path) -> AovMask {
+        let s = path
+            .vertices()
+            .iter()
+            .fold(self.start(), |s, v| self.step(s, v));
+        self.matches(s)
+    }
+
+    /// Number of AOVs.
+    pub fn len(&self) -> usize {
+        self.names.len()
+    }
+
+    /// A set of no AOVs.
+    pub fn is_empty(&self) -> bool {
+        self.names.is_empty()
+    }
+
+    /// The AOV names, in compile order (bit `i` of an [`AovMask`] is `names()[i]`).
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// The AOV expressions, in compile order (prefixes tell the renderer what to
+    /// accumulate).
+    pub fn lpes(&self) -> &[Lpe] {
+        &self.lpes
+    }
+
+    /// AOVs that can match no path, with the reason, found at compile time.
+    pub fn warnings(&self) -> &[Warning] {
+        &self.warnings
+    }
+
+    /// Number of vertex classes.
+    pub fn class_count(&self) -> usize {
+        self.alphabet.class_count()
+    }
+
+    /// Whether the set steps a DFA (else the bitset NFA: over the DFA budget).
+    pub fn uses_dfa(&self) -> bool {
+        self.dfa.is_some()
+    }
+
+    /// DFA states (dead state included), if the set has a DFA.
+    pub fn dfa_states(&self) -> Option<usize> {
+        self.dfa.as_ref().map(Dfa::state_count)
+    }
+
+    /// NFA positions (the start included).
+    pub fn nfa_positions(&self) -> usize {
+        self.nfa.positions
+    }
+
+    /// Bytes held by the automata and the alphabet tables.
+    pub fn memory_bytes(&self) -> usize {
+        self.alphabet.memory_bytes()
+            + self.nfa.memory_bytes()
+            + self.dfa.as_ref().map_or(0, Dfa::memory_bytes)
+    }
+
+    pub(crate) fn alphabet(&self) -> &Alphabet {
+        &self.alphabet
+    }
+}
+
+impl State {
+    #[inline]
+    fn id(id: u32) -> State {
+        let mut s = [0u64; NFA_STATE_WORDS];
+        s[0] = u64::from(id);
+        State(s)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::parse;
+
+    fn set(srcs: &[&str], opts: &Options) -> AovSet {
+        let aovs: Vec<(String, Lpe)> = srcs
+            .iter()
+            .map(|s| (s.to_string(), parse(s).unwrap()))
+            .collect();
+        AovSet::compile_with(&aovs, opts).unwrap()
+    }
+
+    fn nfa_only() -> Options {
+        Options {
+            dfa_budget: 0,
+            ..Options::default()
+        }
+    }
+
+    #[test]
+    fn set_is_send_and_sync() {
+        fn check<T: Send + Sync>() {}
+        check::<AovSet>();
+    }
+
+    #[test]
+    fn mask_holds_more_than_64_aovs() {
+        let mut m = AovMask::EMPTY;
+        m.insert(3);
+        m.insert(200);
+        m.insert(MAX_AOVS);
+        assert!(m.contains(200) && m.contains(3) && !m.contains(4));
+        assert_eq!(m.iter().collect::<Vec<_>>(), [3, 200]);
+        assert_eq!(m.count(), 2);
+    }
+
+    #[test]
+    fn hand_checked_paths() {
+        // Expected answers worked out from DESIGN.md §3 by hand.
+        let cases = [
+            ("C<RD>[<L.>O]", "C RD2 L", true),
+            ("C<RD>[<L.>O]", "C TD2 L", false),
+            ("CD|(SD)L", "C RU L", false),
+            ("CD|(SD)L", "C RD L", true),
+            ("CD|(SD)L", "C RS RD L", true),
+            ("C[^'foo']L", "C RD L", true),
+            ("C[^'foo']L", "C RU L", false),
+            ("C<.D[^'foo']>L", "C RD'foo' L", false),
+            ("C<.D[^'foo']>L", "C RD L", true),
+            ("C.{2,3}L", "C RD L", false),
+            ("C.{2,3}L", "C RD RD RD L", true),
+            ("C.{2,3}L", "C RD RD RD RD L", false),
+            ("C<L.'key'>", "C L'key'", true),
+            ("C<L.'key'>", "C L'fill'", false),
+            ("C<L.'key'>", "C L", false),
+        ];
+        for (src, path, want) in cases {
+            let p: Path = path.parse().unwrap();
+            for opts in [Options::default(), nfa_only()] {
+                let s = set(&[src], &opts);
+                assert_eq!(s.match_path(&p).contains(0), want, "{src} on {path}");
+            }
+        }
+    }
+
+    #[test]
+    fn dead_state_is_reached_early() {
+        for opts in [Options::default(), nfa_only()] {
+            let s = set(&["C<RD>L"], &opts);
+            let mut st = s.start();
+            st = s.step(st, &Vertex::camera());
+            assert!(!s.is_dead(st));
+            st = s.step(st, &Vertex::light(None));
+            assert!(s.matches(st).is_empty());
+            assert!(s.is_dead(st));
+        }
+    }
+
+    #[test]
+    fn over_budget_falls_back_to_the_nfa() {
+        // 2^21 subsets: far over a 1 MiB budget.
+        let s = set(
+            &["C.*D.{20}[LO]"],
+            &Options {
+                dfa_budget: 1 << 20,
+                ..Options::default()
+            },
+        );
+        assert!(!s.uses_dfa());
+        let mut p = "C RD".to_string();
+        p.push_str(&" RS".repeat(20));
+        p.push_str(" L");
+        assert!(s.match_path(&p.parse().unwrap()).contains(0));
+    }
+
+    #[test]
+    fn too_large_is_an_error_not_a_hang() {
+        let e = parse("C(.{256}){200}L").unwrap();
+        let err = AovSet::compile(&[("big".into(), e)]).unwrap_err();
+        assert!(err.to_string().contains("NFA budget"), "{err}");
+        let many: Vec<(String, Lpe)> = (0..=MAX_AOVS)
+            .map(|i| (i.to_string(), parse("CL").unwrap()))
+            .collect();
+        assert_eq!(
+            AovSet::compile(&many).unwrap_err(),
+            CompileError::TooManyAovs(MAX_AOVS + 1)
+        );
+    }
+}

@@ -1,0 +1,184 @@
+//! The DFA: subset construction over the bitset NFA into a dense `u32` table, then
+//! minimized.
+//!
+//! Layout: one row of `stride` entries per state (`stride` = class count rounded up to a
+//! power of two), and state ids are *premultiplied* row offsets, so a step is
+//! `table[state + class]`: one add and one dependent load. State 0 is the dead state
+//! (every transition leads back to it, no AOV matches), so `is_dead` is a compare with 0.
+//! Minimization (Moore's partition refinement) merges every state that can no longer
+//! reach a match into the dead state, so a renderer can stop a path as soon as it dies.
+//!
+//! Construction stops as soon as the table would pass the memory budget (the DFA of a
+//! set can be exponential in its NFA: `C.*D.{k}[LO]` needs `2^(k+1)` states); the caller
+//! then steps the NFA instead.
+
+use std::collections::HashMap;
+
+use crate::aov::AovMask;
+use crate::nfa::Nfa;
+
+/// A dense, minimized DFA.
+#[derive(Clone, Debug)]
+pub(crate) struct Dfa {
+    /// `table[state + class]`, with premultiplied state ids.
+    table: Vec<u32>,
+    /// `log2(stride)`.
+    shift: u32,
+    /// The AOVs that match in each state, by state index (`id >> shift`).
+    masks: Vec<AovMask>,
+    start: u32,
+}
+
+impl Dfa {
+    /// Bytes one state costs during and after construction, for the budget.
+    fn state_cost(stride: usize, words: usize) -> usize {
+        stride * 4 + std::mem::size_of::<AovMask>() + 2 * words * 8 + 32
+    }
+
+    /// Determinizes `nfa` over `classes` classes, or `None` if the DFA would exceed
+    /// `budget` bytes.
+    pub(crate) fn build(nfa: &Nfa, classes: usize, budget: usize) -> Option<Dfa> {
+        let stride = classes.next_power_of_two();
+        let cost = Self::state_cost(stride, nfa.words);
+        // Premultiplied ids must fit a `u32`.
+        let max_states = (budget / cost).min(u32::MAX as usize / stride);
+        let w = nfa.words;
+        // Subset construction. Index 0 is the empty set: the dead state.
+        let mut sets: Vec<Box<[u64]>> = vec![vec![0u64; w].into_boxed_slice()];
+        let mut ids: HashMap<Box<[u64]>, u32> = HashMap::new();
+        ids.insert(sets[0].clone(), 0);
+        let mut start = vec![0u64; w];
+        nfa.start(&mut start);
+        let start = start.into_boxed_slice();
+        ids.insert(start.clone(), 1);
+        sets.push(start);
+        if max_states < 2 {
+            return None;
+        }
+        let mut trans: Vec<u32> = Vec::new();
+        let mut next = vec![0u64; w];
+        let mut i = 0;
+        while i < sets.len() {
+            for c in 0..classes {
+                nfa.step(&sets[i], c, &mut next);
+                let id = match ids.get(&next[..]) {
+                    Some(&id) => id,
+                    None => {
+                        if sets.len() >= max_states {
+                            return None;
+                        }
+                        let id = sets.len() as u32;
+                        let key: Box<[u64]> = next.clone().into_boxed_slice();
+                        ids.insert(key.clone(), id);
+                        sets.push(key);
+                        id
+                    }
+                };
+                trans.push(id);
+            }
+            i += 1;
+        }
+        let masks: Vec<AovMask> = sets.iter().map(|s| nfa.matches(s)).collect();
+        drop(ids);
+        Some(Self::minimize(&trans, &masks, classes, stride))
+    }
+
+    /// Moore's algorithm: start from "same AOV mask", split blocks by the blocks their
+    /// successors fall in, until nothing splits. Then lay the blocks out with the dead
+    /// state's block at id 0.
+    fn minimize(trans: &[u32], masks: &[AovMask], classes: usize, stride: usize) -> Dfa {
+        let n = masks.len();
+        let mut block: Vec<u32> = {
+            let mut by_mask: HashMap<AovMask, u32> = HashMap::new();
+            masks
+                .iter()
+                .map(|m| {
+                    let next = by_mask.len() as u32;
+                    *by_mask.entry(*m).or_insert(next)
+                })
+                .collect()
+        };
+        let mut count = block.iter().max().map_or(0, |&b| b + 1);
+        let mut sig = Vec::with_capacity(classes + 1);
+        loop {
+            let mut by_sig: HashMap<Vec<u32>, u32> = HashMap::new();
+            let refined: Vec<u32> = (0..n)
+                .map(|s| {
+                    sig.clear();
+                    sig.push(block[s]);
+                    sig.extend(
+                        trans[s * classes..][..classes]
+                            .iter()
+                            .map(|&t| block[t as usize]),
+                    );
+                    let next = by_sig.len() as u32;
+                    *by_sig.entry(sig.clone()).or_insert(next)
+                })
+                .collect();
+            let refined_count = by_sig.len() as u32;
+            block = refined;
+            if refined_count == count {
+                break;
+            }
+            count = refined_count;
+        }
+        // Renumber: the dead state's block first.
+        let dead = block[0];
+        let mut order = vec![u32::MAX; count as usize];
+        order[dead as usize] = 0;
+        let mut next_id = 1;
+        for &b in &block {
+            if order[b as usize] == u32::MAX {
+                order[b as usize] = next_id;
+                next_id += 1;
+            }
+        }
+        let shift = stride.trailing_zeros();
+        let mut table = vec![0u32; count as usize * stride];
+        let mut out_masks = vec![AovMask::EMPTY; count as usize];
+        for s in 0..n {
+            let b = order[block[s] as usize] as usize;
+            out_masks[b] = masks[s];
+            for c in 0..classes {
+                let t = order[block[trans[s * classes + c] as usize] as usize];
+                table[b * stride + c] = t << shift;
+            }
+        }
+        Dfa {
+            table,
+            shift,
+            masks: out_masks,
+            start: order[block[1] as usize] << shift,
+        }
+    }
+
+    /// The start state id.
+    #[inline]
+    pub(crate) fn start(&self) -> u32 {
+        self.start
+    }
+
+    /// One transition. Out-of-range input (a state or class of another set) leads to
+    /// the dead state rather than a panic.
+    #[inline]
+    pub(crate) fn next(&self, state: u32, class: u32) -> u32 {
+        let i = state.wrapping_add(class) as usize;
+        self.table.get(i).copied().unwrap_or(0)
+    }
+
+    /// The AOVs matching in `state`.
+    #[inline]
+    pub(crate) fn matches(&self, state: u32) -> AovMask {
+        let i = (state >> self.shift) as usize;
+        self.masks.get(i).copied().unwrap_or(AovMask::EMPTY)
+    }
+
+    /// Number of states, dead state included.
+    pub(crate) fn state_count(&self) -> usize {
+        self.masks.len()
+    }
+
+    pub(crate) fn memory_bytes(&self) -> usize {
+        self.table.len() * 4 + self.masks.len() * std::mem::size_of::<AovMask>()
+    }
+}

@@ -1,0 +1,450 @@
+//! The bitset NFA: a Glushkov (position) automaton over alphabet classes, stepped
+//! bit-parallel.
+//!
+//! Every atom occurrence of every compiled expression (after unrolling counted
+//! repetition) is a *position*; position 0 is the shared start. The automaton has no
+//! epsilon moves, and every transition into position `q` reads `q`'s atom, so one step is
+//!
+//! ```text
+//! next = Follow(state) & Accept[class]
+//! ```
+//!
+//! where `Follow(state)` is the union of the follow sets of the active positions. It is
+//! tabulated per 8-bit chunk of the state (Navarro & Raffinot): one table row per
+//! `(chunk, byte value)`, so a step is one load-and-OR per byte of state, whatever the
+//! number of active positions. The tables cost `16 KiB * words^2` (`words` = 64-position
+//! words); [`crate::aov::Options::nfa_budget`] bounds them.
+//!
+//! Many AOVs share one automaton: each keeps its own positions, and a final position
+//! names the AOV it ends ([`Nfa::matches`]).
+
+use std::collections::HashMap;
+
+use crate::alphabet::Alphabet;
+use crate::aov::AovMask;
+use crate::ast::{Atom, Expr};
+
+/// What the Glushkov construction computes for one subexpression.
+struct Frag {
+    first: Vec<u32>,
+    last: Vec<u32>,
+    nullable: bool,
+}
+
+impl Frag {
+    fn empty() -> Frag {
+        Frag {
+            first: Vec::new(),
+            last: Vec::new(),
+            nullable: true,
+        }
+    }
+}
+
+/// The Glushkov construction: positions, their atoms and follow lists.
+pub(crate) struct Builder<'a> {
+    /// Distinct atoms, in first-seen order; positions refer to them by index.
+    pub atoms: Vec<&'a Atom>,
+    atom_ids: HashMap<&'a Atom, u32>,
+    atom_of: Vec<u32>,
+    follow: Vec<Vec<u32>>,
+    /// `e{n,m}` with `m >= max_path_len` is built as `e{n,}` (exact on such paths).
+    max_path_len: Option<u32>,
+}
+
+/// Positions `e` unrolls to here (with the `max_path_len` rewrite), saturating: checked
+/// against the budget before anything is built.
+pub(crate) fn positions(e: &Expr, max_path_len: Option<u32>) -> u64 {
+    match e {
+        Expr::Atom(_) => 1,
+        Expr::Concat(es) | Expr::Alt(es) => es
+            .iter()
+            .fold(0u64, |n, e| n.saturating_add(positions(e, max_path_len))),
+        Expr::Repeat(body, r) => {
+            let (min, max) = bounds(r.min, r.max, max_path_len);
+            let copies = match max {
+                Some(m) => u64::from(m.max(min)),
+                None => u64::from(min) + 1,
+            };
+            positions(body, max_path_len).saturating_mul(copies)
+        }
+    }
+}
+
+/// The repetition bounds actually built. Why the rewrite is exact: on a path of at most
+/// `L` vertices, at most `L` iterations consume a vertex, and empty iterations can be
+/// dropped down to `min`; so when `m >= L` (and `m >= min`) any number of iterations
+/// beyond `m` can be shortened to at most `max(min, L) <= m`.
+fn bounds(min: u32, max: Option<u32>, max_path_len: Option<u32>) -> (u32, Option<u32>) {
+    match (max, max_path_len) {
+        (Some(m), Some(l)) if m >= l && m >= min => (min, None),
+        _ => (min, max),
+    }
+}
+
+impl<'a> Builder<'a> {
+    pub(crate) fn new(max_path_len: Option<u32>) -> Builder<'a> {
+        Builder {
+            atoms: Vec::new(),
+            atom_ids: HashMap::new(),
+            // Position 0: the start, reading no atom.
+            atom_of: vec![u32::MAX],
+            follow: vec![Vec::new()],
+            max_path_len,
+        }
+    }
+
+    fn position(&mut self, atom: &'a Atom) -> u32 {
+        let next = self.atoms.len() as u32;
+        let a = *self.atom_ids.entry(atom).or_insert(next);
+        if a == next {
+            self.atoms.push(atom);
+        }
+        self.atom_of.push(a);
+        self.follow.push(Vec::new());
+        (self.atom_of.len() - 1) as u32
+    }
+
+    fn link(&mut self, from: &[u32], to: &[u32]) {
+        for &p in from {
+            self.follow[p as usize].extend_from_slice(to);
+        }
+    }
+
+    fn concat(&mut self, a: Frag, b: Frag) -> Frag {
+        self.link(&a.last, &b.first);
+        let mut first = a.first;
+        if a.nullable {
+            first.extend_from_slice(&b.first);
+        }
+        let mut last = b.last;
+        if b.nullable {
+            last.extend_from_slice(&a.last);
+        }
+        Frag {
+            first,
+            last,
+            nullable: a.nullable && b.nullable,
+        }
+    }
+
+    fn build(&mut self, e: &'a Expr) -> Frag {
+        match e {
+            Expr::Atom(a) => {
+                let p = self.position(a);
+                Frag {
+                    first: vec![p],
+                    last: vec![p],
+                    nullable: false,
+                }
+            }
+            Expr::Concat(es) => es.iter().fold(Frag::empty(), |acc, e| {
+                let f = self.build(e);
+                self.concat(acc, f)
+            }),
+            Expr::Alt(es) => {
+                let mut out = Frag {
+                    first: Vec::new(),
+                    last: Vec::new(),
+                    nullable: false,
+                };
+                for e in es {
+                    let f = self.build(e);
+                    out.first.extend(f.first);
+                    out.last.extend(f.last);
+                    out.nullable |= f.nullable;
+                }
+                out
+            }
+            Expr::Repeat(body, r) => {
+                let (min, max) = bounds(r.min, r.max, self.max_path_len);
+                let mut acc = Frag::empty();
+                for _ in 0..min {
+                    let f = self.build(body);
+                    acc = self.concat(acc, f);
+                }
+                let tail = match max {
+                    None => {
+                        let mut f = self.build(body);
+                        self.link(&f.last, &f.first);
+                        f.nullable = true;
+                        f
+                    }
+                    Some(m) => self.optional_chain(body, m.saturating_sub(min)),
+                };
+                self.concat(acc, tail)
+            }
+        }
+    }
+
+    /// `(e(e(e)?)?)?` with `k` copies: nested optionals keep Follow linear in `k`, where
+    /// `e?e?e?` would link every copy to every later one.
+    fn optional_chain(&mut self, body: &'a Expr, k: u32) -> Frag {
+        if k == 0 {
+            return Frag::empty();
+        }
+        let head = self.build(body);
+        let rest = self.optional_chain(body, k - 1);
+        let mut f = self.concat(head, rest);
+        f.nullable = true;
+        f
+    }
+}
+
+/// The compiled bitset NFA.
+#[derive(Clone, Debug)]
+pub(crate) struct Nfa {
+    /// 64-bit words per state.
+    pub words: usize,
+    /// Positions, including the start (after dropping useless ones).
+    pub positions: usize,
+    /// `[(chunk * 256 + byte) * words ..][..words]`: union of the follow sets of the
+    /// positions set in `byte` of chunk `chunk`.
+    follow: Vec<u64>,
+    /// `[class * words ..][..words]`: positions whose atom accepts the class.
+    accept: Vec<u64>,
+    /// Positions that end some AOV.
+    finals: Vec<u64>,
+    /// The AOV each position belongs to.
+    aov_of: Vec<u32>,
+    /// AOVs that match the empty sequence (reported for the start state).
+    start_matches: AovMask,
+    /// Per position, the distinct-atom index (`u32::MAX` for the start).
+    pub atom_of: Vec<u32>,
+}
+
+/// Glushkov output before tabulation, for [`Nfa::new`].
+pub(crate) struct Parts {
+    pub aov_first: Vec<Vec<u32>>,
+    pub aov_last: Vec<Vec<u32>>,
+    pub aov_nullable: Vec<bool>,
+}
+
+impl<'a> Builder<'a> {
+    /// Adds one AOV's expression.
+    pub(crate) fn add(&mut self, e: &'a Expr, parts: &mut Parts) {
+        let f = self.build(e);
+        parts.aov_first.push(f.first);
+        parts.aov_last.push(f.last);
+        parts.aov_nullable.push(f.nullable);
+    }
+}
+
+fn set(bits: &mut [u64], p: usize) {
+    bits[p / 64] |= 1 << (p % 64);
+}
+
+fn ones(bits: &[u64]) -> impl Iterator<Item = usize> + '_ {
+    bits.iter().enumerate().flat_map(|(w, &x)| {
+        let mut x = x;
+        std::iter::from_fn(move || {
+            (x != 0).then(|| {
+                let b = x.trailing_zeros() as usize;
+                x &= x - 1;
+                w * 64 + b
+            })
+        })
+    })
+}
+
+/// Bytes of follow tables for a state of `words` words.
+pub(crate) fn table_bytes(words: usize) -> usize {
+    words * 8 * 256 * words * 8
+}
+
+impl Nfa {
+    /// Tabulates a finished construction. Positions that cannot be reached from the start
+    /// or cannot reach a final position are dropped: they never change an answer, and
+    /// dropping them makes [`Nfa::is_dead`] exact and the DFA smaller.
+    pub(crate) fn new(builder: Builder<'_>, parts: Parts, alphabet: &Alphabet) -> Nfa {
+        let Builder {
+            atom_of,
+            mut follow,
+            ..
+        } = builder;
+        let n = atom_of.len();
+        for first in &parts.aov_first {
+            follow[0].extend_from_slice(first);
+        }
+        let mut aov_of = vec![u32::MAX; n];
+        for (i, last) in parts.aov_last.iter().enumerate() {
+            for &p in last {
+                aov_of[p as usize] = i as u32;
+            }
+        }
+        // Keep positions reachable from the start and co-reachable to a final.
+        let mut reach = vec![false; n];
+        reach[0] = true;
+        let mut stack = vec![0usize];
+        while let Some(p) = stack.pop() {
+            for &q in &follow[p] {
+                if !std::mem::replace(&mut reach[q as usize], true) {
+                    stack.push(q as usize);
+                }
+            }
+        }
+        let mut preds = vec![Vec::new(); n];
+        for (p, qs) in follow.iter().enumerate() {
+            for &q in qs {
+                preds[q as usize].push(p as u32);
+            }
+        }
+        let mut coreach = vec![false; n];
+        let mut stack: Vec<usize> = (1..n).filter(|&p| aov_of[p] != u32::MAX).collect();
+        for &p in &stack {
+            coreach[p] = true;
+        }
+        while let Some(q) = stack.pop() {
+            for &p in &preds[q] {
+                if !std::mem::replace(&mut coreach[p as usize], true) {
+                    stack.push(p as usize);
+                }
+            }
+        }
+        let mut renumber = vec![u32::MAX; n];
+        let mut kept = vec![0usize];
+        renumber[0] = 0;
+        for p in 1..n {
+            if reach[p] && coreach[p] {
+                renumber[p] = kept.len() as u32;
+                kept.push(p);
+            }
+        }
+        let positions = kept.len();
+        let words = positions.div_ceil(64);
+        let mut rows = vec![0u64; positions * words];
+        for (new, &old) in kept.iter().enumerate() {
+            for &q in &follow[old] {
+                let q = renumber[q as usize];
+                if q != u32::MAX {
+                    set(&mut rows[new * words..][..words], q as usize);
+                }
+            }
+        }
+        // Chunk tables: entry `b` is entry `b` without its lowest bit, plus that bit's row.
+        let chunks = words * 8;
+        let mut table = vec![0u64; chunks * 256 * words];
+        for chunk in 0..chunks {
+            for b in 1..256usize {
+                let p = chunk * 8 + b.trailing_zeros() as usize;
+                let (dst, src) = (
+                    (chunk * 256 + b) * words,
+                    (chunk * 256 + (b & (b - 1))) * words,
+                );
+                for k in 0..words {
+                    let row = if p < positions {
+                        rows[p * words + k]
+                    } else {
+                        0
+                    };
+                    table[dst + k] = table[src + k] | row;
+                }
+            }
+        }
+        let classes = alphabet.class_count();
+        let mut accept = vec![0u64; classes * words];
+        let mut finals = vec![0u64; words];
+        let mut new_atom_of = vec![u32::MAX; positions];
+        let mut new_aov_of = vec![u32::MAX; positions];
+        for (new, &old) in kept.iter().enumerate().skip(1) {
+            let a = atom_of[old];
+            new_atom_of[new] = a;
+            new_aov_of[new] = aov_of[old];
+            if aov_of[old] != u32::MAX {
+                set(&mut finals, new);
+            }
+            for c in 0..classes {
+                if alphabet.accepts(c, a as usize) {
+                    set(&mut accept[c * words..][..words], new);
+                }
+            }
+        }
+        let mut start_matches = AovMask::EMPTY;
+        for (i, &nullable) in parts.aov_nullable.iter().enumerate() {
+            if nullable {
+                start_matches.insert(i);
+            }
+        }
+        Nfa {
+            words,
+            positions,
+            follow: table,
+            accept,
+            finals,
+            aov_of: new_aov_of,
+            start_matches,
+            atom_of: new_atom_of,
+        }
+    }
+
+    /// The start state: position 0 alone.
+    pub(crate) fn start(&self, out: &mut [u64]) {
+        out.fill(0);
+        out[0] = 1;
+    }
+
+    /// `next = Follow(cur) & Accept[class]`. `cur` and `next` hold [`Nfa::words`] words.
+    #[inline]
+    pub(crate) fn step(&self, cur: &[u64], class: usize, next: &mut [u64]) {
+        let w = self.words;
+        let (cur, next) = (&cur[..w], &mut next[..w]);
+        next.fill(0);
+        for (i, &word) in cur.iter().enumerate() {
+            if word == 0 {
+                continue;
+            }
+            for byte in 0..8 {
+                let b = (word >> (8 * byte)) as usize & 0xff;
+                let row = &self.follow[((i * 8 + byte) * 256 + b) * w..][..w];
+                for (n, r) in next.iter_mut().zip(row) {
+                    *n |= r;
+                }
+            }
+        }
+        match self.accept.get(class * w..(class + 1) * w) {
+            Some(acc) => next.iter_mut().zip(acc).for_each(|(n, a)| *n &= a),
+            // A class of another set: no position accepts it.
+            None => next.fill(0),
+        }
+    }
+
+    /// The AOVs that match when the path ends in state `cur`.
+    pub(crate) fn matches(&self, cur: &[u64]) -> AovMask {
+        let mut m = if cur[0] & 1 == 1 {
+            self.start_matches
+        } else {
+            AovMask::EMPTY
+        };
+        for (w, (a, f)) in cur.iter().zip(&self.finals).enumerate() {
+            let mut x = a & f;
+            while x != 0 {
+                m.insert(self.aov_of[w * 64 + x.trailing_zeros() as usize] as usize);
+                x &= x - 1;
+            }
+        }
+        m
+    }
+
+    /// The follow set of one position.
+    pub(crate) fn follow_of(&self, p: usize) -> &[u64] {
+        let w = self.words;
+        let chunk = p / 8;
+        let b = 1usize << (p % 8);
+        &self.follow[(chunk * 256 + b) * w..][..w]
+    }
+
+    /// The AOV position `p` ends, if it is final.
+    pub(crate) fn final_aov(&self, p: usize) -> Option<usize> {
+        (p != 0 && self.aov_of[p] != u32::MAX).then(|| self.aov_of[p] as usize)
+    }
+
+    pub(crate) fn memory_bytes(&self) -> usize {
+        (self.follow.len() + self.accept.len() + self.finals.len()) * 8
+            + (self.aov_of.len() + self.atom_of.len()) * 4
+    }
+
+    /// Positions set in `bits`.
+    pub(crate) fn ones(bits: &[u64]) -> impl Iterator<Item = usize> + '_ {
+        ones(bits)
+    }
+}
