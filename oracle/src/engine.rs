@@ -7,6 +7,7 @@
 
 use std::fmt;
 
+use lpe::aov::{AovSet, Options};
 use lpe::{Lpe, Path};
 
 /// Why an engine produced no matcher.
@@ -64,9 +65,63 @@ impl Engine for Reference {
     }
 }
 
+/// lpe's fast matcher: the AOV set's minimized DFA, or bitset-NFA stepping when the
+/// DFA is over the default budget. Exact on every path (no `max_path_len`).
+pub struct Fast;
+
+/// lpe's bitset NFA alone (DFA budget 0), so the NFA stepping is checked on every case
+/// and not only on sets whose DFA is too large.
+pub struct BitsetNfa;
+
+struct AovSetMatcher(AovSet);
+
+impl Matcher for AovSetMatcher {
+    fn which(&self, path: &Path) -> Vec<bool> {
+        let m = self.0.match_path(path);
+        (0..self.0.len()).map(|i| m.contains(i)).collect()
+    }
+}
+
+fn compile_set(exprs: &[Lpe], opts: &Options) -> Result<Box<dyn Matcher>, EngineError> {
+    let aovs: Vec<(String, Lpe)> = exprs
+        .iter()
+        .enumerate()
+        .map(|(i, e)| (i.to_string(), e.clone()))
+        .collect();
+    AovSet::compile_with(&aovs, opts)
+        .map(|set| Box::new(AovSetMatcher(set)) as Box<dyn Matcher>)
+        .map_err(|e| EngineError::CannotBuild(e.to_string()))
+}
+
+impl Engine for Fast {
+    fn name(&self) -> &'static str {
+        "fast"
+    }
+
+    fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
+        compile_set(exprs, &Options::default())
+    }
+}
+
+impl Engine for BitsetNfa {
+    fn name(&self) -> &'static str {
+        "nfa"
+    }
+
+    fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
+        compile_set(
+            exprs,
+            &Options {
+                dfa_budget: 0,
+                ..Options::default()
+            },
+        )
+    }
+}
+
 /// Every available engine, reference first.
 pub fn all() -> Vec<&'static dyn Engine> {
-    vec![&Reference]
+    vec![&Reference, &Fast, &BitsetNfa]
 }
 
 /// The engine called `name`, if available.
