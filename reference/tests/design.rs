@@ -257,6 +257,17 @@ fn nullable_bodies_and_large_counts_terminate() {
         &["C RU L"],
     );
     check("C(D*|S*)*L", &["C RD RS RD L"], &["C RD RU L"]);
+    // At the positions limit, nested and nullable: must answer at once, both ways.
+    let long = format!("C {}L", "RD ".repeat(40));
+    let long_miss = format!("C {}RU L", "RD ".repeat(40));
+    check("C((.?){255}){256}L", &[&long], &[&long_miss]);
+    check("C((D?){200}(S?){50}){256}L", &[&long], &[&long_miss]);
+    // A nullable body's lower bound can be met with empty iterations.
+    check(
+        "C(D?){5}L",
+        &["C L", "C RD RD L"],
+        &["C RD RD RD RD RD RD L"],
+    );
 }
 
 #[test]
