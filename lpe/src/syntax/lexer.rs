@@ -205,3 +205,15 @@ pub(crate) fn tokenize(source: &str, start: usize) -> Result<Vec<Token>, Error> 
     }
     Ok(out)
 }
+
+/// Reads decimal digits at `*i` (possibly none), saturating at `u64::MAX`.
+fn number(bytes: &[u8], i: &mut usize) -> u64 {
+    let mut n: u64 = 0;
+    while *i < bytes.len() && bytes[*i].is_ascii_digit() {
+        n = n
+            .saturating_mul(10)
+            .saturating_add(u64::from(bytes[*i] - b'0'));
+        *i += 1;
+    }
+    n
+}
