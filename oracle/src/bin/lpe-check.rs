@@ -23,6 +23,10 @@ enum Command {
     Parse(cli::parse::Args),
     /// Match an expression against paths (or `--batch` lines from stdin) with every engine.
     Match(cli::matching::Args),
+    /// Are two expressions equivalent? Else the shortest path telling them apart.
+    Equiv(cli::equiv::Args),
+    /// Do AOVs partition a universe? Overlaps, gaps and leaks with shortest paths.
+    Partition(cli::partition::Args),
 }
 
 fn main() -> ExitCode {
@@ -34,6 +38,8 @@ fn main() -> ExitCode {
         .spawn(move || match cli.command {
             Command::Parse(a) => cli::parse::run(a),
             Command::Match(a) => cli::matching::run(a),
+            Command::Equiv(a) => cli::equiv::run(a),
+            Command::Partition(a) => cli::partition::run(a),
         });
     match worker.map(|w| w.join()) {
         Ok(Ok(code)) => code,

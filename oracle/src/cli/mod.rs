@@ -1,7 +1,10 @@
 //! Subcommands of `lpe-check`, one module each; the binary only dispatches.
 
+pub mod equiv;
 pub mod matching;
 pub mod parse;
+pub mod partition;
+pub mod witness;
 
 use crate::engine::{self, Engine};
 

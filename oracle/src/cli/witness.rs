@@ -1,0 +1,43 @@
+//! Re-checking analysis witnesses with the reference matcher before printing them.
+//!
+//! The analysis in `lpe` builds witnesses from its own automata; printing one that the
+//! executable semantics disagrees with would present an engine bug as a fact about the
+//! user's expressions. So every witness goes through [`recheck`] first, and a failure is
+//! reported as an internal disagreement (exit code 3), not as the answer.
+
+use lpe::{Lpe, Path};
+
+/// What one expression must answer on a witness.
+pub struct Expect<'a> {
+    /// Display name of the expression.
+    pub name: &'a str,
+    /// The expression.
+    pub lpe: &'a Lpe,
+    /// Whether it must match.
+    pub matches: bool,
+}
+
+/// `Ok` if the reference agrees with every expectation on `path`, else a message naming
+/// the first expression it disagrees on.
+pub fn recheck(path: &Path, expects: &[Expect<'_>]) -> Result<(), String> {
+    for e in expects {
+        let got = reference::is_match(e.lpe, path);
+        if got != e.matches {
+            return Err(format!(
+                "internal disagreement: the analysis says `{}` {} `{path}`, the reference \
+                 matcher says it {} (please report this)",
+                e.name,
+                if e.matches {
+                    "matches"
+                } else {
+                    "does not match"
+                },
+                if got { "does" } else { "does not" },
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Exit code for a witness that failed its re-check.
+pub const DISAGREE: u8 = 3;
