@@ -18,7 +18,7 @@
 use std::collections::HashMap;
 
 use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
-use crate::path::{Event, EventKind, Vertex, VertexType};
+use crate::path::{Event, Vertex, VertexType};
 
 /// An equivalence class of vertices: no compiled atom tells two vertices of one class
 /// apart. Obtained from [`crate::aov::AovSet::classify`]; only meaningful for the set
@@ -82,24 +82,22 @@ impl Group {
 }
 
 fn event_index(e: Event) -> usize {
-    let base = match e.kind() {
-        EventKind::D => 0,
-        EventKind::S => 4,
-        EventKind::U => 12,
-    };
-    base + usize::from(e.lobe()) - 1
+    // D1-4, S1-8, U1-12 in `EventKind::ALL` order.
+    const BASE: [usize; 3] = [0, 4, 12];
+    BASE[e.kind() as usize] + usize::from(e.lobe()) - 1
 }
 
+/// `(type, event)` to its index: C 0, L 1, O 2, R 3.., T 27.. (table lookups rather than
+/// nested matches, whose branches mispredict on a realistic mix of vertices).
+#[inline]
 fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
-    match (ty, event) {
-        (VertexType::R, Some(e)) => 3 + event_index(e),
-        (VertexType::T, Some(e)) => 3 + EVENTS + event_index(e),
-        (VertexType::L, _) => 1,
-        (VertexType::O, _) => 2,
-        // The camera, and (unconstructible) R/T vertices without an event: the path model
-        // never builds the latter, mapping it to the camera slot keeps this total.
-        _ => 0,
-    }
+    // Per `VertexType` (C R T L O): the base index, and whether the event counts.
+    const BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
+    const SCATTERS: [usize; 5] = [0, 1, 1, 0, 0];
+    let t = ty as usize;
+    // The camera, and (unconstructible) R/T vertices without an event, map to index 0.
+    let e = event.map_or(0, event_index);
+    (BASE[t] + e) * SCATTERS[t] * usize::from(event.is_some()) + BASE[t] * (1 - SCATTERS[t])
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
@@ -113,33 +111,79 @@ fn type_event(i: usize) -> (VertexType, Option<Event>) {
     }
 }
 
-/// The labels the compiled expressions mention, with a small open-addressing hash table
-/// (FNV-1a) so [`Alphabet::classify`] costs one short hash, not a `HashMap` with SipHash.
+/// The labels the compiled expressions mention, in a small open-addressing hash table.
+///
+/// The key of a label is its length and two words that, for labels of up to 16 bytes,
+/// hold every byte (overlapping reads of the head and tail, the way fast hashers read
+/// short strings): [`Alphabet::classify`] of a labelled vertex then costs a few loads,
+/// one multiply and one compare, with no string compare and no per-byte loop (whose
+/// exit branch mispredicts on labels of mixed lengths). Longer labels compare in full.
 #[derive(Clone, Debug)]
 struct LabelTable {
     names: Vec<Box<str>>,
-    /// Slot -> label index + 1 (0 = empty). Power-of-two length, at most half full.
-    slots: Vec<u32>,
+    /// Power-of-two length, at most half full.
+    slots: Vec<Slot>,
 }
 
-fn fnv1a(s: &str) -> u64 {
-    s.bytes().fold(0xcbf2_9ce4_8422_2325, |h, b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
-    })
+#[derive(Clone, Copy, Debug, Default)]
+struct Slot {
+    key: [u64; 2],
+    len: u32,
+    /// Label index + 1; 0 = empty.
+    index: u32,
+}
+
+/// Exact (with the length) for labels up to 16 bytes.
+#[inline]
+fn label_key(b: &[u8]) -> [u64; 2] {
+    let n = b.len();
+    let u64_at = |i: usize| {
+        let mut w = [0u8; 8];
+        w.copy_from_slice(&b[i..i + 8]);
+        u64::from_le_bytes(w)
+    };
+    let u32_at = |i: usize| {
+        let mut w = [0u8; 4];
+        w.copy_from_slice(&b[i..i + 4]);
+        u64::from(u32::from_le_bytes(w))
+    };
+    if n >= 8 {
+        [u64_at(0), u64_at(n - 8)]
+    } else if n >= 4 {
+        [u32_at(0) | u32_at(n - 4) << 32, 0]
+    } else if n > 0 {
+        [
+            u64::from(b[0]) | u64::from(b[n / 2]) << 8 | u64::from(b[n - 1]) << 16,
+            0,
+        ]
+    } else {
+        [0, 0]
+    }
+}
+
+#[inline]
+fn slot_hash(key: [u64; 2], len: usize) -> usize {
+    let x = key[0] ^ key[1].rotate_left(29) ^ (len as u64).rotate_left(56);
+    (x.wrapping_mul(0x9e37_79b9_7f4a_7c15) >> 32) as usize
 }
 
 impl LabelTable {
     fn new(mut names: Vec<String>) -> LabelTable {
         names.sort();
         names.dedup();
-        let mut slots = vec![0u32; (names.len() * 2).next_power_of_two().max(2)];
+        let mut slots = vec![Slot::default(); (names.len() * 2).next_power_of_two().max(2)];
         let mask = slots.len() - 1;
         for (i, n) in names.iter().enumerate() {
-            let mut s = fnv1a(n) as usize & mask;
-            while slots[s] != 0 {
+            let key = label_key(n.as_bytes());
+            let mut s = slot_hash(key, n.len()) & mask;
+            while slots[s].index != 0 {
                 s = (s + 1) & mask;
             }
-            slots[s] = i as u32 + 1;
+            slots[s] = Slot {
+                key,
+                len: n.len() as u32,
+                index: i as u32 + 1,
+            };
         }
         LabelTable {
             names: names.into_iter().map(String::into_boxed_str).collect(),
@@ -147,15 +191,24 @@ impl LabelTable {
         }
     }
 
+    #[inline]
     fn get(&self, name: &str) -> Option<u32> {
+        let b = name.as_bytes();
+        let key = label_key(b);
         let mask = self.slots.len() - 1;
-        let mut s = fnv1a(name) as usize & mask;
+        let mut s = slot_hash(key, b.len()) & mask;
         loop {
-            match self.slots[s] {
-                0 => return None,
-                i if &*self.names[i as usize - 1] == name => return Some(i - 1),
-                _ => s = (s + 1) & mask,
+            let slot = self.slots[s];
+            if slot.index == 0 {
+                return None;
             }
+            if slot.key == key
+                && slot.len as usize == b.len()
+                && (b.len() <= 16 || *self.names[slot.index as usize - 1] == *name)
+            {
+                return Some(slot.index - 1);
+            }
+            s = (s + 1) & mask;
         }
     }
 
@@ -298,7 +351,8 @@ impl Alphabet {
     }
 
     fn slots_bytes(&self) -> usize {
-        self.labels.slots.len() * 4 + self.labels.names.iter().map(|n| n.len()).sum::<usize>()
+        self.labels.slots.len() * std::mem::size_of::<Slot>()
+            + self.labels.names.iter().map(|n| n.len()).sum::<usize>()
     }
 }
 
@@ -395,6 +449,7 @@ fn triple_accepts(t: &Triple, s: &Sym, labels: &LabelTable) -> bool {
 mod tests {
     use super::*;
     use crate::parse;
+    use crate::path::EventKind;
 
     fn alphabet(src: &str) -> (Alphabet, Vec<Atom>) {
         let e = parse(src).unwrap().expr;
@@ -433,12 +488,32 @@ mod tests {
 
     #[test]
     fn label_table_finds_every_label_and_nothing_else() {
-        let names: Vec<String> = (0..40).map(|i| format!("l{i}")).collect();
+        let mut names: Vec<String> = (0..40).map(|i| format!("l{i}")).collect();
+        // Long labels sharing their first 8 bytes, and the empty label.
+        names.extend(
+            [
+                "a_long_label_1",
+                "a_long_label_2",
+                "a_much_longer_label_1",
+                "a_much_longer_label_2",
+                "",
+                "ab",
+                "abc",
+                "abcdefg",
+            ]
+            .map(String::from),
+        );
         let t = LabelTable::new(names.clone());
         for n in &names {
             assert_eq!(t.names[t.get(n).unwrap() as usize].as_ref(), n.as_str());
         }
         assert_eq!(t.get("nope"), None);
+        assert_eq!(t.get("a_long_label_3"), None);
+        assert_eq!(t.get("l1\0"), None);
+        assert_eq!(t.get("a_much_longer_label_3"), None);
+        assert_eq!(t.get("a_much_longer_labex_1"), None);
+        assert_eq!(t.get("abcdffg"), None);
+        assert_eq!(t.get("adc"), None);
         assert_eq!(LabelTable::new(Vec::new()).get("x"), None);
     }
 }

@@ -81,6 +81,7 @@ impl AovMask {
     }
 
     /// How many AOVs match.
+    #[inline]
     pub fn count(&self) -> usize {
         self.0.iter().map(|w| w.count_ones() as usize).sum()
     }
@@ -238,11 +239,8 @@ impl AovSet {
     pub fn start(&self) -> State {
         match &self.dfa {
             Some(d) => State::id(d.start()),
-            None => {
-                let mut s = [0u64; NFA_STATE_WORDS];
-                self.nfa.start(&mut s);
-                State(s)
-            }
+            // The NFA start: position 0 alone, bit 0 of word 0.
+            None => State::id(1),
         }
     }
 
@@ -265,12 +263,17 @@ impl AovSet {
     pub fn step_class(&self, s: State, c: Class) -> State {
         match &self.dfa {
             Some(d) => State::id(d.next(s.0[0] as u32, c.0)),
-            None => {
-                let mut next = [0u64; NFA_STATE_WORDS];
-                self.nfa.step(&s.0, c.index(), &mut next);
-                State(next)
-            }
+            None => self.step_nfa(s, c),
         }
+    }
+
+    /// Out of line so that the DFA step above stays small enough to inline into the
+    /// caller's loop.
+    #[inline(never)]
+    fn step_nfa(&self, s: State, c: Class) -> State {
+        let mut next = [0u64; NFA_STATE_WORDS];
+        self.nfa.step(&s.0, c.index(), &mut next);
+        State(next)
     }
 
     /// The AOVs that match a path ending in state `s`.

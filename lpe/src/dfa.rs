@@ -47,9 +47,9 @@ impl Dfa {
         let mut sets: Vec<Box<[u64]>> = vec![vec![0u64; w].into_boxed_slice()];
         let mut ids: HashMap<Box<[u64]>, u32> = HashMap::new();
         ids.insert(sets[0].clone(), 0);
-        let mut start = vec![0u64; w];
-        nfa.start(&mut start);
-        let start = start.into_boxed_slice();
+        // The start state: position 0 alone.
+        let mut start = vec![0u64; w].into_boxed_slice();
+        start[0] = 1;
         ids.insert(start.clone(), 1);
         sets.push(start);
         if max_states < 2 {

@@ -377,22 +377,29 @@ impl Nfa {
         }
     }
 
-    /// The start state: position 0 alone.
-    pub(crate) fn start(&self, out: &mut [u64]) {
-        out.fill(0);
-        out[0] = 1;
-    }
-
     /// `next = Follow(cur) & Accept[class]`. `cur` and `next` hold [`Nfa::words`] words.
     #[inline]
     pub(crate) fn step(&self, cur: &[u64], class: usize, next: &mut [u64]) {
-        let w = self.words;
+        // Constant widths let the compiler unroll the word loops for the common sizes.
+        match self.words {
+            1 => self.step_width(cur, class, next, 1),
+            2 => self.step_width(cur, class, next, 2),
+            3 => self.step_width(cur, class, next, 3),
+            4 => self.step_width(cur, class, next, 4),
+            w => self.step_width(cur, class, next, w),
+        }
+    }
+
+    #[inline(always)]
+    fn step_width(&self, cur: &[u64], class: usize, next: &mut [u64], w: usize) {
         let (cur, next) = (&cur[..w], &mut next[..w]);
         next.fill(0);
         for (i, &word) in cur.iter().enumerate() {
             if word == 0 {
                 continue;
             }
+            // One row per byte, zero bytes included: a load is cheaper than a branch
+            // that mispredicts.
             for byte in 0..8 {
                 let b = (word >> (8 * byte)) as usize & 0xff;
                 let row = &self.follow[((i * 8 + byte) * 256 + b) * w..][..w];

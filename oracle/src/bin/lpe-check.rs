@@ -27,6 +27,8 @@ enum Command {
     Equiv(cli::equiv::Args),
     /// Do AOVs partition a universe? Overlaps, gaps and leaks with shortest paths.
     Partition(cli::partition::Args),
+    /// Benchmark the matchers (fast DFA/NFA, regex-automata, reference) as a table.
+    Bench(cli::bench::Args),
 }
 
 fn main() -> ExitCode {
@@ -40,6 +42,7 @@ fn main() -> ExitCode {
             Command::Match(a) => cli::matching::run(a),
             Command::Equiv(a) => cli::equiv::run(a),
             Command::Partition(a) => cli::partition::run(a),
+            Command::Bench(a) => cli::bench::run(a),
         });
     match worker.map(|w| w.join()) {
         Ok(Ok(code)) => code,
