@@ -15,7 +15,7 @@
 //! [`crate::ast`]); raw symbols with the same answers from every atom form one [`Class`].
 //! [`Alphabet::classify`] is then arithmetic plus one label lookup plus one table load.
 
-use std::collections::HashMap;
+use crate::fxhash::FxMap;
 
 use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
 use crate::path::{Event, Vertex, VertexType};
@@ -241,15 +241,31 @@ impl Alphabet {
         let labels = LabelTable::new(labels);
         let label_syms = labels.len() + 2;
         let words = atoms.len().div_ceil(64).max(1);
-        let mut by_signature: HashMap<Vec<u64>, u32> = HashMap::new();
+        let mut by_signature: FxMap<Vec<u64>, u32> = FxMap::default();
         let mut class_atoms = Vec::new();
         let mut raw_to_class = Vec::with_capacity(TYPE_EVENTS * label_syms);
+        // Atoms that never look at labels answer alike for every label of one
+        // `(type, event)`: evaluate them once per `(type, event)`, on the no-label symbol
+        // that starts its run of raw symbols.
+        let blind: Vec<bool> = atoms.iter().map(|a| !mentions_label(a)).collect();
+        let mut blind_sig = vec![0u64; words];
         for raw in 0..TYPE_EVENTS * label_syms {
             let sym = Self::sym_of(&labels, raw);
-            let mut sig = vec![0u64; words];
+            let first = raw % label_syms == 0;
+            let mut sig = if first {
+                vec![0u64; words]
+            } else {
+                blind_sig.clone()
+            };
             for (a, atom) in atoms.iter().enumerate() {
-                if atom_accepts(atom, &sym, &labels) {
+                if (first || !blind[a]) && atom_accepts(atom, &sym, &labels) {
                     sig[a / 64] |= 1 << (a % 64);
+                }
+            }
+            if first {
+                blind_sig.copy_from_slice(&sig);
+                for (a, _) in blind.iter().enumerate().filter(|(_, b)| !**b) {
+                    blind_sig[a / 64] &= !(1 << (a % 64));
                 }
             }
             let next = by_signature.len() as u32;
@@ -369,9 +385,23 @@ fn event_is(p: EventPattern, s: &Sym) -> bool {
 }
 
 fn label_is(name: &str, s: &Sym, labels: &LabelTable) -> bool {
-    match (s.label, labels.get(name)) {
-        (LabelSym::Known(i), Some(j)) => i == j,
-        _ => false,
+    // A string compare, not a table lookup: this runs for every raw symbol and atom.
+    match s.label {
+        LabelSym::Known(i) => *labels.names[i as usize] == *name,
+        LabelSym::None | LabelSym::Other => false,
+    }
+}
+
+/// Whether an atom's answer can depend on the vertex label.
+fn mentions_label(atom: &Atom) -> bool {
+    let item = |i: &Item| match i {
+        Item::Label(_) => true,
+        Item::Triple(t) => t.label != LabelPos::Any,
+        Item::Type(_) | Item::Event(_) | Item::Any => false,
+    };
+    match atom {
+        Atom::Item(i) => item(i),
+        Atom::Class { items, .. } => items.iter().any(item),
     }
 }
 

@@ -14,7 +14,7 @@
 //! becomes a fresh name such as `other`). Callers that print witnesses should re-check
 //! them with an independent matcher; `lpe-check` does, with the reference matcher.
 
-use std::collections::HashSet;
+use crate::fxhash::FxSet;
 use std::fmt;
 
 use crate::alphabet::{Alphabet, Group};
@@ -237,7 +237,7 @@ fn explore(
     let classes: Vec<_> = letters.iter().map(|(_, _, v)| set.classify(v)).collect();
     // Node: (state, shape state); parent index and letter, for the witness.
     let mut nodes: Vec<(State, u8, usize, usize)> = vec![(set.start(), 0, usize::MAX, 0)];
-    let mut seen: HashSet<(State, u8)> = HashSet::new();
+    let mut seen: FxSet<(State, u8)> = FxSet::default();
     seen.insert((set.start(), 0));
     let mut head = 0;
     while head < nodes.len() {

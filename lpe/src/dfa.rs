@@ -12,7 +12,7 @@
 //! set can be exponential in its NFA: `C.*D.{k}[LO]` needs `2^(k+1)` states); the caller
 //! then steps the NFA instead.
 
-use std::collections::HashMap;
+use crate::fxhash::FxMap;
 
 use crate::aov::AovMask;
 use crate::nfa::Nfa;
@@ -45,7 +45,7 @@ impl Dfa {
         let w = nfa.words;
         // Subset construction. Index 0 is the empty set: the dead state.
         let mut sets: Vec<Box<[u64]>> = vec![vec![0u64; w].into_boxed_slice()];
-        let mut ids: HashMap<Box<[u64]>, u32> = HashMap::new();
+        let mut ids: FxMap<Box<[u64]>, u32> = FxMap::default();
         ids.insert(sets[0].clone(), 0);
         // The start state: position 0 alone.
         let mut start = vec![0u64; w].into_boxed_slice();
@@ -89,7 +89,7 @@ impl Dfa {
     fn minimize(trans: &[u32], masks: &[AovMask], classes: usize, stride: usize) -> Dfa {
         let n = masks.len();
         let mut block: Vec<u32> = {
-            let mut by_mask: HashMap<AovMask, u32> = HashMap::new();
+            let mut by_mask: FxMap<AovMask, u32> = FxMap::default();
             masks
                 .iter()
                 .map(|m| {
@@ -101,7 +101,7 @@ impl Dfa {
         let mut count = block.iter().max().map_or(0, |&b| b + 1);
         let mut sig = Vec::with_capacity(classes + 1);
         loop {
-            let mut by_sig: HashMap<Vec<u32>, u32> = HashMap::new();
+            let mut by_sig: FxMap<Vec<u32>, u32> = FxMap::default();
             let refined: Vec<u32> = (0..n)
                 .map(|s| {
                     sig.clear();

@@ -18,7 +18,7 @@
 //! Many AOVs share one automaton: each keeps its own positions, and a final position
 //! names the AOV it ends ([`Nfa::matches`]).
 
-use std::collections::HashMap;
+use crate::fxhash::FxMap;
 
 use crate::alphabet::Alphabet;
 use crate::aov::AovMask;
@@ -45,7 +45,7 @@ impl Frag {
 pub(crate) struct Builder<'a> {
     /// Distinct atoms, in first-seen order; positions refer to them by index.
     pub atoms: Vec<&'a Atom>,
-    atom_ids: HashMap<&'a Atom, u32>,
+    atom_ids: FxMap<&'a Atom, u32>,
     atom_of: Vec<u32>,
     follow: Vec<Vec<u32>>,
     /// `e{n,m}` with `m >= max_path_len` is built as `e{n,}` (exact on such paths).
@@ -86,7 +86,7 @@ impl<'a> Builder<'a> {
     pub(crate) fn new(max_path_len: Option<u32>) -> Builder<'a> {
         Builder {
             atoms: Vec::new(),
-            atom_ids: HashMap::new(),
+            atom_ids: FxMap::default(),
             // Position 0: the start, reading no atom.
             atom_of: vec![u32::MAX],
             follow: vec![Vec::new()],

@@ -72,7 +72,13 @@ impl Encoding {
 
     /// Appends the two bytes of each vertex.
     pub fn encode(&self, path: &Path, out: &mut Vec<u8>) {
-        for v in path.vertices() {
+        self.encode_vertices(path.vertices(), out);
+    }
+
+    /// Appends the two bytes of each vertex.
+    #[inline]
+    pub fn encode_vertices(&self, vertices: &[Vertex], out: &mut Vec<u8>) {
+        for v in vertices {
             out.push(type_event_code(v));
             out.push(self.label_code(v.label()));
         }
