@@ -467,6 +467,26 @@ mod tests {
     }
 
     #[test]
+    fn empty_sets_and_foreign_states_do_not_panic() {
+        let empty = AovSet::compile(&[]).unwrap();
+        assert!(empty.is_empty());
+        assert!(empty.match_path(&"C L".parse().unwrap()).is_empty());
+        // A state and class from a larger set, stepped in a smaller one: some state,
+        // never a panic.
+        let big = set(&["C.*D.{12}[LO]", "C<RD'a'><TS'b'>L"], &Options::default());
+        for opts in [Options::default(), nfa_only()] {
+            let small = set(&["CL"], &opts);
+            let p: Path = "C RD'a' TS'b' RD RS RD L".parse().unwrap();
+            let s = p.vertices()[..6]
+                .iter()
+                .fold(big.start(), |s, v| big.step(s, v));
+            let c = big.classify(&Vertex::light(Some("zz")));
+            let t = small.step_class(s, c);
+            let _ = (small.matches(t), small.is_dead(t));
+        }
+    }
+
+    #[test]
     fn too_large_is_an_error_not_a_hang() {
         let e = parse("C(.{256}){200}L").unwrap();
         let err = AovSet::compile(&[("big".into(), e)]).unwrap_err();

@@ -22,6 +22,62 @@
 //! let err = parse("C<L'key'>").unwrap_err();
 //! assert_eq!(err.help(), Some("write `<L.'key'>`"));
 //! ```
+//!
+//! # Matching in a renderer
+//!
+//! [`aov::AovSet`] compiles a list of AOVs into one automaton (a minimized DFA over
+//! compressed vertex classes, or a bitset Glushkov NFA when the DFA is over its memory
+//! budget). Compile once at scene load, classify each material lobe once, share the set
+//! across render threads (it is `Send + Sync`, lock-free and immutable), and step one
+//! vertex at a time; a step never allocates:
+//!
+//! ```
+//! use lpe::aov::{AovSet, Class};
+//! use lpe::{parse, Event, EventKind, Lpe, Vertex, VertexType};
+//!
+//! // Scene load: compile the AOVs, classify every material lobe once.
+//! let aovs: Vec<(String, Lpe)> = ["directDiffuse", "indirectDiffuse", "emissive", "caustics"]
+//!     .iter()
+//!     .map(|name| (name.to_string(), parse(name).unwrap()))
+//!     .collect();
+//! let set = AovSet::compile(&aovs).unwrap();
+//! for w in set.warnings() {
+//!     eprintln!("warning: {w}");
+//! }
+//! let lobe = |ty, kind, n, group| {
+//!     set.classify(&Vertex::scatter(ty, Event::new(kind, n).unwrap(), Some(group)))
+//! };
+//! let floor_diffuse: Class = lobe(VertexType::R, EventKind::D, 2, "floor");
+//! let glass_specular: Class = lobe(VertexType::T, EventKind::S, 8, "glass");
+//! let camera = set.classify(&Vertex::camera());
+//! let key_light = set.classify(&Vertex::light(Some("key")));
+//!
+//! // Render threads: per path, one table step per vertex.
+//! let routed = std::thread::scope(|scope| {
+//!     let worker = scope.spawn(|| {
+//!         let mut routed = Vec::new();
+//!         let mut s = set.start();
+//!         s = set.step_class(s, camera);
+//!         for bounce in [floor_diffuse, glass_specular] {
+//!             s = set.step_class(s, bounce);
+//!             if set.is_dead(s) {
+//!                 break; // no AOV can match any continuation: stop tracking the path
+//!             }
+//!             // At each bounce the integrator samples the light; the state is `Copy`.
+//!             let hit = set.matches(set.step_class(s, key_light));
+//!             // ... accumulate the sample into AOV `set.names()[i]` for i in hit.iter()
+//!             routed.push(hit.iter().map(|i| set.names()[i].as_str()).collect::<Vec<_>>());
+//!         }
+//!         routed
+//!     });
+//!     worker.join().unwrap()
+//! });
+//! assert_eq!(routed, [vec!["directDiffuse"], vec!["indirectDiffuse", "caustics"]]);
+//! ```
+//!
+//! The formal side, on the same automata ([`analysis`]): emptiness warnings at compile
+//! time, equivalence and inclusion of two expressions, and partition checks of an AOV set,
+//! each with a shortest witness path.
 
 #![warn(missing_docs)]
 
