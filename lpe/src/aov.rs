@@ -108,9 +108,11 @@ pub struct Options {
     /// scratch). Over it, the set steps the bitset NFA. Default 16 MiB. `0` forces the
     /// NFA.
     pub dfa_budget: usize,
-    /// Most bytes the NFA's follow tables may take (`16 KiB * words^2` for states of
-    /// `words` 64-bit words). Over it, compilation fails. Default 16 MiB (about 2 000
-    /// positions).
+    /// Most bytes the NFA may take. It needs one follow row per position
+    /// (`positions^2 / 8` bytes; over the budget, compilation fails: about 11 000
+    /// positions at the default), and steps fast with per-byte tables of `16 KiB *
+    /// words^2` for states of `words` 64-bit words, built when they fit (about 2 000
+    /// positions); without them it only serves to build the DFA. Default 16 MiB.
     pub nfa_budget: usize,
     /// The longest path the caller will ever step, in vertices, if known. With it,
     /// `e{n,m}` with `m >= max_path_len` compiles as `e{n,}` (fewer positions, smaller
@@ -179,16 +181,16 @@ impl AovSet {
         let positions = aovs.iter().fold(1u64, |n, (_, l)| {
             n.saturating_add(nfa::positions(&l.expr, opts.max_path_len))
         });
-        let words = usize::try_from(positions.div_ceil(64)).unwrap_or(usize::MAX);
-        let table = words
-            .checked_mul(words)
-            .and_then(|w2| w2.checked_mul(nfa::table_bytes(1)));
-        if table.is_none_or(|t| t > opts.nfa_budget) {
+        // One follow row per position is the least the NFA needs: `positions^2 / 8`.
+        let rows = positions
+            .checked_mul(positions.div_ceil(64))
+            .and_then(|r| r.checked_mul(8));
+        if rows.is_none_or(|r| r > opts.nfa_budget as u64) {
             return Err(CompileError::TooLarge(format!(
-                "the set unrolls to {positions} NFA positions; its step tables would need {} \
+                "the set unrolls to {positions} NFA positions; its follow sets would need {} \
                  MiB, over the NFA budget of {} MiB (lower the repetition counts, or set \
                  `max_path_len` so long bounded repeats compile as unbounded)",
-                table.map_or("more than 2^64 bytes".into(), |t| (t >> 20).to_string()),
+                rows.map_or("more than 2^64 bytes".into(), |t| (t >> 20).to_string()),
                 opts.nfa_budget >> 20
             )));
         }
@@ -206,7 +208,7 @@ impl AovSet {
         labels.dedup();
         let alphabet = Alphabet::new(&builder.atoms, labels);
         let atoms: Vec<crate::ast::Atom> = builder.atoms.iter().map(|a| (*a).clone()).collect();
-        let nfa = Nfa::new(builder, parts, &alphabet);
+        let nfa = Nfa::new(builder, parts, &alphabet, opts.nfa_budget);
         let dfa = if opts.dfa_budget > 0 {
             Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget)
         } else {
@@ -483,6 +485,18 @@ mod tests {
             let c = big.classify(&Vertex::light(Some("zz")));
             let t = small.step_class(s, c);
             let _ = (small.matches(t), small.is_dead(t));
+        }
+    }
+
+    #[test]
+    fn sets_too_large_for_step_tables_still_get_a_dfa() {
+        // 2 302 positions: step tables would take 21 MiB, over the 16 MiB default; the
+        // DFA (a chain) is built by stepping follow rows instead.
+        let s = set(&["C(.{230}){10}L"], &Options::default());
+        assert!(s.uses_dfa());
+        for (n, want) in [(2300, true), (2299, false), (2301, false)] {
+            let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
+            assert_eq!(s.match_path(&p).contains(0), want, "{n}");
         }
     }
 

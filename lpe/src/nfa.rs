@@ -13,7 +13,9 @@
 //! tabulated per 8-bit chunk of the state (Navarro & Raffinot): one table row per
 //! `(chunk, byte value)`, so a step is one load-and-OR per byte of state, whatever the
 //! number of active positions. The tables cost `16 KiB * words^2` (`words` = 64-position
-//! words); [`crate::aov::Options::nfa_budget`] bounds them.
+//! words); [`crate::aov::Options::nfa_budget`] bounds them. A set too large for tables
+//! (thousands of positions) keeps only one follow row per position and ORs the rows of
+//! the active positions: slower, and used only to build its DFA.
 //!
 //! Many AOVs share one automaton: each keeps its own positions, and a final position
 //! names the AOV it ends ([`Nfa::matches`]).
@@ -199,8 +201,10 @@ pub(crate) struct Nfa {
     /// Positions, including the start (after dropping useless ones).
     pub positions: usize,
     /// `[(chunk * 256 + byte) * words ..][..words]`: union of the follow sets of the
-    /// positions set in `byte` of chunk `chunk`.
+    /// positions set in `byte` of chunk `chunk`. Empty when over the table budget.
     follow: Vec<u64>,
+    /// `[p * words ..][..words]`: the follow set of position `p`.
+    rows: Vec<u64>,
     /// `[class * words ..][..words]`: positions whose atom accepts the class.
     accept: Vec<u64>,
     /// Positions that end some AOV.
@@ -256,7 +260,12 @@ impl Nfa {
     /// Tabulates a finished construction. Positions that cannot be reached from the start
     /// or cannot reach a final position are dropped: they never change an answer, and
     /// dropping them makes [`Nfa::is_dead`] exact and the DFA smaller.
-    pub(crate) fn new(builder: Builder<'_>, parts: Parts, alphabet: &Alphabet) -> Nfa {
+    pub(crate) fn new(
+        builder: Builder<'_>,
+        parts: Parts,
+        alphabet: &Alphabet,
+        table_budget: usize,
+    ) -> Nfa {
         let Builder {
             atom_of,
             mut follow,
@@ -322,7 +331,11 @@ impl Nfa {
             }
         }
         // Chunk tables: entry `b` is entry `b` without its lowest bit, plus that bit's row.
-        let chunks = words * 8;
+        let chunks = if table_bytes(words) <= table_budget {
+            words * 8
+        } else {
+            0
+        };
         let mut table = vec![0u64; chunks * 256 * words];
         for chunk in 0..chunks {
             for b in 1..256usize {
@@ -369,6 +382,7 @@ impl Nfa {
             words,
             positions,
             follow: table,
+            rows,
             accept,
             finals,
             aov_of: new_aov_of,
@@ -394,17 +408,27 @@ impl Nfa {
     fn step_width(&self, cur: &[u64], class: usize, next: &mut [u64], w: usize) {
         let (cur, next) = (&cur[..w], &mut next[..w]);
         next.fill(0);
-        for (i, &word) in cur.iter().enumerate() {
-            if word == 0 {
-                continue;
-            }
-            // One row per byte, zero bytes included: a load is cheaper than a branch
-            // that mispredicts.
-            for byte in 0..8 {
-                let b = (word >> (8 * byte)) as usize & 0xff;
-                let row = &self.follow[((i * 8 + byte) * 256 + b) * w..][..w];
+        if self.follow.is_empty() {
+            // No tables (a very large set): the rows of the active positions.
+            for p in ones(cur) {
+                let row = self.rows.get(p * w..(p + 1) * w).unwrap_or(&[]);
                 for (n, r) in next.iter_mut().zip(row) {
                     *n |= r;
+                }
+            }
+        } else {
+            for (i, &word) in cur.iter().enumerate() {
+                if word == 0 {
+                    continue;
+                }
+                // One row per byte, zero bytes included: a load is cheaper than a branch
+                // that mispredicts.
+                for byte in 0..8 {
+                    let b = (word >> (8 * byte)) as usize & 0xff;
+                    let row = &self.follow[((i * 8 + byte) * 256 + b) * w..][..w];
+                    for (n, r) in next.iter_mut().zip(row) {
+                        *n |= r;
+                    }
                 }
             }
         }
@@ -434,10 +458,7 @@ impl Nfa {
 
     /// The follow set of one position.
     pub(crate) fn follow_of(&self, p: usize) -> &[u64] {
-        let w = self.words;
-        let chunk = p / 8;
-        let b = 1usize << (p % 8);
-        &self.follow[(chunk * 256 + b) * w..][..w]
+        &self.rows[p * self.words..][..self.words]
     }
 
     /// The AOV position `p` ends, if it is final.
@@ -446,7 +467,7 @@ impl Nfa {
     }
 
     pub(crate) fn memory_bytes(&self) -> usize {
-        (self.follow.len() + self.accept.len() + self.finals.len()) * 8
+        (self.follow.len() + self.rows.len() + self.accept.len() + self.finals.len()) * 8
             + (self.aov_of.len() + self.atom_of.len()) * 4
     }
 
