@@ -452,6 +452,19 @@ mod tests {
     }
 
     #[test]
+    fn atoms_matching_nothing_make_the_state_dead_in_both_modes() {
+        for opts in [Options::default(), nfa_only()] {
+            let s = set(&["CR<CD>L", "C<L.'a'>"], &opts);
+            let st = s.step(s.start(), &Vertex::camera());
+            assert!(!s.is_dead(st));
+            // After `C R`, only `<CD>` could follow, and it matches no vertex.
+            let p: Path = "C RD L".parse().unwrap();
+            let st = s.step(st, &p.vertices()[1]);
+            assert!(s.is_dead(st));
+        }
+    }
+
+    #[test]
     fn over_budget_falls_back_to_the_nfa() {
         // 2^21 subsets: far over a 1 MiB budget.
         let s = set(

@@ -17,6 +17,9 @@ use crate::fxhash::FxMap;
 use crate::aov::AovMask;
 use crate::nfa::Nfa;
 
+/// Hashing work (state x class visits) minimization may spend before giving up.
+const MAX_MINIMIZE_WORK: usize = 20_000_000;
+
 /// A dense, minimized DFA.
 #[derive(Clone, Debug)]
 pub(crate) struct Dfa {
@@ -100,7 +103,18 @@ impl Dfa {
         };
         let mut count = block.iter().max().map_or(0, |&b| b + 1);
         let mut sig = Vec::with_capacity(classes + 1);
+        // Moore's algorithm takes as many rounds as the longest chain of states it must
+        // tell apart (`C.{2000}L` needs 2 000 rounds over 2 000 states). Past this much
+        // work, keep the DFA unminimized: it is as correct, only larger, and the dead
+        // state stays exact because the NFA keeps only positions that can lead to a match.
+        let mut work = 0usize;
         loop {
+            work += n * (classes + 1);
+            if work > MAX_MINIMIZE_WORK {
+                block = (0..n as u32).collect();
+                count = n as u32;
+                break;
+            }
             let mut by_sig: FxMap<Vec<u32>, u32> = FxMap::default();
             let refined: Vec<u32> = (0..n)
                 .map(|s| {

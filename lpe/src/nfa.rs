@@ -282,12 +282,23 @@ impl Nfa {
             }
         }
         // Keep positions reachable from the start and co-reachable to a final.
+        // A position whose atom accepts no vertex (`<CD>`) is never entered: leave it
+        // out of the search, so that every kept position can really lead to a match and
+        // the empty set is the only dead state, minimized or not.
+        let live_pos: Vec<bool> = atom_of
+            .iter()
+            .map(|&a| {
+                a != u32::MAX
+                    && (0..alphabet.class_count()).any(|c| alphabet.accepts(c, a as usize))
+            })
+            .collect();
+        let live = |q: u32| live_pos[q as usize];
         let mut reach = vec![false; n];
         reach[0] = true;
         let mut stack = vec![0usize];
         while let Some(p) = stack.pop() {
             for &q in &follow[p] {
-                if !std::mem::replace(&mut reach[q as usize], true) {
+                if live(q) && !std::mem::replace(&mut reach[q as usize], true) {
                     stack.push(q as usize);
                 }
             }
@@ -299,13 +310,15 @@ impl Nfa {
             }
         }
         let mut coreach = vec![false; n];
-        let mut stack: Vec<usize> = (1..n).filter(|&p| aov_of[p] != u32::MAX).collect();
+        let mut stack: Vec<usize> = (1..n)
+            .filter(|&p| aov_of[p] != u32::MAX && live(p as u32))
+            .collect();
         for &p in &stack {
             coreach[p] = true;
         }
         while let Some(q) = stack.pop() {
             for &p in &preds[q] {
-                if !std::mem::replace(&mut coreach[p as usize], true) {
+                if (p == 0 || live(p)) && !std::mem::replace(&mut coreach[p as usize], true) {
                     stack.push(p as usize);
                 }
             }
