@@ -462,6 +462,10 @@ mod tests {
         assert!(c.equivalent());
         let c = compare(&lpe("CD|(SD)L"), &lpe("C(D|(SD))L")).unwrap();
         assert!(c.equivalent());
+        // `|` binds only its neighbours: `C(D|SD)L` is `C(D|S)DL`.
+        let c = compare(&lpe("CD|(SD)L"), &lpe("C(D|SD)L")).unwrap();
+        assert_eq!(c.first_only.unwrap().to_string(), "C RD1 L");
+        assert_eq!(c.second_only.unwrap().to_string(), "C RD1 RD1 L");
         let c = compare(&lpe("C.+L"), &lpe("C.*L")).unwrap();
         assert_eq!(c.first_only, None);
         assert_eq!(c.second_only.unwrap().to_string(), "C L");
