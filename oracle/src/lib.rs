@@ -1,7 +1,9 @@
 //! Engines, differential checking and the `lpe-check` command line.
 //!
 //! [`engine`] puts every matcher behind one trait so the CLI and the harness run them
-//! side by side on the same inputs.
+//! side by side on the same inputs; [`regex_oracle`] is the second, independent engine
+//! (LPE -> regex-automata).
 
 pub mod cli;
 pub mod engine;
+pub mod regex_oracle;
