@@ -89,7 +89,7 @@ pub fn translate(exprs: &[Lpe]) -> Result<(Labels, Vec<Hir>), EngineError> {
 
 /// The compiled automaton: dense when it fits, lazy otherwise.
 enum Searcher {
-    Dense(dense::DFA<Vec<u32>>),
+    Dense(Box<dense::DFA<Vec<u32>>>),
     Lazy(Box<hybrid::dfa::DFA>, RefCell<hybrid::dfa::Cache>),
 }
 
@@ -121,7 +121,7 @@ impl Oracle {
             )
             .build_from_nfa(&nfa);
         let dfa = match dense {
-            Ok(d) => Searcher::Dense(d),
+            Ok(d) => Searcher::Dense(Box::new(d)),
             Err(e) if e.is_size_limit_exceeded() => {
                 let lazy = hybrid::dfa::Builder::new()
                     .configure(
