@@ -90,7 +90,7 @@ pub fn translate(exprs: &[Lpe]) -> Result<(Labels, Vec<Hir>), EngineError> {
 /// The compiled automaton: dense when it fits, lazy otherwise.
 enum Searcher {
     Dense(Box<dense::DFA<Vec<u32>>>),
-    Lazy(Box<hybrid::dfa::DFA>, RefCell<hybrid::dfa::Cache>),
+    Lazy(Box<(hybrid::dfa::DFA, RefCell<hybrid::dfa::Cache>)>),
 }
 
 struct OracleMatcher {
@@ -135,7 +135,7 @@ impl Oracle {
                     .build_from_nfa(nfa)
                     .map_err(|e| EngineError::CannotBuild(format!("lazy DFA: {e}")))?;
                 let cache = RefCell::new(lazy.create_cache());
-                Searcher::Lazy(Box::new(lazy), cache)
+                Searcher::Lazy(Box::new((lazy, cache)))
             }
             Err(e) => return Err(EngineError::CannotBuild(format!("DFA: {e}"))),
         };
@@ -157,7 +157,8 @@ impl Matcher for OracleMatcher {
         let mut set = PatternSet::new(self.patterns);
         let searched = match &self.dfa {
             Searcher::Dense(d) => d.try_which_overlapping_matches(&input, &mut set),
-            Searcher::Lazy(d, cache) => {
+            Searcher::Lazy(lazy) => {
+                let (d, cache) = &**lazy;
                 d.try_which_overlapping_matches(&mut cache.borrow_mut(), &input, &mut set)
             }
         };
