@@ -5,5 +5,6 @@
 //! (LPE -> regex-automata).
 
 pub mod cli;
+pub mod differential;
 pub mod engine;
 pub mod regex_oracle;
