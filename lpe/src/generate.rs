@@ -146,7 +146,9 @@ fn label(c: &mut impl Choices, cfg: &Config) -> String {
 }
 
 fn vertex_type(c: &mut impl Choices) -> VertexType {
-    *c.pick(&VertexType::ALL)
+    // R and T three times as often: most of a path is scattering vertices.
+    use VertexType::*;
+    *c.pick(&[C, R, R, R, T, T, T, L, O])
 }
 
 fn event_pattern(c: &mut impl Choices) -> EventPattern {
@@ -297,14 +299,14 @@ fn expr_in(c: &mut impl Choices, cfg: &Config, depth: usize, budget: &mut usize)
 
 /// An atom that can match the camera vertex.
 fn start_atom(c: &mut impl Choices, cfg: &Config) -> Atom {
-    match c.below(6) {
-        0..=2 => Atom::Item(Item::Type(VertexType::C)),
-        3 => Atom::Item(Item::Triple(Triple {
+    match c.below(10) {
+        0..=5 => Atom::Item(Item::Type(VertexType::C)),
+        6 => Atom::Item(Item::Triple(Triple {
             ty: TypePos::One(VertexType::C),
             event: EventPos::Any,
             label: LabelPos::Any,
         })),
-        4 => Atom::Class {
+        7 | 8 => Atom::Class {
             negated: false,
             items: vec![Item::Type(VertexType::C), item(c, cfg)],
         },
@@ -364,10 +366,10 @@ pub fn path_shaped_expr(c: &mut impl Choices, cfg: &Config) -> Expr {
     Expr::concat(vec![start, expr(c, &inner), end])
 }
 
-/// Random prefixes plus [`path_shaped_expr`] (or, one time in four, [`expr`]).
+/// Random prefixes plus [`path_shaped_expr`] (or, one time in ten, [`expr`]).
 pub fn lpe(c: &mut impl Choices, cfg: &Config) -> Lpe {
     let prefixes: Prefixes = (0..c.below(3)).map(|_| *c.pick(&Prefix::ALL)).collect();
-    let expr = if c.chance(75) {
+    let expr = if c.chance(90) {
         path_shaped_expr(c, cfg)
     } else {
         expr(c, cfg)
@@ -482,14 +484,43 @@ fn vertex_for_item(item: &Item, c: &mut impl Choices, cfg: &Config) -> Vertex {
     }
 }
 
-fn vertex_for_atom(a: &Atom, c: &mut impl Choices, cfg: &Config) -> Vertex {
+/// Whether `item` can aim at a vertex of a type in `want`.
+fn can_be(item: &Item, want: &[VertexType]) -> bool {
+    match item {
+        Item::Type(t) => want.contains(t),
+        Item::Event(_) | Item::Any | Item::Label(_) => want.iter().any(|t| t.is_scattering()),
+        Item::Triple(t) => match &t.ty {
+            TypePos::Any => want.iter().any(|t| t.is_scattering()),
+            TypePos::One(ty) => want.contains(ty),
+            TypePos::Class {
+                negated: false,
+                types,
+            } => types.iter().any(|t| want.contains(t)),
+            TypePos::Class { negated: true, .. } => want.iter().any(|t| t.is_scattering()),
+        },
+    }
+}
+
+/// A vertex aimed at `a`; `first` says it will be the path's first vertex, so a class
+/// aims at an item that can be the camera (and otherwise at one that can scatter).
+fn vertex_for_atom(a: &Atom, first: bool, c: &mut impl Choices, cfg: &Config) -> Vertex {
     match a {
         Atom::Item(i) => vertex_for_item(i, c, cfg),
         Atom::Class {
             negated: false,
             items,
         } => {
-            let i = c.pick(items).clone();
+            let want: &[VertexType] = if first {
+                &[VertexType::C]
+            } else {
+                &[VertexType::R, VertexType::T]
+            };
+            let fitting: Vec<&Item> = items.iter().filter(|i| can_be(i, want)).collect();
+            let i = if fitting.is_empty() || c.chance(10) {
+                c.pick(items).clone()
+            } else {
+                (*c.pick(&fitting)).clone()
+            };
             vertex_for_item(&i, c, cfg)
         }
         // `.` minus the items: any transport vertex, hoping to miss the items.
@@ -505,7 +536,8 @@ fn walk(e: &Expr, c: &mut impl Choices, cfg: &Config, out: &mut Vec<Vertex>) -> 
     }
     match e {
         Expr::Atom(a) => {
-            out.push(vertex_for_atom(a, c, cfg));
+            let first = out.is_empty();
+            out.push(vertex_for_atom(a, first, c, cfg));
             true
         }
         Expr::Concat(es) => es.iter().all(|e| walk(e, c, cfg, out)),
@@ -514,7 +546,9 @@ fn walk(e: &Expr, c: &mut impl Choices, cfg: &Config, out: &mut Vec<Vertex>) -> 
             walk(e, c, cfg, out)
         }
         Expr::Repeat(body, r) => {
-            let extra_max = r.max.map_or(3, |m| (m.saturating_sub(r.min)).min(3));
+            // Few extra iterations: nested quantifiers multiply, and a path over
+            // `max_path_len` is wasted.
+            let extra_max = r.max.map_or(2, |m| (m.saturating_sub(r.min)).min(2));
             let n = r.min as usize + c.below(extra_max as usize + 1);
             (0..n).all(|_| walk(body, c, cfg, out))
         }
@@ -629,13 +663,17 @@ pub fn near_miss(path: &Path, c: &mut impl Choices, cfg: &Config) -> Path {
     Path::new(v).expect("mutations keep the camera first and the emitter last")
 }
 
-/// A path aimed at `expr`: half the time a walk of it, a third of the time a near miss
-/// of such a walk, otherwise (and whenever the walk fails) uniform.
+/// A path aimed at `expr`: 65% a walk of it, 25% a near miss of such a walk, otherwise
+/// (and whenever the walk fails) uniform.
 pub fn biased_path(expr: &Expr, c: &mut impl Choices, cfg: &Config) -> Path {
     let roll = c.below(100);
-    if roll < 85 {
-        if let Some(p) = matching_path(expr, c, cfg) {
-            return if roll < 50 { p } else { near_miss(&p, c, cfg) };
+    if roll < 90 {
+        // A walk can fail (an alternative that cannot start a path, say); retry a few
+        // times before settling for noise.
+        for _ in 0..4 {
+            if let Some(p) = matching_path(expr, c, cfg) {
+                return if roll < 65 { p } else { near_miss(&p, c, cfg) };
+            }
         }
     }
     uniform_path(c, cfg)

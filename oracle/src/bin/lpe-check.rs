@@ -23,11 +23,14 @@ enum Command {
     Parse(cli::parse::Args),
     /// Match an expression against paths (or `--batch` lines from stdin) with every engine.
     Match(cli::matching::Args),
+    /// Run every engine on generated cases; print minimized disagreements (exit 3).
+    Diff(cli::diff::Args),
 }
 
 fn main() -> ExitCode {
     match Cli::parse().command {
         Command::Parse(a) => cli::parse::run(a),
         Command::Match(a) => cli::matching::run(a),
+        Command::Diff(a) => cli::diff::run(a),
     }
 }

@@ -1,5 +1,6 @@
 //! Subcommands of `lpe-check`, one module each; the binary only dispatches.
 
+pub mod diff;
 pub mod matching;
 pub mod parse;
 
