@@ -7,4 +7,5 @@
 pub mod cli;
 pub mod differential;
 pub mod engine;
+pub mod fuzzing;
 pub mod regex_oracle;
