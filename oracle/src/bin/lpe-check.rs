@@ -28,9 +28,21 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    match Cli::parse().command {
-        Command::Parse(a) => cli::parse::run(a),
-        Command::Match(a) => cli::matching::run(a),
-        Command::Diff(a) => cli::diff::run(a),
+    let cli = Cli::parse();
+    // The reference matcher recurses a few frames per path vertex: give it room for
+    // paths far longer than any renderer records.
+    let worker = std::thread::Builder::new()
+        .stack_size(512 << 20)
+        .spawn(move || match cli.command {
+            Command::Parse(a) => cli::parse::run(a),
+            Command::Match(a) => cli::matching::run(a),
+            Command::Diff(a) => cli::diff::run(a),
+        });
+    match worker.map(|w| w.join()) {
+        Ok(Ok(code)) => code,
+        _ => {
+            eprintln!("error: internal failure (please report it with the input)");
+            ExitCode::from(101)
+        }
     }
 }
