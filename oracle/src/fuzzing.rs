@@ -27,7 +27,10 @@ pub fn parse(data: &[u8]) {
     let printed = lpe.to_string();
     let again = lpe::parse(&printed)
         .unwrap_or_else(|e| panic!("`{text}` printed as `{printed}`, which does not parse: {e}"));
-    assert_eq!(again, lpe, "`{text}` printed as `{printed}` parses differently");
+    assert_eq!(
+        again, lpe,
+        "`{text}` printed as `{printed}` parses differently"
+    );
     assert_eq!(again.to_string(), printed, "printing is not stable");
 }
 
@@ -41,7 +44,10 @@ pub fn path_text(data: &[u8]) {
     let again: Path = printed
         .parse()
         .unwrap_or_else(|e| panic!("`{text}` printed as `{printed}`, which does not parse: {e}"));
-    assert_eq!(again, path, "`{text}` printed as `{printed}` parses differently");
+    assert_eq!(
+        again, path,
+        "`{text}` printed as `{printed}` parses differently"
+    );
 }
 
 fn paths_for(exprs: &[Lpe], u: &mut Unstructured<'_>, cfg: &Config) -> Vec<Path> {

@@ -6,7 +6,9 @@
 use std::path::PathBuf;
 
 fn replay(kind: &str) -> usize {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../fuzz").join(kind);
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../fuzz")
+        .join(kind);
     let Ok(targets) = std::fs::read_dir(&root) else {
         return 0;
     };
