@@ -108,6 +108,11 @@ pub struct Config {
     pub max_count: u32,
     /// Most vertices in a generated path.
     pub max_path_len: usize,
+    /// Most atom positions a quantified subtree may unroll to ([`Expr::positions`]); a
+    /// count that would exceed it is replaced by `*`. Keeps generated expressions within
+    /// the parser's limit (65 536 by default, so that their canonical text parses) and
+    /// cheap to compile.
+    pub max_positions: u64,
     /// Labels expressions and paths share (no `'`). Paths also use one label that no
     /// expression mentions, [`Config::stranger`].
     pub labels: Vec<String>,
@@ -122,6 +127,7 @@ impl Default for Config {
             max_depth: 4,
             max_count: 256,
             max_path_len: 12,
+            max_positions: 2048,
             labels: ["key", "fill", "floor", "a b", "", "é"]
                 .map(str::to_string)
                 .to_vec(),
@@ -292,7 +298,11 @@ fn expr_in(c: &mut impl Choices, cfg: &Config, depth: usize, budget: &mut usize)
         }
         _ => {
             let body = expr_in(c, cfg, depth - 1, budget);
-            Expr::Repeat(Box::new(body), repetition(c, cfg))
+            let mut r = repetition(c, cfg);
+            if body.positions().saturating_mul(r.copies()) > cfg.max_positions {
+                r = Repetition::STAR;
+            }
+            Expr::Repeat(Box::new(body), r)
         }
     }
 }
@@ -717,7 +727,7 @@ mod tests {
     fn generated_expressions_are_normalized_and_bounded() {
         let cfg = Config::default();
         let mut rng = Rng::new(7);
-        for _ in 0..2000 {
+        for _ in 0..20_000 {
             let e = if rng.chance(50) {
                 expr(&mut rng, &cfg)
             } else {
@@ -726,6 +736,11 @@ mod tests {
             let mut atoms = 0;
             e.for_each_atom(&mut |_| atoms += 1);
             assert!(atoms <= cfg.max_atoms + 2, "{e}: {atoms} atoms");
+            // At most `max_atoms` repeats, each unrolling to at most `max_positions`.
+            assert!(
+                e.positions() <= (cfg.max_atoms as u64 + 2) * cfg.max_positions,
+                "{e}"
+            );
             let text = e.to_string();
             let back = crate::parse(&text).unwrap_or_else(|err| panic!("{text}: {err}"));
             assert_eq!(back.expr, e, "{text}");

@@ -64,7 +64,11 @@ fn agree(exprs: &[Lpe], paths: &[Path]) {
     // The expression must survive its own canonical text, or the counterexample printed
     // below would not reproduce.
     for e in exprs {
-        debug_assert_eq!(lpe::parse(&e.to_string()).ok().as_ref(), Some(e));
+        let text = e.to_string();
+        match lpe::parse(&text) {
+            Ok(back) => assert_eq!(&back, e, "`{text}` parses to another expression"),
+            Err(err) => panic!("generated `{text}` does not parse: {err}"),
+        }
     }
     if let Outcome::Disagree(c) = differential::check_set(exprs, paths) {
         panic!("{c}");
