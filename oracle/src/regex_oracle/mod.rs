@@ -259,6 +259,31 @@ mod tests {
         assert!(!m("C<.[^D]>L", "C RU3 L"));
         assert!(m("C<[^R]>L", "C TD L"));
         assert!(!m("C<[^R]>L", "C RD L"));
+        // A label no expression mentions shares the "other" byte: it is not 'a', and
+        // it is a label (so `<L.'a'>` and `'a'` do not match it).
+        assert!(m("C<R.[^'a']>L", "C RD'zzz' L"));
+        assert!(!m("C'a'L", "C RD'zzz' L"));
+        assert!(!m("C<L.'a'>", "C L'zzz'"));
+        assert!(m("C<L.[^'a']>", "C L"));
+        // Event position `.` on an emitter means "no event": `<L.>` matches a light.
+        assert!(m("C<L.>", "C L'k'"));
+        assert!(!m("C<LD>", "C L"));
+    }
+
+    #[test]
+    fn too_many_labels_is_a_typed_refusal() {
+        let labels: String = (0..encode::MAX_LABELS + 1)
+            .map(|i| format!("'l{i}'"))
+            .collect();
+        let lpe = lpe::parse(&format!("C[{labels}]L")).unwrap();
+        let r = ORACLE.compile(std::slice::from_ref(&lpe));
+        assert!(matches!(r, Err(EngineError::CannotBuild(_))));
+        // One fewer fits, and the last label still gets its own byte.
+        let labels: String = (0..encode::MAX_LABELS).map(|i| format!("'l{i}'")).collect();
+        let lpe = lpe::parse(&format!("C[{labels}]L")).unwrap();
+        let last = format!("C RD'l{}' L", encode::MAX_LABELS - 1);
+        assert!(is_match(&lpe, &last.parse().unwrap()).unwrap());
+        assert!(!is_match(&lpe, &"C RD'other' L".parse().unwrap()).unwrap());
     }
 
     #[test]
