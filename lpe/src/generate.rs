@@ -747,6 +747,27 @@ mod tests {
         }
     }
 
+    /// Always the last option: the deepest nesting of the largest counts.
+    struct Greedy;
+
+    impl Choices for Greedy {
+        fn below(&mut self, n: usize) -> usize {
+            n.saturating_sub(1)
+        }
+    }
+
+    /// Regression (fuzz/regressions/differential/nested-counts-over-position-limit):
+    /// nested large counts once unrolled past the parser's limit, so the printed
+    /// expression did not parse back.
+    #[test]
+    fn nested_large_counts_stay_within_the_parser_limit() {
+        let cfg = Config::default();
+        let e = expr(&mut Greedy, &cfg);
+        assert!(matches!(e, Expr::Repeat(..)), "{e}");
+        assert!(e.positions() <= cfg.max_positions, "{e}");
+        assert_eq!(crate::parse(&e.to_string()).unwrap().expr, e);
+    }
+
     #[test]
     fn same_seed_same_cases() {
         let cfg = Config::default();
