@@ -540,6 +540,32 @@ fn vertex_for_atom(a: &Atom, first: bool, c: &mut impl Choices, cfg: &Config) ->
     }
 }
 
+/// The walk picks from every list; an AST built by hand may have an empty one (the
+/// parser and these generators never do), which has nothing to aim at.
+fn has_no_empty_lists(e: &Expr) -> bool {
+    fn item_ok(i: &Item) -> bool {
+        let Item::Triple(t) = i else { return true };
+        !matches!(&t.ty, TypePos::Class { types, .. } if types.is_empty())
+            && !matches!(&t.event, EventPos::Class { events, .. } if events.is_empty())
+            && !matches!(&t.label, LabelPos::Class { labels, .. } if labels.is_empty())
+    }
+    let mut ok = true;
+    e.for_each_atom(&mut |a| {
+        ok &= match a {
+            Atom::Item(i) => item_ok(i),
+            Atom::Class { items, .. } => !items.is_empty() && items.iter().all(item_ok),
+        }
+    });
+    fn lists(e: &Expr) -> bool {
+        match e {
+            Expr::Atom(_) => true,
+            Expr::Concat(es) | Expr::Alt(es) => !es.is_empty() && es.iter().all(lists),
+            Expr::Repeat(b, _) => lists(b),
+        }
+    }
+    ok && lists(e)
+}
+
 fn walk(e: &Expr, c: &mut impl Choices, cfg: &Config, out: &mut Vec<Vertex>) -> bool {
     if out.len() > cfg.max_path_len {
         return false;
@@ -569,6 +595,9 @@ fn walk(e: &Expr, c: &mut impl Choices, cfg: &Config, out: &mut Vec<Vertex>) -> 
 /// each `|` and a count for each quantifier. `None` when the walk does not give a
 /// well-formed path (not camera first, too long, …).
 pub fn matching_path(expr: &Expr, c: &mut impl Choices, cfg: &Config) -> Option<Path> {
+    if !has_no_empty_lists(expr) {
+        return None;
+    }
     let mut out = Vec::new();
     if !walk(expr, c, cfg, &mut out) || out.len() > cfg.max_path_len {
         return None;
@@ -766,6 +795,24 @@ mod tests {
         assert!(matches!(e, Expr::Repeat(..)), "{e}");
         assert!(e.positions() <= cfg.max_positions, "{e}");
         assert_eq!(crate::parse(&e.to_string()).unwrap().expr, e);
+    }
+
+    #[test]
+    fn hand_built_empty_lists_give_no_walk_instead_of_a_panic() {
+        let cfg = Config::default();
+        let empty_alt = Expr::Concat(vec![
+            Expr::Atom(Atom::Item(Item::Type(VertexType::C))),
+            Expr::Alt(vec![]),
+        ]);
+        let empty_class = Expr::Atom(Atom::Class {
+            negated: false,
+            items: vec![],
+        });
+        for e in [empty_alt, empty_class] {
+            assert_eq!(matching_path(&e, &mut Rng::new(1), &cfg), None);
+            // biased_path falls back to noise.
+            assert!(biased_path(&e, &mut Rng::new(1), &cfg).len() >= 2);
+        }
     }
 
     #[test]
