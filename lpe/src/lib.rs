@@ -95,6 +95,8 @@ pub mod path;
 pub mod prefix;
 pub mod syntax;
 
+#[cfg(any(feature = "arbitrary", feature = "proptest"))]
+pub mod generate;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 

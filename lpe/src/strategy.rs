@@ -3,6 +3,9 @@
 //! Exported so a renderer can property-test its own matcher against these ASTs. The
 //! ASTs are normalized (see [`crate::ast`]) so they print and re-parse to themselves.
 //! Labels come from a small pool so that expressions and paths share them.
+//!
+//! To test your own matcher against the reference, draw an [`aov_expr`] (or [`expr`])
+//! and then [`biased_paths`] for it, and compare answers on each path.
 
 use proptest::prelude::*;
 
@@ -148,4 +151,69 @@ pub fn path(max_len: usize) -> impl Strategy<Value = Path> {
             v.push(end);
             Path::new(v).expect("generated paths are valid")
         })
+}
+
+/// An atom that can match the camera vertex (the start of an AOV-like expression).
+fn start_atom() -> impl Strategy<Value = Expr> {
+    prop_oneof![
+        3 => Just(Expr::Atom(Atom::Item(Item::Type(VertexType::C)))),
+        1 => atom().prop_map(|a| Expr::Atom(Atom::Class {
+            negated: false,
+            items: match a {
+                Atom::Item(i) => vec![Item::Type(VertexType::C), i],
+                Atom::Class { items, .. } => {
+                    let mut v = vec![Item::Type(VertexType::C)];
+                    v.extend(items);
+                    v
+                }
+            }
+        })),
+    ]
+}
+
+/// An atom that can match an emitter (the end of an AOV-like expression).
+fn end_atom() -> impl Strategy<Value = Expr> {
+    let light = |label| {
+        Item::Triple(Triple {
+            ty: TypePos::One(VertexType::L),
+            event: EventPos::Any,
+            label,
+        })
+    };
+    prop_oneof![
+        Just(Atom::Item(Item::Type(VertexType::L))),
+        Just(Atom::Item(Item::Type(VertexType::O))),
+        Just(Atom::Class {
+            negated: false,
+            items: vec![light(LabelPos::Any), Item::Type(VertexType::O)],
+        }),
+        label().prop_map(move |l| Atom::Item(light(LabelPos::One(l)))),
+    ]
+    .prop_map(Expr::Atom)
+}
+
+/// An AOV-shaped expression: camera-ish start, a random [`expr`] middle, emitter-ish
+/// end. Unlike a fully random expression it matches a fair share of the paths
+/// [`biased_paths`] generates for it, so comparisons are not all "no match".
+pub fn aov_expr() -> impl Strategy<Value = Expr> {
+    (start_atom(), expr(), end_atom()).prop_map(|(s, m, e)| Expr::Concat(vec![s, m, e]))
+}
+
+/// `n` paths aimed at `expr` (walks, near misses, noise: see
+/// [`crate::generate::biased_path`]), drawn from a seed.
+///
+/// The seed does not shrink meaningfully; pair this with an expression strategy, whose
+/// shrinking does the work, or with a minimizer such as the differential harness's.
+pub fn biased_paths(expr: &Expr, n: usize) -> impl Strategy<Value = Vec<Path>> {
+    let expr = expr.clone();
+    any::<u64>().prop_map(move |seed| {
+        let cfg = crate::generate::Config {
+            labels: LABELS.map(str::to_string).to_vec(),
+            ..crate::generate::Config::default()
+        };
+        let mut rng = crate::generate::Rng::new(seed);
+        (0..n)
+            .map(|_| crate::generate::biased_path(&expr, &mut rng, &cfg))
+            .collect()
+    })
 }

@@ -121,7 +121,7 @@ impl Engine for BitsetNfa {
 
 /// Every available engine, reference first.
 pub fn all() -> Vec<&'static dyn Engine> {
-    vec![&Reference, &Fast, &BitsetNfa]
+    vec![&Reference, &crate::regex_oracle::ORACLE, &Fast, &BitsetNfa]
 }
 
 /// The engine called `name`, if available.

@@ -111,3 +111,29 @@ fn ini_macros_are_usable() {
     assert_eq!(code, 0, "{err}");
     assert_eq!(out, "match\nno-match\n");
 }
+
+#[test]
+fn diff_reports_rate_and_agreement_and_is_deterministic() {
+    let args = ["diff", "--cases", "300", "--seed", "11"];
+    let (code, out, err) = lpe_check(&args, "");
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("300 cases"), "{out}");
+    assert!(out.contains("match rate: "), "{out}");
+    assert!(out.contains("all engines agree"), "{out}");
+    // Same seed, same cases: the counts line (minus timing) repeats exactly.
+    let counts = |o: &str| {
+        o.lines()
+            .find(|l| l.starts_with("match rate"))
+            .unwrap()
+            .to_string()
+    };
+    let (_, again, _) = lpe_check(&args, "");
+    assert_eq!(counts(&out), counts(&again));
+}
+
+#[test]
+fn diff_needs_two_engines() {
+    let (code, _, err) = lpe_check(&["diff", "--engine", "reference", "--cases", "1"], "");
+    assert_eq!(code, 2);
+    assert!(err.contains("at least two engines"), "{err}");
+}

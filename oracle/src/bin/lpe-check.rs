@@ -29,6 +29,8 @@ enum Command {
     Partition(cli::partition::Args),
     /// Benchmark the matchers (fast DFA/NFA, regex-automata, reference) as a table.
     Bench(cli::bench::Args),
+    /// Run every engine on generated cases; print minimized disagreements (exit 3).
+    Diff(cli::diff::Args),
 }
 
 fn main() -> ExitCode {
@@ -43,6 +45,7 @@ fn main() -> ExitCode {
             Command::Equiv(a) => cli::equiv::run(a),
             Command::Partition(a) => cli::partition::run(a),
             Command::Bench(a) => cli::bench::run(a),
+            Command::Diff(a) => cli::diff::run(a),
         });
     match worker.map(|w| w.join()) {
         Ok(Ok(code)) => code,
