@@ -9,6 +9,7 @@
 //! report), [`check`] (invariants).
 
 pub mod aovs;
+pub mod app;
 pub mod camera;
 pub mod check;
 pub mod film;

@@ -1,1 +1,333 @@
-fn main() {}
+//! `lpe-render`: render a scene into beauty + LPE AOVs, check invariants, write EXR,
+//! PNGs and a report. `lpe-render check` runs the invariant suite on small renders;
+//! `lpe-render bench` measures what LPE tracking costs.
+//!
+//! Exit status: 0 success, 1 an invariant failed, 2 bad input.
+
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+
+use lpe_render::aovs::{parse_display_channels, split_aov_arg, AovList};
+use lpe_render::app;
+use lpe_render::check::Invariant;
+use lpe_render::integrator::Settings;
+use lpe_render::output::{self, AovEntry, Report, Timing};
+use lpe_render::scene::Scene;
+
+#[derive(Parser)]
+#[command(name = "lpe-render", version, about = "Path tracer routing light paths into LPE AOVs")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run the invariant suite on small renders of the built-in scenes (CI).
+    Check {
+        #[arg(long, value_parser = positive_usize)]
+        threads: Option<usize>,
+    },
+    /// Measure the cost of LPE tracking: 32 AOVs vs beauty only, same run.
+    Bench {
+        #[arg(long, default_value = "cornell")]
+        scene: String,
+        #[arg(long, default_value_t = 8, value_parser = positive_u32)]
+        spp: u32,
+        #[arg(long, default_value = "128x128", value_parser = parse_res)]
+        res: (usize, usize),
+        #[arg(long, value_parser = positive_usize)]
+        threads: Option<usize>,
+        /// Alternating rounds; the best time of each configuration counts.
+        #[arg(long, default_value_t = 3, value_parser = positive_usize)]
+        rounds: usize,
+    },
+}
+
+#[derive(Args)]
+struct RenderArgs {
+    /// Built-in scene (cornell, still-life, furnace) or a TOML scene file.
+    #[arg(long, default_value = "cornell")]
+    scene: String,
+    /// Samples per pixel.
+    #[arg(long, default_value_t = 32, value_parser = positive_u32)]
+    spp: u32,
+    /// Image size, WIDTHxHEIGHT.
+    #[arg(long, default_value = "256x256", value_parser = parse_res)]
+    res: (usize, usize),
+    /// Worker threads (default: one per core).
+    #[arg(long, value_parser = positive_usize)]
+    threads: Option<usize>,
+    #[arg(long, default_value_t = 0)]
+    seed: u64,
+    /// An AOV as NAME=LPE (repeatable), e.g. --aov 'key=C.*<L.'"'"'key'"'"'>'.
+    #[arg(long = "aov", value_name = "NAME=LPE")]
+    aovs: Vec<String>,
+    /// RenderMan DisplayChannel lines to read AOVs from.
+    #[arg(long, value_name = "FILE")]
+    display: Option<PathBuf>,
+    /// rendermn.ini with user macros and lobe mappings.
+    #[arg(long, value_name = "FILE")]
+    ini: Option<PathBuf>,
+    /// Output directory.
+    #[arg(long, default_value = "out")]
+    out: PathBuf,
+    /// Simulate every effect (the generic path), ignoring the effects plan.
+    #[arg(long)]
+    all_effects: bool,
+}
+
+fn parse_res(s: &str) -> Result<(usize, usize), String> {
+    let bad = || format!("`{s}`: expected WIDTHxHEIGHT, e.g. 256x256 (each 1..=16384)");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let w: usize = w.trim().parse().map_err(|_| bad())?;
+    let h: usize = h.trim().parse().map_err(|_| bad())?;
+    if !(1..=16384).contains(&w) || !(1..=16384).contains(&h) {
+        return Err(bad());
+    }
+    Ok((w, h))
+}
+
+fn positive_u32(s: &str) -> Result<u32, String> {
+    match s.parse::<u32>() {
+        Ok(n) if n > 0 => Ok(n),
+        _ => Err(format!("`{s}`: expected a positive integer")),
+    }
+}
+
+fn positive_usize(s: &str) -> Result<usize, String> {
+    match s.parse::<usize>() {
+        Ok(n) if n > 0 && n <= 4096 => Ok(n),
+        _ => Err(format!("`{s}`: expected a positive integer (at most 4096)")),
+    }
+}
+
+/// Input problems: printed, exit status 2.
+struct InputError(String);
+
+impl<E: std::fmt::Display> From<E> for InputError {
+    fn from(e: E) -> Self {
+        InputError(e.to_string())
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => run_render(&cli.render),
+        Some(Command::Check { threads }) => run_check(threads),
+        Some(Command::Bench { scene, spp, res, threads, rounds }) => {
+            run_bench(&scene, spp, res, threads, rounds)
+        }
+    };
+    match result {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
+        Err(InputError(e)) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}
+
+fn load_config(ini: Option<&PathBuf>) -> Result<lpe::Config, InputError> {
+    let Some(path) = ini else {
+        return Ok(lpe::Config::default());
+    };
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
+    lpe::Config::from_ini(&text).map_err(|e| InputError(format!("{}:{e}", path.display())))
+}
+
+fn print_invariants(list: &[Invariant]) -> bool {
+    let mut ok = true;
+    for i in list {
+        let tag = match i.passed {
+            Some(true) => "pass",
+            Some(false) => {
+                ok = false;
+                "FAIL"
+            }
+            None => "skip",
+        };
+        eprintln!("  [{tag}] {} — measured {:.3e} (tolerance {:.3e})", i.name, i.measured, i.tolerance);
+        if i.passed != Some(true) {
+            eprintln!("         {}", i.detail);
+        }
+    }
+    ok
+}
+
+fn run_render(args: &RenderArgs) -> Result<bool, InputError> {
+    let t0 = Instant::now();
+    let config = load_config(args.ini.as_ref())?;
+    let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
+    let scene = Scene::load(&args.scene, &config.lobes)?;
+
+    let mut aovs = AovList::default();
+    if let Some(path) = &args.display {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
+        let (channels, warnings) = parse_display_channels(&text, &path.display().to_string())?;
+        for w in warnings {
+            eprintln!("warning: {w}");
+        }
+        for (name, source) in channels {
+            aovs.push(&name, &source, &parser)
+                .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
+        }
+    }
+    for arg in &args.aovs {
+        let (name, source) = split_aov_arg(arg)?;
+        aovs.push(name, source, &parser)?;
+    }
+    if args.display.is_none() && args.aovs.is_empty() {
+        aovs = app::default_aovs(&scene, &parser)?;
+    }
+    let signals: Vec<&str> = vec!["Albedo", "Position", "Normal"];
+    for (lobe, names) in config.lobes.user_collisions(&signals) {
+        aovs.notes.push(format!(
+            "user signals {} share lobe {lobe}: they overwrite each other",
+            names.join(", ")
+        ));
+    }
+
+    let settings = Settings {
+        width: args.res.0,
+        height: args.res.1,
+        spp: args.spp,
+        seed: args.seed,
+        threads: args.threads,
+        all_effects: args.all_effects,
+        progress: true,
+        ..Settings::default()
+    };
+    let threads = args.threads.unwrap_or_else(rayon::current_num_threads);
+    eprintln!(
+        "lpe-render: scene `{}`, {}x{}, {} spp, {} AOVs, {} threads, matcher: {}",
+        scene.name, settings.width, settings.height, settings.spp, aovs.aovs.len(), threads, app::ENGINE
+    );
+    // The plan is fixed before rendering; print it first.
+    let plan_preview = {
+        let m = lpe_render::matcher::ReferenceMatcher::new(&aovs.lpes())?;
+        lpe_render::integrator::Integrator::new(&scene, &aovs, &m, &config.lobes, &settings).plan()
+    };
+    eprintln!("effects plan{}:", if args.all_effects { " (--all-effects)" } else { "" });
+    for line in plan_preview.describe() {
+        eprintln!("  {line}");
+    }
+
+    let render = app::render(&scene, &aovs, &config.lobes, &settings)?;
+    let mut invariants = vec![lpe_render::check::formal_partition(&aovs)];
+    invariants.extend(app::invariants(&scene, &aovs, &render));
+    eprintln!(
+        "rendered in {:.2}s: {:.0} paths/s, {:.0} rays/s",
+        render.seconds,
+        render.paths as f64 / render.seconds,
+        render.rays as f64 / render.seconds
+    );
+    eprintln!("invariants:");
+    let ok = print_invariants(&invariants);
+
+    let mut report = Report {
+        scene: scene.name.clone(),
+        width: settings.width,
+        height: settings.height,
+        spp: settings.spp,
+        seed: settings.seed,
+        threads,
+        matcher: app::ENGINE.into(),
+        timing: Timing {
+            render_seconds: render.seconds,
+            total_seconds: 0.0,
+            paths: render.paths,
+            rays: render.rays,
+            paths_per_second: render.paths as f64 / render.seconds,
+            rays_per_second: render.rays as f64 / render.seconds,
+        },
+        effects_plan: render.plan.describe(),
+        aovs: aovs
+            .aovs
+            .iter()
+            .map(|a| AovEntry {
+                name: a.name.clone(),
+                source: a.source.clone(),
+                expression: a.lpe.to_string(),
+            })
+            .collect(),
+        invariants,
+        notes: aovs.notes.clone(),
+        rejected_samples: render.film.rejected,
+        rejected_aov_values: render.film.aov_rejected,
+        files: Vec::new(),
+        contact_sheet_order: Vec::new(),
+    };
+    report.timing.total_seconds = t0.elapsed().as_secs_f64();
+    let files = output::write_all(&args.out, &render.film, &aovs, &mut report)?;
+    eprintln!(
+        "wrote {} files to {} ({} EXR layers + beauty) in {:.2}s total",
+        files.len(),
+        args.out.display(),
+        aovs.aovs.len(),
+        t0.elapsed().as_secs_f64()
+    );
+    Ok(ok)
+}
+
+fn run_check(threads: Option<usize>) -> Result<bool, InputError> {
+    let t0 = Instant::now();
+    let list = app::check_suite(threads, &mut |s| eprintln!("  rendered {s}"))?;
+    eprintln!("invariants:");
+    let ok = print_invariants(&list);
+    let failed = list.iter().filter(|i| i.failed()).count();
+    eprintln!(
+        "{} invariants, {} failed, {} not checked, in {:.1}s",
+        list.len(),
+        failed,
+        list.iter().filter(|i| i.passed.is_none()).count(),
+        t0.elapsed().as_secs_f64()
+    );
+    Ok(ok)
+}
+
+fn run_bench(
+    scene: &str,
+    spp: u32,
+    res: (usize, usize),
+    threads: Option<usize>,
+    rounds: usize,
+) -> Result<bool, InputError> {
+    let config = lpe::Config::default();
+    let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
+    let scene = Scene::load(scene, &config.lobes)?;
+    let settings = Settings {
+        width: res.0,
+        height: res.1,
+        spp,
+        threads,
+        ..Settings::default()
+    };
+    let b = app::bench(&scene, &config.lobes, &parser, &settings, rounds)?;
+    let overhead = b.aov_seconds / b.beauty_seconds - 1.0;
+    println!(
+        "bench `{}` {}x{} {} spp, best of {rounds}, matcher: {}",
+        scene.name, res.0, res.1, spp, app::ENGINE
+    );
+    println!(
+        "  beauty only: {:.3}s ({:.0} paths/s)",
+        b.beauty_seconds,
+        b.paths as f64 / b.beauty_seconds
+    );
+    println!(
+        "  {} AOVs:     {:.3}s ({:.0} paths/s)",
+        b.aov_count,
+        b.aov_seconds,
+        b.paths as f64 / b.aov_seconds
+    );
+    println!("  LPE tracking overhead: {:+.1}%", overhead * 100.0);
+    Ok(true)
+}
