@@ -193,13 +193,18 @@ pub fn split_aov_arg(arg: &str) -> Result<(&str, &str), String> {
         .ok_or_else(|| format!("--aov `{arg}`: expected NAME=LPE, e.g. diffuse=lpe:C<RD>[<L.>O]"))
 }
 
+/// AOVs read from `DisplayChannel` lines.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct DisplayChannels {
+    /// `(name, source)` of each LPE channel, in file order.
+    pub channels: Vec<(String, String)>,
+    /// Channels skipped because their source is not an LPE, with file and line.
+    pub warnings: Vec<String>,
+}
+
 /// Reads RenderMan `DisplayChannel` lines:
 /// `DisplayChannel "color NAME" "string source" ["color lpe:EXPR"]`.
-/// Returns `(name, source)` pairs, and warnings for channels that are not LPEs.
-pub fn parse_display_channels(
-    text: &str,
-    file: &str,
-) -> Result<(Vec<(String, String)>, Vec<String>), String> {
+pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels, String> {
     let mut out = Vec::new();
     let mut warnings = Vec::new();
     for (n, line) in text.lines().enumerate() {
@@ -252,7 +257,10 @@ pub fn parse_display_channels(
         }
         out.push((name, source.to_string()));
     }
-    Ok((out, warnings))
+    Ok(DisplayChannels {
+        channels: out,
+        warnings,
+    })
 }
 
 #[cfg(test)]
@@ -268,7 +276,10 @@ DisplayChannel "varying color key" "string source" "color lpe:C.*<L.'key'>"
 DisplayChannel "color Ci"
 DisplayChannel "color beauty2" "string source" ["color Ci"]
 "#;
-        let (ch, warn) = parse_display_channels(text, "d.rib").unwrap();
+        let DisplayChannels {
+            channels: ch,
+            warnings: warn,
+        } = parse_display_channels(text, "d.rib").unwrap();
         assert_eq!(
             ch,
             vec![

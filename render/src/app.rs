@@ -14,7 +14,12 @@ use crate::scene::Scene;
 /// ENGINE: the one place that picks the matcher. It is the memoized reference matcher
 /// until the fast matcher (`lpe::aov::AovSet`) lands; then build that here instead (and
 /// keep the reference for `converge`'s engine comparison).
-pub fn render(scene: &Scene, aovs: &AovList, lobes: &LobeMap, settings: &Settings) -> Result<Render, String> {
+pub fn render(
+    scene: &Scene,
+    aovs: &AovList,
+    lobes: &LobeMap,
+    settings: &Settings,
+) -> Result<Render, String> {
     let matcher = ReferenceMatcher::new(&aovs.lpes())?;
     Integrator::new(scene, aovs, &matcher, lobes, settings).render()
 }
@@ -47,7 +52,11 @@ pub fn default_aovs(scene: &Scene, parser: &Parser) -> Result<AovList, String> {
     let mut list = AovList::defaults(scene, parser)?;
     if furnace_params(scene).is_some() {
         for k in 0..=FURNACE_BOUNCES {
-            list.push(&format!("furnace_bounce{k}"), &format!("C<RD>{{{k}}}O"), parser)?;
+            list.push(
+                &format!("furnace_bounce{k}"),
+                &format!("C<RD>{{{k}}}O"),
+                parser,
+            )?;
         }
     }
     Ok(list)
@@ -82,7 +91,10 @@ pub fn invariants(scene: &Scene, aovs: &AovList, render: &Render) -> Vec<Invaria
         ));
         for (i, k) in bounces {
             out.push(check::z_test(
-                &format!("furnace C<RD>{{{k}}}O = Le a^{k} = {}", le * a.powi(k as i32)),
+                &format!(
+                    "furnace C<RD>{{{k}}}O = Le a^{k} = {}",
+                    le * a.powi(k as i32)
+                ),
                 &check::channel_values(film, 1 + i),
                 le * a.powi(k as i32),
                 z,
@@ -106,18 +118,28 @@ fn small(width: usize, spp: u32, threads: Option<usize>) -> Settings {
 }
 
 /// `lpe-render check`: every invariant on small renders of the built-in scenes.
-pub fn check_suite(threads: Option<usize>, log: &mut dyn FnMut(&str)) -> Result<Vec<Invariant>, String> {
+pub fn check_suite(
+    threads: Option<usize>,
+    log: &mut dyn FnMut(&str),
+) -> Result<Vec<Invariant>, String> {
     let cfg = lpe::Config::default();
     let parser = Parser::new(cfg.limits.clone(), cfg.macros.clone());
     let load = |n: &str| Scene::load(n, &cfg.lobes).map_err(|e| e.to_string());
     let mut out = Vec::new();
 
     // 1, 2, 4: partitions, finiteness, furnace closed form.
-    for (name, width, spp) in [("cornell", 40, 8), ("still-life", 40, 8), ("furnace", 32, 64)] {
+    for (name, width, spp) in [
+        ("cornell", 40, 8),
+        ("still-life", 40, 8),
+        ("furnace", 32, 64),
+    ] {
         let scene = load(name)?;
         let aovs = default_aovs(&scene, &parser)?;
         let r = render(&scene, &aovs, &cfg.lobes, &small(width, spp, threads))?;
-        log(&format!("{name}: {width}x{width}, {spp} spp, {:.2}s", r.seconds));
+        log(&format!(
+            "{name}: {width}x{width}, {spp} spp, {:.2}s",
+            r.seconds
+        ));
         out.extend(invariants(&scene, &aovs, &r).into_iter().map(|mut i| {
             i.name = format!("{name}: {}", i.name);
             i
@@ -154,7 +176,12 @@ pub fn check_suite(threads: Option<usize>, log: &mut dyn FnMut(&str)) -> Result<
         let aovs = default_aovs(&scene, &parser)?;
         let one = render(&scene, &aovs, &cfg.lobes, &small(24, 4, Some(1)))?;
         let two = render(&scene, &aovs, &cfg.lobes, &small(24, 4, Some(2)))?;
-        out.push(identical("cornell: 1 vs 2 threads, all layers bit-identical", &one, &two, &pairs_all(&aovs)));
+        out.push(identical(
+            "cornell: 1 vs 2 threads, all layers bit-identical",
+            &one,
+            &two,
+            &pairs_all(&aovs),
+        ));
     }
     {
         let scene = load("still-life")?;
@@ -178,7 +205,10 @@ pub fn check_suite(threads: Option<usize>, log: &mut dyn FnMut(&str)) -> Result<
             &b,
             &pairs,
         ));
-        let generic = Settings { all_effects: true, ..small(24, 4, threads) };
+        let generic = Settings {
+            all_effects: true,
+            ..small(24, 4, threads)
+        };
         let c = render(&scene, &full, &cfg.lobes, &generic)?;
         out.push(identical(
             "still-life: all layers bit-identical with the effects plan vs --all-effects",
@@ -213,7 +243,11 @@ fn identical(name: &str, a: &Render, b: &Render, pairs: &[(usize, usize)]) -> In
         detail: format!(
             "{} layer pairs compared bit for bit; differing layers: {}",
             pairs.len(),
-            if differ.is_empty() { "none".into() } else { differ.join(", ") }
+            if differ.is_empty() {
+                "none".into()
+            } else {
+                differ.join(", ")
+            }
         ),
     }
 }
@@ -254,7 +288,11 @@ pub fn bench(
     }
     let mut k = 0;
     while aovs.aovs.len() < 32 {
-        aovs.push(&format!("bounces{k}"), &format!("C.{{{},}}[<L.>O]", 4 + k), parser)?;
+        aovs.push(
+            &format!("bounces{k}"),
+            &format!("C.{{{},}}[<L.>O]", 4 + k),
+            parser,
+        )?;
         k += 1;
     }
     let none = AovList::default();

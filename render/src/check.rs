@@ -21,7 +21,12 @@ pub struct Invariant {
 }
 
 impl Invariant {
-    fn new(name: impl Into<String>, measured: f64, tolerance: f64, detail: impl Into<String>) -> Self {
+    fn new(
+        name: impl Into<String>,
+        measured: f64,
+        tolerance: f64,
+        detail: impl Into<String>,
+    ) -> Self {
         Invariant {
             name: name.into(),
             measured,
@@ -56,7 +61,11 @@ pub fn partition(film: &Film, aovs: &AovList, p: &Partition) -> Invariant {
             }
         }
     }
-    let names: Vec<&str> = p.members.iter().map(|&i| aovs.aovs[i].name.as_str()).collect();
+    let names: Vec<&str> = p
+        .members
+        .iter()
+        .map(|&i| aovs.aovs[i].name.as_str())
+        .collect();
     Invariant::new(
         format!("{} sum to beauty", p.name),
         worst,
@@ -75,7 +84,11 @@ pub fn finite(film: &Film, aovs: &AovList) -> Invariant {
     for layer in 0..film.layers {
         let n = film.layer(layer).iter().filter(|v| !v.is_finite()).count();
         if n > 0 {
-            let name = if layer == 0 { "beauty" } else { &aovs.aovs[layer - 1].name };
+            let name = if layer == 0 {
+                "beauty"
+            } else {
+                &aovs.aovs[layer - 1].name
+            };
             bad.push(format!("{name}: {n} pixels"));
         }
     }
@@ -104,7 +117,8 @@ pub fn formal_partition(_aovs: &AovList) -> Invariant {
         measured: f64::NAN,
         tolerance: 0.0,
         passed: None,
-        detail: "not available yet: provided by lpe::analysis with the fast matcher (issue 4)".into(),
+        detail: "not available yet: provided by lpe::analysis with the fast matcher (issue 4)"
+            .into(),
     }
 }
 
@@ -113,14 +127,16 @@ pub fn formal_partition(_aovs: &AovList) -> Invariant {
 pub fn normal_tail(z: f64) -> f64 {
     let x = z / std::f64::consts::SQRT_2;
     let t = 1.0 / (1.0 + 0.5 * x.abs());
-    let y = t * (-x * x - 1.26551223
-        + t * (1.00002368
-            + t * (0.37409196
-                + t * (0.09678418
-                    + t * (-0.18628806
-                        + t * (0.27886807
-                            + t * (-1.13520398 + t * (1.48851587 + t * (-0.82215223 + t * 0.17087277)))))))))
-        .exp();
+    let y = t
+        * (-x * x - 1.26551223
+            + t * (1.00002368
+                + t * (0.37409196
+                    + t * (0.09678418
+                        + t * (-0.18628806
+                            + t * (0.27886807
+                                + t * (-1.13520398
+                                    + t * (1.48851587 + t * (-0.82215223 + t * 0.17087277)))))))))
+            .exp();
     let erfc = if x >= 0.0 { y } else { 2.0 - y };
     0.5 * erfc
 }
@@ -155,7 +171,9 @@ pub fn z_test(name: &str, values: &[f64], expected: f64, z_crit: f64, alpha: f64
             name,
             rel,
             1e-9,
-            format!("deterministic layer: mean {mean:.9} vs closed form {expected:.9} (relative error)"),
+            format!(
+                "deterministic layer: mean {mean:.9} vs closed form {expected:.9} (relative error)"
+            ),
         );
     }
     let z = (mean - expected) / se;

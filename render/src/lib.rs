@@ -8,6 +8,10 @@
 //! [`aovs`], [`plan`] (effects plan), [`integrator`], [`film`], [`output`] (EXR, PNG,
 //! report), [`check`] (invariants).
 
+// `!(x > 0.0)` is used on purpose throughout: it is true for NaN, which must take the
+// rejecting branch; `x <= 0.0` would let NaN through.
+#![allow(clippy::neg_cmp_op_on_partial_ord)]
+
 pub mod aovs;
 pub mod app;
 pub mod camera;

@@ -17,7 +17,11 @@ use lpe_render::output::{self, AovEntry, Report, Timing};
 use lpe_render::scene::Scene;
 
 #[derive(Parser)]
-#[command(name = "lpe-render", version, about = "Path tracer routing light paths into LPE AOVs")]
+#[command(
+    name = "lpe-render",
+    version,
+    about = "Path tracer routing light paths into LPE AOVs"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -54,7 +58,7 @@ struct RenderArgs {
     #[arg(long, default_value = "cornell")]
     scene: String,
     /// Samples per pixel.
-    #[arg(long, default_value_t = 32, value_parser = positive_u32)]
+    #[arg(long, default_value_t = 64, value_parser = positive_u32)]
     spp: u32,
     /// Image size, WIDTHxHEIGHT.
     #[arg(long, default_value = "256x256", value_parser = parse_res)]
@@ -120,9 +124,13 @@ fn main() -> ExitCode {
     let result = match cli.command {
         None => run_render(&cli.render),
         Some(Command::Check { threads }) => run_check(threads),
-        Some(Command::Bench { scene, spp, res, threads, rounds }) => {
-            run_bench(&scene, spp, res, threads, rounds)
-        }
+        Some(Command::Bench {
+            scene,
+            spp,
+            res,
+            threads,
+            rounds,
+        }) => run_bench(&scene, spp, res, threads, rounds),
     };
     match result {
         Ok(true) => ExitCode::SUCCESS,
@@ -154,7 +162,10 @@ fn print_invariants(list: &[Invariant]) -> bool {
             }
             None => "skip",
         };
-        eprintln!("  [{tag}] {} — measured {:.3e} (tolerance {:.3e})", i.name, i.measured, i.tolerance);
+        eprintln!(
+            "  [{tag}] {} — measured {:.3e} (tolerance {:.3e})",
+            i.name, i.measured, i.tolerance
+        );
         if i.passed != Some(true) {
             eprintln!("         {}", i.detail);
         }
@@ -172,11 +183,11 @@ fn run_render(args: &RenderArgs) -> Result<bool, InputError> {
     if let Some(path) = &args.display {
         let text = std::fs::read_to_string(path)
             .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
-        let (channels, warnings) = parse_display_channels(&text, &path.display().to_string())?;
-        for w in warnings {
+        let read = parse_display_channels(&text, &path.display().to_string())?;
+        for w in read.warnings {
             eprintln!("warning: {w}");
         }
-        for (name, source) in channels {
+        for (name, source) in read.channels {
             aovs.push(&name, &source, &parser)
                 .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
         }
@@ -209,14 +220,27 @@ fn run_render(args: &RenderArgs) -> Result<bool, InputError> {
     let threads = args.threads.unwrap_or_else(rayon::current_num_threads);
     eprintln!(
         "lpe-render: scene `{}`, {}x{}, {} spp, {} AOVs, {} threads, matcher: {}",
-        scene.name, settings.width, settings.height, settings.spp, aovs.aovs.len(), threads, app::ENGINE
+        scene.name,
+        settings.width,
+        settings.height,
+        settings.spp,
+        aovs.aovs.len(),
+        threads,
+        app::ENGINE
     );
     // The plan is fixed before rendering; print it first.
     let plan_preview = {
         let m = lpe_render::matcher::ReferenceMatcher::new(&aovs.lpes())?;
         lpe_render::integrator::Integrator::new(&scene, &aovs, &m, &config.lobes, &settings).plan()
     };
-    eprintln!("effects plan{}:", if args.all_effects { " (--all-effects)" } else { "" });
+    eprintln!(
+        "effects plan{}:",
+        if args.all_effects {
+            " (--all-effects)"
+        } else {
+            ""
+        }
+    );
     for line in plan_preview.describe() {
         eprintln!("  {line}");
     }
@@ -315,7 +339,11 @@ fn run_bench(
     let overhead = b.aov_seconds / b.beauty_seconds - 1.0;
     println!(
         "bench `{}` {}x{} {} spp, best of {rounds}, matcher: {}",
-        scene.name, res.0, res.1, spp, app::ENGINE
+        scene.name,
+        res.0,
+        res.1,
+        spp,
+        app::ENGINE
     );
     println!(
         "  beauty only: {:.3}s ({:.0} paths/s)",

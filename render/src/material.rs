@@ -172,7 +172,7 @@ impl Lobe {
                 };
                 let mut wi = cosine_hemisphere(u);
                 wi.z *= side;
-                self.from_eval(wo, wi)
+                self.sample_by_eval(wo, wi)
             }
             Model::Ggx { alpha, .. } => {
                 let alpha = alpha.max(MIN_ALPHA);
@@ -183,7 +183,7 @@ impl Lobe {
                 let phi = 2.0 * PI * u.y;
                 let h = Vec3::new(sin * phi.cos(), sin * phi.sin(), cos * s);
                 let wi = 2.0 * wo.dot(h) * h - wo;
-                self.from_eval(wo, wi)
+                self.sample_by_eval(wo, wi)
             }
             Model::Dielectric { ior, tint } => {
                 // Entering when wo is on the normal's side.
@@ -213,7 +213,7 @@ impl Lobe {
         }
     }
 
-    fn from_eval(&self, wo: Vec3, wi: Vec3) -> Option<LobeSample> {
+    fn sample_by_eval(&self, wo: Vec3, wi: Vec3) -> Option<LobeSample> {
         let (f_cos, pdf) = self.eval(wo, wi);
         (pdf > 0.0 && f_cos != Vec3::ZERO).then(|| LobeSample {
             wi,

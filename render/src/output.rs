@@ -22,7 +22,9 @@ use crate::film::Film;
 pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let dir = path.parent().unwrap_or(Path::new("."));
     std::fs::create_dir_all(dir)?;
-    let name = path.file_name().map_or("out".into(), |n| n.to_string_lossy().into_owned());
+    let name = path
+        .file_name()
+        .map_or("out".into(), |n| n.to_string_lossy().into_owned());
     let tmp = dir.join(format!(".{name}.tmp-{}", std::process::id()));
     let result = std::fs::write(&tmp, bytes).and_then(|_| std::fs::rename(&tmp, path));
     if result.is_err() {
@@ -33,7 +35,9 @@ pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 
 /// Layer names in file order: `None` is beauty.
 fn layer_names(aovs: &AovList) -> Vec<Option<&str>> {
-    std::iter::once(None).chain(aovs.aovs.iter().map(|a| Some(a.name.as_str()))).collect()
+    std::iter::once(None)
+        .chain(aovs.aovs.iter().map(|a| Some(a.name.as_str())))
+        .collect()
 }
 
 /// The EXR file as bytes: 32-bit float channels, ZIP-compressed (lossless).
@@ -65,11 +69,22 @@ pub fn exr_bytes(film: &Film, aovs: &AovList) -> Result<Vec<u8>, String> {
     Ok(buf.into_inner())
 }
 
-/// Reads an EXR written by [`exr_bytes`] (or any single-part RGB EXR with `NAME.R`
-/// layers) back: `(layer name or "beauty", width, height, RGB pixels)`.
-pub fn read_exr(path: &Path) -> Result<Vec<(String, usize, usize, Vec<[f32; 3]>)>, String> {
-    let image = read_all_flat_layers_from_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
-    let mut layers: Vec<(String, usize, usize, Vec<[f32; 3]>)> = Vec::new();
+/// One RGB layer read back from an EXR file.
+#[derive(Clone, Debug)]
+pub struct ExrLayer {
+    /// The layer name, `beauty` for the unprefixed `R G B` channels.
+    pub name: String,
+    pub width: usize,
+    pub height: usize,
+    /// Row-major RGB.
+    pub pixels: Vec<[f32; 3]>,
+}
+
+/// Reads an EXR written by [`exr_bytes`] (or any RGB EXR with `NAME.R` layers) back.
+pub fn read_exr(path: &Path) -> Result<Vec<ExrLayer>, String> {
+    let image =
+        read_all_flat_layers_from_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
+    let mut layers: Vec<ExrLayer> = Vec::new();
     for part in &image.layer_data {
         let (w, h) = (part.size.0, part.size.1);
         for ch in &part.channel_data.list {
@@ -81,15 +96,20 @@ pub fn read_exr(path: &Path) -> Result<Vec<(String, usize, usize, Vec<[f32; 3]>)
             let Some(c) = ["R", "G", "B"].iter().position(|x| *x == letter) else {
                 continue;
             };
-            let idx = match layers.iter().position(|l| l.0 == layer) {
+            let idx = match layers.iter().position(|l| l.name == layer) {
                 Some(i) => i,
                 None => {
-                    layers.push((layer, w, h, vec![[0.0; 3]; w * h]));
+                    layers.push(ExrLayer {
+                        name: layer,
+                        width: w,
+                        height: h,
+                        pixels: vec![[0.0; 3]; w * h],
+                    });
                     layers.len() - 1
                 }
             };
             for (p, v) in ch.sample_data.values_as_f32().enumerate() {
-                layers[idx].3[p][c] = v;
+                layers[idx].pixels[p][c] = v;
             }
         }
     }
@@ -118,8 +138,16 @@ impl Tonemap {
     }
 
     fn srgb(x: f64) -> u8 {
-        let x = if x.is_finite() { x.clamp(0.0, 1.0) } else { 0.0 };
-        let y = if x <= 0.003_130_8 { 12.92 * x } else { 1.055 * x.powf(1.0 / 2.4) - 0.055 };
+        let x = if x.is_finite() {
+            x.clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let y = if x <= 0.003_130_8 {
+            12.92 * x
+        } else {
+            1.055 * x.powf(1.0 / 2.4) - 0.055
+        };
         (y * 255.0 + 0.5) as u8
     }
 
@@ -134,7 +162,8 @@ impl Tonemap {
 
 fn png_bytes(img: &RgbImage) -> Result<Vec<u8>, String> {
     let mut buf = Cursor::new(Vec::new());
-    img.write_to(&mut buf, ImageFormat::Png).map_err(|e| format!("encoding PNG: {e}"))?;
+    img.write_to(&mut buf, ImageFormat::Png)
+        .map_err(|e| format!("encoding PNG: {e}"))?;
     Ok(buf.into_inner())
 }
 
@@ -156,7 +185,10 @@ pub fn contact_sheet(film: &Film, tonemap: &Tonemap) -> RgbImage {
     for layer in 0..film.layers {
         let img = tonemap.image(film, layer);
         let thumb = image::imageops::thumbnail(&img, thumb_w, thumb_h);
-        let (c, r) = ((layer % SHEET_COLUMNS) as u32, (layer / SHEET_COLUMNS) as u32);
+        let (c, r) = (
+            (layer % SHEET_COLUMNS) as u32,
+            (layer / SHEET_COLUMNS) as u32,
+        );
         image::imageops::overlay(
             &mut sheet,
             &thumb,
@@ -218,7 +250,12 @@ impl Report {
         s += "## Timing\n\n| render s | total s | paths | rays | paths/s | rays/s |\n|---|---|---|---|---|---|\n";
         s += &format!(
             "| {:.2} | {:.2} | {} | {} | {:.0} | {:.0} |\n\n",
-            t.render_seconds, t.total_seconds, t.paths, t.rays, t.paths_per_second, t.rays_per_second
+            t.render_seconds,
+            t.total_seconds,
+            t.paths,
+            t.rays,
+            t.paths_per_second,
+            t.rays_per_second
         );
         s += "## Effects plan\n\n";
         for l in &self.effects_plan {
@@ -233,7 +270,11 @@ impl Report {
             };
             s += &format!(
                 "| {} | {:.3e} | {:.3e} | {} | {} |\n",
-                i.name, i.measured, i.tolerance, r, i.detail.replace('|', "\\|")
+                i.name,
+                i.measured,
+                i.tolerance,
+                r,
+                i.detail.replace('|', "\\|")
             );
         }
         s += &format!(
@@ -257,7 +298,11 @@ impl Report {
         }
         s += &format!(
             "\n## Files\n\n{}\n\nContact sheet, left to right, top to bottom: {}.\n",
-            self.files.iter().map(|f| format!("- `{f}`")).collect::<Vec<_>>().join("\n"),
+            self.files
+                .iter()
+                .map(|f| format!("- `{f}`"))
+                .collect::<Vec<_>>()
+                .join("\n"),
             self.contact_sheet_order.join(", ")
         );
         s
@@ -279,7 +324,9 @@ pub fn write_all(
     files.push(exr);
     let tonemap = Tonemap::from_beauty(film);
     for (layer, name) in layer_names(aovs).into_iter().enumerate() {
-        let p = dir.join("png").join(format!("{}.png", name.unwrap_or("beauty")));
+        let p = dir
+            .join("png")
+            .join(format!("{}.png", name.unwrap_or("beauty")));
         atomic_write(&p, &png_bytes(&tonemap.image(film, layer))?).map_err(|e| io(&p, e))?;
         files.push(p);
     }
