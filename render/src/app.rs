@@ -5,7 +5,7 @@ use lpe::{LobeMap, Parser};
 
 use crate::aovs::AovList;
 use crate::check::{self, Invariant};
-use crate::integrator::{Integrator, Render, Settings};
+use crate::integrator::{Integrator, Render, Settings, Technique};
 use crate::matcher::ReferenceMatcher;
 use crate::scene::Scene;
 
@@ -168,6 +168,43 @@ pub fn check_suite(
             check::critical_z(ALPHA),
             "per-pixel unocc - occ - shadow for C<RD>L has mean zero",
         ));
+    }
+
+    // The estimator itself: MIS, BSDF sampling alone and light sampling alone are three
+    // unbiased estimators of the same image (where BSDF sampling can reach every light:
+    // cornell has no delta lights), so per-pixel differences of independent renders
+    // have mean zero. Direct diffuse lighting is compared as well as beauty: it is where
+    // a wrong light or BSDF density shows with the least noise around it.
+    for (name, a, b) in [
+        ("cornell", Technique::Mis, Technique::BsdfOnly),
+        ("cornell", Technique::LightOnly, Technique::BsdfOnly),
+        ("still-life", Technique::Mis, Technique::LightOnly),
+    ] {
+        let scene = load(name)?;
+        let mut aovs = AovList::default();
+        aovs.push("direct", "C<RD>L", &parser)?;
+        let settings = |technique, seed| Settings {
+            technique,
+            seed,
+            ..small(48, 32, threads)
+        };
+        let ra = render(&scene, &aovs, &cfg.lobes, &settings(a, 11))?;
+        let rb = render(&scene, &aovs, &cfg.lobes, &settings(b, 12))?;
+        for (layer, what) in [(0, "beauty"), (1, "C<RD>L")] {
+            let x: Vec<f64> = ra
+                .film
+                .layer(layer)
+                .iter()
+                .zip(rb.film.layer(layer))
+                .map(|(p, q)| (*p - q).element_sum())
+                .collect();
+            out.push(check::zero_mean_test(
+                &format!("{name}: {what} with {a:?} = with {b:?} in expectation"),
+                &x,
+                check::critical_z(ALPHA),
+                "per-pixel difference of two independent renders has mean zero",
+            ));
+        }
     }
 
     // 3: determinism across threads, AOV sets and the effects plan.
