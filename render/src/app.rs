@@ -20,8 +20,22 @@ pub fn render(
     lobes: &LobeMap,
     settings: &Settings,
 ) -> Result<Render, String> {
+    render_announcing(scene, aovs, lobes, settings, &mut |_| {})
+}
+
+/// [`render`], calling `on_plan` with the effects plan once it is decided, before any
+/// sample is traced (the CLI prints it).
+pub fn render_announcing(
+    scene: &Scene,
+    aovs: &AovList,
+    lobes: &LobeMap,
+    settings: &Settings,
+    on_plan: &mut dyn FnMut(&crate::plan::Plan),
+) -> Result<Render, String> {
     let matcher = ReferenceMatcher::new(&aovs.lpes())?;
-    Integrator::new(scene, aovs, &matcher, lobes, settings).render()
+    let integrator = Integrator::new(scene, aovs, &matcher, lobes, settings);
+    on_plan(&integrator.plan());
+    integrator.render()
 }
 
 /// Name of the engine [`render`] uses, for reports.

@@ -228,24 +228,13 @@ fn run_render(args: &RenderArgs) -> Result<bool, InputError> {
         threads,
         app::ENGINE
     );
-    // The plan is fixed before rendering; print it first.
-    let plan_preview = {
-        let m = lpe_render::matcher::ReferenceMatcher::new(&aovs.lpes())?;
-        lpe_render::integrator::Integrator::new(&scene, &aovs, &m, &config.lobes, &settings).plan()
-    };
-    eprintln!(
-        "effects plan{}:",
-        if args.all_effects {
-            " (--all-effects)"
-        } else {
-            ""
+    let all = args.all_effects;
+    let render = app::render_announcing(&scene, &aovs, &config.lobes, &settings, &mut |plan| {
+        eprintln!("effects plan{}:", if all { " (--all-effects)" } else { "" });
+        for line in plan.describe() {
+            eprintln!("  {line}");
         }
-    );
-    for line in plan_preview.describe() {
-        eprintln!("  {line}");
-    }
-
-    let render = app::render(&scene, &aovs, &config.lobes, &settings)?;
+    })?;
     let mut invariants = vec![lpe_render::check::formal_partition(&aovs)];
     invariants.extend(app::invariants(&scene, &aovs, &render));
     eprintln!(
