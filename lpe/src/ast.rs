@@ -323,11 +323,7 @@ impl fmt::Display for Atom {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Atom::Item(i) => write!(f, "{i}"),
-            Atom::Class { negated, items } => {
-                f.write_str(if *negated { "[^" } else { "[" })?;
-                items.iter().try_for_each(|i| write!(f, "{i}"))?;
-                f.write_str("]")
-            }
+            Atom::Class { negated, items } => write_class(f, *negated, items, |i| i.to_string()),
         }
     }
 }
@@ -361,29 +357,36 @@ impl fmt::Display for Triple {
             TypePos::Any => f.write_str(".")?,
             TypePos::One(t) => write!(f, "{t}")?,
             TypePos::Class { negated, types } => {
-                f.write_str(if *negated { "[^" } else { "[" })?;
-                types.iter().try_for_each(|t| write!(f, "{t}"))?;
-                f.write_str("]")?;
+                write_class(f, *negated, types, |t| t.to_string())?
             }
         }
         match &self.event {
             EventPos::Any => f.write_str(".")?,
             EventPos::One(e) => write!(f, "{e}")?,
             EventPos::Class { negated, events } => {
-                f.write_str(if *negated { "[^" } else { "[" })?;
-                events.iter().try_for_each(|e| write!(f, "{e}"))?;
-                f.write_str("]")?;
+                write_class(f, *negated, events, |e| e.to_string())?
             }
         }
         match &self.label {
             LabelPos::Any => {}
             LabelPos::One(l) => write!(f, "'{l}'")?,
             LabelPos::Class { negated, labels } => {
-                f.write_str(if *negated { "[^" } else { "[" })?;
-                labels.iter().try_for_each(|l| write!(f, "'{l}'"))?;
-                f.write_str("]")?;
+                write_class(f, *negated, labels, |l| format!("'{l}'"))?
             }
         }
         f.write_str(">")
     }
+}
+
+/// `[a b]` or `[^a b]`, items printed without separators (no item text can run into
+/// the next: none starts with a digit).
+fn write_class<T>(
+    f: &mut fmt::Formatter<'_>,
+    negated: bool,
+    items: &[T],
+    show: impl Fn(&T) -> String,
+) -> fmt::Result {
+    f.write_str(if negated { "[^" } else { "[" })?;
+    items.iter().try_for_each(|i| f.write_str(&show(i)))?;
+    f.write_str("]")
 }

@@ -3,4 +3,5 @@
 //! [`engine`] puts every matcher behind one trait so the CLI and the harness run them
 //! side by side on the same inputs.
 
+pub mod cli;
 pub mod engine;

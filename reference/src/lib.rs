@@ -21,6 +21,10 @@
 //! | negation inside a triple: the position's `.` minus the items; `[^'foo']` matches no label | [`triple_matches`] |
 //!
 //! Prefixes do not affect matching and are ignored here.
+//!
+//! Recursion depth grows with the path length (a few frames per vertex) and the
+//! expression's nesting; run very long paths on a thread with a large stack, as
+//! `lpe-check` does.
 
 use std::collections::HashSet;
 
@@ -58,11 +62,16 @@ fn match_seq(parts: &[Expr], v: &[Vertex], i: usize, k: &mut dyn FnMut(usize) ->
 }
 
 /// `body{min,max}`: after `count` iterations at position `i`, either stop (if `count >=
-/// min`) or run one more iteration. An iteration beyond `min` must consume a vertex:
-/// an empty one changes nothing, and forbidding it makes `(x?)*` terminate.
+/// min`) or run one more iteration.
+///
+/// Every iteration must consume at least one vertex. That loses nothing: an empty
+/// iteration leaves the position unchanged, so it only ever helps to reach `min`, and a
+/// body that can match the empty sequence can pad any count up to `min` that way, so for
+/// such a body the lower bound is dropped (`e{n,m}` = `e{0,m}` when `e` is nullable).
+/// With that, `(x?)*` terminates and recursion depth is bounded by the path length.
 ///
 /// Failures are remembered per `(count, i)` for this one call (the continuation is fixed
-/// within it), so `(.?){256}` does not explore every way to place the empty iterations.
+/// within it), so `(.?){256}` does not explore every way to split the path.
 fn match_repeat(
     body: &Expr,
     r: Repetition,
@@ -72,7 +81,8 @@ fn match_repeat(
 ) -> bool {
     struct Rep<'a> {
         body: &'a Expr,
-        r: Repetition,
+        min: u32,
+        max: Option<u32>,
         v: &'a [Vertex],
         failed: HashSet<(u32, usize)>,
     }
@@ -80,30 +90,35 @@ fn match_repeat(
         if s.failed.contains(&(count, i)) {
             return false;
         }
-        let ok = (count >= s.r.min && k(i))
-            || (s.r.max.is_none_or(|m| count < m) && {
-                let body = s.body;
-                let v = s.v;
-                // Below `min` an empty iteration is allowed (it may be needed: `(C?){2}C`);
-                // once `count` counts past any number of iterations the path could
-                // consume, only progress matters.
-                let must_progress = count >= s.r.min;
-                match_expr(body, v, i, &mut |j| {
-                    (!must_progress || j > i) && go(s, count + 1, j, k)
-                })
+        let ok = (count >= s.min && k(i))
+            || (s.max.is_none_or(|m| count < m) && {
+                let (body, v) = (s.body, s.v);
+                match_expr(body, v, i, &mut |j| j > i && go(s, count + 1, j, k))
             });
         if !ok {
             s.failed.insert((count, i));
         }
         ok
     }
+    let min = if nullable(body) { 0 } else { r.min };
     let mut s = Rep {
         body,
-        r,
+        min,
+        max: r.max,
         v,
         failed: HashSet::new(),
     };
     go(&mut s, 0, i, k)
+}
+
+/// Can `e` match the empty sequence?
+fn nullable(e: &Expr) -> bool {
+    match e {
+        Expr::Atom(_) => false,
+        Expr::Concat(parts) => parts.iter().all(nullable),
+        Expr::Alt(alts) => alts.iter().any(nullable),
+        Expr::Repeat(body, r) => r.min == 0 || nullable(body),
+    }
 }
 
 /// Does one atom match one vertex?

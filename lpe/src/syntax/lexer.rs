@@ -130,13 +130,7 @@ pub(crate) fn tokenize(source: &str, start: usize) -> Result<Vec<Token>, Error> 
             continue;
         }
         if b.is_ascii_digit() {
-            let mut n: u64 = 0;
-            while i < bytes.len() && bytes[i].is_ascii_digit() {
-                n = n
-                    .saturating_mul(10)
-                    .saturating_add(u64::from(bytes[i] - b'0'));
-                i += 1;
-            }
+            let n = number(bytes, &mut i);
             out.push(Token {
                 tok: Tok::Number(n),
                 span: begin..i,
@@ -155,13 +149,7 @@ pub(crate) fn tokenize(source: &str, start: usize) -> Result<Vec<Token>, Error> 
         if let Some(kind) = EventKind::from_letter(c) {
             i += 1;
             let digits = i;
-            let mut n: u64 = 0;
-            while i < bytes.len() && bytes[i].is_ascii_digit() {
-                n = n
-                    .saturating_mul(10)
-                    .saturating_add(u64::from(bytes[i] - b'0'));
-                i += 1;
-            }
+            let n = number(bytes, &mut i);
             let lobe = if i == digits {
                 None
             } else if (1..=u64::from(kind.max_lobe())).contains(&n) {
@@ -204,4 +192,16 @@ pub(crate) fn tokenize(source: &str, start: usize) -> Result<Vec<Token>, Error> 
         return Err(err);
     }
     Ok(out)
+}
+
+/// Reads decimal digits at `*i` (possibly none), saturating at `u64::MAX`.
+fn number(bytes: &[u8], i: &mut usize) -> u64 {
+    let mut n: u64 = 0;
+    while *i < bytes.len() && bytes[*i].is_ascii_digit() {
+        n = n
+            .saturating_mul(10)
+            .saturating_add(u64::from(bytes[*i] - b'0'));
+        *i += 1;
+    }
+    n
 }

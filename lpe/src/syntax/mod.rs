@@ -8,9 +8,10 @@
 //! A body that is exactly a macro name, or a macro name, `_` and a light group (the
 //! longest prefix before a `_` that names a macro wins, so groups may contain `_`), is
 //! that macro with `group` written into every `<L.>`. Anything else is parsed as an
-//! expression; an identifier-like body that is neither a macro nor a valid expression
-//! is an "unknown macro" error that lists the nearest names. (`CDL` is identifier-like
-//! but a valid expression, so it stays an expression.)
+//! expression. An identifier-like body that names no macro and holds a character no
+//! expression can (`directDifuse`, `CDL_key`) is an "unknown macro" error listing the
+//! nearest names; one made of event letters and digits (`CDL`, `C2L`, `CD5L`) is taken
+//! as the expression it looks like and gets that expression's error, if any.
 //!
 //! The front end is the only dialect-specific part: another dialect (OSL's, with `G`, `V`,
 //! `B`) would be another module producing the same AST.
@@ -164,28 +165,30 @@ impl Parser {
                 });
             }
         }
-        let expr = lexer::tokenize(source, i).and_then(|tokens| {
-            parser::ExprParser::new(source, tokens, &self.limits).parse(i..body_end)
-        });
-        match expr {
-            Ok(expr) => Ok(Lpe { prefixes, expr }),
-            Err(_) if is_ident(body) => {
+        // An identifier-like body that does not even tokenize (`directDifuse`, `CDL_key`)
+        // was meant as a macro name; one that tokenizes (`C2L`, `CD5L`) was meant as an
+        // expression and gets the expression's error.
+        let tokens = match lexer::tokenize(source, i) {
+            Ok(t) => t,
+            Err(e) if is_ident(body) && e.kind() == ErrorKind::Syntax => {
                 let near = nearest(body, self.macros.names(), 3);
                 let list = near
                     .iter()
                     .map(|n| format!("`{n}`"))
                     .collect::<Vec<_>>()
                     .join(", ");
-                Err(Error::new(
+                return Err(Error::new(
                     ErrorKind::UnknownMacro,
                     i..body_end,
                     format!("unknown macro `{body}` (and not a valid expression)"),
                     source,
                 )
-                .with_help(format!("nearest macros: {list}")))
+                .with_help(format!("nearest macros: {list}")));
             }
-            Err(e) => Err(e),
-        }
+            Err(e) => return Err(e),
+        };
+        let expr = parser::ExprParser::new(source, tokens, &self.limits).parse(i..body_end)?;
+        Ok(Lpe { prefixes, expr })
     }
 
     /// `NAME` or `NAME_group`, if the body names a macro.
@@ -271,3 +274,6 @@ pub fn set_light_group(lpe: &mut Lpe, group: &str) {
         Atom::Class { items, .. } => items.iter_mut().for_each(rewrite),
     });
 }
+
+#[cfg(test)]
+mod tests;

@@ -419,6 +419,53 @@ impl<'a> ExprParser<'a> {
         }
     }
 
+    /// A class inside a triple position, at its `[`: `^`? then items accepted by `take`
+    /// up to `]`. `what` names the position and `holds` what it may hold, for errors.
+    fn position_class<T>(
+        &mut self,
+        open: Range<usize>,
+        what: &str,
+        holds: &str,
+        take: impl Fn(&Tok) -> Option<T>,
+    ) -> Result<(bool, Vec<T>)> {
+        self.bump();
+        let negated = self.eat(Tok::Caret);
+        let mut items = Vec::new();
+        loop {
+            let Some(t) = self.peek_token().cloned() else {
+                return Err(self.err(ErrorKind::Syntax, open, "unclosed `[`"));
+            };
+            if t.tok == Tok::RBracket {
+                let close = self.bump().span;
+                if items.is_empty() {
+                    return Err(self.err(
+                        ErrorKind::Empty,
+                        open.start..close.end,
+                        format!("empty {what} class `[]`"),
+                    ));
+                }
+                return Ok((negated, items));
+            }
+            let Some(item) = take(&t.tok) else {
+                let e = self.err(
+                    ErrorKind::TriplePosition,
+                    t.span,
+                    format!(
+                        "{} in a {what} class: the {what} position holds {holds}",
+                        t.tok.describe()
+                    ),
+                );
+                return Err(if matches!(t.tok, Tok::Label(_)) {
+                    e.with_help("labels go in the third position: `<R.['a' 'b']>`")
+                } else {
+                    e
+                });
+            };
+            self.bump();
+            items.push(item);
+        }
+    }
+
     /// Text of the triple from `<` to the next `>` (or the end), for suggestions.
     fn triple_text(&self, open: &Range<usize>) -> &str {
         let rest = &self.source[open.start..];
@@ -439,37 +486,11 @@ impl<'a> ExprParser<'a> {
                 Ok(TypePos::Any)
             }
             Tok::LBracket => {
-                self.bump();
-                let negated = self.eat(Tok::Caret);
-                let mut types = Vec::new();
-                loop {
-                    let Some(t) = self.peek_token().cloned() else {
-                        return Err(self.err(ErrorKind::Syntax, t.span, "unclosed `[`"));
-                    };
-                    match t.tok {
-                        Tok::Type(ty) => {
-                            self.bump();
-                            types.push(ty);
-                        }
-                        Tok::RBracket => {
-                            self.bump();
-                            break;
-                        }
-                        other => {
-                            return Err(self.err(
-                                ErrorKind::TriplePosition,
-                                t.span,
-                                format!(
-                                    "{} in a type class: the type position holds C R T L O",
-                                    other.describe()
-                                ),
-                            ))
-                        }
-                    }
-                }
-                if types.is_empty() {
-                    return Err(self.err(ErrorKind::Empty, t.span, "empty type class `[]`"));
-                }
+                let (negated, types) =
+                    self.position_class(t.span, "type", "C R T L O", |t| match t {
+                        Tok::Type(ty) => Some(*ty),
+                        _ => None,
+                    })?;
                 Ok(TypePos::Class { negated, types })
             }
             Tok::RAngle => Err(self.err(
@@ -522,46 +543,14 @@ impl<'a> ExprParser<'a> {
                 Ok(EventPos::Any)
             }
             Tok::LBracket => {
-                self.bump();
-                let negated = self.eat(Tok::Caret);
-                let mut events = Vec::new();
-                loop {
-                    let Some(t) = self.peek_token().cloned() else {
-                        return Err(self.err(ErrorKind::Syntax, t.span, "unclosed `[`"));
-                    };
-                    match t.tok {
-                        Tok::Event(kind, lobe) => {
-                            self.bump();
-                            events.push(EventPattern { kind, lobe });
-                        }
-                        Tok::RBracket => {
-                            self.bump();
-                            break;
-                        }
-                        Tok::Label(_) => {
-                            return Err(self
-                                .err(
-                                    ErrorKind::TriplePosition,
-                                    t.span,
-                                    "a label in the event position of `<type event label>`",
-                                )
-                                .with_help("labels go in the third position: `<R.['a' 'b']>`"))
-                        }
-                        other => {
-                            return Err(self.err(
-                                ErrorKind::TriplePosition,
-                                t.span,
-                                format!(
-                                    "{} in an event class: the event position holds D S U",
-                                    other.describe()
-                                ),
-                            ))
-                        }
-                    }
-                }
-                if events.is_empty() {
-                    return Err(self.err(ErrorKind::Empty, t.span, "empty event class `[]`"));
-                }
+                let (negated, events) =
+                    self.position_class(t.span, "event", "D S U", |t| match t {
+                        Tok::Event(kind, lobe) => Some(EventPattern {
+                            kind: *kind,
+                            lobe: *lobe,
+                        }),
+                        _ => None,
+                    })?;
                 Ok(EventPos::Class { negated, events })
             }
             Tok::Label(_) => {
@@ -597,37 +586,11 @@ impl<'a> ExprParser<'a> {
                 Ok(LabelPos::Any)
             }
             Tok::LBracket => {
-                self.bump();
-                let negated = self.eat(Tok::Caret);
-                let mut labels = Vec::new();
-                loop {
-                    let Some(t) = self.peek_token().cloned() else {
-                        return Err(self.err(ErrorKind::Syntax, t.span, "unclosed `[`"));
-                    };
-                    match t.tok {
-                        Tok::Label(l) => {
-                            self.bump();
-                            labels.push(l);
-                        }
-                        Tok::RBracket => {
-                            self.bump();
-                            break;
-                        }
-                        other => {
-                            return Err(self.err(
-                                ErrorKind::TriplePosition,
-                                t.span,
-                                format!(
-                                    "{} in a label class: the label position holds quoted names",
-                                    other.describe()
-                                ),
-                            ))
-                        }
-                    }
-                }
-                if labels.is_empty() {
-                    return Err(self.err(ErrorKind::Empty, t.span, "empty label class `[]`"));
-                }
+                let (negated, labels) =
+                    self.position_class(t.span, "label", "quoted names", |t| match t {
+                        Tok::Label(l) => Some(l.clone()),
+                        _ => None,
+                    })?;
                 Ok(LabelPos::Class { negated, labels })
             }
             _ => Ok(LabelPos::Any),
