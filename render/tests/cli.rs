@@ -65,30 +65,44 @@ fn bad_input_is_reported_not_panicked() {
 #[test]
 fn a_tiny_render_writes_everything_and_exits_zero() {
     let dir = std::env::temp_dir().join(format!("lpe-render-cli-ok-{}", std::process::id()));
-    let (code, err) = run(&[
-        "--res",
-        "16x12",
-        "--spp",
-        "2",
-        "--out",
-        dir.to_str().unwrap(),
-        "--aov",
-        "key=C.*<L.'key'>",
-        "--aov",
-        "rest=C.*<L.[^'key']>",
-        "--aov",
-        "glow=C.*O",
-    ]);
+    std::fs::create_dir_all(&dir).unwrap();
+    let display = dir.join("display.rib");
+    std::fs::write(
+        &display,
+        "DisplayChannel \"color key\" \"string source\" [\"color lpe:C.*<L.'key'>\"]\n\
+         DisplayChannel \"color mine\" \"string source\" [\"color lpe:myDirect\"]\n",
+    )
+    .unwrap();
+    let ini = dir.join("rendermn.ini");
+    std::fs::write(&ini, "/prman/lpe/macro/myDirect C<RD>[<L.>O]\n").unwrap();
+    let out = dir.join("out");
+    let args = [
+        "--res=16x12",
+        "--spp=2",
+        &format!("--out={}", out.display()),
+        &format!("--display={}", display.display()),
+        &format!("--ini={}", ini.display()),
+        "--aov=rest=C.*<L.[^'key']>",
+        "--aov=glow=C.*O",
+    ];
+    let (code, err) = run(&args.iter().map(|s| s.as_ref()).collect::<Vec<&str>>());
     assert_eq!(code, 0, "{err}");
+    let report = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(
+        report.contains("| `mine` | `lpe:myDirect` | `C<RD>[<L.>O]` |"),
+        "{report}"
+    );
     for f in [
         "cornell.exr",
         "contact_sheet.png",
         "report.md",
         "report.json",
         "png/key.png",
+        "png/mine.png",
+        "png/rest.png",
         "png/beauty.png",
     ] {
-        assert!(dir.join(f).exists(), "{f}: {err}");
+        assert!(out.join(f).exists(), "{f}: {err}");
     }
     let _ = std::fs::remove_dir_all(&dir);
 }
