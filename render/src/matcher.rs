@@ -211,8 +211,8 @@ impl PathMatcher for ReferenceMatcher {
             return i as u16;
         }
         a.push(v.clone());
-        // More than 65 536 distinct vertex kinds would need a scene with tens of
-        // thousands of labelled objects; saturate rather than alias silently.
+        // Scenes have at most MAX_LABELS labels, so at most 1025 labels x 24 events x 2
+        // types plus emitters: well under 65 536 distinct vertices.
         u16::try_from(a.len() - 1).expect("fewer than 65536 distinct vertices")
     }
 

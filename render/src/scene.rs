@@ -66,6 +66,9 @@ pub struct Scene {
     bvh: Bvh,
 }
 
+/// Most distinct labels (object `lpegroup`s and light groups) in one scene.
+pub const MAX_LABELS: usize = 1024;
+
 /// Most scattering vertices a path may have: paths are kept in fixed-size buffers by
 /// the reference matcher (see `matcher.rs`).
 pub const MAX_DEPTH_LIMIT: u32 = 60;
@@ -664,6 +667,24 @@ impl SceneFile {
                 });
             }
             lights.push(light);
+        }
+        // Labels become distinct matcher vertices (label x event x R/T); bounding them
+        // keeps every scene within the matcher's class space (see `matcher.rs`).
+        let mut labels: Vec<&str> = objects
+            .iter()
+            .filter_map(|o| o.lpegroup.as_deref())
+            .chain(lights.iter().filter_map(|l| l.group.as_deref()))
+            .collect();
+        labels.sort_unstable();
+        labels.dedup();
+        if labels.len() > MAX_LABELS {
+            return Err((
+                None,
+                format!(
+                    "{} distinct lpegroup/group labels; at most {MAX_LABELS}",
+                    labels.len()
+                ),
+            ));
         }
         if lights
             .iter()
