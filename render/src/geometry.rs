@@ -83,15 +83,6 @@ impl Shape {
         (b.min + b.max) * 0.5
     }
 
-    /// Surface area.
-    pub fn area(&self) -> f32 {
-        match *self {
-            Shape::Sphere { radius, .. } => 4.0 * std::f32::consts::PI * radius * radius,
-            Shape::Quad { u, v, .. } => u.cross(v).length(),
-            Shape::Triangle { e1, e2, .. } => 0.5 * e1.cross(e2).length(),
-        }
-    }
-
     /// Nearest intersection in `(0, t_max)`: `(t, normal)`.
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<(f32, Vec3)> {
         match *self {

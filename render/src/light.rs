@@ -54,15 +54,6 @@ pub struct LightSample {
 }
 
 impl Light {
-    /// Whether a ray can hit it (area and dome lights), so BSDF sampling competes with
-    /// light sampling under MIS.
-    pub fn is_delta(&self) -> bool {
-        matches!(
-            self.kind,
-            LightKind::Point { .. } | LightKind::Distant { .. }
-        )
-    }
-
     /// Samples a direction toward the light from `p`.
     pub fn sample(&self, p: Vec3, u: Vec2) -> Option<LightSample> {
         match self.kind {

@@ -207,6 +207,18 @@ fn run_render(args: &RenderArgs) -> Result<bool, InputError> {
         ));
     }
 
+    // The film holds f64 RGB per pixel per layer; refuse sizes that cannot fit rather
+    // than abort on allocation.
+    let film_bytes = (args.res.0 * args.res.1) as u128 * (1 + aovs.aovs.len()) as u128 * 24;
+    if film_bytes > 8 << 30 {
+        return Err(InputError(format!(
+            "{}x{} with {} AOVs needs {:.1} GiB of film; at most 8 GiB",
+            args.res.0,
+            args.res.1,
+            aovs.aovs.len(),
+            film_bytes as f64 / (1u64 << 30) as f64
+        )));
+    }
     let settings = Settings {
         width: args.res.0,
         height: args.res.1,

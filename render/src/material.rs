@@ -12,7 +12,7 @@ use glam::{Vec2, Vec3};
 use lpe::{Event, LobeCategory, LobeMap};
 use std::f32::consts::{FRAC_1_PI, PI};
 
-use crate::sampling::{cosine_hemisphere, luminance, Frame};
+use crate::sampling::{cosine_hemisphere, luminance};
 
 /// The BSDF model of a lobe.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -270,11 +270,6 @@ impl Material {
     pub fn transmits(&self) -> bool {
         self.lobes.iter().any(Lobe::transmits)
     }
-}
-
-/// Local-frame helper used by the integrator.
-pub fn local_frame(n: Vec3) -> Frame {
-    Frame::from_normal(n)
 }
 
 #[cfg(test)]

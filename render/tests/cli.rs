@@ -33,6 +33,7 @@ fn bad_input_is_reported_not_panicked() {
         (vec!["--res", "12"], "WIDTHxHEIGHT"),
         (vec!["--res", "0x5"], "WIDTHxHEIGHT"),
         (vec!["--spp", "0"], "positive"),
+        (vec!["--res", "16384x16384"], "GiB of film"),
         (vec!["--scene", "nowhere"], "not a built-in scene"),
         (
             vec!["--scene", bad_scene.to_str().unwrap()],
