@@ -233,6 +233,17 @@ pub fn check_suite(
             &two,
             &pairs_all(&aovs),
         ));
+        let (a, b) = (
+            crate::output::exr_bytes(&one.film, &aovs)?,
+            crate::output::exr_bytes(&two.film, &aovs)?,
+        );
+        out.push(Invariant {
+            name: "cornell: 1 vs 2 threads, EXR files byte-identical".into(),
+            measured: (a != b) as u8 as f64,
+            tolerance: 0.0,
+            passed: Some(a == b),
+            detail: format!("{} bytes each", a.len()),
+        });
     }
     {
         let scene = load("still-life")?;

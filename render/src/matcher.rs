@@ -38,6 +38,17 @@ pub struct AovMask([u64; MAX_AOVS / 64]);
 impl AovMask {
     pub const EMPTY: AovMask = AovMask([0; MAX_AOVS / 64]);
 
+    /// From little-endian 64-bit words (bit `i % 64` of word `i / 64` is AOV `i`), the
+    /// usual layout of an engine's bitmask, so adapters convert by copying. Words past
+    /// [`MAX_AOVS`] are ignored.
+    pub fn from_words(words: &[u64]) -> AovMask {
+        let mut m = AovMask::EMPTY;
+        for (dst, src) in m.0.iter_mut().zip(words) {
+            *dst = *src;
+        }
+        m
+    }
+
     pub fn insert(&mut self, i: usize) {
         self.0[i / 64] |= 1 << (i % 64);
     }
@@ -257,6 +268,7 @@ mod tests {
     fn mask_iterates_in_order() {
         let m: AovMask = [3, 64, 200, 0].into_iter().collect();
         assert_eq!(m.iter().collect::<Vec<_>>(), vec![0, 3, 64, 200]);
+        assert_eq!(AovMask::from_words(&[0b1001, 1, 0, 1 << 8]), m);
         assert!(m.contains(200) && !m.contains(199));
     }
 
