@@ -238,7 +238,7 @@ impl Bvh {
     /// Nearest hit in `(0, t_max)`.
     pub fn intersect(&self, ray: &Ray, mut t_max: f32) -> Option<Hit> {
         let mut best: Option<(f32, glam::Vec3, u32)> = None;
-        self.traverse(ray, &mut t_max, &mut |shape, obj, ray, t_max| {
+        self.traverse(ray, &mut t_max, |shape, obj, ray, t_max| {
             if let Some((t, n)) = shape.intersect(ray, *t_max) {
                 *t_max = t;
                 best = Some((t, n, obj));
@@ -256,7 +256,7 @@ impl Bvh {
     /// Whether anything lies in `(0, t_max)` along the ray.
     pub fn occluded(&self, ray: &Ray, mut t_max: f32) -> bool {
         let mut hit = false;
-        self.traverse(ray, &mut t_max, &mut |shape, _, ray, t_max| {
+        self.traverse(ray, &mut t_max, |shape, _, ray, t_max| {
             hit = shape.intersect(ray, *t_max).is_some();
             hit
         });
@@ -264,11 +264,13 @@ impl Bvh {
     }
 
     /// Visits the primitives whose boxes the ray enters; `visit` returns true to stop.
+    /// Generic rather than `dyn` so the per-primitive test inlines (traversal is most of
+    /// the render time).
     fn traverse(
         &self,
         ray: &Ray,
         t_max: &mut f32,
-        visit: &mut dyn FnMut(&Shape, u32, &Ray, &mut f32) -> bool,
+        mut visit: impl FnMut(&Shape, u32, &Ray, &mut f32) -> bool,
     ) {
         if self.nodes.is_empty() {
             return;
