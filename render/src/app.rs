@@ -282,7 +282,7 @@ pub fn check_suite(
 
     // 5: the formal partition check (hook until the fast matcher lands).
     let scene = load("cornell")?;
-    out.push(check::formal_partition(&default_aovs(&scene, &parser)?));
+    out.extend(check::formal_partition(&default_aovs(&scene, &parser)?));
     Ok(out)
 }
 

@@ -106,20 +106,40 @@ pub fn finite(film: &Film, aovs: &AovList) -> Invariant {
     )
 }
 
-/// The formal partition check (DESIGN.md §4, fast-matcher issue): decides from the
-/// automata whether a set of AOVs partitions beauty and gives a witness path if not.
+/// The formal partition check (fast-matcher issue): decides from the automata whether
+/// each declared partition (or, with none declared, the whole AOV set) partitions
+/// beauty's universe `C.*[<L.>O]`, with a witness path if not.
 ///
-/// HOOK: `lpe::analysis` lands with the fast matcher; until then this reports "not
-/// checked" rather than guessing. Replace the body with the analysis call.
-pub fn formal_partition(_aovs: &AovList) -> Invariant {
-    Invariant {
-        name: "formal partition check (lpe::analysis)".into(),
-        measured: f64::NAN,
-        tolerance: 0.0,
-        passed: None,
-        detail: "not available yet: provided by lpe::analysis with the fast matcher (issue 4)"
-            .into(),
-    }
+/// HOOK: `lpe::analysis` lands with the fast matcher. Until then this reports "not
+/// checked" rather than guessing. With it, the body per partition is:
+///
+/// ```ignore
+/// let members: Vec<(String, Lpe)> = p.members.iter()
+///     .map(|&i| (aovs.aovs[i].name.clone(), aovs.aovs[i].lpe.clone())).collect();
+/// match lpe::analysis::partition(&members, &lpe::analysis::default_universe()) {
+///     Ok(r) if r.is_clean() => /* passed: Some(true) */,
+///     Ok(r) => /* passed: Some(false) unless the set is only a partition for this
+///                scene (per-lobe set: report, do not fail); detail: r.gap, r.overlaps[0].2,
+///                r.outside[0].1 as witnesses */,
+///     Err(e) => /* passed: None, detail: e */,
+/// }
+/// ```
+pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
+    let sets: Vec<String> = if aovs.partitions.is_empty() {
+        vec!["all requested AOVs".to_string()]
+    } else {
+        aovs.partitions.iter().map(|p| p.name.clone()).collect()
+    };
+    sets.into_iter()
+        .map(|name| Invariant {
+            name: format!("formal partition check: {name} (lpe::analysis)"),
+            measured: f64::NAN,
+            tolerance: 0.0,
+            passed: None,
+            detail: "not available yet: provided by lpe::analysis with the fast matcher (issue 4)"
+                .into(),
+        })
+        .collect()
 }
 
 /// Standard normal upper tail `P(Z > z)`, from `erfc` (W. J. Cody's rational

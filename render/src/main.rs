@@ -247,7 +247,7 @@ fn run_render(args: &RenderArgs) -> Result<bool, InputError> {
             eprintln!("  {line}");
         }
     })?;
-    let mut invariants = vec![lpe_render::check::formal_partition(&aovs)];
+    let mut invariants = lpe_render::check::formal_partition(&aovs);
     invariants.extend(app::invariants(&scene, &aovs, &render));
     eprintln!(
         "rendered in {:.2}s: {:.0} paths/s, {:.0} rays/s",

@@ -10,13 +10,15 @@
 //! impl PathMatcher for lpe::aov::AovSet {
 //!     type Class = lpe::aov::Class;
 //!     type State = lpe::aov::State;
-//!     fn classify(&self, v: &Vertex) -> Self::Class { AovSet::classify(self, v) }
-//!     fn start(&self) -> Self::State { AovSet::start(self) }
+//!     fn classify(&self, v: &Vertex) -> Self::Class { lpe::aov::AovSet::classify(self, v) }
+//!     // Our `start` is the state *after* the camera vertex; AovSet's is before it.
+//!     fn start(&self) -> Self::State { lpe::aov::AovSet::step(self, lpe::aov::AovSet::start(self), &Vertex::camera()) }
 //!     fn step(&self, s: Self::State, c: Self::Class) -> Self::State { self.step_class(s, c) }
-//!     fn matches(&self, s: Self::State) -> AovMask { AovMask::from_iter(AovSet::matches(self, s).iter()) }
-//!     fn is_dead(&self, s: Self::State) -> bool { AovSet::is_dead(self, s) }
+//!     fn matches(&self, s: Self::State) -> AovMask { lpe::aov::AovSet::matches(self, s).iter().collect() }
+//!     fn is_dead(&self, s: Self::State) -> bool { lpe::aov::AovSet::is_dead(self, s) }
 //! }
 //! ```
+//! and in `app::render`, `AovSet::compile(&named_lpes)` instead of `ReferenceMatcher::new`.
 //!
 //! Until that lands, [`ReferenceMatcher`] implements the trait over
 //! `reference::is_match`: slow per call, but it memoizes the answer per distinct path

@@ -39,7 +39,10 @@ fn the_check_suite_passes() {
     let failed: Vec<_> = list.iter().filter(|i| i.failed()).collect();
     assert!(failed.is_empty(), "{failed:#?}");
     // Everything but the formal partition hook is actually checked.
-    assert_eq!(list.iter().filter(|i| i.passed.is_none()).count(), 1);
+    assert!(list
+        .iter()
+        .filter(|i| i.passed.is_none())
+        .all(|i| i.name.starts_with("formal partition check")));
     assert!(list.len() >= 20);
 }
 
