@@ -229,6 +229,12 @@ impl Strategy {
     }
 }
 
+/// A hit on an emitter that no other strategy estimates: full weight.
+const ONLY_STRATEGY: Strategy = Strategy::Hit {
+    w: 1.0,
+    nee_could: false,
+};
+
 /// One contribution reaching an emitter.
 struct Arrival<S> {
     /// Matcher state after the emitter vertex.
@@ -462,44 +468,35 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
         let n_lights = scene.lights.len();
         let light_pick_pdf = 1.0 / n_lights.max(1) as f32;
         let use_nee = s.technique != Technique::BsdfOnly && n_lights > 0;
-        // The MIS weight of a BSDF-sampled hit on an emitter light sampling can also
-        // produce, whose light-sampling density from the previous vertex is `pl`.
-        let hit_strategy = |prev: Option<(Vec3, f32)>, pl: f32| match prev {
-            Some((_, pdf)) if use_nee => Strategy::Hit {
-                w: match s.technique {
-                    Technique::Mis => power_heuristic(pdf, pl),
-                    _ => 0.0,
+        // Light `l` reached by the path at point `q` (normal `n`): seen straight from the
+        // camera it is an `O` vertex; reached by a bounce it is `L`, MIS-weighted against
+        // light sampling unless that bounce was a delta lobe (then only this strategy
+        // could have found it).
+        let light_hit = |l: usize, depth: u32, prev: Option<(Vec3, f32)>, q: Vec3, n: Vec3| {
+            if depth == 0 {
+                return (self.vertices.light_seen[l], ONLY_STRATEGY);
+            }
+            let strategy = match prev {
+                Some((p, bsdf_pdf)) if use_nee => Strategy::Hit {
+                    w: match s.technique {
+                        Technique::Mis => {
+                            power_heuristic(bsdf_pdf, scene.lights[l].pdf(p, q, n) * light_pick_pdf)
+                        }
+                        _ => 0.0,
+                    },
+                    nee_could: true,
                 },
-                nee_could: true,
-            },
-            _ => Strategy::Hit {
-                w: 1.0,
-                nee_could: false,
-            },
+                _ => ONLY_STRATEGY,
+            };
+            (self.vertices.light[l], strategy)
         };
 
         for depth in 0..=scene.settings.max_depth {
             acc.rays += 1;
             let Some(hit) = scene.intersect(&ray, f32::INFINITY) else {
                 if let Some(d) = scene.dome() {
-                    let light = &scene.lights[d];
-                    let le = light.emitted(ray.d, Vec3::ZERO);
-                    let (class, strategy) = match path.prev {
-                        None if depth == 0 => (
-                            self.vertices.light_seen[d],
-                            Strategy::Hit {
-                                w: 1.0,
-                                nee_could: false,
-                            },
-                        ),
-                        prev => (
-                            self.vertices.light[d],
-                            hit_strategy(
-                                prev,
-                                light.pdf(Vec3::ZERO, Vec3::ZERO, Vec3::ZERO) * light_pick_pdf,
-                            ),
-                        ),
-                    };
+                    let le = scene.lights[d].emitted(ray.d, Vec3::ZERO);
+                    let (class, strategy) = light_hit(d, depth, path.prev, Vec3::ZERO, Vec3::ZERO);
                     self.arrive(&path, class, le, strategy, path.holdout, acc);
                 }
                 return;
@@ -511,29 +508,9 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
 
             // Emission where the path arrived: an area light's surface or glow.
             if let Some(l) = object.light {
-                let light = &scene.lights[l];
-                let le = light.emitted(ray.d, hit.n);
+                let le = scene.lights[l].emitted(ray.d, hit.n);
                 if le != Vec3::ZERO {
-                    let (class, strategy) = match path.prev {
-                        _ if depth == 0 => (
-                            self.vertices.light_seen[l],
-                            Strategy::Hit {
-                                w: 1.0,
-                                nee_could: false,
-                            },
-                        ),
-                        Some((p, _)) => (
-                            self.vertices.light[l],
-                            hit_strategy(path.prev, light.pdf(p, hit.p, hit.n) * light_pick_pdf),
-                        ),
-                        None => (
-                            self.vertices.light[l],
-                            Strategy::Hit {
-                                w: 1.0,
-                                nee_could: false,
-                            },
-                        ),
-                    };
+                    let (class, strategy) = light_hit(l, depth, path.prev, hit.p, hit.n);
                     self.arrive(&path, class, le, strategy, path.holdout, acc);
                 }
                 return; // lights do not scatter
@@ -542,12 +519,9 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
                 return;
             };
             if mat.glow != Vec3::ZERO {
+                // Glow is not sampled by next-event estimation: paths find it alone.
                 let class = self.vertices.glow[hit.object as usize];
-                let strategy = Strategy::Hit {
-                    w: 1.0,
-                    nee_could: false,
-                };
-                self.arrive(&path, class, mat.glow, strategy, path.holdout, acc);
+                self.arrive(&path, class, mat.glow, ONLY_STRATEGY, path.holdout, acc);
             }
             if depth == scene.settings.max_depth || mat.lobes.is_empty() {
                 return;
