@@ -201,3 +201,48 @@ fn exr_reads_back_with_the_expected_layers_and_values() {
     assert_eq!((png.width(), png.height()), (16, 12));
     let _ = std::fs::remove_dir_all(&dir);
 }
+
+#[test]
+fn non_finite_samples_are_rejected_everywhere_but_in_noinfinitecheck_aovs() {
+    // A dome of radiance f32::MAX: light samples carry Le / pdf = Le * 4 pi, which
+    // overflows f32 to infinity, so those samples are not finite.
+    let text = r#"
+        [camera]
+        position = [0.0, 1.0, 0.0]
+        look_at = [0.0, 0.0, 0.0]
+        up = [0.0, 0.0, -1.0]
+        [materials.grey]
+        lobes = [{ name = "Diffuse", model = "lambert", albedo = [0.5, 0.5, 0.5] }]
+        [[objects]]
+        material = "grey"
+        quad = { corner = [-5.0, 0.0, -5.0], u = [0.0, 0.0, 10.0], v = [10.0, 0.0, 0.0] }
+        [[lights]]
+        kind = "dome"
+        radiance = [3.4028235e38, 3.4028235e38, 3.4028235e38]
+    "#;
+    let s = Scene::from_toml(text, "huge.toml", &Config::default().lobes).unwrap();
+    let p = parser();
+    let mut aovs = AovList::default();
+    let checked = aovs.push("checked", "C.*[<L.>O]", &p).unwrap();
+    let kept = aovs.push("kept", "noinfinitecheck;C.*[<L.>O]", &p).unwrap();
+    let r = render(&s, &aovs, &small(8, 2));
+    assert!(r.film.rejected > 0);
+    for layer in [0, 1 + checked] {
+        assert!(
+            r.film.layer(layer).iter().all(|v| v.is_finite()),
+            "layer {layer}"
+        );
+    }
+    assert!(r.film.layer(1 + kept).iter().any(|v| !v.is_finite()));
+    let inv = app::invariants(&s, &aovs, &r);
+    let finite = inv
+        .iter()
+        .find(|i| i.name.starts_with("no NaN/Inf"))
+        .unwrap();
+    assert_eq!(
+        finite.passed,
+        Some(false),
+        "the kept infinities are reported"
+    );
+    assert!(finite.detail.contains("kept"), "{}", finite.detail);
+}
