@@ -47,7 +47,7 @@ enum Command {
         #[arg(long, value_parser = positive_usize)]
         threads: Option<usize>,
         /// Alternating rounds; the best time of each configuration counts.
-        #[arg(long, default_value_t = 3, value_parser = positive_usize)]
+        #[arg(long, default_value_t = 5, value_parser = positive_usize)]
         rounds: usize,
     },
 }

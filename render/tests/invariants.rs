@@ -246,3 +246,27 @@ fn non_finite_samples_are_rejected_everywhere_but_in_noinfinitecheck_aovs() {
     );
     assert!(finite.detail.contains("kept"), "{}", finite.detail);
 }
+
+#[test]
+fn label_classes_split_paths_by_lpegroup() {
+    // First vertex on the floor, or on anything else: together exactly the paths whose
+    // first vertex is diffuse (`<.D>` = R or T with a D event), per pixel.
+    let s = scene("still-life");
+    let p = parser();
+    let mut aovs = AovList::default();
+    let floor = aovs.push("floor", "C<.D'floor'>.*[<L.>O]", &p).unwrap();
+    let other = aovs.push("other", "C<.D[^'floor']>.*[<L.>O]", &p).unwrap();
+    let all = aovs.push("all", "C<.D>.*[<L.>O]", &p).unwrap();
+    let r = render(&s, &aovs, &small(32, 4));
+    let mut floor_sum = 0.0;
+    for y in 0..32 {
+        for x in 0..32 {
+            let parts = r.film.pixel(x, y, 1 + floor) + r.film.pixel(x, y, 1 + other);
+            let whole = r.film.pixel(x, y, 1 + all);
+            let tol = 1e-12 * whole.abs().max_element().max(1e-12);
+            assert!((parts - whole).abs().max_element() <= tol, "({x},{y})");
+            floor_sum += r.film.pixel(x, y, 1 + floor).x;
+        }
+    }
+    assert!(floor_sum > 0.0, "the floor is in view");
+}
