@@ -42,12 +42,13 @@ enum Command {
         scene: String,
         #[arg(long, default_value_t = 8, value_parser = positive_u32)]
         spp: u32,
-        #[arg(long, default_value = "128x128", value_parser = parse_res)]
+        #[arg(long, default_value = "96x96", value_parser = parse_res)]
         res: (usize, usize),
-        #[arg(long, value_parser = positive_usize)]
-        threads: Option<usize>,
-        /// Alternating rounds; the best time of each configuration counts.
-        #[arg(long, default_value_t = 5, value_parser = positive_usize)]
+        /// One thread by default: a single worker is the least disturbed by other load.
+        #[arg(long, default_value_t = 1, value_parser = positive_usize)]
+        threads: usize,
+        /// Rounds, each rendering both configurations back to back.
+        #[arg(long, default_value_t = 15, value_parser = positive_usize)]
         rounds: usize,
     },
 }
@@ -130,7 +131,7 @@ fn main() -> ExitCode {
             res,
             threads,
             rounds,
-        }) => run_bench(&scene, spp, res, threads, rounds),
+        }) => run_bench(&scene, spp, res, Some(threads), rounds),
     };
     match result {
         Ok(true) => ExitCode::SUCCESS,
@@ -337,26 +338,29 @@ fn run_bench(
         ..Settings::default()
     };
     let b = app::bench(&scene, &config.lobes, &parser, &settings, rounds)?;
-    let overhead = b.aov_seconds / b.beauty_seconds - 1.0;
     println!(
-        "bench `{}` {}x{} {} spp, best of {rounds}, matcher: {}",
+        "bench `{}` {}x{} {} spp, {} thread(s), {rounds} rounds, matcher: {}",
         scene.name,
         res.0,
         res.1,
         spp,
+        threads.map_or("all".to_string(), |t| t.to_string()),
         app::ENGINE
     );
     println!(
-        "  beauty only: {:.3}s ({:.0} paths/s)",
+        "  beauty only: best {:.3}s ({:.0} paths/s)",
         b.beauty_seconds,
         b.paths as f64 / b.beauty_seconds
     );
     println!(
-        "  {} AOVs:     {:.3}s ({:.0} paths/s)",
+        "  {} AOVs:     best {:.3}s ({:.0} paths/s)",
         b.aov_count,
         b.aov_seconds,
         b.paths as f64 / b.aov_seconds
     );
-    println!("  LPE tracking overhead: {:+.1}%", overhead * 100.0);
+    println!(
+        "  LPE tracking overhead (median of {rounds} paired rounds): {:+.1}%",
+        b.overhead * 100.0
+    );
     Ok(true)
 }
