@@ -97,18 +97,27 @@ fn parse_res(s: &str) -> Result<(usize, usize), String> {
     Ok((w, h))
 }
 
-fn positive_u32(s: &str) -> Result<u32, String> {
-    match s.parse::<u32>() {
-        Ok(n) if n > 0 => Ok(n),
-        _ => Err(format!("`{s}`: expected a positive integer")),
+/// A positive integer no larger than `max`.
+fn positive_at_most<T: std::str::FromStr + PartialOrd + From<u8> + std::fmt::Display>(
+    s: &str,
+    max: T,
+) -> Result<T, String> {
+    match s.parse::<T>() {
+        Ok(n) if n >= T::from(1) && n <= max => Ok(n),
+        _ => Err(format!(
+            "`{s}`: expected a positive integer (at most {max})"
+        )),
     }
 }
 
+/// Samples per pixel.
+fn positive_u32(s: &str) -> Result<u32, String> {
+    positive_at_most(s, u32::MAX)
+}
+
+/// Threads and rounds: more than a few thousand is a typo, not a request.
 fn positive_usize(s: &str) -> Result<usize, String> {
-    match s.parse::<usize>() {
-        Ok(n) if n > 0 && n <= 4096 => Ok(n),
-        _ => Err(format!("`{s}`: expected a positive integer (at most 4096)")),
-    }
+    positive_at_most(s, 4096)
 }
 
 /// Input problems: printed, exit status 2.
@@ -276,6 +285,7 @@ fn run_render(args: &RenderArgs) -> Result<bool, InputError> {
             rays_per_second: render.rays as f64 / render.seconds,
         },
         effects_plan: render.plan.describe(),
+        effects: render.plan,
         aovs: aovs
             .aovs
             .iter()
