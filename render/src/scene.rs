@@ -1,0 +1,748 @@
+//! Scenes: the in-memory form the integrator reads, and the TOML scene file format
+//! (built-in scenes are TOML files compiled into the binary, so they double as
+//! documented examples of the format; see `render/scenes/README.md`).
+
+use glam::Vec3;
+use lpe::LobeMap;
+use serde::Deserialize;
+use std::collections::BTreeMap;
+use std::fmt;
+
+use crate::geometry::{Bvh, Hit, Ray, Shape};
+use crate::light::{Light, LightKind};
+use crate::material::{Lobe, Material, Model};
+
+/// A built-in scene: name and TOML source.
+pub const BUILTIN: [(&str, &str); 3] = [
+    ("cornell", include_str!("../scenes/cornell.toml")),
+    ("still-life", include_str!("../scenes/still-life.toml")),
+    ("furnace", include_str!("../scenes/furnace.toml")),
+];
+
+/// An object: geometry (in the BVH) with a material or an area light.
+#[derive(Clone, Debug)]
+pub struct Object {
+    pub name: String,
+    /// Index into [`Scene::materials`]; `None` for an area light's surface.
+    pub material: Option<usize>,
+    /// The label of the object's R/T/O vertices.
+    pub lpegroup: Option<String>,
+    /// Paths touching a holdout object go only to `holdouts;` AOVs.
+    pub holdout: bool,
+    /// Index into [`Scene::lights`] when the object is an area light.
+    pub light: Option<usize>,
+}
+
+/// Pinhole camera placement (the aspect ratio comes from the image size).
+#[derive(Clone, Copy, Debug)]
+pub struct CameraDesc {
+    pub position: Vec3,
+    pub look_at: Vec3,
+    pub up: Vec3,
+    pub fov: f32,
+}
+
+/// Integrator settings a scene file may set.
+#[derive(Clone, Copy, Debug)]
+pub struct SceneSettings {
+    /// Most scattering vertices on a path.
+    pub max_depth: u32,
+    /// Russian roulette starts after this many scattering vertices.
+    pub rr_depth: u32,
+    /// Largest component a single contribution may have (`noclamp;` AOVs bypass it).
+    pub clamp: Option<f32>,
+}
+
+/// A scene ready to render.
+#[derive(Clone, Debug)]
+pub struct Scene {
+    pub name: String,
+    pub camera: CameraDesc,
+    pub objects: Vec<Object>,
+    pub materials: Vec<Material>,
+    pub material_names: Vec<String>,
+    pub lights: Vec<Light>,
+    pub settings: SceneSettings,
+    bvh: Bvh,
+}
+
+/// Most distinct labels (object `lpegroup`s and light groups) in one scene.
+pub const MAX_LABELS: usize = 1024;
+
+/// Most scattering vertices a path may have: paths are kept in fixed-size buffers by
+/// the reference matcher (see `matcher.rs`).
+pub const MAX_DEPTH_LIMIT: u32 = 60;
+
+impl Scene {
+    pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
+        self.bvh.intersect(ray, t_max)
+    }
+
+    pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
+        self.bvh.occluded(ray, t_max)
+    }
+
+    /// The dome light, if any (what escaping rays see).
+    pub fn dome(&self) -> Option<usize> {
+        self.lights
+            .iter()
+            .position(|l| matches!(l.kind, LightKind::Dome { .. }))
+    }
+
+    /// Light groups in order of first appearance.
+    pub fn light_groups(&self) -> Vec<String> {
+        let mut out: Vec<String> = Vec::new();
+        for g in self.lights.iter().filter_map(|l| l.group.clone()) {
+            if !out.contains(&g) {
+                out.push(g);
+            }
+        }
+        out
+    }
+
+    /// Loads a built-in scene by name or a TOML file by path.
+    pub fn load(name_or_path: &str, lobes: &LobeMap) -> Result<Scene, SceneError> {
+        if let Some((_, src)) = BUILTIN.iter().find(|(n, _)| *n == name_or_path) {
+            return Scene::from_toml(src, name_or_path, lobes);
+        }
+        let text = std::fs::read_to_string(name_or_path).map_err(|e| SceneError {
+            file: name_or_path.to_string(),
+            line: None,
+            message: if std::path::Path::new(name_or_path).extension().is_none() {
+                format!(
+                    "not a built-in scene ({}) and not a readable file: {e}",
+                    BUILTIN.map(|b| b.0).join(", ")
+                )
+            } else {
+                format!("cannot read: {e}")
+            },
+        })?;
+        let stem = std::path::Path::new(name_or_path)
+            .file_stem()
+            .map_or("scene".into(), |s| s.to_string_lossy().into_owned());
+        Scene::from_toml(&text, name_or_path, lobes).map(|mut s| {
+            if s.name.is_empty() {
+                s.name = stem;
+            }
+            s
+        })
+    }
+
+    /// Parses a TOML scene; `file` names it in errors.
+    pub fn from_toml(text: &str, file: &str, lobes: &LobeMap) -> Result<Scene, SceneError> {
+        let err = |span: Option<std::ops::Range<usize>>, message: String| SceneError {
+            file: file.to_string(),
+            line: span.map(|s| 1 + text[..s.start.min(text.len())].matches('\n').count()),
+            message,
+        };
+        let desc: SceneFile =
+            toml::from_str(text).map_err(|e| err(e.span(), e.message().to_string()))?;
+        desc.build(lobes)
+            .map_err(|(span, message)| err(span, message))
+    }
+}
+
+/// A scene file problem: file, line (when known) and what.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SceneError {
+    pub file: String,
+    pub line: Option<usize>,
+    pub message: String,
+}
+
+impl fmt::Display for SceneError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.line {
+            Some(l) => write!(f, "{}:{}: {}", self.file, l, self.message),
+            None => write!(f, "{}: {}", self.file, self.message),
+        }
+    }
+}
+
+impl std::error::Error for SceneError {}
+
+// ---------------------------------------------------------------------------------------
+// The file format (serde). Unknown keys are errors so that typos do not pass silently.
+
+type Spanned<T> = toml::Spanned<T>;
+type BuildError = (Option<std::ops::Range<usize>>, String);
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    #[serde(default)]
+    name: String,
+    camera: CameraFile,
+    #[serde(default)]
+    render: RenderFile,
+    #[serde(default)]
+    materials: BTreeMap<String, Spanned<MaterialFile>>,
+    #[serde(default)]
+    objects: Vec<Spanned<ObjectFile>>,
+    #[serde(default)]
+    lights: Vec<Spanned<LightFile>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CameraFile {
+    position: [f32; 3],
+    look_at: [f32; 3],
+    #[serde(default = "default_up")]
+    up: [f32; 3],
+    #[serde(default = "default_fov")]
+    fov: f32,
+}
+
+fn default_up() -> [f32; 3] {
+    [0.0, 1.0, 0.0]
+}
+
+fn default_fov() -> f32 {
+    40.0
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RenderFile {
+    #[serde(default = "default_max_depth")]
+    max_depth: u32,
+    #[serde(default = "default_rr_depth")]
+    rr_depth: u32,
+    #[serde(default)]
+    clamp: Option<f32>,
+}
+
+impl Default for RenderFile {
+    fn default() -> Self {
+        RenderFile {
+            max_depth: default_max_depth(),
+            rr_depth: default_rr_depth(),
+            clamp: None,
+        }
+    }
+}
+
+fn default_max_depth() -> u32 {
+    8
+}
+
+fn default_rr_depth() -> u32 {
+    3
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MaterialFile {
+    #[serde(default)]
+    lobes: Vec<LobeFile>,
+    #[serde(default)]
+    glow: Option<[f32; 3]>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LobeFile {
+    /// The lobe's name, mapped to an LPE lobe by the lobe map (e.g. `Clearcoat` -> S4).
+    name: String,
+    /// `lambert`, `diffuse_transmission`, `ggx` or `dielectric`.
+    model: String,
+    albedo: Option<[f32; 3]>,
+    f0: Option<[f32; 3]>,
+    roughness: Option<f32>,
+    ior: Option<f32>,
+    tint: Option<[f32; 3]>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ObjectFile {
+    #[serde(default)]
+    name: String,
+    material: String,
+    lpegroup: Option<String>,
+    #[serde(default)]
+    holdout: bool,
+    sphere: Option<SphereFile>,
+    quad: Option<QuadFile>,
+    #[serde(rename = "box")]
+    cuboid: Option<BoxFile>,
+    mesh: Option<MeshFile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SphereFile {
+    center: [f32; 3],
+    radius: f32,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct QuadFile {
+    corner: [f32; 3],
+    u: [f32; 3],
+    v: [f32; 3],
+}
+
+/// An axis-aligned box `min..max` rotated by `rotate_y` degrees about its center,
+/// turned into a 12-triangle mesh.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BoxFile {
+    min: [f32; 3],
+    max: [f32; 3],
+    #[serde(default)]
+    rotate_y: f32,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MeshFile {
+    vertices: Vec<[f32; 3]>,
+    triangles: Vec<[u32; 3]>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LightFile {
+    /// `quad`, `sphere`, `point`, `distant` or `dome`.
+    kind: String,
+    group: Option<String>,
+    /// Area and dome lights.
+    radiance: Option<[f32; 3]>,
+    /// Point lights.
+    intensity: Option<[f32; 3]>,
+    /// Distant lights.
+    irradiance: Option<[f32; 3]>,
+    /// Distant lights: direction toward the light.
+    direction: Option<[f32; 3]>,
+    /// Point lights.
+    position: Option<[f32; 3]>,
+    corner: Option<[f32; 3]>,
+    u: Option<[f32; 3]>,
+    v: Option<[f32; 3]>,
+    center: Option<[f32; 3]>,
+    radius: Option<f32>,
+}
+
+/// A finite vector, or an error naming the field.
+fn vec3(v: [f32; 3], what: &str) -> Result<Vec3, String> {
+    if v.iter().all(|x| x.is_finite()) {
+        Ok(Vec3::from(v))
+    } else {
+        Err(format!("{what} must be finite, got {v:?}"))
+    }
+}
+
+fn color(v: [f32; 3], what: &str) -> Result<Vec3, String> {
+    let c = vec3(v, what)?;
+    if c.min_element() < 0.0 {
+        return Err(format!("{what} must not be negative, got {v:?}"));
+    }
+    Ok(c)
+}
+
+fn positive(x: f32, what: &str) -> Result<f32, String> {
+    if x.is_finite() && x > 0.0 {
+        Ok(x)
+    } else {
+        Err(format!("{what} must be a positive number, got {x}"))
+    }
+}
+
+fn need<T>(x: Option<T>, what: &str, kind: &str) -> Result<T, String> {
+    x.ok_or_else(|| format!("a {kind} needs `{what}`"))
+}
+
+impl LobeFile {
+    fn build(&self, lobes: &LobeMap) -> Result<Lobe, String> {
+        let model = match self.model.as_str() {
+            "lambert" => Model::Lambert {
+                albedo: color(need(self.albedo, "albedo", "lambert lobe")?, "albedo")?,
+            },
+            "diffuse_transmission" => Model::DiffuseTransmission {
+                albedo: color(
+                    need(self.albedo, "albedo", "diffuse_transmission lobe")?,
+                    "albedo",
+                )?,
+            },
+            "ggx" => {
+                let r = need(self.roughness, "roughness", "ggx lobe")?;
+                if !(r.is_finite() && (0.0..=1.0).contains(&r)) {
+                    return Err(format!("roughness must be in [0, 1], got {r}"));
+                }
+                Model::Ggx {
+                    f0: color(need(self.f0, "f0", "ggx lobe")?, "f0")?,
+                    // Perceptual roughness squared, as in most shading systems.
+                    alpha: r * r,
+                }
+            }
+            "dielectric" => Model::Dielectric {
+                ior: positive(need(self.ior, "ior", "dielectric lobe")?, "ior")?,
+                tint: color(self.tint.unwrap_or([1.0; 3]), "tint")?,
+            },
+            other => {
+                return Err(format!(
+                    "unknown lobe model `{other}` (lambert, diffuse_transmission, ggx, dielectric)"
+                ))
+            }
+        };
+        Ok(Lobe::new(&self.name, model, lobes))
+    }
+}
+
+fn box_triangles(b: &BoxFile) -> Result<Vec<Shape>, String> {
+    let lo = vec3(b.min, "box min")?;
+    let hi = vec3(b.max, "box max")?;
+    if !(hi.cmpgt(lo).all()) {
+        return Err("box max must exceed min on every axis".into());
+    }
+    let c = (lo + hi) * 0.5;
+    let rot = glam::Quat::from_rotation_y(b.rotate_y.to_radians());
+    let corner = |i: u32| {
+        let p = Vec3::new(
+            if i & 1 == 0 { lo.x } else { hi.x },
+            if i & 2 == 0 { lo.y } else { hi.y },
+            if i & 4 == 0 { lo.z } else { hi.z },
+        );
+        c + rot * (p - c)
+    };
+    // Faces as corner-index quads, counter-clockwise seen from outside.
+    const FACES: [[u32; 4]; 6] = [
+        [0, 2, 3, 1], // -z
+        [4, 5, 7, 6], // +z
+        [0, 1, 5, 4], // -y
+        [2, 6, 7, 3], // +y
+        [0, 4, 6, 2], // -x
+        [1, 3, 7, 5], // +x
+    ];
+    let mut out = Vec::new();
+    for f in FACES {
+        let [a, b, c2, d] = f.map(corner);
+        out.push(Shape::Triangle {
+            p0: a,
+            e1: b - a,
+            e2: c2 - a,
+        });
+        out.push(Shape::Triangle {
+            p0: a,
+            e1: c2 - a,
+            e2: d - a,
+        });
+    }
+    Ok(out)
+}
+
+impl ObjectFile {
+    fn shapes(&self) -> Result<Vec<Shape>, String> {
+        let given = [
+            self.sphere.is_some(),
+            self.quad.is_some(),
+            self.cuboid.is_some(),
+            self.mesh.is_some(),
+        ];
+        if given.iter().filter(|g| **g).count() != 1 {
+            return Err("an object needs exactly one of `sphere`, `quad`, `box`, `mesh`".into());
+        }
+        if let Some(s) = &self.sphere {
+            return Ok(vec![Shape::Sphere {
+                center: vec3(s.center, "center")?,
+                radius: positive(s.radius, "radius")?,
+            }]);
+        }
+        if let Some(q) = &self.quad {
+            let (u, v) = (vec3(q.u, "u")?, vec3(q.v, "v")?);
+            if u.cross(v).length_squared() == 0.0 {
+                return Err("quad edges `u` and `v` are parallel (zero area)".into());
+            }
+            return Ok(vec![Shape::Quad {
+                corner: vec3(q.corner, "corner")?,
+                u,
+                v,
+            }]);
+        }
+        if let Some(b) = &self.cuboid {
+            return box_triangles(b);
+        }
+        let m = self.mesh.as_ref().expect("one shape is set");
+        let verts: Vec<Vec3> = m
+            .vertices
+            .iter()
+            .map(|v| vec3(*v, "mesh vertex"))
+            .collect::<Result<_, _>>()?;
+        let mut out = Vec::new();
+        for t in &m.triangles {
+            let p = |i: u32| {
+                verts.get(i as usize).copied().ok_or_else(|| {
+                    format!("triangle index {i} out of range ({} vertices)", verts.len())
+                })
+            };
+            let (a, b, c) = (p(t[0])?, p(t[1])?, p(t[2])?);
+            // Zero-area triangles can never be hit; skipping them keeps normals finite.
+            if (b - a).cross(c - a).length_squared() > 0.0 {
+                out.push(Shape::Triangle {
+                    p0: a,
+                    e1: b - a,
+                    e2: c - a,
+                });
+            }
+        }
+        Ok(out)
+    }
+}
+
+impl LightFile {
+    fn build(&self) -> Result<LightKind, String> {
+        let k = self.kind.as_str();
+        Ok(match k {
+            "quad" => {
+                let (u, v) = (
+                    vec3(need(self.u, "u", "quad light")?, "u")?,
+                    vec3(need(self.v, "v", "quad light")?, "v")?,
+                );
+                if u.cross(v).length_squared() == 0.0 {
+                    return Err("quad light edges `u` and `v` are parallel (zero area)".into());
+                }
+                LightKind::Quad {
+                    corner: vec3(need(self.corner, "corner", "quad light")?, "corner")?,
+                    u,
+                    v,
+                    radiance: color(need(self.radiance, "radiance", "quad light")?, "radiance")?,
+                }
+            }
+            "sphere" => LightKind::Sphere {
+                center: vec3(need(self.center, "center", "sphere light")?, "center")?,
+                radius: positive(need(self.radius, "radius", "sphere light")?, "radius")?,
+                radiance: color(need(self.radiance, "radiance", "sphere light")?, "radiance")?,
+            },
+            "point" => LightKind::Point {
+                position: vec3(need(self.position, "position", "point light")?, "position")?,
+                intensity: color(
+                    need(self.intensity, "intensity", "point light")?,
+                    "intensity",
+                )?,
+            },
+            "distant" => {
+                let d = vec3(
+                    need(self.direction, "direction", "distant light")?,
+                    "direction",
+                )?;
+                if d.length_squared() == 0.0 {
+                    return Err("distant light direction must not be zero".into());
+                }
+                LightKind::Distant {
+                    direction: d.normalize(),
+                    irradiance: color(
+                        need(self.irradiance, "irradiance", "distant light")?,
+                        "irradiance",
+                    )?,
+                }
+            }
+            "dome" => LightKind::Dome {
+                radiance: color(need(self.radiance, "radiance", "dome light")?, "radiance")?,
+            },
+            other => {
+                return Err(format!(
+                    "unknown light kind `{other}` (quad, sphere, point, distant, dome)"
+                ))
+            }
+        })
+    }
+}
+
+impl SceneFile {
+    fn build(self, lobe_map: &LobeMap) -> Result<Scene, BuildError> {
+        let c = &self.camera;
+        let at = |m: String| (None, m);
+        let camera = CameraDesc {
+            position: vec3(c.position, "camera position").map_err(at)?,
+            look_at: vec3(c.look_at, "camera look_at").map_err(at)?,
+            up: vec3(c.up, "camera up").map_err(at)?,
+            fov: positive(c.fov, "camera fov").map_err(at)?,
+        };
+        if (camera.look_at - camera.position)
+            .cross(camera.up)
+            .length_squared()
+            == 0.0
+        {
+            return Err((
+                None,
+                "camera: look_at must differ from position and not lie along up".into(),
+            ));
+        }
+        let r = &self.render;
+        if r.max_depth == 0 || r.max_depth > MAX_DEPTH_LIMIT {
+            return Err((
+                None,
+                format!(
+                    "render.max_depth must be 1..={MAX_DEPTH_LIMIT}, got {}",
+                    r.max_depth
+                ),
+            ));
+        }
+        if let Some(cl) = r.clamp {
+            positive(cl, "render.clamp").map_err(at)?;
+        }
+        let settings = SceneSettings {
+            max_depth: r.max_depth,
+            rr_depth: r.rr_depth,
+            clamp: r.clamp,
+        };
+
+        let mut materials = Vec::new();
+        let mut material_names = Vec::new();
+        for (name, m) in &self.materials {
+            let span = Some(m.span());
+            let m = m.get_ref();
+            let lobes = m
+                .lobes
+                .iter()
+                .map(|l| l.build(lobe_map))
+                .collect::<Result<Vec<_>, _>>()
+                .map_err(|e| (span.clone(), format!("material `{name}`: {e}")))?;
+            let glow = color(m.glow.unwrap_or([0.0; 3]), "glow")
+                .map_err(|e| (span.clone(), format!("material `{name}`: {e}")))?;
+            materials.push(Material::new(lobes, glow));
+            material_names.push(name.clone());
+        }
+
+        let mut objects = Vec::new();
+        let mut prims = Vec::new();
+        for (i, o) in self.objects.iter().enumerate() {
+            let span = Some(o.span());
+            let o = o.get_ref();
+            let name = if o.name.is_empty() {
+                format!("object{i}")
+            } else {
+                o.name.clone()
+            };
+            let material = material_names
+                .iter()
+                .position(|n| *n == o.material)
+                .ok_or_else(|| {
+                    (
+                        span.clone(),
+                        format!(
+                            "object `{name}`: unknown material `{}` (defined: {})",
+                            o.material,
+                            material_names.join(", ")
+                        ),
+                    )
+                })?;
+            let shapes = o
+                .shapes()
+                .map_err(|e| (span.clone(), format!("object `{name}`: {e}")))?;
+            let id = objects.len() as u32;
+            prims.extend(shapes.into_iter().map(|s| (s, id)));
+            objects.push(Object {
+                name,
+                material: Some(material),
+                lpegroup: o.lpegroup.clone(),
+                holdout: o.holdout,
+                light: None,
+            });
+        }
+
+        let mut lights = Vec::new();
+        for l in &self.lights {
+            let span = Some(l.span());
+            let lf = l.get_ref();
+            let kind = lf
+                .build()
+                .map_err(|e| (span.clone(), format!("light {}: {e}", lights.len())))?;
+            let light = Light {
+                kind,
+                group: lf.group.clone(),
+            };
+            if let Some(shape) = light.shape() {
+                let id = objects.len() as u32;
+                prims.push((shape, id));
+                objects.push(Object {
+                    name: format!("light{}", lights.len()),
+                    material: None,
+                    lpegroup: None,
+                    holdout: false,
+                    light: Some(lights.len()),
+                });
+            }
+            lights.push(light);
+        }
+        // Labels become distinct matcher vertices (label x event x R/T); bounding them
+        // keeps every scene within the matcher's class space (see `matcher.rs`).
+        let mut labels: Vec<&str> = objects
+            .iter()
+            .filter_map(|o| o.lpegroup.as_deref())
+            .chain(lights.iter().filter_map(|l| l.group.as_deref()))
+            .collect();
+        labels.sort_unstable();
+        labels.dedup();
+        if labels.len() > MAX_LABELS {
+            return Err((
+                None,
+                format!(
+                    "{} distinct lpegroup/group labels; at most {MAX_LABELS}",
+                    labels.len()
+                ),
+            ));
+        }
+        if lights
+            .iter()
+            .filter(|l| matches!(l.kind, LightKind::Dome { .. }))
+            .count()
+            > 1
+        {
+            return Err((None, "at most one dome light".into()));
+        }
+        Ok(Scene {
+            name: self.name,
+            camera,
+            objects,
+            materials,
+            material_names,
+            lights,
+            settings,
+            bvh: Bvh::new(prims),
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builtin_scenes_load() {
+        for (name, _) in BUILTIN {
+            let s = Scene::load(name, &LobeMap::default()).unwrap();
+            assert!(!s.objects.is_empty(), "{name}");
+        }
+    }
+
+    #[test]
+    fn errors_name_file_and_line() {
+        let map = LobeMap::default();
+        let text = "[camera]\nposition = [0,0,0]\nlook_at = [0,0,1]\n\n[[objects]]\nmaterial = \"nope\"\nsphere = { center = [0,0,3], radius = 1 }\n";
+        let e = Scene::from_toml(text, "s.toml", &map).unwrap_err();
+        assert_eq!(e.line, Some(5), "{e}");
+        assert!(e.to_string().starts_with("s.toml:5: "), "{e}");
+        assert!(e.message.contains("unknown material `nope`"), "{e}");
+
+        let e = Scene::from_toml(
+            "[camera]\nposition = [0,0,0]\nlook_at = [0,0,1]\nfoo = 1\n",
+            "s.toml",
+            &map,
+        )
+        .unwrap_err();
+        assert_eq!(e.line, Some(4), "{e}");
+        assert!(e.message.contains("foo"), "{e}");
+
+        let e = Scene::from_toml(
+            "[camera]\nposition = [0,0,nan]\nlook_at = [0,0,1]\n",
+            "s.toml",
+            &map,
+        )
+        .unwrap_err();
+        assert!(e.message.contains("finite"), "{e}");
+    }
+}
