@@ -503,11 +503,16 @@ mod tests {
 
     #[test]
     fn sets_too_large_for_step_tables_still_get_a_dfa() {
-        // 2 302 positions: step tables would take 21 MiB, over the 16 MiB default; the
-        // DFA (a chain) is built by stepping follow rows instead.
-        let s = set(&["C(.{230}){10}L"], &Options::default());
+        // 302 positions: 5-word states, whose step tables (400 KiB) are over a 256 KiB
+        // NFA budget while the follow rows (12 KiB) fit; the DFA (a chain) is built by
+        // stepping rows instead.
+        let opts = Options {
+            nfa_budget: 256 << 10,
+            ..Options::default()
+        };
+        let s = set(&["C(.{100}){3}L"], &opts);
         assert!(s.uses_dfa());
-        for (n, want) in [(2300, true), (2299, false), (2301, false)] {
+        for (n, want) in [(300, true), (299, false), (301, false)] {
             let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
             assert_eq!(s.match_path(&p).contains(0), want, "{n}");
         }

@@ -125,8 +125,15 @@ impl Dfa {
                             .iter()
                             .map(|&t| block[t as usize]),
                     );
-                    let next = by_sig.len() as u32;
-                    *by_sig.entry(sig.clone()).or_insert(next)
+                    // Look up before inserting: a key is allocated only for a new block.
+                    match by_sig.get(&sig[..]) {
+                        Some(&b) => b,
+                        None => {
+                            let next = by_sig.len() as u32;
+                            by_sig.insert(sig.clone(), next);
+                            next
+                        }
+                    }
                 })
                 .collect();
             let refined_count = by_sig.len() as u32;

@@ -6,14 +6,14 @@ use lpe::{LobeMap, Parser};
 use crate::aovs::AovList;
 use crate::check::{self, Invariant};
 use crate::integrator::{Integrator, Render, Settings, Technique};
-use crate::matcher::ReferenceMatcher;
+use crate::matcher::{PathMatcher, ReferenceMatcher};
 use crate::scene::Scene;
 
 /// Renders `scene` with `aovs`.
 ///
-/// ENGINE: the one place that picks the matcher. It is the memoized reference matcher
-/// until the fast matcher (`lpe::aov::AovSet`) lands; then build that here instead (and
-/// keep the reference for `converge`'s engine comparison).
+/// ENGINE: the one place that picks the matcher: the fast matcher (`lpe::aov::AovSet`),
+/// or, for a set it refuses to compile (over its size limits), the memoized reference
+/// matcher with a warning on stderr. Both give the same image; only the time differs.
 pub fn render(
     scene: &Scene,
     aovs: &AovList,
@@ -32,14 +32,35 @@ pub fn render_announcing(
     settings: &Settings,
     on_plan: &mut dyn FnMut(&crate::plan::Plan),
 ) -> Result<Render, String> {
-    let matcher = ReferenceMatcher::new(&aovs.lpes())?;
-    let integrator = Integrator::new(scene, aovs, &matcher, lobes, settings);
-    on_plan(&integrator.plan());
-    integrator.render()
+    fn run<M: PathMatcher>(
+        matcher: &M,
+        scene: &Scene,
+        aovs: &AovList,
+        lobes: &LobeMap,
+        settings: &Settings,
+        on_plan: &mut dyn FnMut(&crate::plan::Plan),
+    ) -> Result<Render, String> {
+        let integrator = Integrator::new(scene, aovs, matcher, lobes, settings);
+        on_plan(&integrator.plan());
+        integrator.render()
+    }
+    let named: Vec<(String, lpe::Lpe)> = aovs
+        .aovs
+        .iter()
+        .map(|a| (a.name.clone(), a.lpe.clone()))
+        .collect();
+    match lpe::aov::AovSet::compile(&named) {
+        Ok(set) => run(&set, scene, aovs, lobes, settings, on_plan),
+        Err(e) => {
+            eprintln!("warning: the fast matcher refused this AOV set ({e}); using the reference matcher");
+            let matcher = ReferenceMatcher::new(&aovs.lpes())?;
+            run(&matcher, scene, aovs, lobes, settings, on_plan)
+        }
+    }
 }
 
 /// Name of the engine [`render`] uses, for reports.
-pub const ENGINE: &str = "reference (memoized per distinct path)";
+pub const ENGINE: &str = "fast (lpe::aov::AovSet; reference if the set cannot compile)";
 
 /// The furnace's parameters `(albedo a, emission Le)` if `scene` is a furnace: one
 /// material, one Lambert lobe, grey albedo and glow.

@@ -106,38 +106,58 @@ pub fn finite(film: &Film, aovs: &AovList) -> Invariant {
     )
 }
 
-/// The formal partition check (fast-matcher issue): decides from the automata whether
-/// each declared partition (or, with none declared, the whole AOV set) partitions
-/// beauty's universe `C.*[<L.>O]`, with a witness path if not.
-///
-/// HOOK: `lpe::analysis` lands with the fast matcher. Until then this reports "not
-/// checked" rather than guessing. With it, the body per partition is:
-///
-/// ```ignore
-/// let members: Vec<(String, Lpe)> = p.members.iter()
-///     .map(|&i| (aovs.aovs[i].name.clone(), aovs.aovs[i].lpe.clone())).collect();
-/// match lpe::analysis::partition(&members, &lpe::analysis::default_universe()) {
-///     Ok(r) if r.is_clean() => /* passed: Some(true) */,
-///     Ok(r) => /* passed: Some(false) unless the set is only a partition for this
-///                scene (per-lobe set: report, do not fail); detail: r.gap, r.overlaps[0].2,
-///                r.outside[0].1 as witnesses */,
-///     Err(e) => /* passed: None, detail: e */,
-/// }
-/// ```
+/// The formal partition check (`lpe::analysis::partition`): decides from the automata,
+/// before any sample is traced, whether each declared partition (or, with none declared,
+/// the whole AOV set) partitions beauty's universe `C.*[<L.>O]`, with a shortest witness
+/// path if not. This is a statement about every possible path, not about this scene.
 pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
-    let sets: Vec<String> = if aovs.partitions.is_empty() {
-        vec!["all requested AOVs".to_string()]
+    let sets: Vec<(String, Vec<usize>)> = if aovs.partitions.is_empty() {
+        vec![("all requested AOVs".to_string(), (0..aovs.aovs.len()).collect())]
     } else {
-        aovs.partitions.iter().map(|p| p.name.clone()).collect()
+        aovs.partitions
+            .iter()
+            .map(|p| (p.name.clone(), p.members.clone()))
+            .collect()
     };
+    let universe = lpe::analysis::default_universe();
     sets.into_iter()
-        .map(|name| Invariant {
-            name: format!("formal partition check: {name} (lpe::analysis)"),
-            measured: f64::NAN,
-            tolerance: 0.0,
-            passed: None,
-            detail: "not available yet: provided by lpe::analysis with the fast matcher (issue 4)"
-                .into(),
+        .map(|(name, members)| {
+            let named: Vec<(String, lpe::Lpe)> = members
+                .iter()
+                .map(|&i| (aovs.aovs[i].name.clone(), aovs.aovs[i].lpe.clone()))
+                .collect();
+            let aov_name = |i: usize| named[i].0.as_str();
+            let (passed, detail) = match lpe::analysis::partition(&named, &universe) {
+                Ok(r) if r.is_clean() => (
+                    Some(true),
+                    format!("every path of {universe} matches exactly one AOV"),
+                ),
+                Ok(r) => {
+                    let mut why = Vec::new();
+                    if let Some(g) = &r.gap {
+                        why.push(format!("gap: `{g}` matches none"));
+                    }
+                    if let Some((i, j, p)) = r.overlaps.first() {
+                        why.push(format!(
+                            "overlap: `{p}` matches both {} and {}",
+                            aov_name(*i),
+                            aov_name(*j)
+                        ));
+                    }
+                    if let Some((i, p)) = r.outside.first() {
+                        why.push(format!("{} also matches `{p}`, outside the universe", aov_name(*i)));
+                    }
+                    (Some(false), why.join("; "))
+                }
+                Err(e) => (None, format!("not checked: {e}")),
+            };
+            Invariant {
+                name: format!("formal partition check: {name} (lpe::analysis)"),
+                measured: f64::NAN,
+                tolerance: 0.0,
+                passed,
+                detail,
+            }
         })
         .collect()
 }

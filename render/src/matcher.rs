@@ -4,23 +4,10 @@
 //! can produce once, before rendering, then per path carries a `Copy` state that it steps
 //! one vertex at a time, and at every emitter asks which AOVs match. This is exactly the
 //! shape of the fast matcher's API (`lpe::aov::AovSet`: `classify`, `start`,
-//! `step_class`, `matches`, `is_dead`), so plugging it in is a thin adapter:
+//! `step_class`, `matches`, `is_dead`), which the renderer uses by default through the
+//! thin adapter below.
 //!
-//! ```ignore
-//! impl PathMatcher for lpe::aov::AovSet {
-//!     type Class = lpe::aov::Class;
-//!     type State = lpe::aov::State;
-//!     fn classify(&self, v: &Vertex) -> Self::Class { lpe::aov::AovSet::classify(self, v) }
-//!     // Our `start` is the state *after* the camera vertex; AovSet's is before it.
-//!     fn start(&self) -> Self::State { lpe::aov::AovSet::step(self, lpe::aov::AovSet::start(self), &Vertex::camera()) }
-//!     fn step(&self, s: Self::State, c: Self::Class) -> Self::State { self.step_class(s, c) }
-//!     fn matches(&self, s: Self::State) -> AovMask { lpe::aov::AovSet::matches(self, s).iter().collect() }
-//!     fn is_dead(&self, s: Self::State) -> bool { lpe::aov::AovSet::is_dead(self, s) }
-//! }
-//! ```
-//! and in `app::render`, `AovSet::compile(&named_lpes)` instead of `ReferenceMatcher::new`.
-//!
-//! Until that lands, [`ReferenceMatcher`] implements the trait over
+//! [`ReferenceMatcher`] implements the trait over
 //! `reference::is_match`: slow per call, but it memoizes the answer per distinct path
 //! (renders revisit the same few vertex sequences millions of times), so the default
 //! render stays within budget.
@@ -103,6 +90,34 @@ pub trait PathMatcher: Sync {
     fn matches(&self, s: Self::State) -> AovMask;
     /// True if no continuation can match any AOV (a sound "maybe alive" is `false`).
     fn is_dead(&self, s: Self::State) -> bool;
+}
+
+/// The fast matcher: one automaton for all AOVs, stepped once per vertex on the classes
+/// computed at scene setup.
+impl PathMatcher for lpe::aov::AovSet {
+    type Class = lpe::aov::Class;
+    type State = lpe::aov::State;
+
+    fn classify(&self, v: &Vertex) -> Self::Class {
+        lpe::aov::AovSet::classify(self, v)
+    }
+
+    /// `AovSet::start` is the state before any vertex; ours is after the camera.
+    fn start(&self) -> Self::State {
+        lpe::aov::AovSet::step(self, lpe::aov::AovSet::start(self), &Vertex::camera())
+    }
+
+    fn step(&self, s: Self::State, c: Self::Class) -> Self::State {
+        self.step_class(s, c)
+    }
+
+    fn matches(&self, s: Self::State) -> AovMask {
+        lpe::aov::AovSet::matches(self, s).iter().collect()
+    }
+
+    fn is_dead(&self, s: Self::State) -> bool {
+        lpe::aov::AovSet::is_dead(self, s)
+    }
 }
 
 // ---------------------------------------------------------------------------------------
