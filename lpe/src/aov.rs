@@ -92,6 +92,15 @@ impl AovMask {
     }
 }
 
+impl FromIterator<usize> for AovMask {
+    /// The mask of these AOV indices (indices `>= MAX_AOVS` are ignored).
+    fn from_iter<I: IntoIterator<Item = usize>>(iter: I) -> AovMask {
+        let mut m = AovMask::EMPTY;
+        iter.into_iter().for_each(|i| m.insert(i));
+        m
+    }
+}
+
 /// Widest NFA state a [`State`] holds inline: sets stepped on the NFA (their DFA is over
 /// budget) may have at most `64 * NFA_STATE_WORDS` positions.
 pub const NFA_STATE_WORDS: usize = 4;

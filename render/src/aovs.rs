@@ -49,6 +49,9 @@ pub struct Aov {
 pub struct Partition {
     pub name: String,
     pub members: Vec<usize>,
+    /// Whether the members partition *every* light-transport path, or only this scene's
+    /// (the per-lobe set covers just the lobes the scene's materials map into it).
+    pub universal: bool,
 }
 
 #[derive(Clone, Debug, Default)]
@@ -107,6 +110,7 @@ impl AovList {
         list.partitions.push(Partition {
             name: "basic AOVs".into(),
             members: basic.clone(),
+            universal: true,
         });
 
         let glass_t = OTHER.iter().find(|(n, _)| *n == "transmissiveGlassLobe");
@@ -135,6 +139,7 @@ impl AovList {
             list.partitions.push(Partition {
                 name: "per-lobe AOVs + emissive".into(),
                 members: lobes,
+                universal: false,
             });
         } else {
             list.notes.push(format!(
@@ -167,6 +172,7 @@ impl AovList {
             list.partitions.push(Partition {
                 name: "light groups + default group + emission".into(),
                 members,
+                universal: true,
             });
         }
         Ok(list)

@@ -52,7 +52,9 @@ pub fn render_announcing(
     match lpe::aov::AovSet::compile(&named) {
         Ok(set) => run(&set, scene, aovs, lobes, settings, on_plan),
         Err(e) => {
-            eprintln!("warning: the fast matcher refused this AOV set ({e}); using the reference matcher");
+            eprintln!(
+                "warning: the fast matcher refused this AOV set ({e}); using the reference matcher"
+            );
             let matcher = ReferenceMatcher::new(&aovs.lpes())?;
             run(&matcher, scene, aovs, lobes, settings, on_plan)
         }

@@ -111,17 +111,18 @@ pub fn finite(film: &Film, aovs: &AovList) -> Invariant {
 /// the whole AOV set) partitions beauty's universe `C.*[<L.>O]`, with a shortest witness
 /// path if not. This is a statement about every possible path, not about this scene.
 pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
-    let sets: Vec<(String, Vec<usize>)> = if aovs.partitions.is_empty() {
-        vec![("all requested AOVs".to_string(), (0..aovs.aovs.len()).collect())]
+    let sets: Vec<(String, Vec<usize>, bool)> = if aovs.partitions.is_empty() {
+        let all = (0..aovs.aovs.len()).collect();
+        vec![("all requested AOVs".to_string(), all, true)]
     } else {
         aovs.partitions
             .iter()
-            .map(|p| (p.name.clone(), p.members.clone()))
+            .map(|p| (p.name.clone(), p.members.clone(), p.universal))
             .collect()
     };
     let universe = lpe::analysis::default_universe();
     sets.into_iter()
-        .map(|(name, members)| {
+        .map(|(name, members, universal)| {
             let named: Vec<(String, lpe::Lpe)> = members
                 .iter()
                 .map(|&i| (aovs.aovs[i].name.clone(), aovs.aovs[i].lpe.clone()))
@@ -145,9 +146,19 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
                         ));
                     }
                     if let Some((i, p)) = r.outside.first() {
-                        why.push(format!("{} also matches `{p}`, outside the universe", aov_name(*i)));
+                        why.push(format!(
+                            "{} also matches `{p}`, outside the universe",
+                            aov_name(*i)
+                        ));
                     }
-                    (Some(false), why.join("; "))
+                    if universal {
+                        (Some(false), why.join("; "))
+                    } else {
+                        // Expected: the set covers only the lobes this scene uses, which
+                        // the render-time sum checks; report the general gap, do not fail.
+                        let why = why.join("; ");
+                        (None, format!("partitions this scene's lobes only ({why})"))
+                    }
                 }
                 Err(e) => (None, format!("not checked: {e}")),
             };

@@ -17,61 +17,9 @@ use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
 use std::sync::Mutex;
 
-/// Most AOVs one render can route to.
-pub const MAX_AOVS: usize = 256;
-
-/// A set of AOV indices (`< MAX_AOVS`).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct AovMask([u64; MAX_AOVS / 64]);
-
-impl AovMask {
-    pub const EMPTY: AovMask = AovMask([0; MAX_AOVS / 64]);
-
-    /// From little-endian 64-bit words (bit `i % 64` of word `i / 64` is AOV `i`), the
-    /// usual layout of an engine's bitmask, so adapters convert by copying. Words past
-    /// [`MAX_AOVS`] are ignored.
-    pub fn from_words(words: &[u64]) -> AovMask {
-        let mut m = AovMask::EMPTY;
-        for (dst, src) in m.0.iter_mut().zip(words) {
-            *dst = *src;
-        }
-        m
-    }
-
-    pub fn insert(&mut self, i: usize) {
-        self.0[i / 64] |= 1 << (i % 64);
-    }
-
-    pub fn contains(&self, i: usize) -> bool {
-        self.0[i / 64] & (1 << (i % 64)) != 0
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.0.iter().all(|w| *w == 0)
-    }
-
-    /// Indices in increasing order.
-    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
-        self.0.iter().enumerate().flat_map(|(w, &bits)| {
-            let mut b = bits;
-            std::iter::from_fn(move || {
-                (b != 0).then(|| {
-                    let i = b.trailing_zeros() as usize;
-                    b &= b - 1;
-                    w * 64 + i
-                })
-            })
-        })
-    }
-}
-
-impl FromIterator<usize> for AovMask {
-    fn from_iter<I: IntoIterator<Item = usize>>(iter: I) -> AovMask {
-        let mut m = AovMask::EMPTY;
-        iter.into_iter().for_each(|i| m.insert(i));
-        m
-    }
-}
+/// Most AOVs one render can route to, and the mask of AOVs that match: the fast
+/// matcher's own types, shared so engines hand masks over without converting.
+pub use lpe::aov::{AovMask, MAX_AOVS};
 
 /// An LPE engine as the integrator uses it. AOV `i` is the `i`-th expression the
 /// matcher was built from.
@@ -112,7 +60,7 @@ impl PathMatcher for lpe::aov::AovSet {
     }
 
     fn matches(&self, s: Self::State) -> AovMask {
-        lpe::aov::AovSet::matches(self, s).iter().collect()
+        lpe::aov::AovSet::matches(self, s)
     }
 
     fn is_dead(&self, s: Self::State) -> bool {
@@ -285,7 +233,6 @@ mod tests {
     fn mask_iterates_in_order() {
         let m: AovMask = [3, 64, 200, 0].into_iter().collect();
         assert_eq!(m.iter().collect::<Vec<_>>(), vec![0, 3, 64, 200]);
-        assert_eq!(AovMask::from_words(&[0b1001, 1, 0, 1 << 8]), m);
         assert!(m.contains(200) && !m.contains(199));
     }
 
