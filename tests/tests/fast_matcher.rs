@@ -12,29 +12,13 @@ use std::time::{Duration, Instant};
 use lpe::analysis::{self, default_universe};
 use lpe::aov::{AovSet, Options};
 use lpe::ast::{Atom, Expr, Item, Repetition, Triple, TypePos};
+use lpe::generate::{Choices, Rng};
 use lpe::macros::BASIC;
 use lpe::path::{Event, Path, Vertex, VertexType};
 use lpe::strategy::{self, LABELS};
 use lpe::{parse, Lpe};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestCaseError, TestRunner};
-
-/// splitmix64: a tiny deterministic generator seeded by proptest.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
-    fn below(&mut self, n: usize) -> usize {
-        (self.next() % n.max(1) as u64) as usize
-    }
-}
 
 /// Every kind of vertex, with each pool label, no label, and an unmentioned label.
 fn vertex_pool() -> Vec<Vertex> {
@@ -88,7 +72,7 @@ fn sample(e: &Expr, pool: &[Vertex], rng: &mut Rng, out: &mut Vec<Vertex>) -> Op
 
 /// Positive samples of each expression that are valid paths, plus one-vertex mutations.
 fn sampled_paths(exprs: &[Lpe], pool: &[Vertex], seed: u64, max_len: usize) -> Vec<Path> {
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let mut out = Vec::new();
     for l in exprs {
         for _ in 0..6 {

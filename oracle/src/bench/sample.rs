@@ -1,29 +1,25 @@
 //! Paths drawn the way a path tracer draws them: a camera vertex, 0..=10 bounces with
 //! Russian roulette, then a light (mostly, with its group) or an emissive object.
 
+use lpe::generate::Rng;
 use lpe::path::{Event, EventKind, Path, Vertex, VertexType};
 
 use super::workload::{LIGHT_GROUPS, OBJECT_GROUPS};
 
-/// splitmix64, so every engine sees the same paths for a seed.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-
+/// Draws on lpe's SplitMix64 generator, so every engine sees the same paths for a seed.
+trait Draw {
     /// Uniform in `0..100`.
+    fn percent(&mut self) -> u64;
+    fn pick<'a>(&mut self, xs: &[&'a str]) -> &'a str;
+}
+
+impl Draw for Rng {
     fn percent(&mut self) -> u64 {
-        self.next() % 100
+        self.next_u64() % 100
     }
 
     fn pick<'a>(&mut self, xs: &[&'a str]) -> &'a str {
-        xs[(self.next() % xs.len() as u64) as usize]
+        xs[(self.next_u64() % xs.len() as u64) as usize]
     }
 }
 
@@ -52,7 +48,7 @@ fn bounce(rng: &mut Rng) -> Vertex {
 
 /// A user-lobe pseudo path `C <R Un> L`, as renderers emit once per camera hit.
 fn user_path(rng: &mut Rng) -> Vec<Vertex> {
-    let lobe = [2u8, 3, 6][(rng.next() % 3) as usize];
+    let lobe = [2u8, 3, 6][(rng.next_u64() % 3) as usize];
     vec![
         Vertex::camera(),
         Vertex::scatter(VertexType::R, ev(EventKind::U, lobe), None),
@@ -62,7 +58,7 @@ fn user_path(rng: &mut Rng) -> Vec<Vertex> {
 
 /// Paths until their vertices add up to at least `vertices`.
 pub fn paths(vertices: usize, seed: u64) -> Vec<Path> {
-    let mut rng = Rng(seed);
+    let mut rng = Rng::new(seed);
     let mut out = Vec::new();
     let mut total = 0;
     while total < vertices {
