@@ -95,6 +95,15 @@ pub fn run_cases(args: &Args, engines: &[&dyn crate::engine::Engine]) -> Totals 
     for index in args.first..args.first.saturating_add(args.cases) {
         let case = generate_case(args.seed, index, &cfg, args.paths);
         t.cases += 1;
+        // Long runs report progress on stderr every tenth, so stdout stays the summary.
+        if args.cases >= 10_000 && t.cases % (args.cases / 10) == 0 {
+            eprintln!(
+                "diff: {} of {} cases, {} disagreement(s) so far",
+                t.cases,
+                args.cases,
+                t.failures.len()
+            );
+        }
         match differential::check_with(engines, &case.exprs, &case.paths) {
             Outcome::Agree(a) => {
                 t.pairs += a.pairs as u64;
