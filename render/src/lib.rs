@@ -16,6 +16,8 @@ pub mod aovs;
 pub mod app;
 pub mod camera;
 pub mod check;
+pub mod chi2;
+pub mod converge;
 pub mod film;
 pub mod geometry;
 pub mod integrator;
