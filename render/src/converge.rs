@@ -150,7 +150,7 @@ pub const PLANE_ALBEDO: f64 = 0.5;
 
 /// The plane scenes: a large diffuse quad at y = 0 seen from above, lit by one light
 /// that stays out of frame, so beauty is exactly the direct diffuse term `C<RD>L`.
-fn plane_scene(name: &str, light: &str) -> String {
+pub fn plane_scene(name: &str, light: &str) -> String {
     format!(
         r#"name = "{name}"
 [camera]
@@ -182,7 +182,7 @@ const FOOTPRINT: usize = 16;
 
 /// Closed form over each pixel's footprint for a plane scene; `radiance(x)` is the
 /// outgoing radiance at plane point `x` (y = 0).
-fn plane_reference(
+pub fn plane_reference(
     scene: &Scene,
     width: usize,
     height: usize,

@@ -627,12 +627,17 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
             return; // behind the surface, and no lobe transmits
         }
         acc.rays += 1;
-        let shadow = Ray::spawn(hit.p, hit.n, hit.err, ls.wi);
+        let mut shadow = Ray::spawn(hit.p, hit.n, hit.err, ls.wi);
         let t_max = if ls.dist.is_finite() {
-            // Stop short of the light's own surface by more than the error of the
-            // sampled point (relative, so it holds at every scene scale).
+            // Aim from the offset origin at the sampled point itself: along `wi` from the
+            // offset origin the ray meets a curved light up to the offset earlier than
+            // `dist`, and the light would shadow itself. Stop short of the point by more
+            // than its error (relative, so it holds at every scene scale).
             let q = hit.p + ls.wi * ls.dist;
-            (ls.dist * (1.0 - 1e-4) - 4.0 * error_bound(q.abs().max_element())).max(0.0)
+            let to = q - shadow.o;
+            let len = to.length();
+            shadow.d = to / len;
+            (len * (1.0 - 1e-4) - 4.0 * error_bound(q.abs().max_element())).max(0.0)
         } else {
             f32::INFINITY
         };
