@@ -315,10 +315,14 @@ fn identical(name: &str, a: &Render, b: &Render, pairs: &[(usize, usize)]) -> In
 }
 
 /// `lpe-render bench`: cost of LPE tracking, the same scene and samples rendered with
-/// beauty only (matcher off) and with 32 AOVs, alternating, best of `rounds` each.
+/// beauty only (matcher off) and with 32 AOVs, back to back in each round. The overhead
+/// is the median over rounds of the paired time ratio, which resists load that drifts
+/// during the run better than comparing separate best times.
 pub struct Bench {
     pub beauty_seconds: f64,
     pub aov_seconds: f64,
+    /// Median over rounds of `aov time / beauty time`, minus 1.
+    pub overhead: f64,
     pub aov_count: usize,
     pub paths: u64,
 }
@@ -359,17 +363,21 @@ pub fn bench(
     }
     let none = AovList::default();
     let (mut tb, mut ta) = (f64::INFINITY, f64::INFINITY);
+    let mut ratios = Vec::new();
     let mut paths = 0;
     for _ in 0..rounds {
         let b = render(scene, &none, lobes, settings)?;
         let a = render(scene, &aovs, lobes, settings)?;
         tb = tb.min(b.seconds);
         ta = ta.min(a.seconds);
+        ratios.push(a.seconds / b.seconds);
         paths = a.paths;
     }
+    ratios.sort_by(f64::total_cmp);
     Ok(Bench {
         beauty_seconds: tb,
         aov_seconds: ta,
+        overhead: ratios[ratios.len() / 2] - 1.0,
         aov_count: aovs.aovs.len(),
         paths,
     })

@@ -672,3 +672,88 @@ pub fn markdown(rows: &[Summary], layers: &[&str]) -> String {
     }
     s
 }
+
+/// What [`run`] wrote.
+pub struct Outcome {
+    pub summary: Vec<Summary>,
+    pub files: Vec<std::path::PathBuf>,
+    /// Whether the plots have text (a font was found).
+    pub plot_text: bool,
+}
+
+/// `lpe-render converge`: every variant on every known scene, then CSV, Markdown and
+/// plots in `out`.
+pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcome, String> {
+    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+    let lobes = LobeMap::default();
+    let (pr, cr) = (cfg.plane_res, cfg.cornell_res);
+    log("references: closed forms, and cornell from the cache or a fresh render");
+    let scenes: Vec<(Known, u32)> = vec![
+        (furnace(pr, pr, &lobes)?, cfg.max_spp),
+        (point_over_plane(pr, pr, &lobes)?, cfg.max_spp),
+        (sphere_over_plane(pr, pr, SPHERE.1, &lobes)?, cfg.max_spp),
+        (cornell(cr, cr, cfg.cornell_ref_spp, out, &lobes)?, cfg.cornell_max_spp),
+    ];
+    let mut points = Vec::new();
+    for (known, max_spp) in &scenes {
+        for v in Variant::all() {
+            let t0 = std::time::Instant::now();
+            points.extend(run_variant(known, &v, *max_spp, cfg, &lobes)?);
+            log(&format!(
+                "{} / {}: spp 1..{max_spp} in {:.1}s",
+                known.scene.name,
+                v.name,
+                t0.elapsed().as_secs_f64()
+            ));
+        }
+    }
+    let summary = summarize(&points);
+    let mut files = Vec::new();
+    let mut write = |name: &str, text: String| -> Result<(), String> {
+        let f = out.join(name);
+        crate::output::atomic_write(&f, text.as_bytes())
+            .map_err(|e| format!("{}: {e}", f.display()))?;
+        files.push(f);
+        Ok(())
+    };
+    write("converge.csv", csv(&points))?;
+    let mut md = String::from("# lpe-render converge\n\nReferences:\n");
+    for (k, _) in &scenes {
+        md += &format!("- `{}`: {}\n", k.scene.name, k.source);
+    }
+    md += "\n";
+    md += &markdown(&summary, &[]);
+    write("converge.md", md)?;
+    write(
+        "converge.json",
+        serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?,
+    )?;
+    // Error against time, beauty, one panel per scene.
+    let panels: Vec<crate::plot::Panel> = scenes
+        .iter()
+        .map(|(k, _)| crate::plot::Panel {
+            title: format!("{} (beauty)", k.scene.name),
+            lines: Variant::all()
+                .iter()
+                .map(|v| crate::plot::Line {
+                    label: v.name.clone(),
+                    points: points
+                        .iter()
+                        .filter(|p| {
+                            p.scene == k.scene.name && p.variant == v.name && p.layer == "beauty"
+                        })
+                        .map(|p| (p.seconds, p.rel_mse))
+                        .collect(),
+                })
+                .collect(),
+        })
+        .collect();
+    let plot_text = crate::plot::write(out, "converge", &panels, "render time (s)", "relMSE")?;
+    files.push(out.join("converge.png"));
+    files.push(out.join("converge.svg"));
+    Ok(Outcome {
+        summary,
+        files,
+        plot_text,
+    })
+}

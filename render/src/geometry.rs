@@ -121,10 +121,28 @@ impl Shape {
 
     /// Nearest intersection in `(0, t_max)`: `(t, normal)`.
     pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<(f32, Vec3)> {
+        let t = self.hit_t(ray, t_max)?;
+        Some((t, self.normal(ray.o + t * ray.d)))
+    }
+
+    /// Unit geometric normal at a point on the surface (outward for spheres, `u x v` for
+    /// quads, `e1 x e2` for triangles). Separate from [`Shape::hit_t`] so traversal pays
+    /// for it once per ray, not once per candidate hit.
+    pub fn normal(&self, p: Vec3) -> Vec3 {
         match *self {
+            Shape::Sphere { center, .. } => (p - center).normalize(),
+            Shape::Quad { u, v, .. } => u.cross(v).normalize(),
+            Shape::Triangle { e1, e2, .. } => e1.cross(e2).normalize(),
+        }
+    }
+
+    /// Distance to the nearest intersection in `(0, t_max)`.
+    pub fn hit_t(&self, ray: &Ray, t_max: f32) -> Option<f32> {
+        let t = match *self {
             Shape::Sphere { center, radius } => {
-                // Solve |o + t d - c|^2 = r^2 with the numerically stable form of
-                // pbrt-v4 (discriminant from the perpendicular distance).
+                // |o + t d - c|^2 = r^2 in the numerically stable form of pbrt-v4: the
+                // discriminant from the perpendicular distance, the far root from the
+                // product of the roots (no cancellation).
                 let oc = ray.o - center;
                 let b = oc.dot(ray.d);
                 let perp = oc - b * ray.d;
@@ -132,24 +150,15 @@ impl Shape {
                 if disc < 0.0 {
                     return None;
                 }
-                let root = disc.sqrt();
-                let q = if b > 0.0 { -b - root } else { -b + root };
-                let (t0, t1) = {
-                    let c = oc.length_squared() - radius * radius;
-                    let a = q;
-                    let other = if a != 0.0 { c / a } else { -b };
-                    if a < other {
-                        (a, other)
-                    } else {
-                        (other, a)
-                    }
-                };
-                let t = if t0 > 0.0 { t0 } else { t1 };
-                if t <= 0.0 || t >= t_max {
-                    return None;
+                let q = -b - disc.sqrt().copysign(b);
+                let c = oc.length_squared() - radius * radius;
+                let other = if q != 0.0 { c / q } else { -b };
+                let (t0, t1) = if q < other { (q, other) } else { (other, q) };
+                if t0 > 0.0 {
+                    t0
+                } else {
+                    t1
                 }
-                let n = (ray.o + t * ray.d - center) / radius;
-                Some((t, n.normalize()))
             }
             Shape::Quad { corner, u, v } => {
                 let n = u.cross(v);
@@ -161,11 +170,16 @@ impl Shape {
                 if !(t > 0.0 && t < t_max) {
                     return None;
                 }
-                let (a, b) = plane_coords(ray.o + t * ray.d - corner, u, v);
-                if !(0.0..=1.0).contains(&a) || !(0.0..=1.0).contains(&b) {
+                let w = ray.o + t * ray.d - corner;
+                // Coordinates in the (u, v) basis via the dual vectors, each scaled by
+                // |n|^2 (compared against it instead of divided by it).
+                let nn = n.length_squared();
+                let a = n.dot(w.cross(v));
+                let b = n.dot(u.cross(w));
+                if !(0.0..=nn).contains(&a) || !(0.0..=nn).contains(&b) {
                     return None;
                 }
-                Some((t, n.normalize()))
+                t
             }
             Shape::Triangle { p0, e1, e2 } => {
                 // Möller–Trumbore.
@@ -185,13 +199,10 @@ impl Shape {
                 if b < 0.0 || a + b > 1.0 {
                     return None;
                 }
-                let t = e2.dot(qv) * inv;
-                if !(t > 0.0 && t < t_max) {
-                    return None;
-                }
-                Some((t, e1.cross(e2).normalize()))
+                e2.dot(qv) * inv
             }
-        }
+        };
+        (t > 0.0 && t < t_max).then_some(t)
     }
 }
 
@@ -276,20 +287,20 @@ impl Bvh {
 
     /// Nearest hit in `(0, t_max)`.
     pub fn intersect(&self, ray: &Ray, mut t_max: f32) -> Option<Hit> {
-        let mut best: Option<(f32, glam::Vec3, Shape, u32)> = None;
+        let mut best: Option<(f32, Shape, u32)> = None;
         self.traverse(ray, &mut t_max, |shape, obj, ray, t_max| {
-            if let Some((t, n)) = shape.intersect(ray, *t_max) {
+            if let Some(t) = shape.hit_t(ray, *t_max) {
                 *t_max = t;
-                best = Some((t, n, *shape, obj));
+                best = Some((t, *shape, obj));
             }
             false
         });
-        best.map(|(t, n, shape, object)| {
+        best.map(|(t, shape, object)| {
             let (p, err) = shape.surface_point(ray, t);
             Hit {
                 t,
                 p,
-                n,
+                n: shape.normal(p),
                 err,
                 object,
             }
@@ -300,7 +311,7 @@ impl Bvh {
     pub fn occluded(&self, ray: &Ray, mut t_max: f32) -> bool {
         let mut hit = false;
         self.traverse(ray, &mut t_max, |shape, _, ray, t_max| {
-            hit = shape.intersect(ray, *t_max).is_some();
+            hit = shape.hit_t(ray, *t_max).is_some();
             hit
         });
         hit

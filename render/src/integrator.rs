@@ -33,7 +33,10 @@
 //!   only to AOVs without it; beauty excludes holdout paths;
 //! - a sample whose light transport is not finite is dropped from beauty and every AOV
 //!   and counted, except for `noinfinitecheck;` AOVs, which keep it; `overwrite;` AOVs
-//!   keep the last value written instead of the mean (user lobes).
+//!   keep the last value written instead of the mean (user lobes); values only an AOV
+//!   receives (other weights, `nothruput;`) that are not finite are dropped for that AOV
+//!   alone and counted apart, so whether a sample is rejected never depends on which
+//!   AOVs were requested.
 //!
 //! Beauty is `beta * local * weight` of every non-holdout transport contribution, added
 //! independently of the matcher: that is what makes "AOVs sum to beauty" a real check.
@@ -59,7 +62,8 @@ use crate::scene::Scene;
 pub enum Technique {
     /// Light sampling and BSDF sampling, power heuristic.
     Mis,
-    /// BSDF sampling only: emitters count only when a path hits them.
+    /// BSDF sampling only: emitters count only when a path hits them (`unoccluded;` and
+    /// `shadows;` AOVs then see what the rays see: there are no light samples to unshadow).
     BsdfOnly,
     /// Light sampling only: BSDF hits on lights NEE can sample count zero.
     LightOnly,

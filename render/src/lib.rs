@@ -26,6 +26,7 @@ pub mod matcher;
 pub mod material;
 pub mod output;
 pub mod plan;
+pub mod plot;
 pub mod rng;
 pub mod sampling;
 pub mod scene;

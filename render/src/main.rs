@@ -42,12 +42,13 @@ enum Command {
         scene: String,
         #[arg(long, default_value_t = 8, value_parser = positive_u32)]
         spp: u32,
-        #[arg(long, default_value = "128x128", value_parser = parse_res)]
+        #[arg(long, default_value = "96x96", value_parser = parse_res)]
         res: (usize, usize),
-        #[arg(long, value_parser = positive_usize)]
-        threads: Option<usize>,
-        /// Alternating rounds; the best time of each configuration counts.
-        #[arg(long, default_value_t = 5, value_parser = positive_usize)]
+        /// One thread by default: a single worker is the least disturbed by other load.
+        #[arg(long, default_value_t = 1, value_parser = positive_usize)]
+        threads: usize,
+        /// Rounds, each rendering both configurations back to back.
+        #[arg(long, default_value_t = 15, value_parser = positive_usize)]
         rounds: usize,
     },
 }
@@ -96,18 +97,27 @@ fn parse_res(s: &str) -> Result<(usize, usize), String> {
     Ok((w, h))
 }
 
-fn positive_u32(s: &str) -> Result<u32, String> {
-    match s.parse::<u32>() {
-        Ok(n) if n > 0 => Ok(n),
-        _ => Err(format!("`{s}`: expected a positive integer")),
+/// A positive integer no larger than `max`.
+fn positive_at_most<T: std::str::FromStr + PartialOrd + From<u8> + std::fmt::Display>(
+    s: &str,
+    max: T,
+) -> Result<T, String> {
+    match s.parse::<T>() {
+        Ok(n) if n >= T::from(1) && n <= max => Ok(n),
+        _ => Err(format!(
+            "`{s}`: expected a positive integer (at most {max})"
+        )),
     }
 }
 
+/// Samples per pixel.
+fn positive_u32(s: &str) -> Result<u32, String> {
+    positive_at_most(s, u32::MAX)
+}
+
+/// Threads and rounds: more than a few thousand is a typo, not a request.
 fn positive_usize(s: &str) -> Result<usize, String> {
-    match s.parse::<usize>() {
-        Ok(n) if n > 0 && n <= 4096 => Ok(n),
-        _ => Err(format!("`{s}`: expected a positive integer (at most 4096)")),
-    }
+    positive_at_most(s, 4096)
 }
 
 /// Input problems: printed, exit status 2.
@@ -130,7 +140,7 @@ fn main() -> ExitCode {
             res,
             threads,
             rounds,
-        }) => run_bench(&scene, spp, res, threads, rounds),
+        }) => run_bench(&scene, spp, res, Some(threads), rounds),
     };
     match result {
         Ok(true) => ExitCode::SUCCESS,
@@ -275,6 +285,7 @@ fn run_render(args: &RenderArgs) -> Result<bool, InputError> {
             rays_per_second: render.rays as f64 / render.seconds,
         },
         effects_plan: render.plan.describe(),
+        effects: render.plan,
         aovs: aovs
             .aovs
             .iter()
@@ -337,26 +348,29 @@ fn run_bench(
         ..Settings::default()
     };
     let b = app::bench(&scene, &config.lobes, &parser, &settings, rounds)?;
-    let overhead = b.aov_seconds / b.beauty_seconds - 1.0;
     println!(
-        "bench `{}` {}x{} {} spp, best of {rounds}, matcher: {}",
+        "bench `{}` {}x{} {} spp, {} thread(s), {rounds} rounds, matcher: {}",
         scene.name,
         res.0,
         res.1,
         spp,
+        threads.map_or("all".to_string(), |t| t.to_string()),
         app::ENGINE
     );
     println!(
-        "  beauty only: {:.3}s ({:.0} paths/s)",
+        "  beauty only: best {:.3}s ({:.0} paths/s)",
         b.beauty_seconds,
         b.paths as f64 / b.beauty_seconds
     );
     println!(
-        "  {} AOVs:     {:.3}s ({:.0} paths/s)",
+        "  {} AOVs:     best {:.3}s ({:.0} paths/s)",
         b.aov_count,
         b.aov_seconds,
         b.paths as f64 / b.aov_seconds
     );
-    println!("  LPE tracking overhead: {:+.1}%", overhead * 100.0);
+    println!(
+        "  LPE tracking overhead (median of {rounds} paired rounds): {:+.1}%",
+        b.overhead * 100.0
+    );
     Ok(true)
 }

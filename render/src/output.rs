@@ -229,6 +229,8 @@ pub struct Report {
     pub matcher: String,
     pub timing: Timing,
     pub effects_plan: Vec<String>,
+    /// The same plan as flags, for tools.
+    pub effects: crate::plan::Plan,
     pub aovs: Vec<AovEntry>,
     pub invariants: Vec<Invariant>,
     pub notes: Vec<String>,

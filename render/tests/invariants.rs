@@ -160,6 +160,7 @@ fn exr_reads_back_with_the_expected_layers_and_values() {
             rays_per_second: 0.0,
         },
         effects_plan: r.plan.describe(),
+        effects: r.plan,
         aovs: Vec::new(),
         invariants: app::invariants(&s, &aovs, &r),
         notes: Vec::new(),
