@@ -692,7 +692,10 @@ pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcom
         (furnace(pr, pr, &lobes)?, cfg.max_spp),
         (point_over_plane(pr, pr, &lobes)?, cfg.max_spp),
         (sphere_over_plane(pr, pr, SPHERE.1, &lobes)?, cfg.max_spp),
-        (cornell(cr, cr, cfg.cornell_ref_spp, out, &lobes)?, cfg.cornell_max_spp),
+        (
+            cornell(cr, cr, cfg.cornell_ref_spp, out, &lobes)?,
+            cfg.cornell_max_spp,
+        ),
     ];
     let mut points = Vec::new();
     for (known, max_spp) in &scenes {

@@ -30,3 +30,4 @@ pub mod plot;
 pub mod rng;
 pub mod sampling;
 pub mod scene;
+pub mod stress;

@@ -3,11 +3,10 @@
 
 use glam::{DVec3, Vec3};
 use lpe::{LobeMap, Parser};
-use lpe_render::aovs::{AovList, Partition};
-use lpe_render::check::{critical_z, partition};
+use lpe_render::aovs::AovList;
+use lpe_render::check::critical_z;
 use lpe_render::chi2::sidak;
-use lpe_render::converge::{self, plane_reference, plane_scene, PLANE_ALBEDO};
-use lpe_render::film::Accumulation;
+use lpe_render::converge;
 use lpe_render::geometry::{Bvh, Ray, Shape};
 use lpe_render::integrator::{Render, Settings, Technique};
 use lpe_render::light::{Light, LightKind};
@@ -15,6 +14,7 @@ use lpe_render::material::{fresnel_dielectric, Lobe, Model};
 use lpe_render::rng::Rng;
 use lpe_render::sampling::power_heuristic;
 use lpe_render::scene::Scene;
+use lpe_render::stress;
 
 /// Family-wise significance of each statistical test below (Sidak over its cases).
 const ALPHA: f64 = 0.01;
@@ -293,48 +293,18 @@ fn tiny_sphere_light_over_a_plane_renders_its_closed_form() {
     }
 }
 
-/// The image mean of `got` matches that of `want` within 5 standard errors of the
-/// per-pixel residuals (significance < 1e-6) plus 1e-4 relative (f32 radiance).
+/// The image mean of `got` matches that of `want` (see [`stress::mean_check`]: 5
+/// standard errors of the per-pixel residuals, significance < 1e-6, plus 1e-4 relative).
 fn assert_mean_matches(got: &[DVec3], want: &[DVec3], what: &str) {
-    let res: Vec<f64> = got.iter().zip(want).map(|(g, w)| g.x - w.x).collect();
-    let (m, se) = mean_and_se(&res);
-    let scale = want.iter().map(|w| w.x).sum::<f64>() / want.len() as f64;
-    assert!(scale > 0.0, "{what}: reference is black");
-    assert!(
-        m.abs() <= 5.0 * se + 1e-4 * scale,
-        "{what}: mean residual {m:e} (se {se:e}, mean {scale:e})"
-    );
+    let (e, bound) = stress::mean_check(got, want);
+    assert!(e <= bound, "{what}: relative error {e:e} > {bound:e}");
 }
 
 #[test]
 fn intensities_from_1e_minus_6_to_1e12_in_one_scene_each_keep_their_light_group() {
     // Four point lights whose intensities span 18 orders of magnitude, each in its own
     // light group; each group's AOV must match its closed form (a/pi) I cos/d^2.
-    let lights = [
-        (1e-6, [1.0f32, 2.0, 0.0]),
-        (1.0, [-1.0, 2.0, 0.5]),
-        (1e6, [0.0, 3.0, -1.0]),
-        (1e12, [0.5, 1.5, 1.0]),
-    ];
-    let text: Vec<String> = lights
-        .iter()
-        .enumerate()
-        .map(|(k, (i, [x, y, z]))| {
-            format!("kind = \"point\"\ngroup = \"g{k}\"\nposition = [{x}, {y}, {z}]\nintensity = [{i:e}, {i:e}, {i:e}]")
-        })
-        .collect();
-    let scene = Scene::from_toml(
-        &plane_scene("intensities", &text.join("\n[[lights]]\n")),
-        "intensities",
-        &lobes(),
-    )
-    .unwrap();
-    let parser = Parser::default();
-    let mut aovs = AovList::default();
-    for k in 0..lights.len() {
-        aovs.push(&format!("g{k}"), &format!("C<RD><L.'g{k}'>"), &parser)
-            .unwrap();
-    }
+    let (scene, aovs) = stress::intensities_scene(&lobes()).unwrap();
     let (w, h) = (12, 12);
     let settings = Settings {
         width: w,
@@ -346,19 +316,9 @@ fn intensities_from_1e_minus_6_to_1e12_in_one_scene_each_keep_their_light_group(
     let r = render(&scene, &aovs, &settings);
     assert_eq!(r.film.rejected + r.film.aov_rejected, 0);
     assert!(r.film.layer(0).iter().all(|v| v.is_finite()));
-    for (k, (i, p)) in lights.iter().enumerate() {
-        let l = Vec3::from(*p).as_dvec3();
-        let i32 = *i as f32 as f64;
-        let want = plane_reference(&scene, w, h, |x| {
-            let d = l - x;
-            let d2 = d.length_squared();
-            PLANE_ALBEDO / std::f64::consts::PI * i32 * (d.y / d2.sqrt()) / d2
-        });
-        assert_mean_matches(
-            &r.film.layer(1 + k),
-            &want,
-            &format!("light {k} (I = {i:e})"),
-        );
+    for k in 0..stress::INTENSITIES.len() {
+        let want = stress::intensity_reference(&scene, k, w, h);
+        assert_mean_matches(&r.film.layer(1 + k), &want, &format!("light {k}"));
     }
 }
 
@@ -391,33 +351,7 @@ fn mis_weights_stay_finite_and_complementary_for_pdfs_from_0_to_1e30_and_beyond(
     }
     // In a render: a near-mirror (alpha 1e-7, pdf peak ~1e13) lit by a 1e-6 sphere light
     // (light pdf ~1e12), a point light and a dome: nothing is rejected as non-finite.
-    let text = r#"
-[camera]
-position = [0.0, 1.0, 3.0]
-look_at = [0.0, 0.0, 0.0]
-[materials.mirror]
-lobes = [{ name = "Specular", model = "ggx", f0 = [1.0, 1.0, 1.0], roughness = 0.0 },
-         { name = "Diffuse", model = "lambert", albedo = [0.2, 0.2, 0.2] }]
-[[objects]]
-material = "mirror"
-quad = { corner = [-5.0, 0.0, 5.0], u = [10.0, 0.0, 0.0], v = [0.0, 0.0, -10.0] }
-[[objects]]
-material = "mirror"
-sphere = { center = [0.0, 0.5, 0.0], radius = 0.5 }
-[[lights]]
-kind = "sphere"
-center = [0.0, 2.0, -1.0]
-radius = 1e-6
-radiance = [1e12, 1e12, 1e12]
-[[lights]]
-kind = "point"
-position = [1.0, 1.0, 1.0]
-intensity = [5.0, 5.0, 5.0]
-[[lights]]
-kind = "dome"
-radiance = [0.1, 0.1, 0.1]
-"#;
-    let scene = Scene::from_toml(text, "mis", &lobes()).unwrap();
+    let scene = Scene::from_toml(stress::MIS_EXTREMES, "mis", &lobes()).unwrap();
     let aovs = AovList::defaults(&scene, &Parser::default()).unwrap();
     for technique in [Technique::Mis, Technique::BsdfOnly, Technique::LightOnly] {
         let s = Settings {
@@ -512,83 +446,14 @@ fn spawned_rays_never_hit_their_own_surface_at_scales_1e_minus_6_to_1e6() {
     );
 }
 
-/// A small scene whose samples span many magnitudes and reach every basic AOV: a diffuse
-/// + glossy floor, a glowing ball, lights from 1e-3 to 1e3.
-const MIXED: &str = r#"
-[camera]
-position = [0.0, 1.5, 4.0]
-look_at = [0.0, 0.3, 0.0]
-fov = 50.0
-[render]
-max_depth = 4
-[materials.floor]
-lobes = [{ name = "Diffuse", model = "lambert", albedo = [0.6, 0.5, 0.4] },
-         { name = "Specular", model = "ggx", f0 = [0.3, 0.3, 0.3], roughness = 0.3 }]
-[materials.glass]
-lobes = [{ name = "Glass", model = "dielectric", ior = 1.5 }]
-[materials.glow]
-glow = [50.0, 40.0, 30.0]
-lobes = [{ name = "Diffuse", model = "lambert", albedo = [0.5, 0.5, 0.5] }]
-[[objects]]
-material = "floor"
-quad = { corner = [-5.0, 0.0, 5.0], u = [10.0, 0.0, 0.0], v = [0.0, 0.0, -10.0] }
-[[objects]]
-material = "glow"
-sphere = { center = [-0.8, 0.3, 0.0], radius = 0.3 }
-[[objects]]
-material = "glass"
-sphere = { center = [0.8, 0.4, 0.2], radius = 0.4 }
-[[lights]]
-kind = "point"
-position = [0.0, 3.0, 1.0]
-intensity = [1e3, 1e3, 1e3]
-[[lights]]
-kind = "point"
-position = [2.0, 1.0, 2.0]
-intensity = [1e-3, 1e-3, 1e-3]
-[[lights]]
-kind = "sphere"
-center = [-2.0, 2.0, -1.0]
-radius = 0.2
-radiance = [30.0, 30.0, 30.0]
-"#;
-
 #[test]
 fn ten_million_mixed_samples_per_pixel_partition_beauty_in_f64_and_not_in_f32() {
-    let scene = Scene::from_toml(MIXED, "mixed", &lobes()).unwrap();
-    let parser = Parser::default();
-    let mut aovs = AovList::default();
-    let members = lpe::macros::BASIC
-        .iter()
-        .map(|(n, _)| aovs.push(n, &format!("lpe:{n}"), &parser).unwrap())
-        .collect();
-    let basic = Partition {
-        name: "basic AOVs".into(),
-        members,
-    };
     let spp: u32 = std::env::var("LPE_MIXED_SPP")
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(10_000_000);
-    let settings = |accumulation| Settings {
-        width: 1,
-        height: 1,
-        spp,
-        seed: 17,
-        threads: Some(1),
-        accumulation,
-        ..Settings::default()
-    };
-    // One pixel each, rendered side by side (one thread each).
-    let (a, b) = std::thread::scope(|t| {
-        let f = t.spawn(|| render(&scene, &aovs, &settings(Accumulation::F64)));
-        let g = render(&scene, &aovs, &settings(Accumulation::F32));
-        (f.join().unwrap(), g)
-    });
-    let beauty = a.film.pixel(0, 0, 0);
-    assert!(beauty.min_element() > 0.0 && a.film.rejected == 0);
-    let f64_err = partition(&a.film, &aovs, &basic).measured;
-    let f32_err = partition(&b.film, &aovs, &basic).measured;
+    let (f64_err, f32_err, beauty) = stress::mixed_partition(spp, &lobes()).unwrap();
+    assert!(beauty.min_element() > 0.0);
     assert!(
         f64_err <= 1e-6,
         "f64 film: basic AOVs miss beauty by {f64_err:e} relative"
