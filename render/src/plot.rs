@@ -106,7 +106,9 @@ where
             mesh.x_desc(x_label)
                 .y_desc(y_label)
                 .x_label_formatter(&|x| format!("{x:.0e}"))
-                .y_label_formatter(&|y| format!("{y:.0e}"));
+                .y_label_formatter(&|y| format!("{y:.0e}"))
+                .x_labels(6)
+                .y_labels(6);
         } else {
             mesh.disable_x_axis().disable_y_axis();
         }
