@@ -416,7 +416,7 @@ fn run_converge(
         "{}",
         lpe_render::converge::markdown(
             &o.summary,
-            &["beauty", "direct", "bounce1", "directDiffuse"]
+            &["beauty", "direct", "bounce3", "directDiffuse"]
         )
     );
     if !o.plot_text {
