@@ -419,6 +419,7 @@ fn run_converge(
             &["beauty", "direct", "bounce3", "directDiffuse"]
         )
     );
+    println!("{}", o.accumulation);
     if !o.plot_text {
         eprintln!("note: no TrueType font found (set LPE_PLOT_FONT): plots drawn without text");
     }
