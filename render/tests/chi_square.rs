@@ -40,7 +40,7 @@ fn cases() -> Vec<(String, Lobe, Vec3)> {
             ));
         }
     }
-    for alpha in [0.5, 0.2, 0.1] {
+    for alpha in [0.5, 0.2, 0.1, 0.05] {
         for cos in [0.9, 0.5, 0.1, -0.5] {
             let lobe = Lobe::new(
                 "Specular",
