@@ -92,6 +92,14 @@ impl AovList {
         Ok(self.aovs.len() - 1)
     }
 
+    /// `(name, expression)` pairs, as `lpe::aov::AovSet::compile` takes them.
+    pub fn named(&self) -> Vec<(String, Lpe)> {
+        self.aovs
+            .iter()
+            .map(|a| (a.name.clone(), a.lpe.clone()))
+            .collect()
+    }
+
     pub fn lpes(&self) -> Vec<Lpe> {
         self.aovs.iter().map(|a| a.lpe.clone()).collect()
     }
@@ -100,18 +108,25 @@ impl AovList {
         self.aovs.iter().position(|a| a.name == name)
     }
 
-    /// The default AOVs for `scene` and the partitions they form.
-    pub fn defaults(scene: &Scene, parser: &Parser) -> Result<AovList, String> {
+    /// The seven basic AOVs, declared as the partition of beauty they are.
+    pub fn basic(parser: &Parser) -> Result<AovList, String> {
         let mut list = AovList::default();
-        let basic: Vec<usize> = BASIC
+        let members = BASIC
             .iter()
             .map(|(n, _)| list.push(n, &format!("lpe:{n}"), parser))
             .collect::<Result<_, _>>()?;
         list.partitions.push(Partition {
             name: "basic AOVs".into(),
-            members: basic.clone(),
+            members,
             universal: true,
         });
+        Ok(list)
+    }
+
+    /// The default AOVs for `scene` and the partitions they form.
+    pub fn defaults(scene: &Scene, parser: &Parser) -> Result<AovList, String> {
+        let mut list = AovList::basic(parser)?;
+        let basic = list.partitions[0].members.clone();
 
         let glass_t = OTHER.iter().find(|(n, _)| *n == "transmissiveGlassLobe");
         let mut lobes: Vec<usize> = PER_LOBE

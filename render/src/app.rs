@@ -44,12 +44,7 @@ pub fn render_announcing(
         on_plan(&integrator.plan());
         integrator.render()
     }
-    let named: Vec<(String, lpe::Lpe)> = aovs
-        .aovs
-        .iter()
-        .map(|a| (a.name.clone(), a.lpe.clone()))
-        .collect();
-    match lpe::aov::AovSet::compile(&named) {
+    match lpe::aov::AovSet::compile(&aovs.named()) {
         Ok(set) => run(&set, scene, aovs, lobes, settings, on_plan),
         Err(e) => {
             eprintln!(

@@ -7,6 +7,28 @@
 
 use glam::DVec3;
 
+/// How a film adds samples into its pixel sums (issue 6 compares them).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub enum Accumulation {
+    /// f64 sums: the renderer's film.
+    #[default]
+    F64,
+    /// A naive f32 film: every running sum is rounded to f32 after each addition (stored
+    /// in the f64 buffer, where an f32 value is exact), to show what f64 buys.
+    F32,
+}
+
+impl Accumulation {
+    /// `sum + x` as this film stores it.
+    #[inline]
+    pub fn add(self, sum: DVec3, x: DVec3) -> DVec3 {
+        match self {
+            Accumulation::F64 => sum + x,
+            Accumulation::F32 => (sum.as_vec3() + x.as_vec3()).as_dvec3(),
+        }
+    }
+}
+
 /// Sums for one pixel: layer 0 is beauty, layer `1 + i` is AOV `i`.
 pub type PixelSums = [DVec3];
 

@@ -49,8 +49,8 @@ use std::time::Instant;
 
 use crate::aovs::{AovFlags, AovList};
 use crate::camera::Camera;
-use crate::film::Film;
-use crate::geometry::{Hit, Ray};
+use crate::film::{Accumulation, Film};
+use crate::geometry::{error_bound, Hit, Ray};
 use crate::matcher::{AovMask, PathMatcher};
 use crate::plan::Plan;
 use crate::rng::Rng;
@@ -80,6 +80,8 @@ pub struct Settings {
     pub threads: Option<usize>,
     pub technique: Technique,
     pub russian_roulette: bool,
+    /// How the film sums samples.
+    pub accumulation: Accumulation,
     /// Force the generic path (`--all-effects`).
     pub all_effects: bool,
     /// Whether beauty is wanted (if not, paths dead for every AOV stop early).
@@ -97,6 +99,7 @@ impl Default for Settings {
             threads: None,
             technique: Technique::Mis,
             russian_roulette: true,
+            accumulation: Accumulation::F64,
             all_effects: false,
             beauty: true,
             progress: false,
@@ -390,8 +393,9 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
     /// the sample was rejected as non-finite.
     fn commit(&self, acc: &mut SampleAcc, pixel: &mut [DVec3]) -> bool {
         let rejected = !(acc.finite && acc.beauty.is_finite());
+        let add = |sum, x| self.settings.accumulation.add(sum, x);
         if !rejected {
-            pixel[0] += acc.beauty;
+            pixel[0] = add(pixel[0], acc.beauty);
         }
         for i in acc.touched.iter() {
             let f = &self.flags[i];
@@ -399,7 +403,7 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
                 if f.overwrite {
                     pixel[1 + i] = acc.aov[i];
                 } else {
-                    pixel[1 + i] += acc.aov[i];
+                    pixel[1 + i] = add(pixel[1 + i], acc.aov[i]);
                 }
             }
             acc.aov[i] = DVec3::ZERO;
@@ -569,7 +573,7 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
                 }
                 path.bounce /= q;
             }
-            ray = Ray::spawn(hit.p, hit.n, wi);
+            ray = Ray::spawn(hit.p, hit.n, hit.err, wi);
         }
     }
 
@@ -627,10 +631,17 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
             return; // behind the surface, and no lobe transmits
         }
         acc.rays += 1;
-        let shadow = Ray::spawn(hit.p, hit.n, ls.wi);
+        let mut shadow = Ray::spawn(hit.p, hit.n, hit.err, ls.wi);
         let t_max = if ls.dist.is_finite() {
-            // Stop short of the light's own surface.
-            (ls.dist * (1.0 - 1e-4) - 1e-4).max(0.0)
+            // Aim from the offset origin at the sampled point itself: along `wi` from the
+            // offset origin the ray meets a curved light up to the offset earlier than
+            // `dist`, and the light would shadow itself. Stop short of the point by more
+            // than its error (relative, so it holds at every scene scale).
+            let q = hit.p + ls.wi * ls.dist;
+            let to = q - shadow.o;
+            let len = to.length();
+            shadow.d = to / len;
+            (len * (1.0 - 1e-4) - 4.0 * error_bound(q.abs().max_element())).max(0.0)
         } else {
             f32::INFINITY
         };

@@ -4,7 +4,7 @@
 use glam::{Vec2, Vec3};
 use std::f32::consts::PI;
 
-use crate::sampling::{uniform_cone, uniform_sphere, Frame};
+use crate::sampling::{one_minus_cos_from_sin2, uniform_cone, uniform_sphere, Frame};
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum LightKind {
@@ -94,22 +94,30 @@ impl Light {
                 if dist2_c <= radius * radius {
                     return None; // inside the light: it is all around, BSDF sampling finds it
                 }
-                // Sample the cone of directions subtended by the sphere (pbrt-v4), so
-                // the pdf is the exact solid-angle pdf the MIS weights need.
+                // Sample the cone of directions the sphere subtends (pbrt-v4), so the pdf
+                // is the exact solid-angle pdf the MIS weights need. `1 - cos_max` comes
+                // from `sin^2` without cancellation: a sphere of radius 1e-6 at distance 1
+                // has `cos_max = 1` in f32, and the naive pdf would be infinite.
                 let sin2_max = radius * radius / dist2_c;
-                let cos_max = (1.0 - sin2_max).max(0.0).sqrt();
-                let frame = Frame::from_normal(to_c / dist2_c.sqrt());
-                let wi = frame.to_world(uniform_cone(u, cos_max)).normalize();
-                let pdf = 1.0 / (2.0 * PI * (1.0 - cos_max));
-                let shape = crate::geometry::Shape::Sphere { center, radius };
-                let ray = crate::geometry::Ray { o: p, d: wi };
-                // Grazing cone edges may miss in floating point: then sample nothing.
-                let (t, n) = shape.intersect(&ray, f32::INFINITY)?;
+                let omc_max = one_minus_cos_from_sin2(sin2_max);
+                let dist_c = dist2_c.sqrt();
+                let axis = to_c / dist_c;
+                let local = uniform_cone(u, omc_max);
+                let wi = Frame::from_normal(axis).to_world(local).normalize();
+                // The point on the sphere along `wi`, from the triangle (p, center, point):
+                // the near root of |p + t wi - c| = r with t = d cos - sqrt(r^2 - d^2 sin^2),
+                // where d^2 sin^2 = d^2 (1 - cos^2) is taken from the sampled `local`
+                // (sin^2 = x^2 + y^2), not re-derived from `wi`, so it stays exact for tiny
+                // cones instead of intersecting a 1e-6 sphere in f32 from afar.
+                let sin2 = local.x * local.x + local.y * local.y;
+                let disc = (radius * radius - dist2_c * sin2).max(0.0);
+                let dist = (dist_c * local.z - disc.sqrt()).max(0.0);
+                let n = (p + wi * dist - center).normalize_or(-axis);
                 Some(LightSample {
                     wi,
-                    dist: t,
+                    dist,
                     li: radiance,
-                    pdf,
+                    pdf: 1.0 / (2.0 * PI * omc_max),
                     delta: false,
                     n: Some(n),
                 })
@@ -172,8 +180,7 @@ impl Light {
                 if dist2_c <= radius * radius {
                     return 0.0;
                 }
-                let cos_max = (1.0 - radius * radius / dist2_c).max(0.0).sqrt();
-                1.0 / (2.0 * PI * (1.0 - cos_max))
+                1.0 / (2.0 * PI * one_minus_cos_from_sin2(radius * radius / dist2_c))
             }
             LightKind::Dome { .. } => 1.0 / (4.0 * PI),
             LightKind::Point { .. } | LightKind::Distant { .. } => 0.0,

@@ -51,6 +51,24 @@ enum Command {
         #[arg(long, default_value_t = 15, value_parser = positive_usize)]
         rounds: usize,
     },
+    /// Accuracy vs time: MSE, relMSE, log-log slope and efficiency per technique and
+    /// AOV on scenes with known answers; CSV, Markdown and plots in --out.
+    Converge {
+        /// A small run for CI (seconds).
+        #[arg(long)]
+        quick: bool,
+        #[arg(long, default_value = "out/converge")]
+        out: PathBuf,
+        #[arg(long, value_parser = positive_usize)]
+        threads: Option<usize>,
+    },
+    /// The hard-case scene set (tiny lights, extreme intensities and pdfs, 10^7-sample
+    /// film, degenerate input): one table row per case.
+    Stress {
+        /// Fewer samples (seconds instead of about a minute).
+        #[arg(long)]
+        quick: bool,
+    },
 }
 
 #[derive(Args)]
@@ -141,6 +159,12 @@ fn main() -> ExitCode {
             threads,
             rounds,
         }) => run_bench(&scene, spp, res, Some(threads), rounds),
+        Some(Command::Converge {
+            quick,
+            out,
+            threads,
+        }) => run_converge(quick, &out, threads),
+        Some(Command::Stress { quick }) => run_stress(quick),
     };
     match result {
         Ok(true) => ExitCode::SUCCESS,
@@ -373,4 +397,47 @@ fn run_bench(
         b.overhead * 100.0
     );
     Ok(true)
+}
+
+fn run_converge(
+    quick: bool,
+    out: &std::path::Path,
+    threads: Option<usize>,
+) -> Result<bool, InputError> {
+    let mut cfg = if quick {
+        lpe_render::converge::Config::quick()
+    } else {
+        lpe_render::converge::Config::default_run()
+    };
+    cfg.threads = threads;
+    let t0 = Instant::now();
+    let o = lpe_render::converge::run(&cfg, out, &mut |s| eprintln!("  {s}"))?;
+    println!(
+        "{}",
+        lpe_render::converge::markdown(
+            &o.summary,
+            &["beauty", "direct", "bounce3", "directDiffuse"]
+        )
+    );
+    println!("{}", o.accumulation);
+    if !o.plot_text {
+        eprintln!("note: no TrueType font found (set LPE_PLOT_FONT): plots drawn without text");
+    }
+    eprintln!(
+        "converge: {} series in {:.1}s; wrote {}",
+        o.summary.len(),
+        t0.elapsed().as_secs_f64(),
+        o.files
+            .iter()
+            .map(|f| f.display().to_string())
+            .collect::<Vec<_>>()
+            .join(", ")
+    );
+    Ok(true)
+}
+
+fn run_stress(quick: bool) -> Result<bool, InputError> {
+    let rows = lpe_render::stress::run(quick)?;
+    println!("{}", lpe_render::stress::markdown(&rows));
+    Ok(rows.iter().all(|r| r.passed))
 }

@@ -133,6 +133,9 @@ pub struct ReferenceMatcher {
     /// Class id -> vertex; grows during classification (before rendering).
     alphabet: Mutex<Vec<Vertex>>,
     memo: Vec<Mutex<Memo>>,
+    /// Answer from the memo (the renderer's default); off, every emitter reached runs
+    /// `reference::is_match` (what the verification engine costs, shown by `converge`).
+    memoize: bool,
 }
 
 impl ReferenceMatcher {
@@ -147,6 +150,16 @@ impl ReferenceMatcher {
             memo: (0..MEMO_SLOTS)
                 .map(|_| Mutex::new(Memo::default()))
                 .collect(),
+            memoize: true,
+        })
+    }
+
+    /// The same matcher without the memo: every [`PathMatcher::matches`] runs the
+    /// reference engine.
+    pub fn unmemoized(aovs: &[Lpe]) -> Result<ReferenceMatcher, String> {
+        Ok(ReferenceMatcher {
+            memoize: false,
+            ..ReferenceMatcher::new(aovs)?
         })
     }
 
@@ -209,6 +222,9 @@ impl PathMatcher for ReferenceMatcher {
     }
 
     fn matches(&self, s: RefState) -> AovMask {
+        if !self.memoize {
+            return self.compute(&s);
+        }
         let slot = rayon::current_thread_index().map_or(0, |i| i + 1) % MEMO_SLOTS;
         let mut memo = self.memo[slot].lock().unwrap_or_else(|e| e.into_inner());
         if let Some(m) = memo.get(&s) {

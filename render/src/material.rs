@@ -93,38 +93,63 @@ fn schlick(f0: Vec3, cos: f32) -> Vec3 {
 
 /// Unpolarized Fresnel reflectance of a dielectric interface; `eta` = transmitted over
 /// incident index, `cos_i >= 0`. Returns 1 under total internal reflection.
+///
+/// Computed in f64 from `cos_t^2 = (eta^2 - 1 + cos_i^2) / eta^2`, which (unlike
+/// `1 - sin_t^2`) keeps grazing angles exact: at `eta = 1` and `cos_i = 1e-6` the f32 form
+/// rounds `sin_t^2` to 1 and reports total internal reflection at a non-interface.
 pub fn fresnel_dielectric(cos_i: f32, eta: f32) -> f32 {
-    let sin2_t = (1.0 - cos_i * cos_i).max(0.0) / (eta * eta);
-    if sin2_t >= 1.0 {
+    let Some(cos_t) = refracted_cos(cos_i, eta) else {
         return 1.0;
+    };
+    let (ci, ct, e) = (cos_i as f64, cos_t, eta as f64);
+    let rs = (ci - e * ct) / (ci + e * ct);
+    let rp = (e * ci - ct) / (e * ci + ct);
+    let r = 0.5 * (rs * rs + rp * rp);
+    // 0/0 only at cos_i = cos_t = 0 (grazing onto a non-interface): nothing reflects.
+    if r.is_finite() {
+        r as f32
+    } else {
+        0.0
     }
-    let cos_t = (1.0 - sin2_t).sqrt();
-    let rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    let rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    0.5 * (rs * rs + rp * rp)
 }
 
-/// GGX normal distribution for half vector `h` (local frame).
+/// `cos` of the refracted direction for incident `cos_i >= 0` and relative index `eta`
+/// (transmitted over incident), or `None` under total internal reflection.
+fn refracted_cos(cos_i: f32, eta: f32) -> Option<f64> {
+    let (ci, e) = (cos_i as f64, eta as f64);
+    let cos2_t = (e * e - 1.0 + ci * ci) / (e * e);
+    (cos2_t > 0.0).then(|| cos2_t.sqrt())
+}
+
+/// `sin^2` of a unit vector's angle to `+z`, from its tangent components: exact near the
+/// pole, where `1 - z^2` cancels (alpha 1e-7 lobes live within 1e-7 rad of it).
+fn sin2(w: Vec3) -> f32 {
+    w.x * w.x + w.y * w.y
+}
+
+/// GGX normal distribution for half vector `h` (local frame, unit):
+/// `alpha^2 / (pi (sin^2 + alpha^2 cos^2)^2)`. The usual `cos^2 (alpha^2 - 1) + 1` rounds to
+/// 0 at the peak once `alpha^2` is below f32 epsilon (alpha < 3e-4), giving D = inf.
 fn ggx_d(h: Vec3, alpha: f32) -> f32 {
-    let c2 = h.z * h.z;
     let a2 = alpha * alpha;
-    let d = c2 * (a2 - 1.0) + 1.0;
+    let d = sin2(h) + a2 * h.z * h.z;
     a2 / (PI * d * d)
 }
 
-/// Smith masking for GGX.
+/// Smith masking for GGX, `2 / (1 + sqrt(1 + alpha^2 tan^2))`.
 fn ggx_g1(w: Vec3, alpha: f32) -> f32 {
     let c2 = w.z * w.z;
     if c2 <= 0.0 {
         return 0.0;
     }
-    let t2 = (1.0 - c2).max(0.0) / c2;
+    let t2 = sin2(w) / c2;
     2.0 / (1.0 + (1.0 + alpha * alpha * t2).sqrt())
 }
 
-/// Smallest GGX roughness the sampler uses: below it the lobe is numerically a mirror
-/// in f32 (issue 6 takes GGX down to 1e-7 with a dedicated near-delta path).
-const MIN_ALPHA: f32 = 1e-3;
+/// Smallest GGX roughness: `roughness = 0` in a scene file still gives a finite lobe. At
+/// 1e-7 the peak of D is 3e13 and `alpha^4` = 1e-28 is still a normal f32, so D, the pdf
+/// and (computed without them, see [`Lobe::sample`]) the sample weight stay finite.
+pub const MIN_ALPHA: f32 = 1e-7;
 
 impl Lobe {
     /// `(f |cos_i|, pdf)` for a non-delta lobe; directions in the local frame of the
@@ -174,41 +199,56 @@ impl Lobe {
                 wi.z *= side;
                 self.sample_by_eval(wo, wi)
             }
-            Model::Ggx { alpha, .. } => {
+            Model::Ggx { f0, alpha } => {
                 let alpha = alpha.max(MIN_ALPHA);
-                // Sample h proportional to D(h) cos(theta_h) (Walter et al. 2007).
+                // Sample h proportional to D(h) cos(theta_h) (Walter et al. 2007) on wo's
+                // side: tan^2 = alpha^2 u / (1 - u), with sin and cos from tan^2 directly
+                // (1 - cos^2 would cancel to 0 for tiny alpha).
                 let tan2 = alpha * alpha * u.x / (1.0 - u.x).max(1e-12);
                 let cos = 1.0 / (1.0 + tan2).sqrt();
-                let sin = (1.0 - cos * cos).max(0.0).sqrt();
+                let sin = (tan2 / (1.0 + tan2)).sqrt();
                 let phi = 2.0 * PI * u.y;
                 let h = Vec3::new(sin * phi.cos(), sin * phi.sin(), cos * s);
-                let wi = 2.0 * wo.dot(h) * h - wo;
-                self.sample_by_eval(wo, wi)
+                let wo_h = wo.dot(h);
+                let wi = 2.0 * wo_h * h - wo;
+                if !(wo_h > 0.0 && wi.z * wo.z > 0.0) {
+                    return None; // reflected below the surface: masked
+                }
+                let (_, pdf) = self.eval(wo, wi);
+                // f cos / pdf with D cancelled analytically: F G (wo.h) / (|wo.z| cos_h).
+                // Dividing the two evaluated values instead gives inf/inf at alpha 1e-7.
+                let (wo_u, wi_u) = (wo * s, wi * s);
+                let g = ggx_g1(wo_u, alpha) * ggx_g1(wi_u, alpha);
+                let weight = schlick(f0, wi.dot(h)) * (g * wo_h / (wo_u.z * cos));
+                (pdf > 0.0 && weight.is_finite() && weight != Vec3::ZERO).then_some(LobeSample {
+                    wi,
+                    weight,
+                    pdf,
+                    delta: false,
+                })
             }
             Model::Dielectric { ior, tint } => {
                 // Entering when wo is on the normal's side.
                 let eta = if s > 0.0 { ior } else { 1.0 / ior };
                 let cos_o = wo.z.abs();
                 let fr = fresnel_dielectric(cos_o, eta);
-                if u.x < fr {
-                    Some(LobeSample {
+                let refracted = refracted_cos(cos_o, eta).filter(|_| u.x >= fr);
+                Some(match refracted {
+                    None => LobeSample {
                         wi: Vec3::new(-wo.x, -wo.y, wo.z),
                         weight: tint,
                         pdf: 0.0,
                         delta: true,
-                    })
-                } else {
-                    let sin2_t = (1.0 - cos_o * cos_o).max(0.0) / (eta * eta);
-                    let cos_t = (1.0 - sin2_t).max(0.0).sqrt();
-                    let wi = Vec3::new(-wo.x / eta, -wo.y / eta, -s * cos_t);
-                    // Radiance is compressed by eta^2 entering a denser medium.
-                    Some(LobeSample {
-                        wi: wi.normalize(),
+                    },
+                    // Snell: tangential part scales by 1/eta, normal part is cos_t.
+                    Some(cos_t) => LobeSample {
+                        wi: Vec3::new(-wo.x / eta, -wo.y / eta, -s * cos_t as f32).normalize(),
+                        // Radiance is compressed by eta^2 entering a denser medium.
                         weight: tint / (eta * eta),
                         pdf: 0.0,
                         delta: true,
-                    })
-                }
+                    },
+                })
             }
         }
     }

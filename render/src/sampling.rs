@@ -49,13 +49,23 @@ pub fn uniform_sphere(u: Vec2) -> Vec3 {
     Vec3::new(r * phi.cos(), r * phi.sin(), z)
 }
 
-/// Uniform direction in the cone of half-angle `acos(cos_max)` around `+z`;
-/// pdf `1 / (2 pi (1 - cos_max))`.
-pub fn uniform_cone(u: Vec2, cos_max: f32) -> Vec3 {
-    let cos = 1.0 - u.x * (1.0 - cos_max);
-    let sin = (1.0 - cos * cos).max(0.0).sqrt();
+/// Uniform direction in the cone of half-angle `theta_max` around `+z`, given
+/// `one_minus_cos_max = 1 - cos(theta_max)` (see [`one_minus_cos_from_sin2`]); pdf
+/// `1 / (2 pi one_minus_cos_max)`. Works in `1 - cos` throughout: a cone of 1e-6 rad has
+/// `cos = 1` in f32, and `sin = sqrt(1 - cos^2)` would put every sample on the axis.
+pub fn uniform_cone(u: Vec2, one_minus_cos_max: f32) -> Vec3 {
+    let one_minus_cos = u.x * one_minus_cos_max;
+    let cos = 1.0 - one_minus_cos;
+    let sin = (one_minus_cos * (2.0 - one_minus_cos)).max(0.0).sqrt();
     let phi = 2.0 * PI * u.y;
     Vec3::new(sin * phi.cos(), sin * phi.sin(), cos)
+}
+
+/// `1 - cos(theta)` from `sin^2(theta)` for `theta <= pi/2`, without cancellation:
+/// `sin^2 / (1 + cos)`, which is `sin^2 / 2` to f32 precision for tiny angles.
+pub fn one_minus_cos_from_sin2(sin2: f32) -> f32 {
+    let sin2 = sin2.clamp(0.0, 1.0);
+    sin2 / (1.0 + (1.0 - sin2).sqrt())
 }
 
 /// Veach's power heuristic (beta = 2) for strategy `a` against `b`. Written as
@@ -66,7 +76,8 @@ pub fn power_heuristic(a: f32, b: f32) -> f32 {
         return if b > 0.0 { 0.0 } else { 1.0 };
     }
     if a.is_infinite() {
-        return 1.0;
+        // Two infinite densities (two delta-like strategies) share the weight.
+        return if b.is_infinite() { 0.5 } else { 1.0 };
     }
     let r = b / a;
     1.0 / (1.0 + r * r)

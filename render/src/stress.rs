@@ -1,0 +1,357 @@
+//! `lpe-render stress`: the hard-case scene set of issue 6, rendered, one table row per
+//! measured property. The same scenes and checks back `render/tests/hard_cases.rs`.
+
+use glam::{DVec3, Vec3};
+use lpe::{LobeMap, Parser};
+
+use crate::aovs::AovList;
+use crate::converge::{plane_reference, plane_scene, sphere_over_plane, PLANE_ALBEDO};
+use crate::film::Accumulation;
+use crate::integrator::{Render, Settings, Technique};
+use crate::material::{Lobe, Model};
+use crate::rng::Rng;
+use crate::scene::Scene;
+
+/// One measured property.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct Row {
+    pub case: String,
+    pub measure: String,
+    pub value: f64,
+    pub bound: f64,
+    pub passed: bool,
+}
+
+fn row(case: &str, measure: &str, value: f64, bound: f64, passed: bool) -> Row {
+    Row {
+        case: case.into(),
+        measure: measure.into(),
+        value,
+        bound,
+        passed,
+    }
+}
+
+pub fn markdown(rows: &[Row]) -> String {
+    let mut s = String::from("| case | measure | value | bound | ok |\n|---|---|---:|---:|---|\n");
+    for r in rows {
+        s += &format!(
+            "| {} | {} | {:.3e} | {:.3e} | {} |\n",
+            r.case,
+            r.measure,
+            r.value,
+            r.bound,
+            if r.passed { "yes" } else { "**NO**" }
+        );
+    }
+    s
+}
+
+/// Relative error of the image mean of `got` (red channel) against `want`, and the
+/// bound it must meet: 5 standard errors of the per-pixel residuals (significance
+/// < 1e-6) plus 1e-4 relative (f32 radiance and pdfs).
+pub fn mean_check(got: &[DVec3], want: &[DVec3]) -> (f64, f64) {
+    let res: Vec<f64> = got.iter().zip(want).map(|(g, w)| g.x - w.x).collect();
+    let n = res.len() as f64;
+    let m = res.iter().sum::<f64>() / n;
+    let var = res.iter().map(|r| (r - m).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
+    let scale = want.iter().map(|w| w.x).sum::<f64>() / n;
+    (
+        (m / scale).abs(),
+        (5.0 * (var / n).sqrt() + 1e-4 * scale) / scale,
+    )
+}
+
+/// Point lights with intensities 1e-6 .. 1e12 over the plane, one light group each.
+pub const INTENSITIES: [(f64, [f32; 3]); 4] = [
+    (1e-6, [1.0, 2.0, 0.0]),
+    (1.0, [-1.0, 2.0, 0.5]),
+    (1e6, [0.0, 3.0, -1.0]),
+    (1e12, [0.5, 1.5, 1.0]),
+];
+
+/// The plane lit by [`INTENSITIES`], with AOV `gK = C<RD><L.'gK'>` per light.
+pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList), String> {
+    let text: Vec<String> = INTENSITIES
+        .iter()
+        .enumerate()
+        .map(|(k, (i, [x, y, z]))| {
+            format!(
+                "kind = \"point\"\ngroup = \"g{k}\"\nposition = [{x}, {y}, {z}]\nintensity = [{i:e}, {i:e}, {i:e}]"
+            )
+        })
+        .collect();
+    let scene = Scene::from_toml(
+        &plane_scene("intensities", &text.join("\n[[lights]]\n")),
+        "intensities",
+        lobes,
+    )
+    .map_err(|e| e.to_string())?;
+    let mut aovs = AovList::default();
+    for k in 0..INTENSITIES.len() {
+        aovs.push(
+            &format!("g{k}"),
+            &format!("C<RD><L.'g{k}'>"),
+            &Parser::default(),
+        )?;
+    }
+    Ok((scene, aovs))
+}
+
+/// Closed form of light `k` of [`INTENSITIES`]: `(a/pi) I cos / d^2`, with I as stored.
+pub fn intensity_reference(scene: &Scene, k: usize, w: usize, h: usize) -> Vec<DVec3> {
+    let (i, p) = INTENSITIES[k];
+    let l = Vec3::from(p).as_dvec3();
+    let i = i as f32 as f64;
+    plane_reference(scene, w, h, |x| {
+        let d = l - x;
+        let d2 = d.length_squared();
+        PLANE_ALBEDO / std::f64::consts::PI * i * (d.y / d2.sqrt()) / d2
+    })
+}
+
+/// A near-mirror (alpha 1e-7: pdf peak ~1e13) and a 1e-6 sphere light (light pdf
+/// ~1e12) with a point light and a dome: MIS between densities from 0 to ~1e13.
+pub const MIS_EXTREMES: &str = r#"
+[camera]
+position = [0.0, 1.0, 3.0]
+look_at = [0.0, 0.0, 0.0]
+[materials.mirror]
+lobes = [{ name = "Specular", model = "ggx", f0 = [1.0, 1.0, 1.0], roughness = 0.0 },
+         { name = "Diffuse", model = "lambert", albedo = [0.2, 0.2, 0.2] }]
+[[objects]]
+material = "mirror"
+quad = { corner = [-5.0, 0.0, 5.0], u = [10.0, 0.0, 0.0], v = [0.0, 0.0, -10.0] }
+[[objects]]
+material = "mirror"
+sphere = { center = [0.0, 0.5, 0.0], radius = 0.5 }
+[[lights]]
+kind = "sphere"
+center = [0.0, 2.0, -1.0]
+radius = 1e-6
+radiance = [1e12, 1e12, 1e12]
+[[lights]]
+kind = "point"
+position = [1.0, 1.0, 1.0]
+intensity = [5.0, 5.0, 5.0]
+[[lights]]
+kind = "dome"
+radiance = [0.1, 0.1, 0.1]
+"#;
+
+/// Samples spanning many magnitudes that reach every basic AOV: a diffuse + glossy
+/// floor, a glowing ball, a glass ball, lights from 1e-3 to 1e3.
+pub const MIXED: &str = r#"
+[camera]
+position = [0.0, 1.5, 4.0]
+look_at = [0.0, 0.3, 0.0]
+fov = 50.0
+[render]
+max_depth = 4
+[materials.floor]
+lobes = [{ name = "Diffuse", model = "lambert", albedo = [0.6, 0.5, 0.4] },
+         { name = "Specular", model = "ggx", f0 = [0.3, 0.3, 0.3], roughness = 0.3 }]
+[materials.glass]
+lobes = [{ name = "Glass", model = "dielectric", ior = 1.5 }]
+[materials.glow]
+glow = [50.0, 40.0, 30.0]
+lobes = [{ name = "Diffuse", model = "lambert", albedo = [0.5, 0.5, 0.5] }]
+[[objects]]
+material = "floor"
+quad = { corner = [-5.0, 0.0, 5.0], u = [10.0, 0.0, 0.0], v = [0.0, 0.0, -10.0] }
+[[objects]]
+material = "glow"
+sphere = { center = [-0.8, 0.3, 0.0], radius = 0.3 }
+[[objects]]
+material = "glass"
+sphere = { center = [0.8, 0.4, 0.2], radius = 0.4 }
+[[lights]]
+kind = "point"
+position = [0.0, 3.0, 1.0]
+intensity = [1e3, 1e3, 1e3]
+[[lights]]
+kind = "point"
+position = [2.0, 1.0, 2.0]
+intensity = [1e-3, 1e-3, 1e-3]
+[[lights]]
+kind = "sphere"
+center = [-2.0, 2.0, -1.0]
+radius = 0.2
+radiance = [30.0, 30.0, 30.0]
+"#;
+
+/// [`MIXED`] rendered into one pixel with `spp` samples by an f64 and an f32-naive film
+/// side by side (one thread each); the largest relative error of the basic-AOV
+/// partition against beauty for each: `(f64, f32, beauty)`.
+pub fn mixed_partition(spp: u32, lobes: &LobeMap) -> Result<(f64, f64, DVec3), String> {
+    let scene = Scene::from_toml(MIXED, "mixed", lobes).map_err(|e| e.to_string())?;
+    let aovs = AovList::basic(&Parser::default())?;
+    let basic = &aovs.partitions[0];
+    let settings = |accumulation| Settings {
+        width: 1,
+        height: 1,
+        spp,
+        seed: 17,
+        threads: Some(1),
+        accumulation,
+        ..Settings::default()
+    };
+    let render = |a| crate::app::render(&scene, &aovs, lobes, &settings(a));
+    let (a, b) = std::thread::scope(|t| {
+        let f = t.spawn(|| render(Accumulation::F64));
+        let g = render(Accumulation::F32);
+        (f.join().expect("render thread"), g)
+    });
+    let (a, b) = (a?, b?);
+    if a.film.rejected > 0 {
+        return Err(format!(
+            "{} samples rejected as non-finite",
+            a.film.rejected
+        ));
+    }
+    Ok((
+        crate::check::partition(&a.film, &aovs, basic).measured,
+        crate::check::partition(&b.film, &aovs, basic).measured,
+        a.film.pixel(0, 0, 0),
+    ))
+}
+
+/// Mean weight of a GGX lobe with `f0 = 1` (its directional albedo: a white furnace)
+/// over `n` samples, its standard error, and how many samples were not finite.
+pub fn ggx_furnace(alpha: f32, cos: f32, n: usize) -> (f64, f64, usize) {
+    let lobe = Lobe::new(
+        "Specular",
+        Model::Ggx {
+            f0: Vec3::ONE,
+            alpha,
+        },
+        &LobeMap::default(),
+    );
+    let wo = Vec3::new((1.0 - cos * cos).max(0.0).sqrt(), 0.0, cos);
+    let mut rng = Rng::for_sample(1, 0, 0);
+    let mut bad = 0;
+    let x: Vec<f64> = (0..n)
+        .map(|_| match lobe.sample(wo, rng.vec2()) {
+            Some(s) if s.weight.is_finite() && s.pdf.is_finite() => s.weight.x as f64,
+            Some(_) => {
+                bad += 1;
+                0.0
+            }
+            None => 0.0,
+        })
+        .collect();
+    let m = x.iter().sum::<f64>() / n as f64;
+    let v = x.iter().map(|a| (a - m).powi(2)).sum::<f64>() / (n as f64 - 1.0);
+    (m, (v / n as f64).sqrt(), bad)
+}
+
+fn render(scene: &Scene, aovs: &AovList, s: &Settings) -> Result<Render, String> {
+    crate::app::render(scene, aovs, &LobeMap::default(), s)
+}
+
+/// Runs the set. `quick`: fewer samples (the 10^7-sample film test uses 10^5).
+pub fn run(quick: bool) -> Result<Vec<Row>, String> {
+    let lobes = LobeMap::default();
+    let mut rows = Vec::new();
+    let small = |spp| Settings {
+        width: 12,
+        height: 12,
+        spp,
+        seed: 9,
+        ..Settings::default()
+    };
+    let spp = if quick { 16 } else { 64 };
+
+    for radius in [0.5, 1e-6] {
+        let k = sphere_over_plane(12, 12, radius, &lobes)?;
+        for t in [Technique::Mis, Technique::LightOnly] {
+            let r = render(
+                &k.scene,
+                &k.aovs,
+                &Settings {
+                    technique: t,
+                    ..small(spp)
+                },
+            )?;
+            let (e, b) = mean_check(&r.film.layer(1), &k.reference[1]);
+            rows.push(row(
+                &format!("sphere light R={radius:e}, same power, {t:?}"),
+                "rel. error vs a Le (R/d)^2 cos",
+                e,
+                b,
+                e <= b && r.film.rejected == 0,
+            ));
+        }
+    }
+
+    let (scene, aovs) = intensities_scene(&lobes)?;
+    let r = render(&scene, &aovs, &small(2 * spp))?;
+    for (k, (i, _)) in INTENSITIES.iter().enumerate() {
+        let (e, b) = mean_check(
+            &r.film.layer(1 + k),
+            &intensity_reference(&scene, k, 12, 12),
+        );
+        rows.push(row(
+            &format!("point light I={i:e} among 1e-6..1e12"),
+            "rel. error of its light group",
+            e,
+            b,
+            e <= b && r.film.rejected == 0,
+        ));
+    }
+
+    let scene =
+        Scene::from_toml(MIS_EXTREMES, "mis-extremes", &lobes).map_err(|e| e.to_string())?;
+    let aovs = AovList::defaults(&scene, &Parser::default())?;
+    for t in [Technique::Mis, Technique::BsdfOnly, Technique::LightOnly] {
+        let r = render(
+            &scene,
+            &aovs,
+            &Settings {
+                technique: t,
+                ..small(spp)
+            },
+        )?;
+        let bad = (r.film.rejected + r.film.aov_rejected) as f64;
+        rows.push(row(
+            &format!("MIS pdfs 0..1e13 (alpha 1e-7, 1e-6 light), {t:?}"),
+            "non-finite samples",
+            bad,
+            0.0,
+            bad == 0.0,
+        ));
+    }
+
+    let mixed_spp = if quick { 100_000 } else { 10_000_000 };
+    let (e64, e32, _) = mixed_partition(mixed_spp, &lobes)?;
+    rows.push(row(
+        &format!("{mixed_spp} mixed samples in one pixel, f64 film"),
+        "basic AOVs vs beauty, rel.",
+        e64,
+        1e-6,
+        e64 <= 1e-6,
+    ));
+    rows.push(row(
+        &format!("{mixed_spp} mixed samples in one pixel, f32-naive film"),
+        "basic AOVs vs beauty, rel. (fails by design)",
+        e32,
+        1e-6,
+        true,
+    ));
+
+    let n = if quick { 5_000 } else { 50_000 };
+    for alpha in [1e-1, 1e-3, 1e-5, 1e-7] {
+        for cos in [1.0, 1e-6] {
+            let (m, se, bad) = ggx_furnace(alpha, cos, n);
+            rows.push(row(
+                &format!("GGX alpha {alpha:e}, cos {cos:e}, f0 = 1"),
+                "mean weight (albedo) / non-finite",
+                m,
+                // 5 standard errors, plus f32 rounding of weights that are all ~1.
+                1.0 + 5.0 * se + 1e-6,
+                m <= 1.0 + 5.0 * se + 1e-6 && bad == 0,
+            ));
+        }
+    }
+    Ok(rows)
+}
