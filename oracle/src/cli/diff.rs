@@ -133,10 +133,7 @@ pub fn run_cases(args: &Args, engines: &[&dyn crate::engine::Engine]) -> Totals 
 pub fn run(args: Args) -> ExitCode {
     let engines = match super::select_engines(&args.engine) {
         Ok(e) => e,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
+        Err(e) => return super::bad_input(format!("error: {e}")),
     };
     if engines.len() < 2 {
         eprintln!("error: a differential run needs at least two engines; use --engine all");

@@ -28,10 +28,7 @@ pub struct Args {
 pub fn run(args: Args) -> ExitCode {
     let parser = match super::load_parser(args.ini.as_deref()) {
         Ok(p) => p,
-        Err(e) => {
-            eprintln!("{e}");
-            return ExitCode::from(2);
-        }
+        Err(e) => return super::bad_input(e),
     };
     let parse = |s: &str| parser.parse(s).map_err(|e| format!("error: {e}"));
     let (a, b) = match (parse(&args.a), parse(&args.b)) {
@@ -43,10 +40,7 @@ pub fn run(args: Args) -> ExitCode {
     };
     let c = match analysis::compare(&a, &b) {
         Ok(c) => c,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
+        Err(e) => return super::bad_input(format!("error: {e}")),
     };
     match report(&a, &b, &c) {
         Ok(text) => {

@@ -125,17 +125,11 @@ impl std::fmt::Display for LineOutcome {
 pub fn run(args: Args) -> ExitCode {
     let engines = match super::select_engines(&args.engine) {
         Ok(e) => e,
-        Err(e) => {
-            eprintln!("error: {e}");
-            return ExitCode::from(2);
-        }
+        Err(e) => return super::bad_input(format!("error: {e}")),
     };
     let parser = match super::load_parser(args.ini.as_deref()) {
         Ok(p) => p,
-        Err(e) => {
-            eprintln!("{e}");
-            return ExitCode::from(2);
-        }
+        Err(e) => return super::bad_input(e),
     };
     let mut disagreed = false;
     let stdout = std::io::stdout();
@@ -144,10 +138,7 @@ pub fn run(args: Args) -> ExitCode {
         for line in std::io::stdin().lock().lines() {
             let line = match line {
                 Ok(l) => l,
-                Err(e) => {
-                    eprintln!("error: reading stdin: {e}");
-                    return ExitCode::from(2);
-                }
+                Err(e) => return super::bad_input(format!("error: reading stdin: {e}")),
             };
             let trimmed = line.trim();
             let answer = if trimmed.is_empty() || trimmed.starts_with('#') {
@@ -165,10 +156,7 @@ pub fn run(args: Args) -> ExitCode {
         let expr = args.expr.unwrap_or_default();
         let lpe = match parser.parse(&expr) {
             Ok(l) => l,
-            Err(e) => {
-                eprintln!("{e}");
-                return ExitCode::from(2);
-            }
+            Err(e) => return super::bad_input(e),
         };
         if args.paths.is_empty() {
             eprintln!("error: give at least one path after the expression, e.g. \"C RD L\"");

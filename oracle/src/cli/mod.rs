@@ -10,6 +10,12 @@ pub mod witness;
 
 use crate::engine::{self, Engine};
 
+/// Reports bad input (an argument, a file, an expression) on stderr: exit status 2.
+pub fn bad_input(message: impl std::fmt::Display) -> std::process::ExitCode {
+    eprintln!("{message}");
+    std::process::ExitCode::from(2)
+}
+
 /// `--engine` values: one engine name, or `all`.
 pub fn select_engines(name: &str) -> Result<Vec<&'static dyn Engine>, String> {
     if name == "all" {

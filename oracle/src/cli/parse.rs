@@ -16,10 +16,7 @@ pub struct Args {
 pub fn run(args: Args) -> ExitCode {
     let parser = match super::load_parser(args.ini.as_deref()) {
         Ok(p) => p,
-        Err(e) => {
-            eprintln!("{e}");
-            return ExitCode::from(2);
-        }
+        Err(e) => return super::bad_input(e),
     };
     match parser.parse(&args.expr) {
         Ok(lpe) => {

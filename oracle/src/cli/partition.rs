@@ -42,10 +42,7 @@ pub fn run(args: Args) -> ExitCode {
             }
             let p = match analysis::partition(&aovs, &universe) {
                 Ok(p) => p,
-                Err(e) => {
-                    eprintln!("error: {e}");
-                    return ExitCode::from(2);
-                }
+                Err(e) => return super::bad_input(format!("error: {e}")),
             };
             match report(&aovs, &universe, &p) {
                 Ok(text) => {
