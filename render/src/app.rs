@@ -32,28 +32,30 @@ pub fn render_announcing(
     settings: &Settings,
     on_plan: &mut dyn FnMut(&crate::plan::Plan),
 ) -> Result<Render, String> {
-    fn run<M: PathMatcher>(
-        matcher: &M,
-        scene: &Scene,
-        aovs: &AovList,
-        lobes: &LobeMap,
-        settings: &Settings,
-        on_plan: &mut dyn FnMut(&crate::plan::Plan),
-    ) -> Result<Render, String> {
-        let integrator = Integrator::new(scene, aovs, matcher, lobes, settings);
-        on_plan(&integrator.plan());
-        integrator.render()
-    }
     match lpe::aov::AovSet::compile(&aovs.named()) {
-        Ok(set) => run(&set, scene, aovs, lobes, settings, on_plan),
+        Ok(set) => render_with(&set, scene, aovs, lobes, settings, on_plan),
         Err(e) => {
             eprintln!(
                 "warning: the fast matcher refused this AOV set ({e}); using the reference matcher"
             );
             let matcher = ReferenceMatcher::new(&aovs.lpes())?;
-            run(&matcher, scene, aovs, lobes, settings, on_plan)
+            render_with(&matcher, scene, aovs, lobes, settings, on_plan)
         }
     }
+}
+
+/// Renders with a given matcher, calling `on_plan` with the effects plan first.
+pub fn render_with<M: PathMatcher>(
+    matcher: &M,
+    scene: &Scene,
+    aovs: &AovList,
+    lobes: &LobeMap,
+    settings: &Settings,
+    on_plan: &mut dyn FnMut(&crate::plan::Plan),
+) -> Result<Render, String> {
+    let integrator = Integrator::new(scene, aovs, matcher, lobes, settings);
+    on_plan(&integrator.plan());
+    integrator.render()
 }
 
 /// Name of the engine [`render`] uses, for reports.

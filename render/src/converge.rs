@@ -17,8 +17,8 @@ use std::path::Path;
 use crate::aovs::AovList;
 use crate::camera::Camera;
 use crate::film::{Accumulation, Film};
-use crate::integrator::{Integrator, Render, Settings, Technique};
-use crate::matcher::{PathMatcher, ReferenceMatcher};
+use crate::integrator::{Render, Settings, Technique};
+use crate::matcher::ReferenceMatcher;
 use crate::scene::Scene;
 
 /// The LPE engines `converge` can time. Each renders the same image (same paths, same
@@ -60,15 +60,6 @@ impl Engine {
         lobes: &LobeMap,
         settings: &Settings,
     ) -> Result<Render, String> {
-        fn with<M: PathMatcher>(
-            m: &M,
-            scene: &Scene,
-            aovs: &AovList,
-            lobes: &LobeMap,
-            settings: &Settings,
-        ) -> Result<Render, String> {
-            Integrator::new(scene, aovs, m, lobes, settings).render()
-        }
         let lpes = aovs.lpes();
         let fast = |dfa_budget| {
             let opts = lpe::aov::Options {
@@ -77,25 +68,22 @@ impl Engine {
             };
             lpe::aov::AovSet::compile_with(&aovs.named(), &opts).map_err(|e| e.to_string())
         };
+        use crate::app::render_with;
+        let quiet = &mut |_: &crate::plan::Plan| {};
         match self {
-            Engine::FastDfa => with(
-                &fast(lpe::aov::Options::default().dfa_budget)?,
-                scene,
-                aovs,
-                lobes,
-                settings,
-            ),
-            Engine::BitsetNfa => with(&fast(0)?, scene, aovs, lobes, settings),
-            Engine::ReferenceMemo => {
-                with(&ReferenceMatcher::new(&lpes)?, scene, aovs, lobes, settings)
+            Engine::FastDfa => {
+                let set = fast(lpe::aov::Options::default().dfa_budget)?;
+                render_with(&set, scene, aovs, lobes, settings, quiet)
             }
-            Engine::ReferenceDirect => with(
-                &ReferenceMatcher::unmemoized(&lpes)?,
-                scene,
-                aovs,
-                lobes,
-                settings,
-            ),
+            Engine::BitsetNfa => render_with(&fast(0)?, scene, aovs, lobes, settings, quiet),
+            Engine::ReferenceMemo => {
+                let m = ReferenceMatcher::new(&lpes)?;
+                render_with(&m, scene, aovs, lobes, settings, quiet)
+            }
+            Engine::ReferenceDirect => {
+                let m = ReferenceMatcher::unmemoized(&lpes)?;
+                render_with(&m, scene, aovs, lobes, settings, quiet)
+            }
         }
     }
 }
