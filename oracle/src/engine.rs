@@ -27,8 +27,10 @@ impl fmt::Display for EngineError {
 
 impl std::error::Error for EngineError {}
 
-/// A compiled expression set.
-pub trait Matcher {
+/// A compiled expression set. `Send`, so a multi-threaded caller (the renderer's
+/// `converge`) can keep one per thread; not `Sync`, since matchers may keep a mutable
+/// cache.
+pub trait Matcher: Send {
     /// For each compiled expression, in order, whether it matches the whole path.
     fn which(&self, path: &Path) -> Vec<bool>;
 }

@@ -6,7 +6,7 @@ use lpe::{LobeMap, Parser};
 use crate::aovs::AovList;
 use crate::check::{self, Invariant};
 use crate::integrator::{Integrator, Render, Settings, Technique};
-use crate::matcher::{PathMatcher, ReferenceMatcher};
+use crate::matcher::{PathMatcher, Reference, ReferenceMatcher};
 use crate::scene::Scene;
 
 /// Renders `scene` with `aovs`.
@@ -38,7 +38,7 @@ pub fn render_announcing(
             eprintln!(
                 "warning: the fast matcher refused this AOV set ({e}); using the reference matcher"
             );
-            let matcher = ReferenceMatcher::new(&aovs.lpes())?;
+            let matcher = ReferenceMatcher::memoized(Reference::new(&aovs.lpes())?);
             render_with(&matcher, scene, aovs, lobes, settings, on_plan)
         }
     }

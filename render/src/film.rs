@@ -1,11 +1,16 @@
-//! The film: per-pixel sums for beauty and every AOV, in f64.
+//! The film: per-pixel sums for beauty and every AOV.
 //!
-//! f64 accumulation keeps `sum of 10^7 samples of mixed magnitude` within about 1e-9
-//! relative of the exact sum, far inside the 1e-5 partition tolerance (f32 would drift by
-//! ~1e-3 at that count). Issue 6 compares against f32 and compensated sums; the
-//! accumulation is isolated here ([`PixelSums`]) so another accumulator can replace it.
+//! The renderer sums in f64: `sum of 10^7 samples of mixed magnitude` stays within about
+//! 1e-13 relative of the exact sum, far inside the 1e-5 partition tolerance. `converge`
+//! and `stress` compare it against the two f32 films a renderer might ship instead: a
+//! naive one (drifts by ~1e-3 at that count, and the basic-AOV partition visibly fails)
+//! and a compensated one (an f32 sum plus an f32 running error, renormalized after each
+//! addition, so the stored estimate is within an f32 rounding or two of the exact sum
+//! at any count).
+//! The accumulation is isolated here ([`Accumulation`]) so the integrator does not
+//! care which film it writes.
 
-use glam::DVec3;
+use glam::{DVec3, Vec3};
 
 /// How a film adds samples into its pixel sums (issue 6 compares them).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -16,21 +21,90 @@ pub enum Accumulation {
     /// A naive f32 film: every running sum is rounded to f32 after each addition (stored
     /// in the f64 buffer, where an f32 value is exact), to show what f64 buys.
     F32,
+    /// An f32 film with compensated summation: each sum carries an f32 compensation
+    /// term holding the rounding error of the additions so far (a double-f32 pair,
+    /// renormalized after every addition); the estimate is `sum + compensation` rounded
+    /// to f32. Twice the memory of the naive f32 film, about the accuracy of a sum
+    /// rounded once.
+    F32Compensated,
 }
 
 impl Accumulation {
-    /// `sum + x` as this film stores it.
-    #[inline]
-    pub fn add(self, sum: DVec3, x: DVec3) -> DVec3 {
+    pub const ALL: [Accumulation; 3] = [
+        Accumulation::F64,
+        Accumulation::F32,
+        Accumulation::F32Compensated,
+    ];
+
+    pub fn name(self) -> &'static str {
         match self {
-            Accumulation::F64 => sum + x,
-            Accumulation::F32 => (sum.as_vec3() + x.as_vec3()).as_dvec3(),
+            Accumulation::F64 => "f64",
+            Accumulation::F32 => "f32 naive",
+            Accumulation::F32Compensated => "f32 compensated",
+        }
+    }
+
+    /// Values stored per layer: the sum, and for the compensated film its compensation.
+    fn slots(self) -> usize {
+        match self {
+            Accumulation::F32Compensated => 2,
+            _ => 1,
+        }
+    }
+
+    /// Adds `x` to layer `layer` of one pixel's storage (`layers` sums, then for the
+    /// compensated film `layers` compensations).
+    #[inline]
+    pub fn add(self, pixel: &mut [DVec3], layers: usize, layer: usize, x: DVec3) {
+        match self {
+            Accumulation::F64 => pixel[layer] += x,
+            Accumulation::F32 => pixel[layer] = (pixel[layer].as_vec3() + x.as_vec3()).as_dvec3(),
+            Accumulation::F32Compensated => {
+                let (sum, comp) = compensated_add(
+                    pixel[layer].as_vec3(),
+                    pixel[layers + layer].as_vec3(),
+                    x.as_vec3(),
+                );
+                pixel[layer] = sum.as_dvec3();
+                pixel[layers + layer] = comp.as_dvec3();
+            }
+        }
+    }
+
+    /// The stored total of layer `layer` of one pixel.
+    #[inline]
+    fn total(self, pixel: &[DVec3], layers: usize, layer: usize) -> DVec3 {
+        match self {
+            Accumulation::F32Compensated => {
+                (pixel[layer].as_vec3() + pixel[layers + layer].as_vec3()).as_dvec3()
+            }
+            _ => pixel[layer],
         }
     }
 }
 
-/// Sums for one pixel: layer 0 is beauty, layer `1 + i` is AOV `i`.
-pub type PixelSums = [DVec3];
+/// `a + b` rounded, and its exact rounding error (Knuth's TwoSum: no branch, no
+/// assumption on which operand is larger).
+fn two_sum(a: Vec3, b: Vec3) -> (Vec3, Vec3) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// Adds `x` to the pair `(sum, comp)`, whose exact value is `sum + comp` with `comp`
+/// below half an f32 ulp of `sum`: the addition's rounding error joins the compensation
+/// and the pair is renormalized at once, so `comp` never outgrows its ulp and its own
+/// roundings are 2^-24 of an ulp of the total.
+///
+/// Neumaier's form (one compensation that grows unrenormalized) is not enough here: on
+/// the `stress` pixel, whose naive f32 sum drifts by 1.4e-3, the compensation grows to
+/// ~1e-3 of the sum, its additions round at that scale, and the basic-AOV partition
+/// missed beauty by 1.3e-6 after 10^7 samples (`cargo test --release -p lpe-render
+/// --test hard_cases ten_million`); renormalized, it stays far inside 1e-6.
+fn compensated_add(sum: Vec3, comp: Vec3, x: Vec3) -> (Vec3, Vec3) {
+    let (t, e) = two_sum(sum, x);
+    two_sum(t, comp + e)
+}
 
 /// Accumulated samples for an image.
 #[derive(Clone, Debug, PartialEq)]
@@ -40,7 +114,10 @@ pub struct Film {
     pub spp: u32,
     /// `1 + number of AOVs`.
     pub layers: usize,
-    /// Pixel-major: pixel `(x, y)` holds `layers` consecutive sums.
+    pub accumulation: Accumulation,
+    /// Pixel-major: pixel `(x, y)` holds [`Film::stride`] consecutive values, `layers`
+    /// sums (layer 0 beauty, `1 + i` AOV `i`) and, for the compensated film, `layers`
+    /// compensations.
     pub(crate) data: Vec<DVec3>,
     /// AOVs whose pixel holds the last value written, not a sum (`overwrite;`).
     pub(crate) overwrite: Vec<bool>,
@@ -51,25 +128,43 @@ pub struct Film {
 }
 
 impl Film {
-    pub fn new(width: usize, height: usize, spp: u32, overwrite: Vec<bool>) -> Film {
+    pub fn new(
+        width: usize,
+        height: usize,
+        spp: u32,
+        overwrite: Vec<bool>,
+        accumulation: Accumulation,
+    ) -> Film {
         let layers = overwrite.len() + 1;
         Film {
             width,
             height,
             spp,
             layers,
-            data: vec![DVec3::ZERO; width * height * layers],
+            accumulation,
+            data: vec![DVec3::ZERO; width * height * layers * accumulation.slots()],
             overwrite,
             rejected: 0,
             aov_rejected: 0,
         }
     }
 
+    /// Values stored per pixel.
+    pub fn stride(&self) -> usize {
+        self.layers * self.accumulation.slots()
+    }
+
+    fn total(&self, pixel: usize, layer: usize) -> DVec3 {
+        let s = self.stride();
+        self.accumulation
+            .total(&self.data[pixel * s..(pixel + 1) * s], self.layers, layer)
+    }
+
     /// The estimate at pixel `(x, y)` of `layer` (0 = beauty, `1 + i` = AOV `i`): the
     /// mean over all samples (rejected samples count as zero), or the last value for
     /// `overwrite;` AOVs.
     pub fn pixel(&self, x: usize, y: usize, layer: usize) -> DVec3 {
-        let s = self.data[(y * self.width + x) * self.layers + layer];
+        let s = self.total(y * self.width + x, layer);
         if layer > 0 && self.overwrite[layer - 1] {
             s
         } else {
@@ -90,9 +185,68 @@ impl Film {
         self.width == other.width
             && self.height == other.height
             && (0..self.width * self.height).all(|p| {
-                let a = self.data[p * self.layers + layer];
-                let b = other.data[p * other.layers + other_layer];
+                let a = self.total(p, layer);
+                let b = other.total(p, other_layer);
                 a.to_array().map(f64::to_bits) == b.to_array().map(f64::to_bits)
             })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Adds `xs` to a one-layer pixel with `a`; the stored total.
+    fn sum(a: Accumulation, xs: impl Iterator<Item = f64>) -> f64 {
+        let mut px = vec![DVec3::ZERO; a.slots()];
+        for x in xs {
+            a.add(&mut px, 1, 0, DVec3::splat(x));
+        }
+        a.total(&px, 1, 0).x
+    }
+
+    #[test]
+    fn compensated_f32_keeps_what_naive_f32_loses() {
+        // One large value then 10^6 values each below half an f32 ulp of the running
+        // sum: naive f32 drops every one of them; the exact sum (f32 inputs, f64 adds
+        // exact here) is 1 + 10^6 * 2^-25.
+        let xs = || std::iter::once(1.0).chain(std::iter::repeat_n(2f64.powi(-25), 1_000_000));
+        let exact: f64 = xs().sum();
+        assert_eq!(sum(Accumulation::F32, xs()), 1.0);
+        let c = sum(Accumulation::F32Compensated, xs());
+        // Within one f32 rounding of the exact total.
+        assert!(
+            ((c - exact) / exact).abs() <= f32::EPSILON as f64,
+            "{c} vs {exact}"
+        );
+        assert_eq!(sum(Accumulation::F64, xs()), exact);
+    }
+
+    #[test]
+    fn compensation_survives_a_smaller_sum_meeting_a_larger_sample() {
+        // The branch where the sample outweighs the running sum: 2^-30 then 1 then -1
+        // leaves exactly 2^-30, which naive f32 loses at the second addition.
+        let xs = || [2f64.powi(-30), 1.0, -1.0].into_iter();
+        assert_eq!(sum(Accumulation::F32, xs()), 0.0);
+        assert_eq!(sum(Accumulation::F32Compensated, xs()), 2f64.powi(-30));
+    }
+
+    #[test]
+    fn films_store_layers_apart() {
+        for a in Accumulation::ALL {
+            let mut f = Film::new(2, 1, 2, vec![false], a);
+            let s = f.stride();
+            for (p, x) in [(0usize, 1.0), (1, 3.0)] {
+                let px = &mut f.data[p * s..(p + 1) * s];
+                a.add(px, f.layers, 1, DVec3::splat(x));
+                a.add(px, f.layers, 1, DVec3::splat(x));
+            }
+            assert_eq!(
+                f.layer(1),
+                vec![DVec3::splat(1.0), DVec3::splat(3.0)],
+                "{a:?}"
+            );
+            assert_eq!(f.layer(0), vec![DVec3::ZERO; 2], "{a:?}");
+        }
     }
 }

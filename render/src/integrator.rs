@@ -332,6 +332,7 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
             h,
             s.spp,
             self.flags.iter().map(|f| f.overwrite).collect(),
+            s.accumulation,
         );
         let mut builder = rayon::ThreadPoolBuilder::new();
         if let Some(t) = s.threads {
@@ -349,10 +350,10 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
             ProgressBar::hidden()
         };
         let start = Instant::now();
-        let layers = film.layers;
+        let stride = film.stride();
         let (rejected, aov_rejected, rays) = pool.install(|| {
             film.data
-                .par_chunks_mut(w * layers)
+                .par_chunks_mut(w * stride)
                 .enumerate()
                 .map(|(y, row)| {
                     let mut acc = SampleAcc {
@@ -364,7 +365,7 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
                         rays: 0,
                     };
                     let mut rejected = 0;
-                    for (x, pixel) in row.chunks_mut(layers).enumerate() {
+                    for (x, pixel) in row.chunks_mut(stride).enumerate() {
                         for sample in 0..s.spp {
                             let index = (y * w + x) as u64;
                             let mut rng = Rng::for_sample(s.seed, index, sample as u64);
@@ -393,9 +394,11 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
     /// the sample was rejected as non-finite.
     fn commit(&self, acc: &mut SampleAcc, pixel: &mut [DVec3]) -> bool {
         let rejected = !(acc.finite && acc.beauty.is_finite());
-        let add = |sum, x| self.settings.accumulation.add(sum, x);
+        let layers = 1 + self.flags.len();
+        let add =
+            |pixel: &mut [DVec3], layer, x| self.settings.accumulation.add(pixel, layers, layer, x);
         if !rejected {
-            pixel[0] = add(pixel[0], acc.beauty);
+            add(pixel, 0, acc.beauty);
         }
         for i in acc.touched.iter() {
             let f = &self.flags[i];
@@ -403,7 +406,7 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
                 if f.overwrite {
                     pixel[1 + i] = acc.aov[i];
                 } else {
-                    pixel[1 + i] = add(pixel[1 + i], acc.aov[i]);
+                    add(pixel, 1 + i, acc.aov[i]);
                 }
             }
             acc.aov[i] = DVec3::ZERO;

@@ -7,10 +7,12 @@
 //! `step_class`, `matches`, `is_dead`), which the renderer uses by default through the
 //! thin adapter below.
 //!
-//! [`ReferenceMatcher`] implements the trait over
-//! `reference::is_match`: slow per call, but it memoizes the answer per distinct path
-//! (renders revisit the same few vertex sequences millions of times), so the default
-//! render stays within budget.
+//! Engines that only judge whole paths plug in through [`WholePathMatcher`]: its state
+//! records the vertices, and at an emitter the engine ([`WholePath`]) answers for the
+//! whole path. [`ReferenceMatcher`] does this with `reference::is_match`, memoized per
+//! distinct path (renders revisit the same few vertex sequences millions of times) so
+//! a render on the fallback stays within budget; [`CheckEngine`] does it with any
+//! engine of `lpe-check`, which is how `converge` times the regex-automata oracle.
 
 use lpe::{Lpe, Path, Vertex, VertexType};
 use std::collections::HashMap;
@@ -123,44 +125,128 @@ impl Hasher for FxHasher {
 
 type Memo = HashMap<RefState, AovMask, BuildHasherDefault<FxHasher>>;
 
-/// Slots of per-thread memo tables: each rayon worker locks its own slot, so lookups do
-/// not contend (a collision of two threads on one slot is only slower, never wrong).
-const MEMO_SLOTS: usize = 32;
+/// Slots of per-thread tables (memo, compiled engines): each rayon worker locks its own
+/// slot, so lookups do not contend (a collision of two threads on one slot is only
+/// slower, never wrong).
+const SLOTS: usize = 32;
 
-/// [`PathMatcher`] over `reference::is_match`, memoized per distinct path.
-pub struct ReferenceMatcher {
+fn thread_slot() -> usize {
+    rayon::current_thread_index().map_or(0, |i| i + 1) % SLOTS
+}
+
+/// An engine that answers for whole paths only (it cannot be stepped per vertex): which
+/// AOVs match `path`, a complete path ending at an emitter.
+pub trait WholePath: Sync {
+    fn which(&self, path: &Path) -> AovMask;
+}
+
+/// `reference::is_match` on each expression.
+pub struct Reference(Vec<Lpe>);
+
+impl Reference {
+    /// The reference engine for these expressions (at most [`MAX_AOVS`]).
+    pub fn new(aovs: &[Lpe]) -> Result<Reference, String> {
+        check_count(aovs)?;
+        Ok(Reference(aovs.to_vec()))
+    }
+}
+
+impl WholePath for Reference {
+    fn which(&self, path: &Path) -> AovMask {
+        (0..self.0.len())
+            .filter(|&i| reference::is_match(&self.0[i], path))
+            .collect()
+    }
+}
+
+fn check_count(aovs: &[Lpe]) -> Result<(), String> {
+    match aovs.len() {
+        n if n > MAX_AOVS => Err(format!("at most {MAX_AOVS} AOVs, got {n}")),
+        _ => Ok(()),
+    }
+}
+
+/// An engine of `lpe-check` (`oracle::engine`), e.g. the regex-automata oracle. Its
+/// compiled matchers keep a mutable cache (the lazy DFA), so each thread slot compiles
+/// its own on first use.
+pub struct CheckEngine {
+    engine: &'static dyn oracle::engine::Engine,
     aovs: Vec<Lpe>,
+    compiled: Vec<Mutex<Option<Box<dyn oracle::engine::Matcher>>>>,
+}
+
+impl CheckEngine {
+    /// Compiles `aovs` with `engine` once up front, so an engine that cannot build the
+    /// set says so here and not mid-render.
+    pub fn new(
+        engine: &'static dyn oracle::engine::Engine,
+        aovs: &[Lpe],
+    ) -> Result<CheckEngine, String> {
+        check_count(aovs)?;
+        let first = engine
+            .compile(aovs)
+            .map_err(|e| format!("{}: {e}", engine.name()))?;
+        let mut compiled: Vec<_> = (0..SLOTS).map(|_| Mutex::new(None)).collect();
+        compiled[0] = Mutex::new(Some(first));
+        Ok(CheckEngine {
+            engine,
+            aovs: aovs.to_vec(),
+            compiled,
+        })
+    }
+}
+impl WholePath for CheckEngine {
+    fn which(&self, path: &Path) -> AovMask {
+        let mut slot = self.compiled[thread_slot()]
+            .lock()
+            .unwrap_or_else(|e| e.into_inner());
+        let m = slot.get_or_insert_with(|| {
+            self.engine
+                .compile(&self.aovs)
+                .expect("the engine compiled this set in CheckEngine::new")
+        });
+        m.which(path)
+            .into_iter()
+            .enumerate()
+            .filter_map(|(i, hit)| hit.then_some(i))
+            .collect()
+    }
+}
+
+/// [`PathMatcher`] over a [`WholePath`] engine: the state records the path's vertices,
+/// and at an emitter the engine judges the whole path, optionally memoized per distinct
+/// vertex sequence.
+pub struct WholePathMatcher<W> {
+    engine: W,
     /// Class id -> vertex; grows during classification (before rendering).
     alphabet: Mutex<Vec<Vertex>>,
     memo: Vec<Mutex<Memo>>,
     /// Answer from the memo (the renderer's default); off, every emitter reached runs
-    /// `reference::is_match` (what the verification engine costs, shown by `converge`).
+    /// the engine (what the verification engines cost, shown by `converge`).
     memoize: bool,
 }
 
-impl ReferenceMatcher {
-    /// A matcher for these expressions (at most [`MAX_AOVS`]).
-    pub fn new(aovs: &[Lpe]) -> Result<ReferenceMatcher, String> {
-        if aovs.len() > MAX_AOVS {
-            return Err(format!("at most {MAX_AOVS} AOVs, got {}", aovs.len()));
-        }
-        Ok(ReferenceMatcher {
-            aovs: aovs.to_vec(),
+/// The reference engine memoized: the renderer's fallback when the fast matcher
+/// cannot build a set.
+pub type ReferenceMatcher = WholePathMatcher<Reference>;
+
+impl<W: WholePath> WholePathMatcher<W> {
+    /// Answers each distinct path once.
+    pub fn memoized(engine: W) -> WholePathMatcher<W> {
+        WholePathMatcher {
+            engine,
             alphabet: Mutex::new(Vec::new()),
-            memo: (0..MEMO_SLOTS)
-                .map(|_| Mutex::new(Memo::default()))
-                .collect(),
+            memo: (0..SLOTS).map(|_| Mutex::new(Memo::default())).collect(),
             memoize: true,
-        })
+        }
     }
 
-    /// The same matcher without the memo: every [`PathMatcher::matches`] runs the
-    /// reference engine.
-    pub fn unmemoized(aovs: &[Lpe]) -> Result<ReferenceMatcher, String> {
-        Ok(ReferenceMatcher {
+    /// Runs the engine at every emitter reached.
+    pub fn direct(engine: W) -> WholePathMatcher<W> {
+        WholePathMatcher {
             memoize: false,
-            ..ReferenceMatcher::new(aovs)?
-        })
+            ..WholePathMatcher::memoized(engine)
+        }
     }
 
     fn compute(&self, s: &RefState) -> AovMask {
@@ -184,13 +270,11 @@ impl ReferenceMatcher {
         let Ok(path) = Path::new(vertices) else {
             return AovMask::EMPTY;
         };
-        (0..self.aovs.len())
-            .filter(|&i| reference::is_match(&self.aovs[i], &path))
-            .collect()
+        self.engine.which(&path)
     }
 }
 
-impl PathMatcher for ReferenceMatcher {
+impl<W: WholePath> PathMatcher for WholePathMatcher<W> {
     type Class = u16;
     type State = RefState;
 
@@ -225,8 +309,9 @@ impl PathMatcher for ReferenceMatcher {
         if !self.memoize {
             return self.compute(&s);
         }
-        let slot = rayon::current_thread_index().map_or(0, |i| i + 1) % MEMO_SLOTS;
-        let mut memo = self.memo[slot].lock().unwrap_or_else(|e| e.into_inner());
+        let mut memo = self.memo[thread_slot()]
+            .lock()
+            .unwrap_or_else(|e| e.into_inner());
         if let Some(m) = memo.get(&s) {
             return *m;
         }
@@ -252,14 +337,10 @@ mod tests {
         assert!(m.contains(200) && !m.contains(199));
     }
 
-    #[test]
-    fn reference_matcher_agrees_with_is_match() {
-        let exprs: Vec<Lpe> = ["C<RD>[<L.>O]", "C<RD>.+[<L.>O]", "C.*<L.'key'>", "CO"]
-            .iter()
-            .map(|s| lpe::parse(s).unwrap())
-            .collect();
-        let m = ReferenceMatcher::new(&exprs).unwrap();
-        for text in ["C RD2 L'key'", "C RD2 RS1 L", "C O", "C RD2'floor' RD2 O"] {
+    /// Steps `m` along each path and compares its answer (twice: a memo must not
+    /// change it) with `reference::is_match` per expression.
+    fn agrees_with_is_match(m: &impl PathMatcher, exprs: &[Lpe], paths: &[&str]) {
+        for text in paths {
             let path: Path = text.parse().unwrap();
             let mut s = m.start();
             for v in &path.vertices()[1..] {
@@ -269,7 +350,56 @@ mod tests {
                 .filter(|&i| reference::is_match(&exprs[i], &path))
                 .collect();
             assert_eq!(m.matches(s), want, "{text}");
-            assert_eq!(m.matches(s), want, "{text} (memoized)");
+            assert_eq!(m.matches(s), want, "{text} (again)");
         }
+    }
+
+    const EXPRS: [&str; 5] = [
+        "C<RD>[<L.>O]",
+        "C<RD>.+[<L.>O]",
+        "C.*<L.'key'>",
+        "CO",
+        "C[^<RS>]*<L.[^'key']>",
+    ];
+    const PATHS: [&str; 6] = [
+        "C RD2 L'key'",
+        "C RD2 RS1 L",
+        "C O",
+        "C RD2'floor' RD2 O",
+        "C TD1 RD2 L'fill'",
+        "C RS1 L'key'",
+    ];
+
+    fn exprs() -> Vec<Lpe> {
+        EXPRS.iter().map(|s| lpe::parse(s).unwrap()).collect()
+    }
+
+    #[test]
+    fn reference_matcher_agrees_with_is_match() {
+        let exprs = exprs();
+        let m = ReferenceMatcher::memoized(Reference::new(&exprs).unwrap());
+        agrees_with_is_match(&m, &exprs, &PATHS);
+    }
+
+    #[test]
+    fn the_oracle_through_check_engine_agrees_with_is_match_on_every_thread() {
+        let exprs = exprs();
+        let m = WholePathMatcher::direct(
+            CheckEngine::new(&oracle::regex_oracle::ORACLE, &exprs).unwrap(),
+        );
+        // Slot 0 holds the matcher compiled up front; rayon workers compile their own.
+        agrees_with_is_match(&m, &exprs, &PATHS);
+        rayon::scope(|s| {
+            for _ in 0..4 {
+                s.spawn(|_| agrees_with_is_match(&m, &exprs, &PATHS));
+            }
+        });
+    }
+
+    #[test]
+    fn too_many_aovs_is_an_error_for_every_whole_path_engine() {
+        let many = vec![lpe::parse("CL").unwrap(); MAX_AOVS + 1];
+        assert!(Reference::new(&many).is_err());
+        assert!(CheckEngine::new(&oracle::regex_oracle::ORACLE, &many).is_err());
     }
 }
