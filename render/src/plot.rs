@@ -48,7 +48,9 @@ pub fn font_available() -> bool {
     })
 }
 
-const PALETTE: [RGBColor; 8] = [
+/// Tableau 10 plus black and navy: `converge` draws 11 variants per panel, and a
+/// repeated colour would make two of them indistinguishable.
+const PALETTE: [RGBColor; 12] = [
     RGBColor(31, 119, 180),
     RGBColor(255, 127, 14),
     RGBColor(44, 160, 44),
@@ -57,6 +59,10 @@ const PALETTE: [RGBColor; 8] = [
     RGBColor(140, 86, 75),
     RGBColor(227, 119, 194),
     RGBColor(23, 190, 207),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+    RGBColor(0, 0, 0),
+    RGBColor(0, 0, 128),
 ];
 
 /// Size of the whole figure: panels side by side in rows of two.
