@@ -97,12 +97,13 @@ impl Grid for SphereGrid {
 }
 
 /// Reflections of `wo` (for reflection lobes only) parametrized by their half vector
-/// `h`, on `wo`'s side of the surface: `u = s = tan^2 theta_h / (tan^2 theta_h + alpha^2)`, `v` = the azimuth of `h`
-/// measured from `wo`'s tangential direction, shifted by `pi` so the part of a row that
-/// reflects above the surface is one interval centred on `v = 1/2`.
+/// `h`, on `wo`'s side of the surface: `u = s = tan^2 theta_h / (tan^2 theta_h +
+/// alpha^2)`, `v` = the azimuth of `h` measured from `wo`'s tangential direction, shifted
+/// by `pi` so the part of a row that reflects above the surface is one interval centred
+/// on `v = 1/2`.
 ///
 /// In these coordinates a GGX lobe of roughness `alpha` sampled from `D cos theta_h` is
-/// uniform (the solid angle per `ds dphi` is `1 / (2 pi D cos theta_h)`), masked where the
+/// uniform (`h`'s solid angle per `ds dphi` is `1 / (2 pi D cos theta_h)`), masked where the
 /// reflection goes below the surface: a row at `theta_h` reflects above it where
 /// `cos phi > -(cos theta_o / sin theta_o) cot 2 theta_h`.
 pub struct HalfVectorGrid {
