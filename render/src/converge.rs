@@ -700,7 +700,7 @@ pub fn markdown(rows: &[Summary], layers: &[&str]) -> String {
 /// What [`run`] wrote.
 pub struct Outcome {
     pub summary: Vec<Summary>,
-    /// Markdown table: basic-AOV partition error of the f64 and f32 films after
+    /// Markdown table: basic-AOV partition error of every film ([`Accumulation::ALL`]) after
     /// [`Config::mixed_spp`] mixed samples in one pixel.
     pub accumulation: String,
     pub files: Vec<std::path::PathBuf>,
