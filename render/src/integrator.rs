@@ -17,9 +17,9 @@
 //! matcher sees is a real light path with its own value.
 //!
 //! # Prefixes (how an AOV weighs a contribution; DESIGN.md §3)
-//! Every contribution is an [`Arrival`]: the matcher state of its complete path, the
+//! Every contribution is an `Arrival`: the matcher state of its complete path, the
 //! throughput `beta` up to its last scattering vertex, the `local` estimate at that vertex
-//! (`f cos Le / pdf`, no MIS, no visibility) and its [`Strategy`]. An AOV's value is
+//! (`f cos Le / pdf`, no MIS, no visibility) and its `Strategy`. An AOV's value is
 //! `thru * local * weight` where
 //! - `thru = beta`, or 1 with `nothruput;` (no accumulated throughput: only the last
 //!   vertex's lighting);
