@@ -13,7 +13,7 @@
 //! Each distinct atom of the compiled set is evaluated once on every raw symbol (with the
 //! predicate code in this module, written from DESIGN.md §3 and the table in
 //! [`crate::ast`]); raw symbols with the same answers from every atom form one [`Class`].
-//! [`Alphabet::classify`] is then arithmetic plus one label lookup plus one table load.
+//! `Alphabet::classify` is then arithmetic plus one label lookup plus one table load.
 
 use crate::fxhash::FxMap;
 

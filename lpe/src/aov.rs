@@ -2,8 +2,8 @@
 //!
 //! [`AovSet::compile`] builds, for a list of `(name, expression)` pairs:
 //! 1. the compressed alphabet ([`crate::alphabet`]): vertices grouped into [`Class`]es;
-//! 2. one bitset Glushkov NFA holding every AOV's positions ([`crate::nfa`]);
-//! 3. a minimized dense DFA over it ([`crate::dfa`]), unless that would exceed
+//! 2. one bitset Glushkov NFA holding every AOV's positions (module `nfa`);
+//! 3. a minimized dense DFA over it (module `dfa`), unless that would exceed
 //!    [`Options::dfa_budget`]; then the set steps the NFA instead. Both give the same
 //!    answers (the `fast` and `nfa` engines of the differential harness check that).
 //!

@@ -7,7 +7,7 @@
 //! set members dropped, and path vertices dropped or unlabelled, for as long as the
 //! engines still disagree, so what is printed is small enough to read.
 //!
-//! An engine that cannot build the input ([`EngineError::CannotBuild`]) does not take part
+//! An engine that cannot build the input ([`EngineError::CannotBuild`](crate::engine::EngineError::CannotBuild)) does not take part
 //! in that comparison; the skip is recorded in [`Agreement::skipped`] and reported by
 //! callers, never hidden.
 

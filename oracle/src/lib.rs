@@ -2,7 +2,7 @@
 //!
 //! [`engine`] puts every matcher behind one trait so the CLI and the harness run them
 //! side by side on the same inputs; [`regex_oracle`] is the second, independent engine
-//! (LPE -> regex-automata); [`bench`] measures the fast matcher against regex-automata.
+//! (LPE -> regex-automata); [`bench`](mod@bench) measures the fast matcher against regex-automata.
 
 pub mod bench;
 pub mod cli;

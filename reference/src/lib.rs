@@ -9,8 +9,8 @@
 //! | DESIGN.md rule | here |
 //! |---|---|
 //! | an expression matches the **whole** path (anchored at both ends) | [`is_match`] accepts only if the continuation sees position `len` |
-//! | concatenation, alternation (`\|` binds only its neighbours: that is the parser's job; here an `Alt` node is plain "either") | [`match_expr`] |
-//! | `e{n,m}`, `*`, `+`, `?`, `{0}` matching the empty sequence | [`match_repeat`] |
+//! | concatenation, alternation (`\|` binds only its neighbours: that is the parser's job; here an `Alt` node is plain "either") | `match_expr` |
+//! | `e{n,m}`, `*`, `+`, `?`, `{0}` matching the empty sequence | `match_repeat` |
 //! | one atom matches one vertex | [`atom_matches`] |
 //! | `C L O` any label; `R T` need a D/S event | [`item_matches`], `Item::Type` |
 //! | `D S D2…`: R/T with that kind/lobe; `U`: only explicitly | [`item_matches`], `Item::Event` |
