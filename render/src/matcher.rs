@@ -17,7 +17,7 @@
 use lpe::{Lpe, Path, Vertex, VertexType};
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
-use std::sync::Mutex;
+use std::sync::{Mutex, RwLock};
 
 /// Most AOVs one render can route to, and the mask of AOVs that match: the fast
 /// matcher's own types, shared so engines hand masks over without converting.
@@ -218,8 +218,9 @@ impl WholePath for CheckEngine {
 /// vertex sequence.
 pub struct WholePathMatcher<W> {
     engine: W,
-    /// Class id -> vertex; grows during classification (before rendering).
-    alphabet: Mutex<Vec<Vertex>>,
+    /// Class id -> vertex; grows during classification (before rendering), then only
+    /// read, by every thread at every emitter: a read lock does not serialize them.
+    alphabet: RwLock<Vec<Vertex>>,
     memo: Vec<Mutex<Memo>>,
     /// Answer from the memo (the renderer's default); off, every emitter reached runs
     /// the engine (what the verification engines cost, shown by `converge`).
@@ -235,7 +236,7 @@ impl<W: WholePath> WholePathMatcher<W> {
     pub fn memoized(engine: W) -> WholePathMatcher<W> {
         WholePathMatcher {
             engine,
-            alphabet: Mutex::new(Vec::new()),
+            alphabet: RwLock::new(Vec::new()),
             memo: (0..SLOTS).map(|_| Mutex::new(Memo::default())).collect(),
             memoize: true,
         }
@@ -250,7 +251,7 @@ impl<W: WholePath> WholePathMatcher<W> {
     }
 
     fn compute(&self, s: &RefState) -> AovMask {
-        let alphabet = self.alphabet.lock().unwrap_or_else(|e| e.into_inner());
+        let alphabet = self.alphabet.read().unwrap_or_else(|e| e.into_inner());
         let mut vertices = Vec::with_capacity(s.len as usize + 1);
         vertices.push(Vertex::camera());
         vertices.extend(
@@ -279,7 +280,7 @@ impl<W: WholePath> PathMatcher for WholePathMatcher<W> {
     type State = RefState;
 
     fn classify(&self, v: &Vertex) -> u16 {
-        let mut a = self.alphabet.lock().unwrap_or_else(|e| e.into_inner());
+        let mut a = self.alphabet.write().unwrap_or_else(|e| e.into_inner());
         if let Some(i) = a.iter().position(|x| x == v) {
             return i as u16;
         }
