@@ -21,6 +21,13 @@ pub struct AovFlags {
 }
 
 impl AovFlags {
+    /// No prefix that changes what a contribution adds (weights, throughput, clamp,
+    /// holdouts): such an AOV receives exactly beauty's contribution. `overwrite` and
+    /// `noinfinitecheck` act when a sample is committed, not per contribution.
+    pub fn values_like_beauty(&self) -> bool {
+        !(self.unoccluded || self.shadows || self.nothruput || self.noclamp || self.holdouts)
+    }
+
     pub fn of(lpe: &Lpe) -> AovFlags {
         let p = lpe.prefixes;
         AovFlags {

@@ -52,6 +52,7 @@ use crate::camera::Camera;
 use crate::film::{Accumulation, Film};
 use crate::geometry::{error_bound, Hit, Ray};
 use crate::matcher::{AovMask, PathMatcher};
+use crate::material::Material;
 use crate::plan::Plan;
 use crate::rng::Rng;
 use crate::sampling::{max_component, power_heuristic, Frame};
@@ -282,6 +283,10 @@ pub struct Integrator<'a, M: PathMatcher> {
     scene: &'a Scene,
     matcher: &'a M,
     flags: Vec<AovFlags>,
+    /// AOVs with no prefix that changes a contribution's value: they receive beauty's.
+    like_beauty: AovMask,
+    /// The dome light escaping rays see (looked up once, not per escaped ray).
+    dome: Option<usize>,
     vertices: Vertices<M::Class>,
     plan: Plan,
     settings: &'a Settings,
@@ -311,6 +316,11 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
             scene,
             matcher,
             flags: aovs.aovs.iter().map(|a| a.flags).collect(),
+            like_beauty: (aovs.aovs.iter().enumerate())
+                .filter(|(_, a)| a.flags.values_like_beauty())
+                .map(|(i, _)| i)
+                .collect(),
+            dome: scene.dome(),
             vertices,
             plan,
             settings,
@@ -428,16 +438,25 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
         let none = AovFlags::default();
         let wb = a.strategy.weight(&none);
         let beauty = clamped(full * wb, &none);
+        let beauty_d = beauty.as_dvec3();
+        let counts_in_beauty = wb > 0.0 && !a.holdout;
         if wb > 0.0 {
             acc.finite &= beauty.is_finite();
-            if !a.holdout {
-                acc.beauty += beauty.as_dvec3();
-            }
+        }
+        if counts_in_beauty {
+            acc.beauty += beauty_d;
         }
         if !self.plan.matching {
             return;
         }
         for i in self.matcher.matches(a.state).iter() {
+            if self.like_beauty.contains(i) {
+                if counts_in_beauty {
+                    acc.aov[i] += beauty_d;
+                    acc.touched.insert(i);
+                }
+                continue;
+            }
             let f = &self.flags[i];
             if f.holdouts != a.holdout {
                 continue;
@@ -505,7 +524,7 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
         for depth in 0..=scene.settings.max_depth {
             acc.rays += 1;
             let Some(hit) = scene.intersect(&ray, f32::INFINITY) else {
-                if let Some(d) = scene.dome() {
+                if let Some(d) = self.dome {
                     let le = scene.lights[d].emitted(ray.d, Vec3::ZERO);
                     let (class, strategy) = light_hit(d, depth, path.prev, Vec3::ZERO, Vec3::ZERO);
                     self.arrive(&path, class, le, strategy, path.holdout, acc);
@@ -540,13 +559,13 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
             path.beta *= path.bounce;
 
             if depth == 0 && self.plan.user_lobes {
-                self.user_lobes(&hit, hit.object as usize, acc);
+                self.user_lobes(&hit, mat, acc);
             }
 
             let frame = Frame::from_normal(hit.n);
             let wo = frame.to_local(-ray.d);
             if use_nee && mat.lobes.iter().any(|l| !l.is_delta()) {
-                self.next_event(&path, &hit, &frame, wo, rng, light_pick_pdf, acc);
+                self.next_event(&path, &hit, mat, &frame, wo, rng, light_pick_pdf, acc);
             }
 
             // Continue the path by sampling one lobe.
@@ -612,6 +631,7 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
         &self,
         path: &PathState<M::State>,
         hit: &Hit,
+        mat: &Material,
         frame: &Frame,
         wo: Vec3,
         rng: &mut Rng,
@@ -652,7 +672,6 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
         if !visible && !self.plan.unshadowed {
             return;
         }
-        let mat = &scene.materials[scene.objects[hit.object as usize].material.unwrap_or(0)];
         let p_light = ls.pdf * light_pick_pdf;
         for (j, lobe) in mat.lobes.iter().enumerate() {
             if lobe.is_delta() {
@@ -693,13 +712,10 @@ impl<'a, M: PathMatcher> Integrator<'a, M> {
 
     /// User-lobe pseudo paths `C <R Un> L` at a camera hit: material properties, not
     /// light transport (never in beauty).
-    fn user_lobes(&self, hit: &Hit, object: usize, acc: &mut SampleAcc) {
-        let mat = self.scene.objects[object]
-            .material
-            .map(|i| &self.scene.materials[i]);
-        for &(signal, mask) in &self.vertices.user[object] {
+    fn user_lobes(&self, hit: &Hit, mat: &Material, acc: &mut SampleAcc) {
+        for &(signal, mask) in &self.vertices.user[hit.object as usize] {
             let value = match signal {
-                UserSignal::Albedo => mat.map_or(Vec3::ZERO, |m| m.albedo()),
+                UserSignal::Albedo => mat.albedo(),
                 UserSignal::Position => hit.p,
                 UserSignal::Normal => hit.n,
             }
