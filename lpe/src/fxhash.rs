@@ -1,5 +1,6 @@
 //! A small, fast, non-cryptographic hasher for the compiler's internal tables (subset
-//! ids, class signatures, atoms).
+//! ids, class signatures, atoms), public so renderers can key their own tables on
+//! matcher data (lpe-render's fallback memo) without a second copy.
 //!
 //! The keys are automaton-internal and hash flooding is no concern, while SipHash (the
 //! std default) was the largest single cost of compiling a 32-AOV set. This is the
@@ -10,7 +11,7 @@ use std::hash::{BuildHasherDefault, Hasher};
 
 /// FxHasher: `hash = (hash.rotl(5) ^ word) * K` per word.
 #[derive(Clone, Copy, Default)]
-pub(crate) struct FxHasher(u64);
+pub struct FxHasher(u64);
 
 const K: u64 = 0x517c_c1b7_2722_0a95;
 
@@ -41,6 +42,11 @@ impl Hasher for FxHasher {
     }
 
     #[inline]
+    fn write_u16(&mut self, i: u16) {
+        self.add(u64::from(i));
+    }
+
+    #[inline]
     fn write_u32(&mut self, i: u32) {
         self.add(u64::from(i));
     }
@@ -61,5 +67,7 @@ impl Hasher for FxHasher {
     }
 }
 
-pub(crate) type FxMap<K, V> = HashMap<K, V, BuildHasherDefault<FxHasher>>;
-pub(crate) type FxSet<K> = HashSet<K, BuildHasherDefault<FxHasher>>;
+/// A `HashMap` with [`FxHasher`].
+pub type FxMap<K, V> = HashMap<K, V, BuildHasherDefault<FxHasher>>;
+/// A `HashSet` with [`FxHasher`].
+pub type FxSet<K> = HashSet<K, BuildHasherDefault<FxHasher>>;

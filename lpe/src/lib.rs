@@ -86,7 +86,7 @@ pub mod analysis;
 pub mod aov;
 pub mod ast;
 mod dfa;
-mod fxhash;
+pub mod fxhash;
 pub mod ini;
 pub mod lobes;
 pub mod macros;

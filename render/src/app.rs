@@ -113,8 +113,7 @@ pub fn invariants(scene: &Scene, aovs: &AovList, render: &Render) -> Vec<Invaria
             .filter_map(|k| aovs.index(&format!("furnace_bounce{k}")).map(|i| (i, k)))
             .collect();
         let tests = 1 + bounces.len();
-        // Sidak: each test at 1 - (1 - alpha)^(1/m) keeps the family-wise rate at alpha.
-        let each = 1.0 - (1.0 - ALPHA).powf(1.0 / tests as f64);
+        let each = crate::chi2::sidak(ALPHA, tests);
         let z = check::critical_z(each);
         out.push(check::z_test(
             &format!("furnace beauty = Le/(1-a) = {}", le / (1.0 - a)),

@@ -209,16 +209,22 @@ pub fn critical_z(alpha: f64) -> f64 {
     0.5 * (lo + hi)
 }
 
+/// Mean of `x` and its standard error `s / sqrt(n)` (`s` the sample standard deviation;
+/// 0 for fewer than two values).
+pub fn mean_and_se(x: &[f64]) -> (f64, f64) {
+    let n = x.len() as f64;
+    let mean = x.iter().sum::<f64>() / n;
+    let var = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
+    (mean, (var / n).sqrt())
+}
+
 /// z-test of a layer's pixel means against a constant expectation. In the furnace every
 /// pixel estimates the same value with i.i.d. samples, so pixel means are i.i.d.: their
 /// mean has standard error `s / sqrt(n)` with `s` their sample standard deviation.
 /// A layer with zero spread must equal the expectation to 1e-9 relative (it is then
 /// computed exactly, as `C O` is).
 pub fn z_test(name: &str, values: &[f64], expected: f64, z_crit: f64, alpha: f64) -> Invariant {
-    let n = values.len() as f64;
-    let mean = values.iter().sum::<f64>() / n;
-    let var = values.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
-    let se = (var / n).sqrt();
+    let (mean, se) = mean_and_se(values);
     if se == 0.0 {
         let rel = (mean - expected).abs() / expected.abs().max(1e-300);
         return Invariant::new(

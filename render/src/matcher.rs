@@ -15,8 +15,7 @@
 //! engine of `lpe-check`, which is how `converge` times the regex-automata oracle.
 
 use lpe::{Lpe, Path, Vertex, VertexType};
-use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hash, Hasher};
+use std::hash::{Hash, Hasher};
 use std::sync::{Mutex, RwLock};
 
 /// Most AOVs one render can route to, and the mask of AOVs that match: the fast
@@ -94,36 +93,17 @@ impl Eq for RefState {}
 
 impl Hash for RefState {
     fn hash<H: Hasher>(&self, h: &mut H) {
-        self.ids[..self.len as usize].hash(h)
-    }
-}
-
-/// FxHash (rustc's hasher): the memo keys are short integer sequences, not attacker
-/// controlled, so a fast non-cryptographic hash is the right trade.
-#[derive(Default)]
-struct FxHasher(u64);
-
-impl Hasher for FxHasher {
-    fn write(&mut self, bytes: &[u8]) {
-        for b in bytes {
-            self.write_u64(*b as u64);
+        // One hasher step per id (a `[u16]` slice would reach `write` as bytes: one
+        // step per byte); equal states have equal lengths, so no length prefix.
+        for &id in &self.ids[..self.len as usize] {
+            h.write_u16(id);
         }
     }
-    fn write_u16(&mut self, x: u16) {
-        self.write_u64(x as u64)
-    }
-    fn write_usize(&mut self, x: usize) {
-        self.write_u64(x as u64)
-    }
-    fn write_u64(&mut self, x: u64) {
-        self.0 = (self.0.rotate_left(5) ^ x).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
-    }
-    fn finish(&self) -> u64 {
-        self.0
-    }
 }
 
-type Memo = HashMap<RefState, AovMask, BuildHasherDefault<FxHasher>>;
+/// FxHash (rustc's hasher, lpe's copy): the memo keys are short integer sequences, not
+/// attacker controlled, so a fast non-cryptographic hash is the right trade.
+type Memo = lpe::fxhash::FxMap<RefState, AovMask>;
 
 /// Slots of per-thread tables (memo, compiled engines): each rayon worker locks its own
 /// slot, so lookups do not contend (a collision of two threads on one slot is only
@@ -313,12 +293,7 @@ impl<W: WholePath> PathMatcher for WholePathMatcher<W> {
         let mut memo = self.memo[thread_slot()]
             .lock()
             .unwrap_or_else(|e| e.into_inner());
-        if let Some(m) = memo.get(&s) {
-            return *m;
-        }
-        let m = self.compute(&s);
-        memo.insert(s, m);
-        m
+        *memo.entry(s).or_insert_with(|| self.compute(&s))
     }
 
     fn is_dead(&self, _: RefState) -> bool {

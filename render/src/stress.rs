@@ -52,14 +52,9 @@ pub fn markdown(rows: &[Row]) -> String {
 /// < 1e-6) plus 1e-4 relative (f32 radiance and pdfs).
 pub fn mean_check(got: &[DVec3], want: &[DVec3]) -> (f64, f64) {
     let res: Vec<f64> = got.iter().zip(want).map(|(g, w)| g.x - w.x).collect();
-    let n = res.len() as f64;
-    let m = res.iter().sum::<f64>() / n;
-    let var = res.iter().map(|r| (r - m).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
-    let scale = want.iter().map(|w| w.x).sum::<f64>() / n;
-    (
-        (m / scale).abs(),
-        (5.0 * (var / n).sqrt() + 1e-4 * scale) / scale,
-    )
+    let (m, se) = crate::check::mean_and_se(&res);
+    let scale = want.iter().map(|w| w.x).sum::<f64>() / res.len() as f64;
+    ((m / scale).abs(), (5.0 * se + 1e-4 * scale) / scale)
 }
 
 /// Point lights with intensities 1e-6 .. 1e12 over the plane, one light group each.
@@ -257,9 +252,8 @@ pub fn ggx_furnace(alpha: f32, cos: f32, n: usize) -> (f64, f64, usize) {
             None => 0.0,
         })
         .collect();
-    let m = x.iter().sum::<f64>() / n as f64;
-    let v = x.iter().map(|a| (a - m).powi(2)).sum::<f64>() / (n as f64 - 1.0);
-    (m, (v / n as f64).sqrt(), bad)
+    let (m, se) = crate::check::mean_and_se(&x);
+    (m, se, bad)
 }
 
 fn render(scene: &Scene, aovs: &AovList, s: &Settings) -> Result<Render, String> {

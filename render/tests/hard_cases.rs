@@ -4,7 +4,7 @@
 use glam::{DVec3, Vec3};
 use lpe::{LobeMap, Parser};
 use lpe_render::aovs::AovList;
-use lpe_render::check::critical_z;
+use lpe_render::check::{critical_z, mean_and_se};
 use lpe_render::chi2::sidak;
 use lpe_render::converge;
 use lpe_render::film::Accumulation;
@@ -30,15 +30,6 @@ fn wo(cos: f32) -> Vec3 {
 
 fn render(scene: &Scene, aovs: &AovList, settings: &Settings) -> Render {
     lpe_render::app::render(scene, aovs, &lobes(), settings).unwrap()
-}
-
-/// One-sided z bound for "mean weight <= 1": fails only if the mean exceeds 1 by more
-/// than `z` standard errors.
-fn mean_and_se(x: &[f64]) -> (f64, f64) {
-    let n = x.len() as f64;
-    let m = x.iter().sum::<f64>() / n;
-    let v = x.iter().map(|a| (a - m).powi(2)).sum::<f64>() / (n - 1.0);
-    (m, (v / n).sqrt())
 }
 
 #[test]
