@@ -299,7 +299,7 @@ pub fn check_suite(
         ));
     }
 
-    // 5: the formal partition check (hook until the fast matcher lands).
+    // 5: the formal partition check: every possible path, decided on the automata.
     let scene = load("cornell")?;
     out.extend(check::formal_partition(&default_aovs(&scene, &parser)?));
     Ok(out)

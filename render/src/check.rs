@@ -258,10 +258,19 @@ pub fn channel_values(film: &Film, layer: usize) -> Vec<f64> {
 pub fn zero_mean_test(name: &str, values: &[f64], z_crit: f64, detail: &str) -> Invariant {
     let s: f64 = values.iter().sum();
     let q: f64 = values.iter().map(|v| v * v).sum();
-    let z = if q == 0.0 { 0.0 } else { s / q.sqrt() };
+    if q == 0.0 {
+        // Every difference exactly 0: the layers compared are identical, in practice both
+        // empty (an effect not simulated), which "mean zero" would wave through.
+        return Invariant::new(
+            name,
+            f64::INFINITY,
+            z_crit,
+            format!("{detail}: degenerate, every value is 0 (nothing was compared)"),
+        );
+    }
     Invariant::new(
         name,
-        z.abs(),
+        (s / q.sqrt()).abs(),
         z_crit,
         format!("{detail}: |z| = |sum| / sqrt(sum of squares) vs critical {z_crit:.3}"),
     )
@@ -278,5 +287,17 @@ mod tests {
         assert!((normal_tail(1.959964) - 0.025).abs() < 1e-6);
         assert!((critical_z(0.05) - 1.959964).abs() < 1e-4);
         assert!((critical_z(0.001) - 3.290527).abs() < 1e-4);
+    }
+
+    #[test]
+    fn zero_mean_test_fails_on_a_shift_and_on_nothing_to_compare() {
+        let z = critical_z(0.01);
+        let noise: Vec<f64> = (0..1000)
+            .map(|i| if i % 2 == 0 { 1.0 } else { -1.0 })
+            .collect();
+        assert!(!zero_mean_test("noise", &noise, z, "").failed());
+        let shifted: Vec<f64> = noise.iter().map(|v| v + 0.5).collect();
+        assert!(zero_mean_test("shifted", &shifted, z, "").failed());
+        assert!(zero_mean_test("zeros", &[0.0; 100], z, "").failed());
     }
 }

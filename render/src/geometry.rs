@@ -436,16 +436,27 @@ mod tests {
             prims.push((shape, i));
         }
         let bvh = Bvh::new(prims.clone());
-        for _ in 0..500 {
+        let mut hits = 0;
+        for i in 0..500 {
+            // Every other ray aims at a primitive, so the hit branches are exercised too.
+            let o = r3() * 6.0;
+            let d = if i % 2 == 0 {
+                prims[i % prims.len()].0.centroid() - o
+            } else {
+                r3()
+            };
             let ray = Ray {
-                o: r3() * 6.0,
-                d: r3().normalize(),
+                o,
+                d: d.normalize(),
             };
             let want = brute(&prims, &ray);
             let got = bvh.intersect(&ray, f32::INFINITY).map(|h| (h.t, h.object));
             assert_eq!(want.map(|w| w.1), got.map(|g| g.1));
             assert_eq!(want.is_some(), bvh.occluded(&ray, f32::INFINITY));
+            hits += want.is_some() as usize;
         }
+        // Both sides share `Shape::intersect`: agreeing on misses alone would prove nothing.
+        assert!(hits >= 250, "only {hits} of 500 rays hit anything");
     }
 
     #[test]

@@ -394,6 +394,7 @@ fn spawned_rays_never_hit_their_own_surface_at_scales_1e_minus_6_to_1e6() {
                 let bvh = Bvh::new(vec![(shape, 0)]);
                 let target = shape.centroid();
                 let mut rng = Rng::for_sample(e as u64 + 100, at as u64, 0);
+                let mut hits = 0;
                 for i in 0..400 {
                     // Rays from a few sizes away, aimed near the centroid.
                     let from =
@@ -406,6 +407,7 @@ fn spawned_rays_never_hit_their_own_surface_at_scales_1e_minus_6_to_1e6() {
                     let Some(hit) = bvh.intersect(&ray, f32::INFINITY) else {
                         continue;
                     };
+                    hits += 1;
                     // Leave to both sides of the surface.
                     let d = lpe_render::sampling::uniform_sphere(rng.vec2());
                     for dir in [d, -d] {
@@ -427,12 +429,18 @@ fn spawned_rays_never_hit_their_own_surface_at_scales_1e_minus_6_to_1e6() {
                         }
                     }
                 }
+                // Rays that miss test nothing: a broken intersector must not pass here.
+                if hits < 100 {
+                    failures.push(format!(
+                        "scale {s:e} at {at}: {shape:?}: only {hits} of 400 rays hit"
+                    ));
+                }
             }
         }
     }
     assert!(
         failures.is_empty(),
-        "{} self-intersections, first: {:#?}",
+        "{} failures (self-intersections, or too few hits), first: {:#?}",
         failures.len(),
         &failures[..failures.len().min(3)]
     );
