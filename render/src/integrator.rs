@@ -120,6 +120,10 @@ pub struct Render {
     pub rays: u64,
 }
 
+/// Lobe-map names of the user signals, in [`UserSignal::ALL`] order (the CLI checks
+/// them for lobe collisions).
+pub const USER_SIGNALS: [&str; 3] = ["Albedo", "Position", "Normal"];
+
 /// The user signals a material emits as pseudo paths, with the lobe-map name of each.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum UserSignal {
@@ -132,11 +136,7 @@ impl UserSignal {
     const ALL: [UserSignal; 3] = [UserSignal::Albedo, UserSignal::Position, UserSignal::Normal];
 
     fn name(self) -> &'static str {
-        match self {
-            UserSignal::Albedo => "Albedo",
-            UserSignal::Position => "Position",
-            UserSignal::Normal => "Normal",
-        }
+        USER_SIGNALS[self as usize]
     }
 }
 

@@ -233,8 +233,10 @@ fn run_render(args: &RenderArgs) -> Result<bool, InputError> {
     if args.display.is_none() && args.aovs.is_empty() {
         aovs = app::default_aovs(&scene, &parser)?;
     }
-    let signals: Vec<&str> = vec!["Albedo", "Position", "Normal"];
-    for (lobe, names) in config.lobes.user_collisions(&signals) {
+    for (lobe, names) in config
+        .lobes
+        .user_collisions(&lpe_render::integrator::USER_SIGNALS)
+    {
         aovs.notes.push(format!(
             "user signals {} share lobe {lobe}: they overwrite each other",
             names.join(", ")
