@@ -42,7 +42,14 @@ fn lpe_of(expr: Expr) -> Lpe {
 
 fn assert_agree(exprs: &[Lpe], paths: &[Path]) -> Result<(), TestCaseError> {
     match differential::check_with(&engines(), exprs, paths) {
-        Outcome::Agree(_) => Ok(()),
+        // The strategies stay under every engine's size limits, so an engine that did
+        // not build would make this "agreement" a comparison of fewer engines than
+        // claimed (one engine always agrees with itself).
+        Outcome::Agree(a) => {
+            prop_assert!(a.skipped.is_empty(), "skipped: {:?}", a.skipped);
+            prop_assert_eq!(a.engines, engines().len());
+            Ok(())
+        }
         Outcome::Disagree(c) => Err(TestCaseError::fail(c.to_string())),
     }
 }
