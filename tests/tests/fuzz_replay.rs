@@ -39,7 +39,10 @@ fn corpus_files_pass() {
 
 #[test]
 fn regression_files_pass() {
-    replay("regressions");
+    // A missing or misnamed folder would otherwise pass with nothing replayed;
+    // fuzz/regressions/differential has a committed file.
+    let n = replay("regressions");
+    assert!(n > 0, "no regression files found under fuzz/regressions");
 }
 
 /// A differential input that only the reference could build passes `replay` without
