@@ -387,22 +387,11 @@ impl fmt::Display for Counterexample {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::engine::{EngineError, Matcher};
+    use crate::engine::{EngineError, Matcher, ReferenceMatcher};
 
     /// A deliberately wrong engine: it ignores labels in `'g'` items by answering like
     /// the reference on the expression with every label item replaced by `.`.
     struct LabelBlind;
-
-    struct LabelBlindMatcher(Vec<Lpe>);
-
-    impl Matcher for LabelBlindMatcher {
-        fn which(&self, path: &Path) -> Vec<bool> {
-            self.0
-                .iter()
-                .map(|e| reference::is_match(e, path))
-                .collect()
-        }
-    }
 
     impl Engine for LabelBlind {
         fn name(&self) -> &'static str {
@@ -417,7 +406,7 @@ mod tests {
                     }
                 });
             }
-            Ok(Box::new(LabelBlindMatcher(blind)))
+            Ok(Box::new(ReferenceMatcher(blind)))
         }
     }
 
