@@ -18,7 +18,7 @@ use lpe::path::{Event, Path, Vertex, VertexType};
 use lpe::strategy::{self, LABELS};
 use lpe::{parse, Lpe};
 use proptest::prelude::*;
-use proptest::test_runner::{Config, TestCaseError, TestRunner};
+use proptest::test_runner::TestCaseError;
 
 /// Every kind of vertex, with each pool label, no label, and an unmentioned label.
 fn vertex_pool() -> Vec<Vertex> {
@@ -230,11 +230,7 @@ fn check_set(exprs: &[Lpe], paths: &[Path], stats: &Stats) -> Result<(), TestCas
 fn fast_and_nfa_agree_with_reference() {
     let pool = vertex_pool();
     let stats = Stats::default();
-    let mut runner = TestRunner::new(Config {
-        cases: 400,
-        failure_persistence: None,
-        ..Config::default()
-    });
+    let mut runner = lpe_tests::runner(400);
     let strat = (
         expr_set(1..=3),
         prop::collection::vec(strategy::path(8), 4),
@@ -272,11 +268,7 @@ fn long_bounded_repeats_are_exact_within_max_path_len() {
         max_path_len: Some(L),
         ..Options::default()
     };
-    let mut runner = TestRunner::new(Config {
-        cases: 200,
-        failure_persistence: None,
-        ..Config::default()
-    });
+    let mut runner = lpe_tests::runner(200);
     let skipped = Cell::new(0u32);
     let strat = (
         strategy::expr(),
@@ -362,11 +354,7 @@ fn caustics_overlap_witnesses_hold_under_the_reference() {
 #[test]
 fn comparison_witnesses_hold_under_the_reference() {
     let pool = vertex_pool();
-    let mut runner = TestRunner::new(Config {
-        cases: 150,
-        failure_persistence: None,
-        ..Config::default()
-    });
+    let mut runner = lpe_tests::runner(150);
     // At least two drawn expressions: padding with a clone compared an expression
     // with itself, which is equivalent whatever the comparison does.
     let strat = (

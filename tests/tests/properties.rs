@@ -11,19 +11,11 @@ use lpe::ast::Expr;
 use lpe::macros::{MacroTable, BASIC};
 use lpe::strategy;
 use lpe::{Event, EventKind, Lpe, Path, Prefixes, Vertex};
+use lpe_tests::cases;
 use oracle::differential::{self, Outcome};
 use oracle::engine::{self, Engine, Reference};
 use oracle::regex_oracle::EAGER_ORACLE;
 use proptest::prelude::*;
-
-/// `PROPTEST_CASES` if set, else `default`.
-fn cases(default: u32) -> ProptestConfig {
-    let n = std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(default);
-    ProptestConfig::with_cases(n)
-}
 
 /// The engines compared: the registry plus the eager (dense DFA) form of the oracle,
 /// which the registry does not use. The eager form falls back to the lazy DFA over its

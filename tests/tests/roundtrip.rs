@@ -4,9 +4,7 @@
 use proptest::prelude::*;
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(
-        std::env::var("PROPTEST_CASES").ok().and_then(|s| s.parse().ok()).unwrap_or(2000)
-    ))]
+    #![proptest_config(lpe_tests::cases(2000))]
 
     #[test]
     fn print_then_parse_is_identity(l in lpe::strategy::lpe()) {
