@@ -94,7 +94,7 @@ pub fn differential(data: &[u8]) {
     differential_compared(data);
 }
 
-/// [`differential`], returning whether at least two engines (the reference and
+/// [`differential()`], returning whether at least two engines (the reference and
 /// another) were compared.
 pub fn differential_compared(data: &[u8]) -> bool {
     let mut u = Unstructured::new(data);
