@@ -17,6 +17,7 @@ use lpe::generate::{self, Choices, Config};
 use lpe::{Lpe, Path};
 
 use crate::differential::{self, Outcome};
+use crate::engine::{Engine, Reference};
 
 /// `parse`: never panics; parse -> print -> parse is the identity on the AST.
 pub fn parse(data: &[u8]) {
@@ -60,7 +61,10 @@ fn paths_for(exprs: &[Lpe], u: &mut Unstructured<'_>, cfg: &Config) -> Vec<Path>
         .collect()
 }
 
-fn agree(exprs: &[Lpe], paths: &[Path]) {
+/// Whether the engines were compared: the reference and at least one other engine
+/// built the set. Fuzzed sets may exceed an engine's size limits, so fewer engines is
+/// not a failure; it is just not an agreement, and the caller can count it.
+fn agree(exprs: &[Lpe], paths: &[Path]) -> bool {
     // The expression must survive its own canonical text, or the counterexample printed
     // below would not reproduce.
     for e in exprs {
@@ -70,29 +74,61 @@ fn agree(exprs: &[Lpe], paths: &[Path]) {
             Err(err) => panic!("generated `{text}` does not parse: {err}"),
         }
     }
-    if let Outcome::Disagree(c) = differential::check_set(exprs, paths) {
-        panic!("{c}");
+    match differential::check_set(exprs, paths) {
+        Outcome::Disagree(c) => panic!("{c}"),
+        Outcome::Agree(a) => {
+            // The reference has no size limit; without it nothing says who is right.
+            let reference = Reference.name();
+            assert!(
+                a.skipped.iter().all(|(name, _)| *name != reference),
+                "the reference refused: {:?}",
+                a.skipped
+            );
+            a.engines >= 2
+        }
     }
 }
 
 /// `differential`: one structured expression, paths aimed at it, every engine agrees.
 pub fn differential(data: &[u8]) {
+    differential_compared(data);
+}
+
+/// [`differential()`], returning whether at least two engines (the reference and
+/// another) were compared.
+pub fn differential_compared(data: &[u8]) -> bool {
     let mut u = Unstructured::new(data);
     let cfg = Config::default();
     let e = generate::lpe(&mut u, &cfg);
     let paths = paths_for(std::slice::from_ref(&e), &mut u, &cfg);
-    agree(std::slice::from_ref(&e), &paths);
+    agree(std::slice::from_ref(&e), &paths)
 }
 
 /// `aov_set`: 2-6 structured expressions compiled as one set; every engine agrees on
 /// which of them match each path.
 pub fn aov_set(data: &[u8]) {
+    aov_set_compared(data);
+}
+
+/// [`aov_set`], returning whether at least two engines (the reference and another)
+/// were compared.
+pub fn aov_set_compared(data: &[u8]) -> bool {
     let mut u = Unstructured::new(data);
     let cfg = Config::default().with_max_atoms(6);
     let n = 2 + u.below(5);
     let exprs: Vec<Lpe> = (0..n).map(|_| generate::lpe(&mut u, &cfg)).collect();
     let paths = paths_for(&exprs, &mut u, &cfg);
-    agree(&exprs, &paths);
+    agree(&exprs, &paths)
+}
+
+/// The differential target called `name`, returning whether engines were compared,
+/// so a replay can count inputs that only one engine could build.
+pub fn compared_target(name: &str) -> Option<fn(&[u8]) -> bool> {
+    Some(match name {
+        "differential" => differential_compared,
+        "aov_set" => aov_set_compared,
+        _ => return None,
+    })
 }
 
 /// The target called `name`, for replaying files by directory name.

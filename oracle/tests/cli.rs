@@ -120,6 +120,12 @@ fn diff_reports_rate_and_agreement_and_is_deterministic() {
     assert!(out.contains("300 cases"), "{out}");
     assert!(out.contains("match rate: "), "{out}");
     assert!(out.contains("all engines agree"), "{out}");
+    // Agreement counts only if engines were compared: every case had two or more, and
+    // only the engines with a position limit (`fast`, `nfa`) ever refuse a set.
+    assert!(!out.contains("uncompared"), "{out}");
+    for engine in ["reference", "oracle"] {
+        assert!(!out.contains(&format!("skips: {engine} ")), "{out}");
+    }
     // Same seed, same cases: the counts line (minus timing) repeats exactly.
     let counts = |o: &str| {
         o.lines()

@@ -39,5 +39,29 @@ fn corpus_files_pass() {
 
 #[test]
 fn regression_files_pass() {
-    replay("regressions");
+    // A missing or misnamed folder would otherwise pass with nothing replayed;
+    // fuzz/regressions/differential has a committed file.
+    let n = replay("regressions");
+    assert!(n > 0, "no regression files found under fuzz/regressions");
+}
+
+/// A differential input that only the reference could build passes `replay` without
+/// comparing anything, so the corpus must mostly be inputs where engines are compared.
+#[test]
+fn differential_corpus_files_compare_engines() {
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../fuzz/corpus");
+    for name in ["differential", "aov_set"] {
+        let compared = oracle::fuzzing::compared_target(name).unwrap();
+        let (mut n, mut uncompared) = (0usize, 0usize);
+        for file in std::fs::read_dir(root.join(name)).unwrap().flatten() {
+            let data = std::fs::read(file.path()).unwrap();
+            n += 1;
+            if !compared(&data) {
+                uncompared += 1;
+            }
+        }
+        eprintln!("{name}: {uncompared} of {n} corpus files uncompared");
+        assert!(n > 0, "no corpus files for {name}");
+        assert_eq!(uncompared, 0, "{name}: {uncompared} of {n} uncompared");
+    }
 }

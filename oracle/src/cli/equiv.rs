@@ -42,16 +42,7 @@ pub fn run(args: Args) -> ExitCode {
         Ok(c) => c,
         Err(e) => return super::bad_input(format!("error: {e}")),
     };
-    match report(&a, &b, &c) {
-        Ok(text) => {
-            print!("{text}");
-            ExitCode::from(u8::from(!c.equivalent()))
-        }
-        Err(e) => {
-            eprintln!("{e}");
-            ExitCode::from(witness::DISAGREE)
-        }
-    }
+    witness::exit_with(report(&a, &b, &c), c.equivalent())
 }
 
 /// The text printed for a comparison, after re-checking its witnesses.

@@ -44,16 +44,7 @@ pub fn run(args: Args) -> ExitCode {
                 Ok(p) => p,
                 Err(e) => return super::bad_input(format!("error: {e}")),
             };
-            match report(&aovs, &universe, &p) {
-                Ok(text) => {
-                    print!("{text}");
-                    ExitCode::from(u8::from(!p.is_clean()))
-                }
-                Err(e) => {
-                    eprintln!("{e}");
-                    ExitCode::from(witness::DISAGREE)
-                }
-            }
+            witness::exit_with(report(&aovs, &universe, &p), p.is_clean())
         }
         Err(e) => {
             eprintln!("{e}");

@@ -5,6 +5,8 @@
 //! user's expressions. So every witness goes through [`recheck`] first, and a failure is
 //! reported as an internal disagreement (exit code 3), not as the answer.
 
+use std::process::ExitCode;
+
 use lpe::{Lpe, Path};
 
 /// What one expression must answer on a witness.
@@ -41,3 +43,19 @@ pub fn recheck(path: &Path, expects: &[Expect<'_>]) -> Result<(), String> {
 
 /// Exit code for a witness that failed its re-check.
 pub const DISAGREE: u8 = 3;
+
+/// Prints a re-checked report and gives the exit code shared by `equiv` and
+/// `partition`: 0 when `clean`, 1 when not, [`DISAGREE`] when a witness failed its
+/// re-check (then only the disagreement is printed, on stderr).
+pub fn exit_with(report: Result<String, String>, clean: bool) -> ExitCode {
+    match report {
+        Ok(text) => {
+            print!("{text}");
+            ExitCode::from(u8::from(!clean))
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::from(DISAGREE)
+        }
+    }
+}

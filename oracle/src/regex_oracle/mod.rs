@@ -218,11 +218,20 @@ pub fn is_match(lpe: &Lpe, path: &Path) -> Result<bool, EngineError> {
 mod tests {
     use super::*;
 
+    /// Whether `oracle` built the dense form for `exprs`.
+    fn dense(oracle: &Oracle, exprs: &[Lpe]) -> bool {
+        matches!(oracle.build(exprs).unwrap().dfa, Searcher::Dense(_))
+    }
+
     /// The lazy and the eager automaton's answer, which must be the same.
     fn m(expr: &str, path: &str) -> bool {
         let lpe = lpe::parse(expr).unwrap();
         let path: Path = path.parse().unwrap();
         let lazy = is_match(&lpe, &path).unwrap();
+        // The eager build falls back to the lazy DFA silently; without this the
+        // comparison below could be the lazy DFA against itself.
+        assert!(dense(&EAGER_ORACLE, std::slice::from_ref(&lpe)), "{lpe}");
+        assert!(!dense(&ORACLE, std::slice::from_ref(&lpe)), "{lpe}");
         let eager = EAGER_ORACLE.compile(std::slice::from_ref(&lpe)).unwrap();
         assert_eq!(eager.which(&path), [lazy], "{lpe} on {path}");
         lazy
@@ -292,6 +301,8 @@ mod tests {
             .iter()
             .map(|(_, s)| lpe::parse(s).unwrap())
             .collect();
+        assert!(dense(&EAGER_ORACLE, &exprs));
+        assert!(!dense(&ORACLE, &exprs));
         for oracle in [&ORACLE, &EAGER_ORACLE] {
             let m = oracle.compile(&exprs).unwrap();
             let p: Path = "C RD RS RD L".parse().unwrap();
@@ -324,6 +335,7 @@ mod tests {
     fn dfa_blowup_falls_back_to_the_lazy_dfa() {
         // "the 20th vertex from the end is diffuse": exponential for any DFA.
         let lpe = lpe::parse("C.*D.{20}L").unwrap();
+        assert!(!dense(&EAGER_ORACLE, std::slice::from_ref(&lpe)));
         let m = EAGER_ORACLE.compile(std::slice::from_ref(&lpe)).unwrap();
         let mut text = String::from("C RS RD");
         for _ in 0..20 {
