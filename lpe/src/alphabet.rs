@@ -87,17 +87,16 @@ fn event_index(e: Event) -> usize {
     BASE[e.kind() as usize] + usize::from(e.lobe()) - 1
 }
 
-/// `(type, event)` to its index: C 0, L 1, O 2, R 3.., T 27.. (table lookups rather than
-/// nested matches, whose branches mispredict on a realistic mix of vertices).
+/// `(type, event)` to its index: C 0, L 1, O 2, R 3.., T 27.. (a table lookup rather
+/// than nested matches, whose branches mispredict on a realistic mix of vertices).
 #[inline]
 fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
-    // Per `VertexType` (C R T L O): the base index, and whether the event counts.
+    // Per `VertexType` (C R T L O), where its run of indices starts. A vertex carries an
+    // event exactly when it is R or T (`Vertex`'s constructors and parser enforce it),
+    // so the event only ever offsets into the R and T runs.
     const BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
-    const SCATTERS: [usize; 5] = [0, 1, 1, 0, 0];
-    let t = ty as usize;
-    // The camera, and (unconstructible) R/T vertices without an event, map to index 0.
-    let e = event.map_or(0, event_index);
-    (BASE[t] + e) * SCATTERS[t] * usize::from(event.is_some()) + BASE[t] * (1 - SCATTERS[t])
+    debug_assert_eq!(ty.is_scattering(), event.is_some());
+    BASE[ty as usize] + event.map_or(0, event_index)
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
