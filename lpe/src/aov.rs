@@ -45,7 +45,7 @@ use crate::alphabet::Alphabet;
 pub use crate::alphabet::Class;
 use crate::analysis::{self, Warning};
 use crate::dfa::Dfa;
-use crate::nfa::{self, Builder, Nfa, Parts};
+use crate::nfa::{Builder, Nfa, Parts};
 use crate::path::{Path, Vertex};
 use crate::Lpe;
 
@@ -188,7 +188,7 @@ impl AovSet {
             return Err(CompileError::TooManyAovs(aovs.len()));
         }
         let positions = aovs.iter().fold(1u64, |n, (_, l)| {
-            n.saturating_add(nfa::positions(&l.expr, opts.max_path_len))
+            n.saturating_add(l.expr.positions_with(opts.max_path_len))
         });
         // One follow row per position is the least the NFA needs: `positions^2 / 8`.
         let rows = positions

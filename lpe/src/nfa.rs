@@ -24,7 +24,7 @@ use crate::fxhash::FxMap;
 
 use crate::alphabet::Alphabet;
 use crate::aov::AovMask;
-use crate::ast::{Atom, Expr};
+use crate::ast::{Atom, Expr, Repetition};
 
 /// What the Glushkov construction computes for one subexpression.
 struct Frag {
@@ -50,38 +50,8 @@ pub(crate) struct Builder<'a> {
     atom_ids: FxMap<&'a Atom, u32>,
     atom_of: Vec<u32>,
     follow: Vec<Vec<u32>>,
-    /// `e{n,m}` with `m >= max_path_len` is built as `e{n,}` (exact on such paths).
+    /// The path length repetitions are [`Repetition::bounded`] by.
     max_path_len: Option<u32>,
-}
-
-/// Positions `e` unrolls to here (with the `max_path_len` rewrite), saturating: checked
-/// against the budget before anything is built.
-pub(crate) fn positions(e: &Expr, max_path_len: Option<u32>) -> u64 {
-    match e {
-        Expr::Atom(_) => 1,
-        Expr::Concat(es) | Expr::Alt(es) => es
-            .iter()
-            .fold(0u64, |n, e| n.saturating_add(positions(e, max_path_len))),
-        Expr::Repeat(body, r) => {
-            let (min, max) = bounds(r.min, r.max, max_path_len);
-            let copies = match max {
-                Some(m) => u64::from(m.max(min)),
-                None => u64::from(min) + 1,
-            };
-            positions(body, max_path_len).saturating_mul(copies)
-        }
-    }
-}
-
-/// The repetition bounds actually built. Why the rewrite is exact: on a path of at most
-/// `L` vertices, at most `L` iterations consume a vertex, and empty iterations can be
-/// dropped down to `min`; so when `m >= L` (and `m >= min`) any number of iterations
-/// beyond `m` can be shortened to at most `max(min, L) <= m`.
-fn bounds(min: u32, max: Option<u32>, max_path_len: Option<u32>) -> (u32, Option<u32>) {
-    match (max, max_path_len) {
-        (Some(m), Some(l)) if m >= l && m >= min => (min, None),
-        _ => (min, max),
-    }
 }
 
 impl<'a> Builder<'a> {
@@ -159,7 +129,7 @@ impl<'a> Builder<'a> {
                 out
             }
             Expr::Repeat(body, r) => {
-                let (min, max) = bounds(r.min, r.max, self.max_path_len);
+                let Repetition { min, max } = r.bounded(self.max_path_len);
                 let mut acc = Frag::empty();
                 for _ in 0..min {
                     let f = self.build(body);
