@@ -140,7 +140,7 @@ fn nonempty_under(nfa: &Nfa, groups: &[u8], shape: &Shape, aovs: usize) -> Vec<b
 pub(crate) fn empty_aovs(
     nfa: &Nfa,
     alphabet: &Alphabet,
-    atoms: &[Atom],
+    atoms: &[&Atom],
     names: &[String],
     lpes: &[Lpe],
 ) -> Vec<Warning> {
@@ -202,11 +202,11 @@ pub(crate) fn empty_aovs(
 }
 
 /// An atom of `e` that accepts no vertex at all, if any.
-fn dead_atom(e: &Expr, atoms: &[Atom], groups: &[u8]) -> Option<Atom> {
+fn dead_atom(e: &Expr, atoms: &[&Atom], groups: &[u8]) -> Option<Atom> {
     let mut out = None;
     e.for_each_atom(&mut |a| {
         if out.is_none() {
-            if let Some(i) = atoms.iter().position(|x| x == a) {
+            if let Some(i) = atoms.iter().position(|&x| x == a) {
                 if groups[i] == 0 {
                     out = Some(a.clone());
                 }

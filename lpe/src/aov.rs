@@ -212,11 +212,11 @@ impl AovSet {
         for (_, l) in aovs {
             builder.add(&l.expr, &mut parts);
         }
-        let mut labels: Vec<String> = aovs.iter().flat_map(|(_, l)| l.expr.labels()).collect();
-        labels.sort();
-        labels.dedup();
+        // Duplicates across AOVs are fine: the alphabet's label table deduplicates.
+        let labels: Vec<String> = aovs.iter().flat_map(|(_, l)| l.expr.labels()).collect();
         let alphabet = Alphabet::new(&builder.atoms, labels);
-        let atoms: Vec<crate::ast::Atom> = builder.atoms.iter().map(|a| (*a).clone()).collect();
+        // Borrowed from `aovs`: the analysis outlives the builder, which the NFA consumes.
+        let atoms = builder.atoms.clone();
         let nfa = Nfa::new(builder, parts, &alphabet, opts.nfa_budget);
         let dfa = if opts.dfa_budget > 0 {
             Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget)
