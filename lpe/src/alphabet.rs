@@ -223,7 +223,6 @@ pub(crate) struct Alphabet {
     /// Raw symbol -> class. Index `type_event * label_syms + label`, where label 0 is
     /// none, `1..=k` the interned labels and `k + 1` OTHER.
     raw_to_class: Vec<u32>,
-    class_count: usize,
     /// Per class, which of the distinct atoms accept it (bitset over atoms).
     class_atoms: Vec<Vec<u64>>,
     /// Per `(class, group)`, a raw symbol of that class that can occur in that place, for
@@ -274,8 +273,7 @@ impl Alphabet {
             });
             raw_to_class.push(class);
         }
-        let class_count = class_atoms.len();
-        let mut representatives = vec![[None; 3]; class_count];
+        let mut representatives = vec![[None; 3]; class_atoms.len()];
         for (raw, &class) in raw_to_class.iter().enumerate() {
             let sym = Self::sym_of(&labels, raw);
             // The camera carries no label (path.rs): only `C` with no label is a vertex.
@@ -295,7 +293,6 @@ impl Alphabet {
         Alphabet {
             labels,
             raw_to_class,
-            class_count,
             class_atoms,
             representatives,
             other_label,
@@ -330,7 +327,7 @@ impl Alphabet {
     }
 
     pub(crate) fn class_count(&self) -> usize {
-        self.class_count
+        self.class_atoms.len()
     }
 
     /// Does distinct atom `a` accept class `c`?

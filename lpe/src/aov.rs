@@ -223,7 +223,7 @@ impl AovSet {
         } else {
             None
         };
-        if dfa.is_none() && nfa.words > NFA_STATE_WORDS {
+        if dfa.is_none() && nfa.words() > NFA_STATE_WORDS {
             return Err(CompileError::TooLarge(format!(
                 "the set's DFA exceeds the budget of {} MiB and its NFA has {} positions, \
                  more than the {} a stepping state holds: raise `dfa_budget`, or split the set",

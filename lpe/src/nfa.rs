@@ -166,8 +166,6 @@ impl<'a> Builder<'a> {
 /// The compiled bitset NFA.
 #[derive(Clone, Debug)]
 pub(crate) struct Nfa {
-    /// 64-bit words per state.
-    pub words: usize,
     /// Positions, including the start (after dropping useless ones).
     pub positions: usize,
     /// `[(chunk * 256 + byte) * words ..][..words]`: union of the follow sets of the
@@ -362,7 +360,6 @@ impl Nfa {
             }
         }
         Nfa {
-            words,
             positions,
             follow: table,
             rows,
@@ -374,11 +371,17 @@ impl Nfa {
         }
     }
 
+    /// 64-bit words per state.
+    #[inline]
+    pub(crate) fn words(&self) -> usize {
+        self.positions.div_ceil(64)
+    }
+
     /// `next = Follow(cur) & Accept[class]`. `cur` and `next` hold [`Nfa::words`] words.
     #[inline]
     pub(crate) fn step(&self, cur: &[u64], class: usize, next: &mut [u64]) {
         // Constant widths let the compiler unroll the word loops for the common sizes.
-        match self.words {
+        match self.words() {
             1 => self.step_width(cur, class, next, 1),
             2 => self.step_width(cur, class, next, 2),
             3 => self.step_width(cur, class, next, 3),
@@ -441,7 +444,7 @@ impl Nfa {
 
     /// The follow set of one position.
     pub(crate) fn follow_of(&self, p: usize) -> &[u64] {
-        &self.rows[p * self.words..][..self.words]
+        &self.rows[p * self.words()..][..self.words()]
     }
 
     /// The AOV position `p` ends, if it is final.
