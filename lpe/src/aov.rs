@@ -521,6 +521,10 @@ mod tests {
         };
         let s = set(&["C(.{100}){3}L"], &opts);
         assert!(s.uses_dfa());
+        assert!(!s.nfa.has_step_tables());
+        assert!(set(&["C(.{100}){3}L"], &Options::default())
+            .nfa
+            .has_step_tables());
         for (n, want) in [(300, true), (299, false), (301, false)] {
             let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
             assert_eq!(s.match_path(&p).contains(0), want, "{n}");

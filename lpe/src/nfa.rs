@@ -371,6 +371,12 @@ impl Nfa {
         }
     }
 
+    /// Whether the per-byte follow tables fit the budget (else steps OR the rows of the
+    /// active positions).
+    pub(crate) fn has_step_tables(&self) -> bool {
+        !self.follow.is_empty()
+    }
+
     /// 64-bit words per state.
     #[inline]
     pub(crate) fn words(&self) -> usize {
@@ -394,7 +400,7 @@ impl Nfa {
     fn step_width(&self, cur: &[u64], class: usize, next: &mut [u64], w: usize) {
         let (cur, next) = (&cur[..w], &mut next[..w]);
         next.fill(0);
-        if self.follow.is_empty() {
+        if !self.has_step_tables() {
             // No tables (a very large set): the rows of the active positions.
             for p in ones(cur) {
                 let row = self.rows.get(p * w..(p + 1) * w).unwrap_or(&[]);
@@ -460,5 +466,85 @@ impl Nfa {
     /// Positions set in `bits`.
     pub(crate) fn ones(bits: &[u64]) -> impl Iterator<Item = usize> + '_ {
         ones(bits)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::aov::Options;
+    use crate::parse;
+
+    /// SplitMix64: `crate::generate::Rng` exists only with the test-generation features.
+    struct Rng(u64);
+
+    impl Rng {
+        fn next_u64(&mut self) -> u64 {
+            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let z = (self.0 ^ (self.0 >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            let z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            z ^ (z >> 31)
+        }
+    }
+
+    /// The NFA of `srcs` with the given table budget, and its class count.
+    fn nfa(srcs: &[&str], table_budget: usize) -> (Nfa, usize) {
+        let lpes: Vec<_> = srcs.iter().map(|s| parse(s).unwrap()).collect();
+        let mut builder = Builder::new(None);
+        let mut parts = Parts {
+            aov_first: Vec::new(),
+            aov_last: Vec::new(),
+            aov_nullable: Vec::new(),
+        };
+        for l in &lpes {
+            builder.add(&l.expr, &mut parts);
+        }
+        let labels = lpes.iter().flat_map(|l| l.expr.labels()).collect();
+        let alphabet = Alphabet::new(&builder.atoms, labels);
+        let classes = alphabet.class_count();
+        (Nfa::new(builder, parts, &alphabet, table_budget), classes)
+    }
+
+    #[test]
+    fn steps_with_and_without_tables_agree() {
+        let sets: [&[&str]; 4] = [
+            &["C<RD>[<L.>O]", "C<RS>+<TD'glass'>?L", "CD*L"],
+            &["C.*D.{20}[LO]", "C[^'a' S]{2,5}<L.'key'>"],
+            // 302 positions: five-word states.
+            &["C(.{100}){3}L", "C<RD'a'>*<TS'b'>L"],
+            &["CR<CD>L", "C<L.'a'>", "C(U|S2)+O"],
+        ];
+        let mut rng = Rng(7);
+        for srcs in sets {
+            let (tabled, classes) = nfa(srcs, Options::default().nfa_budget);
+            let (rows_only, _) = nfa(srcs, 0);
+            assert!(tabled.has_step_tables(), "{srcs:?}");
+            assert!(!rows_only.has_step_tables(), "{srcs:?}");
+            assert!(rows_only.follow.is_empty());
+            assert_eq!(tabled.positions, rows_only.positions);
+            let w = tabled.words();
+            let mut cur = vec![0u64; w];
+            let (mut a, mut b) = (vec![0u64; w], vec![0u64; w]);
+            for i in 0..2000 {
+                // Dense, sparse and single-position states; bits past the last position
+                // included, since a state from another set may carry them.
+                for x in cur.iter_mut() {
+                    *x = match i % 3 {
+                        0 => rng.next_u64(),
+                        1 => rng.next_u64() & rng.next_u64() & rng.next_u64(),
+                        _ => 0,
+                    };
+                }
+                if i % 3 == 2 {
+                    set(&mut cur, rng.next_u64() as usize % tabled.positions);
+                }
+                // Every class, and one past the end (a class of another set).
+                let class = rng.next_u64() as usize % (classes + 1);
+                tabled.step(&cur, class, &mut a);
+                rows_only.step(&cur, class, &mut b);
+                assert_eq!(a, b, "{srcs:?}: state {cur:x?}, class {class}");
+                assert_eq!(tabled.matches(&a), rows_only.matches(&b));
+            }
+        }
     }
 }
