@@ -18,6 +18,7 @@
 use crate::fxhash::FxMap;
 
 use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
+use crate::bits;
 use crate::path::{Event, Vertex, VertexType};
 
 /// An equivalence class of vertices: no compiled atom tells two vertices of one class
@@ -257,13 +258,13 @@ impl Alphabet {
             };
             for (a, atom) in atoms.iter().enumerate() {
                 if (first || !blind[a]) && atom_accepts(atom, &sym, &labels) {
-                    sig[a / 64] |= 1 << (a % 64);
+                    bits::set(&mut sig, a);
                 }
             }
             if first {
                 blind_sig.copy_from_slice(&sig);
                 for (a, _) in blind.iter().enumerate().filter(|(_, b)| !**b) {
-                    blind_sig[a / 64] &= !(1 << (a % 64));
+                    bits::clear(&mut blind_sig, a);
                 }
             }
             let next = by_signature.len() as u32;
@@ -332,7 +333,7 @@ impl Alphabet {
 
     /// Does distinct atom `a` accept class `c`?
     pub(crate) fn accepts(&self, c: usize, a: usize) -> bool {
-        self.class_atoms[c][a / 64] >> (a % 64) & 1 == 1
+        bits::get(&self.class_atoms[c], a)
     }
 
     /// A vertex of class `c` that can stand in place `g` of a path, if there is one.

@@ -20,6 +20,7 @@ use std::fmt;
 use crate::alphabet::{Alphabet, Group};
 use crate::aov::{AovMask, AovSet, CompileError, Options, State};
 use crate::ast::{Atom, Expr};
+use crate::bits;
 use crate::nfa::Nfa;
 use crate::path::{Path, Vertex};
 use crate::{parse, Lpe};
@@ -120,7 +121,7 @@ fn nonempty_under(nfa: &Nfa, groups: &[u8], shape: &Shape, aovs: usize) -> Vec<b
                 found[a] = true;
             }
         }
-        for q in Nfa::ones(nfa.follow_of(p)) {
+        for q in bits::ones(nfa.follow_of(p).iter().copied()) {
             let g = groups[nfa.atom_of[q] as usize];
             for group in Group::ALL {
                 let t = shape.next[s as usize][group.index()];

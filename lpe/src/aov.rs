@@ -44,6 +44,7 @@ use std::fmt;
 use crate::alphabet::Alphabet;
 pub use crate::alphabet::Class;
 use crate::analysis::{self, Warning};
+use crate::bits;
 use crate::dfa::Dfa;
 use crate::nfa::{Builder, Nfa, Parts};
 use crate::path::{Path, Vertex};
@@ -64,13 +65,13 @@ impl AovMask {
     /// Whether AOV `i` matches (false for `i >= MAX_AOVS`).
     #[inline]
     pub fn contains(&self, i: usize) -> bool {
-        i < MAX_AOVS && self.0[i / 64] >> (i % 64) & 1 == 1
+        i < MAX_AOVS && bits::get(&self.0, i)
     }
 
     /// Adds AOV `i` (ignored for `i >= MAX_AOVS`).
     pub fn insert(&mut self, i: usize) {
         if i < MAX_AOVS {
-            self.0[i / 64] |= 1 << (i % 64);
+            bits::set(&mut self.0, i);
         }
     }
 
@@ -88,7 +89,7 @@ impl AovMask {
 
     /// The matching AOVs, in increasing order.
     pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
-        Nfa::ones(&self.0)
+        bits::ones(self.0)
     }
 }
 

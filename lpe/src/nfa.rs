@@ -25,6 +25,7 @@ use crate::fxhash::FxMap;
 use crate::alphabet::Alphabet;
 use crate::aov::AovMask;
 use crate::ast::{Atom, Expr, Repetition};
+use crate::bits::{self, set};
 
 /// What the Glushkov construction computes for one subexpression.
 struct Frag {
@@ -200,23 +201,6 @@ impl<'a> Builder<'a> {
         parts.aov_last.push(f.last);
         parts.aov_nullable.push(f.nullable);
     }
-}
-
-fn set(bits: &mut [u64], p: usize) {
-    bits[p / 64] |= 1 << (p % 64);
-}
-
-fn ones(bits: &[u64]) -> impl Iterator<Item = usize> + '_ {
-    bits.iter().enumerate().flat_map(|(w, &x)| {
-        let mut x = x;
-        std::iter::from_fn(move || {
-            (x != 0).then(|| {
-                let b = x.trailing_zeros() as usize;
-                x &= x - 1;
-                w * 64 + b
-            })
-        })
-    })
 }
 
 /// Bytes of follow tables for a state of `words` words.
@@ -402,7 +386,7 @@ impl Nfa {
         next.fill(0);
         if !self.has_step_tables() {
             // No tables (a very large set): the rows of the active positions.
-            for p in ones(cur) {
+            for p in bits::ones(cur.iter().copied()) {
                 let row = self.rows.get(p * w..(p + 1) * w).unwrap_or(&[]);
                 for (n, r) in next.iter_mut().zip(row) {
                     *n |= r;
@@ -438,12 +422,8 @@ impl Nfa {
         } else {
             AovMask::EMPTY
         };
-        for (w, (a, f)) in cur.iter().zip(&self.finals).enumerate() {
-            let mut x = a & f;
-            while x != 0 {
-                m.insert(self.aov_of[w * 64 + x.trailing_zeros() as usize] as usize);
-                x &= x - 1;
-            }
+        for p in bits::ones(cur.iter().zip(&self.finals).map(|(a, f)| a & f)) {
+            m.insert(self.aov_of[p] as usize);
         }
         m
     }
@@ -461,11 +441,6 @@ impl Nfa {
     pub(crate) fn memory_bytes(&self) -> usize {
         (self.follow.len() + self.rows.len() + self.accept.len() + self.finals.len()) * 8
             + (self.aov_of.len() + self.atom_of.len()) * 4
-    }
-
-    /// Positions set in `bits`.
-    pub(crate) fn ones(bits: &[u64]) -> impl Iterator<Item = usize> + '_ {
-        ones(bits)
     }
 }
 
