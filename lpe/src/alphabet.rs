@@ -18,6 +18,7 @@
 use crate::fxhash::FxMap;
 
 use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
+use crate::bits;
 use crate::path::{Event, Vertex, VertexType};
 
 /// An equivalence class of vertices: no compiled atom tells two vertices of one class
@@ -87,17 +88,16 @@ fn event_index(e: Event) -> usize {
     BASE[e.kind() as usize] + usize::from(e.lobe()) - 1
 }
 
-/// `(type, event)` to its index: C 0, L 1, O 2, R 3.., T 27.. (table lookups rather than
-/// nested matches, whose branches mispredict on a realistic mix of vertices).
+/// `(type, event)` to its index: C 0, L 1, O 2, R 3.., T 27.. (a table lookup rather
+/// than nested matches, whose branches mispredict on a realistic mix of vertices).
 #[inline]
 fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
-    // Per `VertexType` (C R T L O): the base index, and whether the event counts.
+    // Per `VertexType` (C R T L O), where its run of indices starts. A vertex carries an
+    // event exactly when it is R or T (`Vertex`'s constructors and parser enforce it),
+    // so the event only ever offsets into the R and T runs.
     const BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
-    const SCATTERS: [usize; 5] = [0, 1, 1, 0, 0];
-    let t = ty as usize;
-    // The camera, and (unconstructible) R/T vertices without an event, map to index 0.
-    let e = event.map_or(0, event_index);
-    (BASE[t] + e) * SCATTERS[t] * usize::from(event.is_some()) + BASE[t] * (1 - SCATTERS[t])
+    debug_assert_eq!(ty.is_scattering(), event.is_some());
+    BASE[ty as usize] + event.map_or(0, event_index)
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
@@ -224,7 +224,6 @@ pub(crate) struct Alphabet {
     /// Raw symbol -> class. Index `type_event * label_syms + label`, where label 0 is
     /// none, `1..=k` the interned labels and `k + 1` OTHER.
     raw_to_class: Vec<u32>,
-    class_count: usize,
     /// Per class, which of the distinct atoms accept it (bitset over atoms).
     class_atoms: Vec<Vec<u64>>,
     /// Per `(class, group)`, a raw symbol of that class that can occur in that place, for
@@ -259,13 +258,13 @@ impl Alphabet {
             };
             for (a, atom) in atoms.iter().enumerate() {
                 if (first || !blind[a]) && atom_accepts(atom, &sym, &labels) {
-                    sig[a / 64] |= 1 << (a % 64);
+                    bits::set(&mut sig, a);
                 }
             }
             if first {
                 blind_sig.copy_from_slice(&sig);
                 for (a, _) in blind.iter().enumerate().filter(|(_, b)| !**b) {
-                    blind_sig[a / 64] &= !(1 << (a % 64));
+                    bits::clear(&mut blind_sig, a);
                 }
             }
             let next = by_signature.len() as u32;
@@ -275,8 +274,7 @@ impl Alphabet {
             });
             raw_to_class.push(class);
         }
-        let class_count = class_atoms.len();
-        let mut representatives = vec![[None; 3]; class_count];
+        let mut representatives = vec![[None; 3]; class_atoms.len()];
         for (raw, &class) in raw_to_class.iter().enumerate() {
             let sym = Self::sym_of(&labels, raw);
             // The camera carries no label (path.rs): only `C` with no label is a vertex.
@@ -296,7 +294,6 @@ impl Alphabet {
         Alphabet {
             labels,
             raw_to_class,
-            class_count,
             class_atoms,
             representatives,
             other_label,
@@ -331,12 +328,12 @@ impl Alphabet {
     }
 
     pub(crate) fn class_count(&self) -> usize {
-        self.class_count
+        self.class_atoms.len()
     }
 
     /// Does distinct atom `a` accept class `c`?
     pub(crate) fn accepts(&self, c: usize, a: usize) -> bool {
-        self.class_atoms[c][a / 64] >> (a % 64) & 1 == 1
+        bits::get(&self.class_atoms[c], a)
     }
 
     /// A vertex of class `c` that can stand in place `g` of a path, if there is one.

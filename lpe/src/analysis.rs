@@ -20,6 +20,7 @@ use std::fmt;
 use crate::alphabet::{Alphabet, Group};
 use crate::aov::{AovMask, AovSet, CompileError, Options, State};
 use crate::ast::{Atom, Expr};
+use crate::bits;
 use crate::nfa::Nfa;
 use crate::path::{Path, Vertex};
 use crate::{parse, Lpe};
@@ -120,7 +121,7 @@ fn nonempty_under(nfa: &Nfa, groups: &[u8], shape: &Shape, aovs: usize) -> Vec<b
                 found[a] = true;
             }
         }
-        for q in Nfa::ones(nfa.follow_of(p)) {
+        for q in bits::ones(nfa.follow_of(p).iter().copied()) {
             let g = groups[nfa.atom_of[q] as usize];
             for group in Group::ALL {
                 let t = shape.next[s as usize][group.index()];
@@ -140,7 +141,7 @@ fn nonempty_under(nfa: &Nfa, groups: &[u8], shape: &Shape, aovs: usize) -> Vec<b
 pub(crate) fn empty_aovs(
     nfa: &Nfa,
     alphabet: &Alphabet,
-    atoms: &[Atom],
+    atoms: &[&Atom],
     names: &[String],
     lpes: &[Lpe],
 ) -> Vec<Warning> {
@@ -202,11 +203,11 @@ pub(crate) fn empty_aovs(
 }
 
 /// An atom of `e` that accepts no vertex at all, if any.
-fn dead_atom(e: &Expr, atoms: &[Atom], groups: &[u8]) -> Option<Atom> {
+fn dead_atom(e: &Expr, atoms: &[&Atom], groups: &[u8]) -> Option<Atom> {
     let mut out = None;
     e.for_each_atom(&mut |a| {
         if out.is_none() {
-            if let Some(i) = atoms.iter().position(|x| x == a) {
+            if let Some(i) = atoms.iter().position(|&x| x == a) {
                 if groups[i] == 0 {
                     out = Some(a.clone());
                 }

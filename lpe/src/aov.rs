@@ -44,8 +44,10 @@ use std::fmt;
 use crate::alphabet::Alphabet;
 pub use crate::alphabet::Class;
 use crate::analysis::{self, Warning};
+use crate::ast::Atom;
+use crate::bits;
 use crate::dfa::Dfa;
-use crate::nfa::{self, Builder, Nfa, Parts};
+use crate::nfa::{Builder, Nfa, Parts};
 use crate::path::{Path, Vertex};
 use crate::Lpe;
 
@@ -64,13 +66,13 @@ impl AovMask {
     /// Whether AOV `i` matches (false for `i >= MAX_AOVS`).
     #[inline]
     pub fn contains(&self, i: usize) -> bool {
-        i < MAX_AOVS && self.0[i / 64] >> (i % 64) & 1 == 1
+        i < MAX_AOVS && bits::get(&self.0, i)
     }
 
     /// Adds AOV `i` (ignored for `i >= MAX_AOVS`).
     pub fn insert(&mut self, i: usize) {
         if i < MAX_AOVS {
-            self.0[i / 64] |= 1 << (i % 64);
+            bits::set(&mut self.0, i);
         }
     }
 
@@ -88,7 +90,7 @@ impl AovMask {
 
     /// The matching AOVs, in increasing order.
     pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
-        Nfa::ones(&self.0)
+        bits::ones(self.0)
     }
 }
 
@@ -171,9 +173,19 @@ pub struct AovSet {
     names: Vec<String>,
     lpes: Vec<Lpe>,
     alphabet: Alphabet,
-    nfa: Nfa,
-    dfa: Option<Dfa>,
+    engine: Engine,
+    /// NFA positions (the start included), kept for reporting once the NFA is dropped.
+    nfa_positions: usize,
     warnings: Vec<Warning>,
+}
+
+/// What a set steps. The NFA only serves to build the DFA, so a set with a DFA drops it
+/// (with its follow tables, often the larger of the two).
+#[derive(Clone, Debug)]
+enum Engine {
+    Dfa(Dfa),
+    /// Over the DFA budget.
+    Nfa(Nfa),
 }
 
 impl AovSet {
@@ -187,8 +199,43 @@ impl AovSet {
         if aovs.len() > MAX_AOVS {
             return Err(CompileError::TooManyAovs(aovs.len()));
         }
+        let (alphabet, nfa, atoms) = Self::build_nfa(aovs, opts)?;
+        let dfa = if opts.dfa_budget > 0 {
+            Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget)
+        } else {
+            None
+        };
+        if dfa.is_none() && nfa.words() > NFA_STATE_WORDS {
+            return Err(CompileError::TooLarge(format!(
+                "the set's DFA exceeds the budget of {} MiB and its NFA has {} positions, \
+                 more than the {} a stepping state holds: raise `dfa_budget`, or split the set",
+                opts.dfa_budget >> 20,
+                nfa.positions,
+                64 * NFA_STATE_WORDS
+            )));
+        }
+        let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
+        let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
+        let warnings = analysis::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
+        let nfa_positions = nfa.positions;
+        Ok(AovSet {
+            names,
+            lpes,
+            alphabet,
+            engine: dfa.map_or(Engine::Nfa(nfa), Engine::Dfa),
+            nfa_positions,
+            warnings,
+        })
+    }
+
+    /// The alphabet and NFA of `aovs`, and their distinct atoms (the NFA's atom indices
+    /// refer to them).
+    fn build_nfa<'a>(
+        aovs: &'a [(String, Lpe)],
+        opts: &Options,
+    ) -> Result<(Alphabet, Nfa, Vec<&'a Atom>), CompileError> {
         let positions = aovs.iter().fold(1u64, |n, (_, l)| {
-            n.saturating_add(nfa::positions(&l.expr, opts.max_path_len))
+            n.saturating_add(l.expr.positions_with(opts.max_path_len))
         });
         // One follow row per position is the least the NFA needs: `positions^2 / 8`.
         let rows = positions
@@ -212,46 +259,22 @@ impl AovSet {
         for (_, l) in aovs {
             builder.add(&l.expr, &mut parts);
         }
-        let mut labels: Vec<String> = aovs.iter().flat_map(|(_, l)| l.expr.labels()).collect();
-        labels.sort();
-        labels.dedup();
+        // Duplicates across AOVs are fine: the alphabet's label table deduplicates.
+        let labels: Vec<String> = aovs.iter().flat_map(|(_, l)| l.expr.labels()).collect();
         let alphabet = Alphabet::new(&builder.atoms, labels);
-        let atoms: Vec<crate::ast::Atom> = builder.atoms.iter().map(|a| (*a).clone()).collect();
+        // Borrowed from `aovs`: the analysis outlives the builder, which the NFA consumes.
+        let atoms = builder.atoms.clone();
         let nfa = Nfa::new(builder, parts, &alphabet, opts.nfa_budget);
-        let dfa = if opts.dfa_budget > 0 {
-            Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget)
-        } else {
-            None
-        };
-        if dfa.is_none() && nfa.words > NFA_STATE_WORDS {
-            return Err(CompileError::TooLarge(format!(
-                "the set's DFA exceeds the budget of {} MiB and its NFA has {} positions, \
-                 more than the {} a stepping state holds: raise `dfa_budget`, or split the set",
-                opts.dfa_budget >> 20,
-                nfa.positions,
-                64 * NFA_STATE_WORDS
-            )));
-        }
-        let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
-        let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
-        let warnings = analysis::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
-        Ok(AovSet {
-            names,
-            lpes,
-            alphabet,
-            nfa,
-            dfa,
-            warnings,
-        })
+        Ok((alphabet, nfa, atoms))
     }
 
     /// The state before any vertex.
     #[inline]
     pub fn start(&self) -> State {
-        match &self.dfa {
-            Some(d) => State::id(d.start()),
+        match &self.engine {
+            Engine::Dfa(d) => State::id(d.start()),
             // The NFA start: position 0 alone, bit 0 of word 0.
-            None => State::id(1),
+            Engine::Nfa(_) => State::id(1),
         }
     }
 
@@ -272,36 +295,36 @@ impl AovSet {
     /// unspecified state, never a panic.
     #[inline]
     pub fn step_class(&self, s: State, c: Class) -> State {
-        match &self.dfa {
-            Some(d) => State::id(d.next(s.0[0] as u32, c.0)),
-            None => self.step_nfa(s, c),
+        match &self.engine {
+            Engine::Dfa(d) => State::id(d.next(s.0[0] as u32, c.0)),
+            Engine::Nfa(n) => Self::step_nfa(n, s, c),
         }
     }
 
     /// Out of line so that the DFA step above stays small enough to inline into the
     /// caller's loop.
     #[inline(never)]
-    fn step_nfa(&self, s: State, c: Class) -> State {
+    fn step_nfa(nfa: &Nfa, s: State, c: Class) -> State {
         let mut next = [0u64; NFA_STATE_WORDS];
-        self.nfa.step(&s.0, c.index(), &mut next);
+        nfa.step(&s.0, c.index(), &mut next);
         State(next)
     }
 
     /// The AOVs that match a path ending in state `s`.
     #[inline]
     pub fn matches(&self, s: State) -> AovMask {
-        match &self.dfa {
-            Some(d) => d.matches(s.0[0] as u32),
-            None => self.nfa.matches(&s.0),
+        match &self.engine {
+            Engine::Dfa(d) => d.matches(s.0[0] as u32),
+            Engine::Nfa(n) => n.matches(&s.0),
         }
     }
 
     /// No continuation of the path can match any AOV.
     #[inline]
     pub fn is_dead(&self, s: State) -> bool {
-        match &self.dfa {
-            Some(_) => s.0[0] == 0,
-            None => s.0 == [0; NFA_STATE_WORDS],
+        match &self.engine {
+            Engine::Dfa(_) => s.0[0] == 0,
+            Engine::Nfa(_) => s.0 == [0; NFA_STATE_WORDS],
         }
     }
 
@@ -347,24 +370,29 @@ impl AovSet {
 
     /// Whether the set steps a DFA (else the bitset NFA: over the DFA budget).
     pub fn uses_dfa(&self) -> bool {
-        self.dfa.is_some()
+        matches!(self.engine, Engine::Dfa(_))
     }
 
     /// DFA states (dead state included), if the set has a DFA.
     pub fn dfa_states(&self) -> Option<usize> {
-        self.dfa.as_ref().map(Dfa::state_count)
+        match &self.engine {
+            Engine::Dfa(d) => Some(d.state_count()),
+            Engine::Nfa(_) => None,
+        }
     }
 
     /// NFA positions (the start included).
     pub fn nfa_positions(&self) -> usize {
-        self.nfa.positions
+        self.nfa_positions
     }
 
-    /// Bytes held by the automata and the alphabet tables.
+    /// Bytes held by the automaton the set steps and by the alphabet tables.
     pub fn memory_bytes(&self) -> usize {
         self.alphabet.memory_bytes()
-            + self.nfa.memory_bytes()
-            + self.dfa.as_ref().map_or(0, Dfa::memory_bytes)
+            + match &self.engine {
+                Engine::Dfa(d) => d.memory_bytes(),
+                Engine::Nfa(n) => n.memory_bytes(),
+            }
     }
 
     pub(crate) fn alphabet(&self) -> &Alphabet {
@@ -521,6 +549,13 @@ mod tests {
         };
         let s = set(&["C(.{100}){3}L"], &opts);
         assert!(s.uses_dfa());
+        // The set keeps only its DFA: ask the construction it came from.
+        let nfa_of = |opts: &Options| {
+            let aovs = [("a".to_string(), parse("C(.{100}){3}L").unwrap())];
+            AovSet::build_nfa(&aovs, opts).unwrap().1
+        };
+        assert!(!nfa_of(&opts).has_step_tables());
+        assert!(nfa_of(&Options::default()).has_step_tables());
         for (n, want) in [(300, true), (299, false), (301, false)] {
             let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
             assert_eq!(s.match_path(&p).contains(0), want, "{n}");

@@ -129,12 +129,21 @@ impl Expr {
     /// Number of atom positions after unrolling counted repetition (`e{n,m}` counts `e`
     /// `max(n, m)` times, `e{n,}` counts it `n + 1` times), saturating.
     pub fn positions(&self) -> u64 {
+        self.positions_with(None)
+    }
+
+    /// [`Expr::positions`] of the automaton built for paths of at most `max_path_len`
+    /// vertices, whose repetitions are [`Repetition::bounded`]: checked against the
+    /// budget before anything is built.
+    pub(crate) fn positions_with(&self, max_path_len: Option<u32>) -> u64 {
         match self {
             Expr::Atom(_) => 1,
-            Expr::Concat(es) | Expr::Alt(es) => es
-                .iter()
-                .fold(0u64, |acc, e| acc.saturating_add(e.positions())),
-            Expr::Repeat(e, r) => e.positions().saturating_mul(r.copies()),
+            Expr::Concat(es) | Expr::Alt(es) => es.iter().fold(0u64, |acc, e| {
+                acc.saturating_add(e.positions_with(max_path_len))
+            }),
+            Expr::Repeat(e, r) => e
+                .positions_with(max_path_len)
+                .saturating_mul(r.bounded(max_path_len).copies()),
         }
     }
 }
@@ -158,6 +167,21 @@ impl Repetition {
         min: 0,
         max: Some(1),
     };
+
+    /// The repetition an automaton for paths of at most `max_path_len` vertices builds:
+    /// `e{n,m}` with `m >= max_path_len` becomes `e{n,}`. Exact on such paths: at most
+    /// `max_path_len` iterations consume a vertex and empty iterations can be dropped
+    /// down to `n`, so any number of iterations beyond `m` shortens to at most
+    /// `max(n, max_path_len) <= m`.
+    pub(crate) fn bounded(self, max_path_len: Option<u32>) -> Repetition {
+        match (self.max, max_path_len) {
+            (Some(m), Some(l)) if m >= l && m >= self.min => Repetition {
+                min: self.min,
+                max: None,
+            },
+            _ => self,
+        }
+    }
 
     /// How many copies of the body an unrolled automaton needs.
     pub fn copies(self) -> u64 {

@@ -42,10 +42,10 @@ impl Dfa {
     /// `budget` bytes.
     pub(crate) fn build(nfa: &Nfa, classes: usize, budget: usize) -> Option<Dfa> {
         let stride = classes.next_power_of_two();
-        let cost = Self::state_cost(stride, nfa.words);
+        let cost = Self::state_cost(stride, nfa.words());
         // Premultiplied ids must fit a `u32`.
         let max_states = (budget / cost).min(u32::MAX as usize / stride);
-        let w = nfa.words;
+        let w = nfa.words();
         // Subset construction. Index 0 is the empty set: the dead state.
         let mut sets: Vec<Box<[u64]>> = vec![vec![0u64; w].into_boxed_slice()];
         let mut ids: FxMap<Box<[u64]>, u32> = FxMap::default();

@@ -85,6 +85,7 @@ pub mod alphabet;
 pub mod analysis;
 pub mod aov;
 pub mod ast;
+mod bits;
 mod dfa;
 pub mod fxhash;
 pub mod ini;

@@ -144,15 +144,6 @@ impl LobeMap {
         Ok(())
     }
 
-    /// Names explicitly mapped to `lobe` of `category`, sorted.
-    pub fn names_of(&self, category: LobeCategory, lobe: u8) -> Vec<&str> {
-        self.map
-            .iter()
-            .filter(|((c, _), l)| *c == key(category) && **l == lobe)
-            .map(|((_, n), _)| n.as_str())
-            .collect()
-    }
-
     /// Among `signals` (user signals one material emits), those that share a U lobe with
     /// another: they overwrite each other in that lobe's AOV. Returns `(lobe, names)`.
     pub fn user_collisions<'a>(&self, signals: &[&'a str]) -> Vec<(Event, Vec<&'a str>)> {

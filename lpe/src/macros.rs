@@ -95,14 +95,6 @@ impl MacroTable {
             .map(|(_, s)| s.as_str())
     }
 
-    /// The name as defined (canonical case), looked up ignoring case.
-    pub fn canonical_name(&self, name: &str) -> Option<&str> {
-        self.entries
-            .iter()
-            .find(|(n, _)| n.eq_ignore_ascii_case(name))
-            .map(|(n, _)| n.as_str())
-    }
-
     /// Every name, in definition order.
     pub fn names(&self) -> impl Iterator<Item = &str> {
         self.entries.iter().map(|(n, _)| n.as_str())

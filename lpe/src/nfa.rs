@@ -24,7 +24,8 @@ use crate::fxhash::FxMap;
 
 use crate::alphabet::Alphabet;
 use crate::aov::AovMask;
-use crate::ast::{Atom, Expr};
+use crate::ast::{Atom, Expr, Repetition};
+use crate::bits::{self, set};
 
 /// What the Glushkov construction computes for one subexpression.
 struct Frag {
@@ -50,38 +51,8 @@ pub(crate) struct Builder<'a> {
     atom_ids: FxMap<&'a Atom, u32>,
     atom_of: Vec<u32>,
     follow: Vec<Vec<u32>>,
-    /// `e{n,m}` with `m >= max_path_len` is built as `e{n,}` (exact on such paths).
+    /// The path length repetitions are [`Repetition::bounded`] by.
     max_path_len: Option<u32>,
-}
-
-/// Positions `e` unrolls to here (with the `max_path_len` rewrite), saturating: checked
-/// against the budget before anything is built.
-pub(crate) fn positions(e: &Expr, max_path_len: Option<u32>) -> u64 {
-    match e {
-        Expr::Atom(_) => 1,
-        Expr::Concat(es) | Expr::Alt(es) => es
-            .iter()
-            .fold(0u64, |n, e| n.saturating_add(positions(e, max_path_len))),
-        Expr::Repeat(body, r) => {
-            let (min, max) = bounds(r.min, r.max, max_path_len);
-            let copies = match max {
-                Some(m) => u64::from(m.max(min)),
-                None => u64::from(min) + 1,
-            };
-            positions(body, max_path_len).saturating_mul(copies)
-        }
-    }
-}
-
-/// The repetition bounds actually built. Why the rewrite is exact: on a path of at most
-/// `L` vertices, at most `L` iterations consume a vertex, and empty iterations can be
-/// dropped down to `min`; so when `m >= L` (and `m >= min`) any number of iterations
-/// beyond `m` can be shortened to at most `max(min, L) <= m`.
-fn bounds(min: u32, max: Option<u32>, max_path_len: Option<u32>) -> (u32, Option<u32>) {
-    match (max, max_path_len) {
-        (Some(m), Some(l)) if m >= l && m >= min => (min, None),
-        _ => (min, max),
-    }
 }
 
 impl<'a> Builder<'a> {
@@ -159,7 +130,7 @@ impl<'a> Builder<'a> {
                 out
             }
             Expr::Repeat(body, r) => {
-                let (min, max) = bounds(r.min, r.max, self.max_path_len);
+                let Repetition { min, max } = r.bounded(self.max_path_len);
                 let mut acc = Frag::empty();
                 for _ in 0..min {
                     let f = self.build(body);
@@ -196,8 +167,6 @@ impl<'a> Builder<'a> {
 /// The compiled bitset NFA.
 #[derive(Clone, Debug)]
 pub(crate) struct Nfa {
-    /// 64-bit words per state.
-    pub words: usize,
     /// Positions, including the start (after dropping useless ones).
     pub positions: usize,
     /// `[(chunk * 256 + byte) * words ..][..words]`: union of the follow sets of the
@@ -232,23 +201,6 @@ impl<'a> Builder<'a> {
         parts.aov_last.push(f.last);
         parts.aov_nullable.push(f.nullable);
     }
-}
-
-fn set(bits: &mut [u64], p: usize) {
-    bits[p / 64] |= 1 << (p % 64);
-}
-
-fn ones(bits: &[u64]) -> impl Iterator<Item = usize> + '_ {
-    bits.iter().enumerate().flat_map(|(w, &x)| {
-        let mut x = x;
-        std::iter::from_fn(move || {
-            (x != 0).then(|| {
-                let b = x.trailing_zeros() as usize;
-                x &= x - 1;
-                w * 64 + b
-            })
-        })
-    })
 }
 
 /// Bytes of follow tables for a state of `words` words.
@@ -392,7 +344,6 @@ impl Nfa {
             }
         }
         Nfa {
-            words,
             positions,
             follow: table,
             rows,
@@ -404,11 +355,23 @@ impl Nfa {
         }
     }
 
+    /// Whether the per-byte follow tables fit the budget (else steps OR the rows of the
+    /// active positions).
+    pub(crate) fn has_step_tables(&self) -> bool {
+        !self.follow.is_empty()
+    }
+
+    /// 64-bit words per state.
+    #[inline]
+    pub(crate) fn words(&self) -> usize {
+        self.positions.div_ceil(64)
+    }
+
     /// `next = Follow(cur) & Accept[class]`. `cur` and `next` hold [`Nfa::words`] words.
     #[inline]
     pub(crate) fn step(&self, cur: &[u64], class: usize, next: &mut [u64]) {
         // Constant widths let the compiler unroll the word loops for the common sizes.
-        match self.words {
+        match self.words() {
             1 => self.step_width(cur, class, next, 1),
             2 => self.step_width(cur, class, next, 2),
             3 => self.step_width(cur, class, next, 3),
@@ -421,9 +384,9 @@ impl Nfa {
     fn step_width(&self, cur: &[u64], class: usize, next: &mut [u64], w: usize) {
         let (cur, next) = (&cur[..w], &mut next[..w]);
         next.fill(0);
-        if self.follow.is_empty() {
+        if !self.has_step_tables() {
             // No tables (a very large set): the rows of the active positions.
-            for p in ones(cur) {
+            for p in bits::ones(cur.iter().copied()) {
                 let row = self.rows.get(p * w..(p + 1) * w).unwrap_or(&[]);
                 for (n, r) in next.iter_mut().zip(row) {
                     *n |= r;
@@ -459,19 +422,15 @@ impl Nfa {
         } else {
             AovMask::EMPTY
         };
-        for (w, (a, f)) in cur.iter().zip(&self.finals).enumerate() {
-            let mut x = a & f;
-            while x != 0 {
-                m.insert(self.aov_of[w * 64 + x.trailing_zeros() as usize] as usize);
-                x &= x - 1;
-            }
+        for p in bits::ones(cur.iter().zip(&self.finals).map(|(a, f)| a & f)) {
+            m.insert(self.aov_of[p] as usize);
         }
         m
     }
 
     /// The follow set of one position.
     pub(crate) fn follow_of(&self, p: usize) -> &[u64] {
-        &self.rows[p * self.words..][..self.words]
+        &self.rows[p * self.words()..][..self.words()]
     }
 
     /// The AOV position `p` ends, if it is final.
@@ -483,9 +442,84 @@ impl Nfa {
         (self.follow.len() + self.rows.len() + self.accept.len() + self.finals.len()) * 8
             + (self.aov_of.len() + self.atom_of.len()) * 4
     }
+}
 
-    /// Positions set in `bits`.
-    pub(crate) fn ones(bits: &[u64]) -> impl Iterator<Item = usize> + '_ {
-        ones(bits)
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::aov::Options;
+    use crate::parse;
+
+    /// SplitMix64: `crate::generate::Rng` exists only with the test-generation features.
+    struct Rng(u64);
+
+    impl Rng {
+        fn next_u64(&mut self) -> u64 {
+            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+            let z = (self.0 ^ (self.0 >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+            let z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+            z ^ (z >> 31)
+        }
+    }
+
+    /// The NFA of `srcs` with the given table budget, and its class count.
+    fn nfa(srcs: &[&str], table_budget: usize) -> (Nfa, usize) {
+        let lpes: Vec<_> = srcs.iter().map(|s| parse(s).unwrap()).collect();
+        let mut builder = Builder::new(None);
+        let mut parts = Parts {
+            aov_first: Vec::new(),
+            aov_last: Vec::new(),
+            aov_nullable: Vec::new(),
+        };
+        for l in &lpes {
+            builder.add(&l.expr, &mut parts);
+        }
+        let labels = lpes.iter().flat_map(|l| l.expr.labels()).collect();
+        let alphabet = Alphabet::new(&builder.atoms, labels);
+        let classes = alphabet.class_count();
+        (Nfa::new(builder, parts, &alphabet, table_budget), classes)
+    }
+
+    #[test]
+    fn steps_with_and_without_tables_agree() {
+        let sets: [&[&str]; 4] = [
+            &["C<RD>[<L.>O]", "C<RS>+<TD'glass'>?L", "CD*L"],
+            &["C.*D.{20}[LO]", "C[^'a' S]{2,5}<L.'key'>"],
+            // 302 positions: five-word states.
+            &["C(.{100}){3}L", "C<RD'a'>*<TS'b'>L"],
+            &["CR<CD>L", "C<L.'a'>", "C(U|S2)+O"],
+        ];
+        let mut rng = Rng(7);
+        for srcs in sets {
+            let (tabled, classes) = nfa(srcs, Options::default().nfa_budget);
+            let (rows_only, _) = nfa(srcs, 0);
+            assert!(tabled.has_step_tables(), "{srcs:?}");
+            assert!(!rows_only.has_step_tables(), "{srcs:?}");
+            assert!(rows_only.follow.is_empty());
+            assert_eq!(tabled.positions, rows_only.positions);
+            let w = tabled.words();
+            let mut cur = vec![0u64; w];
+            let (mut a, mut b) = (vec![0u64; w], vec![0u64; w]);
+            for i in 0..2000 {
+                // Dense, sparse and single-position states; bits past the last position
+                // included, since a state from another set may carry them.
+                for x in cur.iter_mut() {
+                    *x = match i % 3 {
+                        0 => rng.next_u64(),
+                        1 => rng.next_u64() & rng.next_u64() & rng.next_u64(),
+                        _ => 0,
+                    };
+                }
+                if i % 3 == 2 {
+                    set(&mut cur, rng.next_u64() as usize % tabled.positions);
+                }
+                // Every class, and one past the end (a class of another set).
+                let class = rng.next_u64() as usize % (classes + 1);
+                tabled.step(&cur, class, &mut a);
+                rows_only.step(&cur, class, &mut b);
+                assert_eq!(a, b, "{srcs:?}: state {cur:x?}, class {class}");
+                assert_eq!(tabled.matches(&a), rows_only.matches(&b));
+            }
+        }
     }
 }

@@ -227,11 +227,6 @@ impl Vertex {
     pub fn label(&self) -> Option<&str> {
         self.label.as_deref()
     }
-
-    /// An `R`/`T` vertex with a D or S event: what `.` matches.
-    pub fn is_transport_scatter(&self) -> bool {
-        self.ty.is_scattering() && self.event.is_some_and(Event::is_transport)
-    }
 }
 
 impl fmt::Display for Vertex {
