@@ -160,7 +160,7 @@ impl Tonemap {
     }
 }
 
-fn png_bytes(img: &RgbImage) -> Result<Vec<u8>, String> {
+pub(crate) fn png_bytes(img: &RgbImage) -> Result<Vec<u8>, String> {
     let mut buf = Cursor::new(Vec::new());
     img.write_to(&mut buf, ImageFormat::Png)
         .map_err(|e| format!("encoding PNG: {e}"))?;
@@ -170,21 +170,21 @@ fn png_bytes(img: &RgbImage) -> Result<Vec<u8>, String> {
 /// Columns of the contact sheet.
 const SHEET_COLUMNS: usize = 6;
 
-/// All layers side by side, beauty first, in file order, row by row.
-pub fn contact_sheet(film: &Film, tonemap: &Tonemap) -> RgbImage {
-    let thumb_w = film.width.min(160) as u32;
-    let thumb_h = ((film.height as u32 * thumb_w) / film.width as u32).max(1);
+/// All layer images (same size, non-empty) side by side, in order, row by row.
+pub fn contact_sheet(layers: &[RgbImage]) -> RgbImage {
+    let (width, height) = layers[0].dimensions();
+    let thumb_w = width.min(160);
+    let thumb_h = ((height * thumb_w) / width).max(1);
     let gap = 4;
-    let cols = SHEET_COLUMNS.min(film.layers) as u32;
-    let rows = film.layers.div_ceil(SHEET_COLUMNS) as u32;
+    let cols = SHEET_COLUMNS.min(layers.len()) as u32;
+    let rows = layers.len().div_ceil(SHEET_COLUMNS) as u32;
     let mut sheet = RgbImage::from_pixel(
         cols * (thumb_w + gap) + gap,
         rows * (thumb_h + gap) + gap,
         Rgb([32, 32, 32]),
     );
-    for layer in 0..film.layers {
-        let img = tonemap.image(film, layer);
-        let thumb = image::imageops::thumbnail(&img, thumb_w, thumb_h);
+    for (layer, img) in layers.iter().enumerate() {
+        let thumb = image::imageops::thumbnail(img, thumb_w, thumb_h);
         let (c, r) = (
             (layer % SHEET_COLUMNS) as u32,
             (layer / SHEET_COLUMNS) as u32,
@@ -325,15 +325,16 @@ pub fn write_all(
     atomic_write(&exr, &exr_bytes(film, aovs)?).map_err(|e| io(&exr, e))?;
     files.push(exr);
     let tonemap = Tonemap::from_beauty(film);
-    for (layer, name) in layer_names(aovs).into_iter().enumerate() {
+    let images: Vec<RgbImage> = (0..film.layers).map(|l| tonemap.image(film, l)).collect();
+    for (img, name) in images.iter().zip(layer_names(aovs)) {
         let p = dir
             .join("png")
             .join(format!("{}.png", name.unwrap_or("beauty")));
-        atomic_write(&p, &png_bytes(&tonemap.image(film, layer))?).map_err(|e| io(&p, e))?;
+        atomic_write(&p, &png_bytes(img)?).map_err(|e| io(&p, e))?;
         files.push(p);
     }
     let sheet = dir.join("contact_sheet.png");
-    atomic_write(&sheet, &png_bytes(&contact_sheet(film, &tonemap))?).map_err(|e| io(&sheet, e))?;
+    atomic_write(&sheet, &png_bytes(&contact_sheet(&images))?).map_err(|e| io(&sheet, e))?;
     files.push(sheet);
     let md = dir.join("report.md");
     let json = dir.join("report.json");

@@ -170,9 +170,7 @@ pub fn write(
         draw(&root, panels, x_label, y_label, text)?;
     }
     let img = image::RgbImage::from_raw(w, h, rgb).ok_or("plot buffer size")?;
-    let mut png = Vec::new();
-    img.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
-        .map_err(|e| e.to_string())?;
+    let png = crate::output::png_bytes(&img)?;
     let file = dir.join(format!("{stem}.png"));
     crate::output::atomic_write(&file, &png).map_err(|e| format!("{}: {e}", file.display()))?;
     let mut svg = String::new();
