@@ -595,18 +595,13 @@ pub fn run_variant(
 /// One row of the summary: a (scene, variant, layer) series at its largest spp.
 #[derive(Clone, Debug, Serialize)]
 pub struct Summary {
-    pub scene: String,
-    pub variant: String,
-    pub layer: String,
-    pub spp: u32,
-    pub seconds: f64,
-    pub mse: f64,
-    pub rel_mse: f64,
+    /// The series' measurement at its largest spp.
+    #[serde(flatten)]
+    pub last: Point,
     /// Slope of ln MSE vs ln spp (None: MSE is 0, the layer is exact).
     pub slope: Option<f64>,
     /// `1 / (MSE x seconds)` at the largest spp.
     pub efficiency: f64,
-    pub partition_error: Option<f64>,
 }
 
 pub fn summarize(points: &[Point]) -> Vec<Summary> {
@@ -631,16 +626,9 @@ pub fn summarize(points: &[Point]) -> Vec<Summary> {
                     .collect::<Vec<_>>(),
             );
             Summary {
-                scene,
-                variant,
-                layer,
-                spp: last.spp,
-                seconds: last.seconds,
-                mse: last.mse,
-                rel_mse: last.rel_mse,
+                last: (*last).clone(),
                 slope,
                 efficiency: 1.0 / (last.mse * last.seconds),
-                partition_error: last.partition_error,
             }
         })
         .collect()
@@ -674,24 +662,25 @@ pub fn markdown(rows: &[Summary], layers: &[&str]) -> String {
     );
     for r in rows
         .iter()
-        .filter(|r| layers.is_empty() || layers.contains(&r.layer.as_str()))
+        .filter(|r| layers.is_empty() || layers.contains(&r.last.layer.as_str()))
     {
+        let p = &r.last;
         s += &format!(
             "| {} | {} | {} | {} | {:.3} | {:.3e} | {:.3e} | {} | {} | {} |\n",
-            r.scene,
-            r.variant,
-            r.layer,
-            r.spp,
-            r.seconds,
-            r.mse,
-            r.rel_mse,
+            p.scene,
+            p.variant,
+            p.layer,
+            p.spp,
+            p.seconds,
+            p.mse,
+            p.rel_mse,
             r.slope.map_or("exact".into(), |x| format!("{x:.2}")),
-            if r.mse > 0.0 {
+            if p.mse > 0.0 {
                 format!("{:.3e}", r.efficiency)
             } else {
                 "∞".into()
             },
-            r.partition_error.map_or("".into(), |e| format!("{e:.1e}")),
+            p.partition_error.map_or("".into(), |e| format!("{e:.1e}")),
         );
     }
     s

@@ -14,7 +14,7 @@ fn run(dir: &std::path::Path, threads: usize) -> Vec<Summary> {
 
 fn find<'a>(rows: &'a [Summary], scene: &str, variant: &str, layer: &str) -> &'a Summary {
     rows.iter()
-        .find(|r| r.scene == scene && r.variant == variant && r.layer == layer)
+        .find(|r| r.last.scene == scene && r.last.variant == variant && r.last.layer == layer)
         .unwrap_or_else(|| panic!("{scene} / {variant} / {layer}"))
 }
 
@@ -27,12 +27,12 @@ fn quick_converge_is_deterministic_and_its_slopes_mean_what_they_say() {
     assert_eq!(a.len(), b.len());
     for (x, y) in a.iter().zip(&b) {
         assert_eq!(
-            x.mse.to_bits(),
-            y.mse.to_bits(),
+            x.last.mse.to_bits(),
+            y.last.mse.to_bits(),
             "{} / {} / {}",
-            x.scene,
-            x.variant,
-            x.layer
+            x.last.scene,
+            x.last.variant,
+            x.last.layer
         );
     }
     for f in [
@@ -60,21 +60,23 @@ fn quick_converge_is_deterministic_and_its_slopes_mean_what_they_say() {
     let mut compared = 0;
     for e in converge::Engine::ALL.into_iter().skip(1) {
         let variant = format!("MIS, {}", e.name());
-        for r in a.iter().filter(|r| r.variant == variant) {
-            let m = find(&a, &r.scene, "MIS", &r.layer);
+        for r in a.iter().filter(|r| r.last.variant == variant) {
+            let m = find(&a, &r.last.scene, "MIS", &r.last.layer);
             assert_eq!(
-                m.mse.to_bits(),
-                r.mse.to_bits(),
+                m.last.mse.to_bits(),
+                r.last.mse.to_bits(),
                 "{} / {variant} / {}",
-                r.scene,
-                r.layer
+                r.last.scene,
+                r.last.layer
             );
             compared += 1;
         }
     }
     assert!(compared >= 4 * 4, "{compared} engine rows");
     // BSDF sampling never reaches a point light: relMSE ~ 1 (a black image).
-    let r = find(&a, "point-over-plane", "BSDF only", "beauty").rel_mse;
+    let r = find(&a, "point-over-plane", "BSDF only", "beauty")
+        .last
+        .rel_mse;
     assert!(r > 0.9, "{r}");
     let _ = std::fs::remove_dir_all(&dir);
 }
