@@ -252,20 +252,32 @@ fn load(text: &str, name: &str, lobes: &LobeMap) -> Result<Scene, String> {
     Scene::from_toml(text, name, lobes).map_err(|e| e.to_string())
 }
 
-/// The point light over the plane.
-pub fn point_over_plane(width: usize, height: usize, lobes: &LobeMap) -> Result<Known, String> {
-    let ([px, py, pz], i) = POINT;
-    let text = plane_scene(
-        "point-over-plane",
-        &format!("kind = \"point\"\nposition = [{px}, {py}, {pz}]\nintensity = [{i}, {i}, {i}]"),
-    );
-    let scene = load(&text, "point-over-plane", lobes)?;
-    let l = DVec3::new(px as f64, py as f64, pz as f64);
-    let reference = plane_reference(&scene, width, height, |x| {
+/// `[[lights]]` body of a point light of intensity `i` (grey) at `p`.
+pub fn point_light_toml(p: [f32; 3], i: f64, group: Option<&str>) -> String {
+    let [x, y, z] = p;
+    let group = group.map_or(String::new(), |g| format!("group = \"{g}\"\n"));
+    format!(
+        "kind = \"point\"\n{group}position = [{x}, {y}, {z}]\nintensity = [{i:e}, {i:e}, {i:e}]"
+    )
+}
+
+/// Radiance leaving the plane point `x` lit by a point light of intensity `i` at `l`:
+/// `(a / pi) I cos / d^2`.
+pub fn point_radiance(l: DVec3, i: f64) -> impl Fn(DVec3) -> f64 {
+    move |x| {
         let d = l - x;
         let d2 = d.length_squared();
         PLANE_ALBEDO / std::f64::consts::PI * i * (d.y / d2.sqrt()) / d2
-    });
+    }
+}
+
+/// The point light over the plane.
+pub fn point_over_plane(width: usize, height: usize, lobes: &LobeMap) -> Result<Known, String> {
+    let (p, i) = POINT;
+    let text = plane_scene("point-over-plane", &point_light_toml(p, i, None));
+    let scene = load(&text, "point-over-plane", lobes)?;
+    let l = glam::Vec3::from(p).as_dvec3();
+    let reference = plane_reference(&scene, width, height, point_radiance(l, i));
     direct_known(
         scene,
         width,

@@ -5,7 +5,9 @@ use glam::{DVec3, Vec3};
 use lpe::{LobeMap, Parser};
 
 use crate::aovs::AovList;
-use crate::converge::{plane_reference, plane_scene, sphere_over_plane, PLANE_ALBEDO};
+use crate::converge::{
+    plane_reference, plane_scene, point_light_toml, point_radiance, sphere_over_plane,
+};
 use crate::film::Accumulation;
 use crate::integrator::{Render, Settings, Technique};
 use crate::material::{Lobe, Model};
@@ -70,11 +72,7 @@ pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList), String> {
     let text: Vec<String> = INTENSITIES
         .iter()
         .enumerate()
-        .map(|(k, (i, [x, y, z]))| {
-            format!(
-                "kind = \"point\"\ngroup = \"g{k}\"\nposition = [{x}, {y}, {z}]\nintensity = [{i:e}, {i:e}, {i:e}]"
-            )
-        })
+        .map(|(k, (i, p))| point_light_toml(*p, *i, Some(&format!("g{k}"))))
         .collect();
     let scene = Scene::from_toml(
         &plane_scene("intensities", &text.join("\n[[lights]]\n")),
@@ -96,13 +94,13 @@ pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList), String> {
 /// Closed form of light `k` of [`INTENSITIES`]: `(a/pi) I cos / d^2`, with I as stored.
 pub fn intensity_reference(scene: &Scene, k: usize, w: usize, h: usize) -> Vec<DVec3> {
     let (i, p) = INTENSITIES[k];
-    let l = Vec3::from(p).as_dvec3();
-    let i = i as f32 as f64;
-    plane_reference(scene, w, h, |x| {
-        let d = l - x;
-        let d2 = d.length_squared();
-        PLANE_ALBEDO / std::f64::consts::PI * i * (d.y / d2.sqrt()) / d2
-    })
+    // The scene stores I as f32: compare against that value.
+    plane_reference(
+        scene,
+        w,
+        h,
+        point_radiance(Vec3::from(p).as_dvec3(), i as f32 as f64),
+    )
 }
 
 /// A near-mirror (alpha 1e-7: pdf peak ~1e13) and a 1e-6 sphere light (light pdf
