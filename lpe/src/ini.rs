@@ -83,13 +83,7 @@ impl Config {
                 defined.push((line, name.to_string()));
                 continue;
             }
-            let category = [
-                LobeCategory::Diffuse,
-                LobeCategory::Specular,
-                LobeCategory::User,
-            ]
-            .into_iter()
-            .find(|c| {
+            let category = LobeCategory::ALL.into_iter().find(|c| {
                 rest.strip_prefix(c.ini_name())
                     .is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
             });

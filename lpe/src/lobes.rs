@@ -21,6 +21,13 @@ pub enum LobeCategory {
 }
 
 impl LobeCategory {
+    /// Every category, in declaration order (`c as usize` indexes this).
+    pub const ALL: [LobeCategory; 3] = [
+        LobeCategory::Diffuse,
+        LobeCategory::Specular,
+        LobeCategory::User,
+    ];
+
     /// The event kind of this category.
     pub fn kind(self) -> EventKind {
         match self {
@@ -84,23 +91,17 @@ const DEFAULTS: &[(LobeCategory, u8, &[&str])] = &[
     ),
 ];
 
-/// Named lobe -> LPE lobe, per category.
+/// Named lobe -> LPE lobe, per category (indexed by `LobeCategory as usize`, so a
+/// lookup borrows the name instead of building a `(category, String)` key).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct LobeMap {
-    map: BTreeMap<(CategoryKey, String), u8>,
-}
-
-/// `LobeCategory` as an orderable map key.
-type CategoryKey = u8;
-
-fn key(c: LobeCategory) -> CategoryKey {
-    c as u8
+    maps: [BTreeMap<String, u8>; 3],
 }
 
 impl Default for LobeMap {
     fn default() -> Self {
         let mut m = LobeMap {
-            map: BTreeMap::new(),
+            maps: Default::default(),
         };
         for (cat, lobe, names) in DEFAULTS {
             m.assign(*cat, *lobe, names.iter().copied())
@@ -113,11 +114,7 @@ impl Default for LobeMap {
 impl LobeMap {
     /// The event of a named lobe: its mapped lobe, or lobe 1 of the category.
     pub fn event(&self, category: LobeCategory, name: &str) -> Event {
-        let lobe = self
-            .map
-            .get(&(key(category), name.to_string()))
-            .copied()
-            .unwrap_or(1);
+        let lobe = self.maps[category as usize].get(name).copied().unwrap_or(1);
         Event::new(category.kind(), lobe).expect("map holds only in-range lobes")
     }
 
@@ -138,8 +135,9 @@ impl LobeMap {
                 kind.max_lobe()
             ));
         }
+        let map = &mut self.maps[category as usize];
         for n in names {
-            self.map.insert((key(category), n.to_string()), lobe);
+            map.insert(n.to_string(), lobe);
         }
         Ok(())
     }
@@ -164,6 +162,26 @@ mod tests {
 
     fn ev(kind: EventKind, lobe: u8) -> Event {
         Event::new(kind, lobe).unwrap()
+    }
+
+    #[test]
+    fn categories_index_their_own_map() {
+        for (i, c) in LobeCategory::ALL.into_iter().enumerate() {
+            assert_eq!(c as usize, i);
+        }
+        // The same name in two categories maps independently.
+        let mut m = LobeMap::default();
+        m.assign(LobeCategory::Diffuse, 3, ["Shared"]).unwrap();
+        m.assign(LobeCategory::Specular, 5, ["Shared"]).unwrap();
+        assert_eq!(
+            m.event(LobeCategory::Diffuse, "Shared"),
+            ev(EventKind::D, 3)
+        );
+        assert_eq!(
+            m.event(LobeCategory::Specular, "Shared"),
+            ev(EventKind::S, 5)
+        );
+        assert_eq!(m.event(LobeCategory::User, "Shared"), ev(EventKind::U, 1));
     }
 
     #[test]
