@@ -1,0 +1,350 @@
+//! What a compiled set says about its own states: `is_dead(s)` promises that no
+//! continuation of the path can match any AOV, and a renderer stops tracking the path on
+//! it. A state flagged dead too early silently drops contributions; a DFA state that is
+//! dead but not flagged only costs time, yet the DFA is minimized, so it has exactly one
+//! dead state and should say so.
+//!
+//! Checked on every stepping mode: the DFA (default options), the bitset NFA
+//! (`dfa_budget: 0`) on small sets, and the bitset NFA on sets of more than 64 positions,
+//! whose state spans several 64-bit words.
+//!
+//! Two independent checks per set:
+//! - exact: every state reachable from the start (over one vertex per class, in any
+//!   order) is explored, the states that can reach a non-empty `matches` are found by a
+//!   backward search, and `is_dead` must agree with that (soundness on every mode,
+//!   completeness on the DFA);
+//! - against the reference matcher: once a path prefix is dead, neither the path nor any
+//!   splice of that prefix with the tail of another path matches any AOV.
+
+use std::cell::Cell;
+use std::collections::{HashMap, VecDeque};
+
+use lpe::ast::{Atom, EventPos, Expr, Item, LabelPos, Triple, TypePos};
+use lpe::strategy::{self, LABELS};
+use lpe::aov::Options;
+use lpe::{parse, AovSet, Class, Event, EventKind, Lpe, Path, State, Vertex, VertexType};
+use proptest::prelude::*;
+use proptest::test_runner::TestCaseError;
+
+/// Every constructible kind of vertex: the camera, and lights, emissive objects and R/T
+/// vertices of every event, each with no label, each pool label, and an unmentioned one.
+fn vertex_pool() -> Vec<Vertex> {
+    let labels: Vec<Option<&str>> = std::iter::once(None)
+        .chain(LABELS.iter().map(|l| Some(*l)))
+        .chain(std::iter::once(Some("zz")))
+        .collect();
+    let mut pool = vec![Vertex::camera()];
+    for l in &labels {
+        pool.push(Vertex::light(*l));
+        pool.push(Vertex::emissive(*l));
+        for ty in [VertexType::R, VertexType::T] {
+            for e in Event::all() {
+                pool.push(Vertex::scatter(ty, e, *l));
+            }
+        }
+    }
+    pool
+}
+
+/// One class per distinct answer of `classify` over the pool. A set may have classes no
+/// constructible vertex falls in (a labelled camera, which `Vertex` cannot build), so
+/// this can be fewer than `class_count()`.
+fn letters(set: &AovSet, pool: &[Vertex]) -> Vec<Class> {
+    let mut out: Vec<Class> = pool.iter().map(|v| set.classify(v)).collect();
+    out.sort();
+    out.dedup();
+    out
+}
+
+/// The states reachable from the start over `letters` and, for each, whether it can
+/// still reach a state whose `matches` is not empty. `None` past `cap` states.
+fn reachable_and_live(
+    set: &AovSet,
+    letters: &[Class],
+    cap: usize,
+) -> Option<(Vec<State>, Vec<bool>)> {
+    let mut index: HashMap<State, usize> = HashMap::new();
+    let mut states = vec![set.start()];
+    index.insert(set.start(), 0);
+    let mut preds: Vec<Vec<usize>> = vec![Vec::new()];
+    let mut head = 0;
+    while head < states.len() {
+        let s = states[head];
+        for &c in letters {
+            let t = set.step_class(s, c);
+            let j = match index.get(&t) {
+                Some(&j) => j,
+                None => {
+                    if states.len() == cap {
+                        return None;
+                    }
+                    states.push(t);
+                    preds.push(Vec::new());
+                    index.insert(t, states.len() - 1);
+                    states.len() - 1
+                }
+            };
+            preds[j].push(head);
+        }
+        head += 1;
+    }
+    let mut live: Vec<bool> = states.iter().map(|&s| !set.matches(s).is_empty()).collect();
+    let mut queue: VecDeque<usize> = (0..states.len()).filter(|&i| live[i]).collect();
+    while let Some(j) = queue.pop_front() {
+        for &i in &preds[j] {
+            if !live[i] {
+                live[i] = true;
+                queue.push_back(i);
+            }
+        }
+    }
+    Some((states, live))
+}
+
+#[derive(Default)]
+struct Stats {
+    explored: Cell<u32>,
+    complete_checked: Cell<u32>,
+    dead_seen: Cell<u32>,
+    live_seen: Cell<u32>,
+    wide: Cell<u32>,
+    dead_prefixes: Cell<u32>,
+}
+
+fn bump(c: &Cell<u32>) {
+    c.set(c.get() + 1);
+}
+
+/// Exact soundness (and completeness when `complete`) of `is_dead` over every reachable
+/// state, when there are at most `cap` of them.
+fn check_exact(
+    set: &AovSet,
+    pool: &[Vertex],
+    complete: bool,
+    cap: usize,
+    what: &str,
+    stats: &Stats,
+) -> Result<(), TestCaseError> {
+    let letters = letters(set, pool);
+    let Some((states, live)) = reachable_and_live(set, &letters, cap) else {
+        return Ok(());
+    };
+    bump(&stats.explored);
+    // Completeness needs every class: a state may live only through a class that no
+    // constructible vertex reaches.
+    let every_class = letters.len() == set.class_count();
+    if complete && every_class {
+        bump(&stats.complete_checked);
+    }
+    for (s, &l) in states.iter().zip(&live) {
+        let dead = set.is_dead(*s);
+        if dead {
+            bump(&stats.dead_seen);
+            prop_assert!(
+                !l,
+                "{}: a state flagged dead reaches a match ({} reachable states)",
+                what,
+                states.len()
+            );
+            prop_assert!(set.matches(*s).is_empty(), "{}: a dead state matches", what);
+        } else {
+            bump(&stats.live_seen);
+            if complete && every_class {
+                prop_assert!(
+                    l,
+                    "{}: a DFA state not flagged dead reaches no match ({} states)",
+                    what,
+                    states.len()
+                );
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Once a prefix is dead, the reference matches no AOV on any path that extends it:
+/// the path itself and the prefix spliced with the tails of the other paths.
+fn check_paths(
+    set: &AovSet,
+    exprs: &[Lpe],
+    paths: &[Path],
+    what: &str,
+    stats: &Stats,
+) -> Result<(), TestCaseError> {
+    for p in paths {
+        let vs = p.vertices();
+        let mut s = set.start();
+        for k in 0..vs.len() {
+            s = set.step(s, &vs[k]);
+            if !set.is_dead(s) {
+                continue;
+            }
+            bump(&stats.dead_prefixes);
+            let prefix = &vs[..=k];
+            let mut extensions = vec![p.clone()];
+            for q in paths {
+                let tail = &q.vertices()[1..];
+                for cut in 0..tail.len() {
+                    let v: Vec<Vertex> = prefix.iter().chain(&tail[cut..]).cloned().collect();
+                    if let Ok(e) = Path::new(v) {
+                        extensions.push(e);
+                    }
+                }
+            }
+            for e in &extensions {
+                for (i, x) in exprs.iter().enumerate() {
+                    prop_assert!(
+                        !reference::is_match(x, e),
+                        "{}: dead after `{}` but AOV {} `{}` matches `{}`",
+                        what,
+                        Path::new(prefix.to_vec()).map_or("(prefix)".into(), |p| p.to_string()),
+                        i,
+                        x,
+                        e
+                    );
+                }
+            }
+            break;
+        }
+    }
+    Ok(())
+}
+
+/// `C e [<L.>O]`, so that a fair share of the random bodies can match paths.
+fn framed(e: Expr) -> Expr {
+    let emitter = Atom::Class {
+        negated: false,
+        items: vec![
+            Item::Triple(Triple {
+                ty: TypePos::One(VertexType::L),
+                event: EventPos::Any,
+                label: LabelPos::Any,
+            }),
+            Item::Type(VertexType::O),
+        ],
+    };
+    Expr::Concat(vec![
+        Expr::Atom(Atom::Item(Item::Type(VertexType::C))),
+        e,
+        Expr::Atom(emitter),
+    ])
+}
+
+fn expr_set(sizes: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = Vec<Lpe>> {
+    let one = (strategy::lpe(), any::<bool>()).prop_map(|(mut l, frame)| {
+        if frame {
+            l.expr = framed(l.expr);
+        }
+        l
+    });
+    prop::collection::vec(one, sizes)
+}
+
+/// An AOV of 66 positions that dies on the vertex after the camera unless that vertex
+/// is a `U12` lobe: placed first, it fills word 0 of an NFA state (and a little of word
+/// 1), so the drawn AOVs live in the higher words once it is dead.
+fn padding() -> Lpe {
+    let alts = vec!["<RU12>"; 64].join("|");
+    parse(&format!("C({alts})L")).unwrap()
+}
+
+fn named(exprs: &[Lpe]) -> Vec<(String, Lpe)> {
+    exprs
+        .iter()
+        .enumerate()
+        .map(|(i, e)| (format!("e{i}"), e.clone()))
+        .collect()
+}
+
+fn nfa_only() -> Options {
+    Options {
+        dfa_budget: 0,
+        ..Options::default()
+    }
+}
+
+#[test]
+fn dead_states_are_sound_and_dfa_dead_states_complete() {
+    let pool = vertex_pool();
+    let stats = Stats::default();
+    let mut runner = lpe_tests::runner(160);
+    let cases = runner.config().cases;
+    let strat = (
+        expr_set(1..=3),
+        prop::collection::vec(strategy::path(7), 6),
+    );
+    let skipped = Cell::new(0u32);
+    runner
+        .run(&strat, |(exprs, paths)| {
+            let mut wide_exprs = vec![padding()];
+            wide_exprs.extend(exprs.iter().cloned());
+            let modes = [
+                ("dfa", &exprs, Options::default()),
+                ("nfa", &exprs, nfa_only()),
+                ("wide nfa", &wide_exprs, nfa_only()),
+            ];
+            for (what, exprs, opts) in modes {
+                let Ok(set) = AovSet::compile_with(&named(exprs), &opts) else {
+                    // Over the documented size limits: counted below.
+                    bump(&skipped);
+                    continue;
+                };
+                let is_dfa = what == "dfa";
+                prop_assert_eq!(set.uses_dfa(), is_dfa, "{}", what);
+                if what == "wide nfa" {
+                    prop_assert!(set.nfa_positions() > 64, "{}", set.nfa_positions());
+                    bump(&stats.wide);
+                }
+                check_exact(&set, &pool, is_dfa, 20_000, what, &stats)?;
+                check_paths(&set, exprs, &paths, what, &stats)?;
+            }
+            Ok(())
+        })
+        .unwrap();
+    let get = |c: &Cell<u32>| c.get();
+    eprintln!(
+        "dead states: {} sets explored, {} DFA sets checked for completeness, {} dead and {} \
+         live states, {} wide NFA sets, {} dead path prefixes, {} compiles skipped",
+        get(&stats.explored),
+        get(&stats.complete_checked),
+        get(&stats.dead_seen),
+        get(&stats.live_seen),
+        get(&stats.wide),
+        get(&stats.dead_prefixes),
+        skipped.get()
+    );
+    // The exact checks must have run on most sets, not been skipped over the caps.
+    assert!(get(&stats.explored) * 10 >= cases * 3 * 8, "{}", get(&stats.explored));
+    assert!(get(&stats.complete_checked) * 2 >= cases, "{}", get(&stats.complete_checked));
+    assert!(get(&stats.wide) * 10 >= cases * 9, "{}", get(&stats.wide));
+    assert!(get(&stats.dead_prefixes) >= cases, "{}", get(&stats.dead_prefixes));
+    assert!(get(&stats.dead_seen) > 0 && get(&stats.live_seen) > 0);
+    assert!(skipped.get() * 20 <= cases, "{}", skipped.get());
+}
+
+/// A hand-built wide NFA: after `C RD1` only positions past bit 64 are active, the set
+/// is alive (`C RD1 L'key'` matches), and a wrong light group kills it. The DFA of the
+/// same set walks alike.
+#[test]
+fn a_wide_nfa_state_with_an_empty_first_word_is_alive() {
+    let exprs = [padding(), parse("C.*<L.'key'>").unwrap()];
+    let nfa = AovSet::compile_with(&named(&exprs), &nfa_only()).unwrap();
+    assert!(!nfa.uses_dfa());
+    assert!(nfa.nfa_positions() > 64, "{}", nfa.nfa_positions());
+    let dfa = AovSet::compile(&named(&exprs)).unwrap();
+    assert!(dfa.uses_dfa());
+    let rd1 = Vertex::scatter(VertexType::R, Event::new(EventKind::D, 1).unwrap(), None);
+    for set in [&nfa, &dfa] {
+        let c = set.step(set.start(), &Vertex::camera());
+        assert!(!set.is_dead(c));
+        let s = set.step(c, &rd1);
+        assert!(!set.is_dead(s), "the second AOV is alive after `C RD1`");
+        let key = set.step(s, &Vertex::light(Some("key")));
+        assert_eq!(set.matches(key).iter().collect::<Vec<_>>(), [1]);
+        let fill = set.step(s, &Vertex::light(Some("fill")));
+        assert!(set.matches(fill).is_empty());
+        assert!(set.is_dead(fill), "an emitter ends every AOV of the set");
+        let unlabelled = set.step(c, &Vertex::light(None));
+        assert!(set.matches(unlabelled).is_empty() && set.is_dead(unlabelled));
+    }
+}
