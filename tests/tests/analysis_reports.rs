@@ -1,0 +1,124 @@
+//! Every field of the analysis reports, on cases built so that each one is non-empty,
+//! with the answers decided by hand: which AOVs overlap, which match outside the
+//! universe, whether there is a gap, how long the shortest witnesses are. Witnesses are
+//! re-checked with the reference matcher, so any shortest witness is accepted.
+
+use lpe::analysis::{self, default_universe};
+use lpe::{parse, AovSet, Lpe, Path};
+
+fn aovs(srcs: &[(&str, &str)]) -> Vec<(String, Lpe)> {
+    srcs.iter()
+        .map(|(n, s)| (n.to_string(), parse(s).unwrap_or_else(|e| panic!("{s}: {e}"))))
+        .collect()
+}
+
+fn m(l: &Lpe, p: &Path) -> bool {
+    reference::is_match(l, p)
+}
+
+#[test]
+fn partition_report_fills_every_field() {
+    let set = aovs(&[
+        // 0 and 1 overlap on `C RD L`.
+        ("directDiffuse", "C<RD>[<L.>O]"),
+        ("diffuseToLight", "C<RD>L"),
+        // Inside the universe, overlapping nothing.
+        ("specularToEmissive", "C<RS>.*O"),
+        // Outside: `.` in the universe is a D or S lobe, so a user lobe leaves it.
+        ("userLobe", "C<RU>L"),
+        // Partly inside (`C TD L`), partly outside (`C TD TU L`, the shortest).
+        ("mixed", "C<TD>(.|<TU>)*[<L.>O]"),
+    ]);
+    let universe = default_universe();
+    let p = analysis::partition(&set, &universe).unwrap();
+    assert!(!p.is_clean());
+
+    // Overlaps: exactly the pair (0, 1), with a shortest witness of 3 vertices.
+    let pairs: Vec<(usize, usize)> = p.overlaps.iter().map(|o| (o.0, o.1)).collect();
+    assert_eq!(pairs, [(0, 1)], "{p:?}");
+    let (i, j, w) = &p.overlaps[0];
+    assert_eq!(w.len(), 3, "{w}");
+    assert!(m(&universe, w) && m(&set[*i].1, w) && m(&set[*j].1, w), "{w}");
+
+    // Gap: `C L` or `C O` (no AOV goes from the camera straight to an emitter).
+    let gap = p.gap.as_ref().expect("a gap");
+    assert_eq!(gap.len(), 2, "{gap}");
+    assert!(m(&universe, gap), "{gap}");
+    for (name, l) in &set {
+        assert!(!m(l, gap), "{name} matches the gap {gap}");
+    }
+
+    // Outside: AOVs 3 and 4, in index order, with shortest witnesses of 3 and 4 vertices.
+    let outside: Vec<(usize, usize)> = p.outside.iter().map(|(i, w)| (*i, w.len())).collect();
+    assert_eq!(outside, [(3, 3), (4, 4)], "{p:?}");
+    for (i, w) in &p.outside {
+        assert!(!m(&universe, w), "{w} is in the universe");
+        assert!(m(&set[*i].1, w), "{} does not match {w}", set[*i].0);
+    }
+}
+
+#[test]
+fn partition_report_of_a_partition_is_empty() {
+    let set = aovs(&lpe::macros::BASIC);
+    let p = analysis::partition(&set, &default_universe()).unwrap();
+    assert!(p.overlaps.is_empty() && p.gap.is_none() && p.outside.is_empty());
+    assert!(p.is_clean());
+    // A narrower universe: every AOV but `directDiffuse` now matches outside it.
+    let narrow = parse("C<RD>[<L.>O]").unwrap();
+    let p = analysis::partition(&set, &narrow).unwrap();
+    assert!(p.overlaps.is_empty() && p.gap.is_none(), "{p:?}");
+    let outside: Vec<usize> = p.outside.iter().map(|o| o.0).collect();
+    assert_eq!(outside, [1, 2, 3, 4, 5, 6]);
+}
+
+#[test]
+fn comparison_reports_both_sides() {
+    let lpe = |s: &str| parse(s).unwrap();
+    // Neither includes the other: each side has a shortest witness of 4 vertices.
+    let (a, b) = (lpe("C<RD>.*L"), lpe("C.*<RD>L"));
+    let c = analysis::compare(&a, &b).unwrap();
+    assert!(!c.equivalent());
+    let first = c.first_only.as_ref().expect("first_only");
+    let second = c.second_only.as_ref().expect("second_only");
+    assert_eq!((first.len(), second.len()), (4, 4), "{first} / {second}");
+    assert!(m(&a, first) && !m(&b, first), "{first}");
+    assert!(!m(&a, second) && m(&b, second), "{second}");
+
+    // Strict inclusion, both ways round: only the larger side has a witness.
+    let (small, large) = (lpe("C<RD>L"), lpe("C.L"));
+    let c = analysis::compare(&small, &large).unwrap();
+    assert_eq!(c.first_only, None);
+    let w = c.second_only.expect("second_only");
+    assert_eq!(w.len(), 3, "{w}");
+    assert!(!m(&small, &w) && m(&large, &w), "{w}");
+    let c = analysis::compare(&large, &small).unwrap();
+    assert_eq!(c.second_only, None);
+    let w = c.first_only.expect("first_only");
+    assert!(m(&large, &w) && !m(&small, &w), "{w}");
+
+    // Equivalent, written differently.
+    let c = analysis::compare(&lpe("C(<RD>|<RS>)L"), &lpe("C[<RD><RS>]L")).unwrap();
+    assert!(c.equivalent());
+    assert_eq!((c.first_only, c.second_only), (None, None));
+}
+
+#[test]
+fn emptiness_warnings_name_the_aov() {
+    let set = aovs(&[
+        ("fine", "C.*L"),
+        ("cameraOnly", "C.*"),
+        ("alsoFine", "C<RD>O"),
+        ("lightInTheMiddle", "CL<RD>L"),
+    ]);
+    let s = AovSet::compile(&set).unwrap();
+    let w: Vec<(usize, &str)> = s
+        .warnings()
+        .iter()
+        .map(|w| (w.aov, w.name.as_str()))
+        .collect();
+    assert_eq!(w, [(1, "cameraOnly"), (3, "lightInTheMiddle")]);
+    for w in s.warnings() {
+        assert!(!w.message.is_empty());
+        assert!(w.to_string().contains(&w.name), "{w}");
+    }
+}
