@@ -1,9 +1,9 @@
 //! AOV sets: many expressions compiled into one automaton, stepped once per vertex.
 //!
 //! [`AovSet::compile`] builds, for a list of `(name, expression)` pairs:
-//! 1. the compressed alphabet ([`crate::alphabet`]): vertices grouped into [`Class`]es;
-//! 2. one bitset Glushkov NFA holding every AOV's positions (module `nfa`);
-//! 3. a minimized dense DFA over it (module `dfa`), unless that would exceed
+//! 1. the compressed alphabet (module `automata::alphabet`): vertices grouped into [`Class`]es;
+//! 2. one bitset Glushkov NFA holding every AOV's positions (module `automata::nfa`);
+//! 3. a minimized dense DFA over it (module `automata::dfa`), unless that would exceed
 //!    [`Options::dfa_budget`]; then the set steps the NFA instead. Both give the same
 //!    answers (the `fast` and `nfa` engines of the differential harness check that).
 //!
@@ -41,76 +41,14 @@
 
 use std::fmt;
 
-use crate::alphabet::Alphabet;
-pub use crate::alphabet::Class;
-use crate::analysis::{self, Warning};
+use crate::analysis::emptiness::{self, Warning};
 use crate::ast::Atom;
-use crate::bits;
-use crate::dfa::Dfa;
-use crate::nfa::{Builder, Nfa, Parts};
+use crate::automata::alphabet::Alphabet;
+use crate::automata::dfa::Dfa;
+use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
+use crate::automata::nfa::{Builder, Nfa, Parts};
 use crate::path::{Path, Vertex};
 use crate::Lpe;
-
-/// Most AOVs one set holds (the width of [`AovMask`]).
-pub const MAX_AOVS: usize = 256;
-const MASK_WORDS: usize = MAX_AOVS / 64;
-
-/// Which AOVs of a set match: bit `i` is the set's `i`-th AOV.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct AovMask([u64; MASK_WORDS]);
-
-impl AovMask {
-    /// No AOV.
-    pub const EMPTY: AovMask = AovMask([0; MASK_WORDS]);
-
-    /// Whether AOV `i` matches (false for `i >= MAX_AOVS`).
-    #[inline]
-    pub fn contains(&self, i: usize) -> bool {
-        i < MAX_AOVS && bits::get(&self.0, i)
-    }
-
-    /// Adds AOV `i` (ignored for `i >= MAX_AOVS`).
-    pub fn insert(&mut self, i: usize) {
-        if i < MAX_AOVS {
-            bits::set(&mut self.0, i);
-        }
-    }
-
-    /// No AOV matches.
-    #[inline]
-    pub fn is_empty(&self) -> bool {
-        self.0.iter().all(|&w| w == 0)
-    }
-
-    /// How many AOVs match.
-    #[inline]
-    pub fn count(&self) -> usize {
-        self.0.iter().map(|w| w.count_ones() as usize).sum()
-    }
-
-    /// The matching AOVs, in increasing order.
-    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
-        bits::ones(self.0)
-    }
-}
-
-impl FromIterator<usize> for AovMask {
-    /// The mask of these AOV indices (indices `>= MAX_AOVS` are ignored).
-    fn from_iter<I: IntoIterator<Item = usize>>(iter: I) -> AovMask {
-        let mut m = AovMask::EMPTY;
-        iter.into_iter().for_each(|i| m.insert(i));
-        m
-    }
-}
-
-/// Widest NFA state a [`State`] holds inline: sets stepped on the NFA (their DFA is over
-/// budget) may have at most `64 * NFA_STATE_WORDS` positions.
-pub const NFA_STATE_WORDS: usize = 4;
-
-/// Where a path is in the automaton: a DFA state id, or the active NFA positions. Small,
-/// `Copy`, and only meaningful for the set that produced it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct State([u64; NFA_STATE_WORDS]);
 
 /// Compile-time knobs.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -216,7 +154,7 @@ impl AovSet {
         }
         let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
         let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
-        let warnings = analysis::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
+        let warnings = emptiness::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
         let nfa_positions = nfa.positions;
         Ok(AovSet {
             names,
@@ -400,19 +338,14 @@ impl AovSet {
     }
 }
 
-impl State {
-    #[inline]
-    fn id(id: u32) -> State {
-        let mut s = [0u64; NFA_STATE_WORDS];
-        s[0] = u64::from(id);
-        State(s)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::parse;
+
+    fn lpe(s: &str) -> Lpe {
+        parse(s).unwrap()
+    }
 
     fn set(srcs: &[&str], opts: &Options) -> AovSet {
         let aovs: Vec<(String, Lpe)> = srcs
@@ -436,14 +369,31 @@ mod tests {
     }
 
     #[test]
-    fn mask_holds_more_than_64_aovs() {
-        let mut m = AovMask::EMPTY;
-        m.insert(3);
-        m.insert(200);
-        m.insert(MAX_AOVS);
-        assert!(m.contains(200) && m.contains(3) && !m.contains(4));
-        assert_eq!(m.iter().collect::<Vec<_>>(), [3, 200]);
-        assert_eq!(m.count(), 2);
+    fn emptiness_warning_for_camera_star() {
+        let set = AovSet::compile(&[("c".into(), lpe("C.*")), ("ok".into(), lpe("C.*L"))]).unwrap();
+        let w = set.warnings();
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert_eq!(w[0].aov, 0);
+        assert!(
+            w[0].message.contains("never reaches an emitter"),
+            "{}",
+            w[0]
+        );
+    }
+
+    #[test]
+    fn emptiness_reasons() {
+        let cases = [
+            ("C<CD>L", "matches no vertex"),
+            ("RDL", "other than the camera"),
+            ("CLRDL", "in the middle"),
+        ];
+        for (src, needle) in cases {
+            let set = AovSet::compile(&[("x".into(), lpe(src))]).unwrap();
+            let w = set.warnings();
+            assert_eq!(w.len(), 1, "{src}: {w:?}");
+            assert!(w[0].message.contains(needle), "{src}: {}", w[0]);
+        }
     }
 
     #[test]

@@ -32,7 +32,7 @@
 //! vertex at a time; a step never allocates:
 //!
 //! ```
-//! use lpe::aov::{AovSet, Class};
+//! use lpe::{AovSet, Class};
 //! use lpe::{parse, Event, EventKind, Lpe, Vertex, VertexType};
 //!
 //! // Scene load: compile the AOVs, classify every material lobe once.
@@ -81,17 +81,15 @@
 
 #![warn(missing_docs)]
 
-pub mod alphabet;
 pub mod analysis;
 pub mod aov;
 pub mod ast;
+pub mod automata;
 mod bits;
-mod dfa;
 pub mod fxhash;
 pub mod ini;
 pub mod lobes;
 pub mod macros;
-mod nfa;
 pub mod path;
 pub mod prefix;
 pub mod syntax;
@@ -101,8 +99,9 @@ pub mod generate;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 
-pub use aov::{AovMask, AovSet, Class, State};
+pub use aov::{AovSet, CompileError, Options};
 pub use ast::{Expr, Lpe};
+pub use automata::mask::{AovMask, Class, State, MAX_AOVS};
 pub use ini::Config;
 pub use lobes::{LobeCategory, LobeMap};
 pub use path::{Event, EventKind, Path, PathError, Vertex, VertexType};

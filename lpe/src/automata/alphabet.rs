@@ -18,21 +18,9 @@
 use crate::fxhash::FxMap;
 
 use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
+use crate::automata::mask::Class;
 use crate::bits;
 use crate::path::{Event, Vertex, VertexType};
-
-/// An equivalence class of vertices: no compiled atom tells two vertices of one class
-/// apart. Obtained from [`crate::aov::AovSet::classify`]; only meaningful for the set
-/// that produced it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Class(pub(crate) u32);
-
-impl Class {
-    /// The class number, `0..class_count`.
-    pub fn index(self) -> usize {
-        self.0 as usize
-    }
-}
 
 /// Number of `(type, event)` combinations: C, L, O, then R and T with 24 events each.
 pub(crate) const TYPE_EVENTS: usize = 3 + 2 * EVENTS;

@@ -22,9 +22,9 @@
 
 use crate::fxhash::FxMap;
 
-use crate::alphabet::Alphabet;
-use crate::aov::AovMask;
 use crate::ast::{Atom, Expr, Repetition};
+use crate::automata::alphabet::Alphabet;
+use crate::automata::mask::AovMask;
 use crate::bits::{self, set};
 
 /// What the Glushkov construction computes for one subexpression.
@@ -447,7 +447,6 @@ impl Nfa {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::aov::Options;
     use crate::parse;
 
     /// SplitMix64: `crate::generate::Rng` exists only with the test-generation features.
@@ -461,6 +460,10 @@ mod tests {
             z ^ (z >> 31)
         }
     }
+
+    /// `Options::default().nfa_budget`, spelled out so that the automata need not see
+    /// the facade.
+    const DEFAULT_NFA_BUDGET: usize = 16 << 20;
 
     /// The NFA of `srcs` with the given table budget, and its class count.
     fn nfa(srcs: &[&str], table_budget: usize) -> (Nfa, usize) {
@@ -491,7 +494,7 @@ mod tests {
         ];
         let mut rng = Rng(7);
         for srcs in sets {
-            let (tabled, classes) = nfa(srcs, Options::default().nfa_budget);
+            let (tabled, classes) = nfa(srcs, DEFAULT_NFA_BUDGET);
             let (rows_only, _) = nfa(srcs, 0);
             assert!(tabled.has_step_tables(), "{srcs:?}");
             assert!(!rows_only.has_step_tables(), "{srcs:?}");
