@@ -85,8 +85,26 @@ impl Default for Options {
 pub enum CompileError {
     /// More than [`MAX_AOVS`] expressions.
     TooManyAovs(usize),
-    /// The automaton exceeds a limit; the message says which and how to get under it.
-    TooLarge(String),
+    /// The NFA's follow sets alone (one row per position: `positions^2 / 8` bytes) would
+    /// exceed [`Options::nfa_budget`].
+    NfaOverBudget {
+        /// NFA positions the set unrolls to, the start included.
+        positions: u64,
+        /// Bytes the follow sets would take; `None` when that overflows `u64`.
+        bytes: Option<u64>,
+        /// [`Options::nfa_budget`].
+        budget: usize,
+    },
+    /// The DFA exceeds [`Options::dfa_budget`], and the NFA has more positions than a
+    /// [`State`] holds, so the set cannot step the NFA instead either.
+    TooManyPositions {
+        /// NFA positions, the start included.
+        positions: usize,
+        /// Most positions a stepping state holds (`64 * NFA_STATE_WORDS`).
+        max: usize,
+        /// [`Options::dfa_budget`].
+        dfa_budget: usize,
+    },
 }
 
 impl fmt::Display for CompileError {
@@ -98,7 +116,33 @@ impl fmt::Display for CompileError {
                     "{n} AOVs in one set, over the limit of {MAX_AOVS}: split the set"
                 )
             }
-            CompileError::TooLarge(why) => f.write_str(why),
+            CompileError::NfaOverBudget {
+                positions,
+                bytes,
+                budget,
+            } => {
+                let need = bytes.map_or("more than 2^64 bytes".into(), |b| {
+                    format!("{} MiB", b >> 20)
+                });
+                write!(
+                    f,
+                    "the set unrolls to {positions} NFA positions; its follow sets would need \
+                     {need}, over the NFA budget of {} MiB (lower the repetition counts, \
+                     or set `max_path_len` so long bounded repeats compile as unbounded)",
+                    budget >> 20
+                )
+            }
+            CompileError::TooManyPositions {
+                positions,
+                max,
+                dfa_budget,
+            } => write!(
+                f,
+                "the set's DFA exceeds the budget of {} MiB and its NFA has {positions} \
+                 positions, more than the {max} a stepping state holds: raise `dfa_budget`, \
+                 or split the set",
+                dfa_budget >> 20
+            ),
         }
     }
 }
@@ -144,13 +188,11 @@ impl AovSet {
             None
         };
         if dfa.is_none() && nfa.words() > NFA_STATE_WORDS {
-            return Err(CompileError::TooLarge(format!(
-                "the set's DFA exceeds the budget of {} MiB and its NFA has {} positions, \
-                 more than the {} a stepping state holds: raise `dfa_budget`, or split the set",
-                opts.dfa_budget >> 20,
-                nfa.positions,
-                64 * NFA_STATE_WORDS
-            )));
+            return Err(CompileError::TooManyPositions {
+                positions: nfa.positions,
+                max: 64 * NFA_STATE_WORDS,
+                dfa_budget: opts.dfa_budget,
+            });
         }
         let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
         let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
@@ -180,13 +222,11 @@ impl AovSet {
             .checked_mul(positions.div_ceil(64))
             .and_then(|r| r.checked_mul(8));
         if rows.is_none_or(|r| r > opts.nfa_budget as u64) {
-            return Err(CompileError::TooLarge(format!(
-                "the set unrolls to {positions} NFA positions; its follow sets would need {} \
-                 MiB, over the NFA budget of {} MiB (lower the repetition counts, or set \
-                 `max_path_len` so long bounded repeats compile as unbounded)",
-                rows.map_or("more than 2^64 bytes".into(), |t| (t >> 20).to_string()),
-                opts.nfa_budget >> 20
-            )));
+            return Err(CompileError::NfaOverBudget {
+                positions,
+                bytes: rows,
+                budget: opts.nfa_budget,
+            });
         }
         let mut builder = Builder::new(opts.max_path_len);
         let mut parts = Parts {
@@ -517,6 +557,24 @@ mod tests {
         let e = parse("C(.{256}){200}L").unwrap();
         let err = AovSet::compile(&[("big".into(), e)]).unwrap_err();
         assert!(err.to_string().contains("NFA budget"), "{err}");
+        assert!(
+            matches!(err, CompileError::NfaOverBudget { positions, bytes: Some(b), budget }
+                if positions > 50_000 && b > budget as u64 && budget == 16 << 20),
+            "{err:?}"
+        );
+        // 303 positions (the start included) are five words, one more than a stepping
+        // state holds: without a DFA the set cannot step.
+        let e = parse("C(.{100}){3}L").unwrap();
+        let err = AovSet::compile_with(&[("wide".into(), e)], &nfa_only()).unwrap_err();
+        assert_eq!(
+            err,
+            CompileError::TooManyPositions {
+                positions: 303,
+                max: 256,
+                dfa_budget: 0
+            }
+        );
+        assert!(err.to_string().contains("raise `dfa_budget`"), "{err}");
         let many: Vec<(String, Lpe)> = (0..=MAX_AOVS)
             .map(|i| (i.to_string(), parse("CL").unwrap()))
             .collect();
