@@ -92,6 +92,7 @@ pub mod lobes;
 pub mod macros;
 pub mod path;
 pub mod prefix;
+pub mod rng;
 pub mod syntax;
 
 #[cfg(any(feature = "arbitrary", feature = "proptest"))]

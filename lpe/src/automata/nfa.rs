@@ -448,18 +448,7 @@ impl Nfa {
 mod tests {
     use super::*;
     use crate::parse;
-
-    /// SplitMix64: `crate::generate::Rng` exists only with the test-generation features.
-    struct Rng(u64);
-
-    impl Rng {
-        fn next_u64(&mut self) -> u64 {
-            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let z = (self.0 ^ (self.0 >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            let z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^ (z >> 31)
-        }
-    }
+    use crate::rng::SplitMix64;
 
     /// `Options::default().nfa_budget`, spelled out so that the automata need not see
     /// the facade.
@@ -492,7 +481,7 @@ mod tests {
             &["C(.{100}){3}L", "C<RD'a'>*<TS'b'>L"],
             &["CR<CD>L", "C<L.'a'>", "C(U|S2)+O"],
         ];
-        let mut rng = Rng(7);
+        let mut rng = SplitMix64::new(7);
         for srcs in sets {
             let (tabled, classes) = nfa(srcs, DEFAULT_NFA_BUDGET);
             let (rows_only, _) = nfa(srcs, 0);
