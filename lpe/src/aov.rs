@@ -438,7 +438,7 @@ mod tests {
 
     #[test]
     fn hand_checked_paths() {
-        // Expected answers worked out from DESIGN.md §3 by hand.
+        // Expected answers worked out by hand from the spec (docs/language.md).
         let cases = [
             ("C<RD>[<L.>O]", "C RD2 L", true),
             ("C<RD>[<L.>O]", "C TD2 L", false),

@@ -1,4 +1,4 @@
-//! Named material lobes to LPE lobes (DESIGN.md §2, "Lobe map").
+//! Named material lobes to LPE lobes (docs/language.md, lobes).
 //!
 //! Materials name their lobes (`Diffuse`, `Clearcoat`, `Albedo`…); a [`LobeMap`] turns a
 //! named lobe of a given [`LobeCategory`] into the [`Event`] a vertex records. Names not

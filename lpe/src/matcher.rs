@@ -6,7 +6,7 @@
 //! [`PathMatcher::start`] (before any vertex, the camera included), steps it one vertex
 //! at a time ([`PathMatcher::step`]), asks at every emitter which AOVs match
 //! ([`PathMatcher::matches`]) and stops tracking a path once no AOV can match any
-//! continuation ([`PathMatcher::is_dead`]). [`AovSet`](crate::AovSet) implements it
+//! continuation ([`PathMatcher::is_dead`]). [`AovSet`] implements it
 //! with one table step per vertex; whole-path engines implement it with a state that
 //! records the classes and answer at the emitter.
 //!

@@ -11,7 +11,7 @@
 //! exact (OSL does the same with a per-state default transition).
 //!
 //! Each distinct atom of the compiled set is evaluated once on every raw symbol (with the
-//! predicate code in this module, written from DESIGN.md §3 and the table in
+//! predicate code in this module, written from docs/language.md and the table in
 //! [`crate::ast`]); raw symbols with the same answers from every atom form one [`Class`].
 //! `Alphabet::classify` is then arithmetic plus one label lookup plus one table load.
 
@@ -357,7 +357,7 @@ impl Alphabet {
     }
 }
 
-// --- The predicates: one atom against one raw symbol (DESIGN.md §3). ---
+// --- The predicates: one atom against one raw symbol (docs/language.md, atoms). ---
 
 /// `.` at the top level: R or T with a D or S event.
 fn dot(s: &Sym) -> bool {
