@@ -8,7 +8,12 @@ use lpe::{parse, AovSet, Lpe, Path};
 
 fn aovs(srcs: &[(&str, &str)]) -> Vec<(String, Lpe)> {
     srcs.iter()
-        .map(|(n, s)| (n.to_string(), parse(s).unwrap_or_else(|e| panic!("{s}: {e}"))))
+        .map(|(n, s)| {
+            (
+                n.to_string(),
+                parse(s).unwrap_or_else(|e| panic!("{s}: {e}")),
+            )
+        })
         .collect()
 }
 
@@ -38,7 +43,10 @@ fn partition_report_fills_every_field() {
     assert_eq!(pairs, [(0, 1)], "{p:?}");
     let (i, j, w) = &p.overlaps[0];
     assert_eq!(w.len(), 3, "{w}");
-    assert!(m(&universe, w) && m(&set[*i].1, w) && m(&set[*j].1, w), "{w}");
+    assert!(
+        m(&universe, w) && m(&set[*i].1, w) && m(&set[*j].1, w),
+        "{w}"
+    );
 
     // Gap: `C L` or `C O` (no AOV goes from the camera straight to an emitter).
     let gap = p.gap.as_ref().expect("a gap");
