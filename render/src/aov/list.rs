@@ -130,6 +130,22 @@ impl AovList {
         Ok(list)
     }
 
+    /// The AOV list for a render: the defaults, plus for the furnace the per-bounce AOVs
+    /// `furnace_bounceK = C<RD>{K}O`.
+    pub fn for_render(scene: &Scene, parser: &Parser) -> Result<AovList, String> {
+        let mut list = AovList::defaults(scene, parser)?;
+        if crate::verify::known::furnace_params(scene).is_some() {
+            for k in 0..=crate::verify::known::FURNACE_BOUNCES {
+                list.push(
+                    &format!("furnace_bounce{k}"),
+                    &format!("C<RD>{{{k}}}O"),
+                    parser,
+                )?;
+            }
+        }
+        Ok(list)
+    }
+
     /// The default AOVs for `scene` and the partitions they form.
     pub fn defaults(scene: &Scene, parser: &Parser) -> Result<AovList, String> {
         let mut list = AovList::basic(parser)?;

@@ -47,16 +47,19 @@ use lpe::{LobeCategory, LobeMap, Vertex, VertexType};
 use rayon::prelude::*;
 use std::time::Instant;
 
-use crate::aovs::{AovFlags, AovList};
+use crate::aov::matcher::{AovMask, PathMatcher};
+use crate::aov::plan::Plan;
+use crate::aov::{AovFlags, AovList};
 use crate::camera::Camera;
 use crate::film::{Accumulation, Film};
 use crate::geometry::{error_bound, Hit, Ray};
-use crate::matcher::{AovMask, PathMatcher};
 use crate::material::Material;
-use crate::plan::Plan;
 use crate::rng::Rng;
+
+mod dispatch;
 use crate::sampling::{max_component, power_heuristic, Frame};
 use crate::scene::Scene;
+pub use dispatch::{render, render_announcing, render_with, ENGINE};
 
 /// Which strategies estimate direct lighting (issue 6 compares them).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]

@@ -10,51 +10,52 @@
 //! to 0 at a bias floor) and the efficiency `1 / (MSE x time)`.
 
 use glam::DVec3;
-use lpe::{LobeMap, Parser};
+use lpe::LobeMap;
 use serde::Serialize;
 use std::path::Path;
 
-use crate::aovs::AovList;
-use crate::camera::Camera;
+use super::known::{cornell, furnace, point_over_plane, sphere_over_plane, Known, SPHERE};
+use crate::aov::matcher::{CheckEngine, Reference, WholePathMatcher};
+use crate::aov::AovList;
 use crate::film::{Accumulation, Film};
 use crate::integrator::{Render, Settings, Technique};
-use crate::matcher::{CheckEngine, Reference, WholePathMatcher};
 use crate::scene::Scene;
 
-/// The LPE engines `converge` can time. Each renders the same image (same paths, same
-/// AOV masks); only the cost differs. A new engine is one arm in [`Engine::render`] and
-/// one entry in [`Engine::ALL`].
+/// The matchers `converge` times, one row group each, named as the engine registry
+/// names them (`lpe-check --engine`). Each renders the same image (same paths, same AOV
+/// masks); only the cost differs. A new matcher is one arm in [`MatcherRow::render`] and
+/// one entry in [`MatcherRow::ALL`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-pub enum Engine {
-    /// The fast matcher's DFA (`lpe::aov::AovSet`), as renders use it (the default).
-    FastDfa,
+pub enum MatcherRow {
+    /// The fast matcher (`lpe::AovSet`) with its DFA, as renders use it (the default).
+    Fast,
     /// The fast matcher with its DFA budget at 0: the bitset NFA stepped per vertex.
-    BitsetNfa,
-    /// The regex-automata oracle of `lpe-check` (lazy DFA over the encoded path), run on
-    /// every emitter reached.
+    Nfa,
+    /// The regex-automata oracle (lazy DFA over the encoded path), run on every emitter
+    /// reached.
     Oracle,
     /// `reference::is_match`, memoized per distinct vertex sequence.
     ReferenceMemo,
     /// `reference::is_match` on every emitter reached: the verification engine's cost.
-    ReferenceDirect,
+    Reference,
 }
 
-impl Engine {
-    pub const ALL: [Engine; 5] = [
-        Engine::FastDfa,
-        Engine::BitsetNfa,
-        Engine::Oracle,
-        Engine::ReferenceMemo,
-        Engine::ReferenceDirect,
+impl MatcherRow {
+    pub const ALL: [MatcherRow; 5] = [
+        MatcherRow::Fast,
+        MatcherRow::Nfa,
+        MatcherRow::Oracle,
+        MatcherRow::ReferenceMemo,
+        MatcherRow::Reference,
     ];
 
     pub fn name(self) -> &'static str {
         match self {
-            Engine::FastDfa => "fast-dfa",
-            Engine::BitsetNfa => "bitset-nfa",
-            Engine::Oracle => "oracle",
-            Engine::ReferenceMemo => "reference-memo",
-            Engine::ReferenceDirect => "reference-direct",
+            MatcherRow::Fast => "fast",
+            MatcherRow::Nfa => "nfa",
+            MatcherRow::Oracle => "oracle",
+            MatcherRow::ReferenceMemo => "reference-memo",
+            MatcherRow::Reference => "reference",
         }
     }
 
@@ -73,26 +74,26 @@ impl Engine {
             };
             lpe::aov::AovSet::compile_with(&aovs.named(), &opts).map_err(|e| e.to_string())
         };
-        use crate::app::render_with;
-        let quiet = &mut |_: &crate::plan::Plan| {};
+        use crate::integrator::render_with;
+        let quiet = &mut |_: &crate::aov::plan::Plan| {};
         match self {
-            Engine::FastDfa => {
+            MatcherRow::Fast => {
                 let set = fast(lpe::aov::Options::default().dfa_budget)?;
                 render_with(&set, scene, aovs, lobes, settings, quiet)
             }
-            Engine::BitsetNfa => render_with(&fast(0)?, scene, aovs, lobes, settings, quiet),
-            Engine::Oracle => {
+            MatcherRow::Nfa => render_with(&fast(0)?, scene, aovs, lobes, settings, quiet),
+            MatcherRow::Oracle => {
                 let m = WholePathMatcher::direct(CheckEngine::new(
                     &oracle::regex_oracle::ORACLE,
                     &lpes,
                 )?);
                 render_with(&m, scene, aovs, lobes, settings, quiet)
             }
-            Engine::ReferenceMemo => {
+            MatcherRow::ReferenceMemo => {
                 let m = WholePathMatcher::memoized(Reference::new(&lpes)?);
                 render_with(&m, scene, aovs, lobes, settings, quiet)
             }
-            Engine::ReferenceDirect => {
+            MatcherRow::Reference => {
                 let m = WholePathMatcher::direct(Reference::new(&lpes)?);
                 render_with(&m, scene, aovs, lobes, settings, quiet)
             }
@@ -109,7 +110,7 @@ pub struct Variant {
     /// Clamp at this multiple of the reference's mean beauty (None: the scene's own).
     pub clamp: Option<f64>,
     pub accumulation: Accumulation,
-    pub engine: Engine,
+    pub engine: MatcherRow,
 }
 
 impl Variant {
@@ -120,7 +121,7 @@ impl Variant {
             russian_roulette: true,
             clamp: None,
             accumulation: Accumulation::F64,
-            engine: Engine::FastDfa,
+            engine: MatcherRow::Fast,
         }
     }
 
@@ -151,7 +152,7 @@ impl Variant {
                 ..Variant::base(&format!("MIS, {} film", a.name()))
             });
         }
-        for e in Engine::ALL.into_iter().skip(1) {
+        for e in MatcherRow::ALL.into_iter().skip(1) {
             v.push(Variant {
                 engine: e,
                 ..Variant::base(&format!("MIS, {}", e.name()))
@@ -159,287 +160,6 @@ impl Variant {
         }
         v
     }
-}
-
-/// A scene with a reference value for every pixel of beauty and of each AOV.
-pub struct Known {
-    pub scene: Scene,
-    pub aovs: AovList,
-    pub width: usize,
-    pub height: usize,
-    /// `reference[layer][pixel]`, layer 0 beauty, `1 + i` AOV `i`, pixels row-major.
-    pub reference: Vec<Vec<DVec3>>,
-    /// How the reference was obtained (for the table).
-    pub source: String,
-}
-
-/// Albedo of the plane in the plane scenes.
-pub const PLANE_ALBEDO: f64 = 0.5;
-
-/// The plane scenes: a large diffuse quad at y = 0 seen from above, lit by one light
-/// that stays out of frame, so beauty is exactly the direct diffuse term `C<RD>L`.
-pub fn plane_scene(name: &str, light: &str) -> String {
-    format!(
-        r#"name = "{name}"
-[camera]
-position = [0.0, 4.0, 4.0]
-look_at = [0.0, 0.0, 0.0]
-fov = 40.0
-[materials.floor]
-lobes = [{{ name = "Diffuse", model = "lambert", albedo = [{a}, {a}, {a}] }}]
-[[objects]]
-material = "floor"
-quad = {{ corner = [-50.0, 0.0, 50.0], u = [100.0, 0.0, 0.0], v = [0.0, 0.0, -100.0] }}
-[[lights]]
-{light}
-"#,
-        a = PLANE_ALBEDO
-    )
-}
-
-/// Point light: `L = (a / pi) I cos / d^2` (Lambert BRDF times irradiance).
-pub const POINT: ([f32; 3], f64) = ([1.5, 2.0, -0.5], 10.0);
-/// Sphere light: center, radius, radiance. Fully above the plane's horizon, it gives
-/// irradiance `pi Le (R/d)^2 cos`, so `L = a Le (R/d)^2 cos`.
-pub const SPHERE: ([f32; 3], f64, f64) = ([3.5, 1.5, -1.0], 0.5, 8.0);
-
-/// Sub-pixel grid for averaging closed forms over a pixel's footprint (the renderer
-/// jitters within the pixel, so the pixel's expectation is that average). 16 x 16
-/// midpoints: relative quadrature error ~1e-6 here, far below the noise of any step.
-const FOOTPRINT: usize = 16;
-
-/// Closed form over each pixel's footprint for a plane scene; `radiance(x)` is the
-/// outgoing radiance at plane point `x` (y = 0).
-pub fn plane_reference(
-    scene: &Scene,
-    width: usize,
-    height: usize,
-    radiance: impl Fn(DVec3) -> f64,
-) -> Vec<DVec3> {
-    let c = &scene.camera;
-    let cam = Camera::new(
-        c.position,
-        c.look_at,
-        c.up,
-        c.fov,
-        width as f32 / height as f32,
-    );
-    let mut out = Vec::with_capacity(width * height);
-    for y in 0..height {
-        for x in 0..width {
-            let mut sum = 0.0;
-            for j in 0..FOOTPRINT {
-                for i in 0..FOOTPRINT {
-                    let sx = (x as f64 + (i as f64 + 0.5) / FOOTPRINT as f64) / width as f64;
-                    let sy = (y as f64 + (j as f64 + 0.5) / FOOTPRINT as f64) / height as f64;
-                    let ray = cam.ray(sx as f32, sy as f32);
-                    let (o, d) = (ray.o.as_dvec3(), ray.d.as_dvec3());
-                    if d.y < 0.0 {
-                        let p = o + d * (-o.y / d.y);
-                        if p.x.abs() <= 50.0 && p.z.abs() <= 50.0 {
-                            sum += radiance(p);
-                        }
-                    }
-                }
-            }
-            out.push(DVec3::splat(sum / (FOOTPRINT * FOOTPRINT) as f64));
-        }
-    }
-    out
-}
-
-fn load(text: &str, name: &str, lobes: &LobeMap) -> Result<Scene, String> {
-    Scene::from_toml(text, name, lobes).map_err(|e| e.to_string())
-}
-
-/// `[[lights]]` body of a point light of intensity `i` (grey) at `p`.
-pub fn point_light_toml(p: [f32; 3], i: f64, group: Option<&str>) -> String {
-    let [x, y, z] = p;
-    let group = group.map_or(String::new(), |g| format!("group = \"{g}\"\n"));
-    format!(
-        "kind = \"point\"\n{group}position = [{x}, {y}, {z}]\nintensity = [{i:e}, {i:e}, {i:e}]"
-    )
-}
-
-/// Radiance leaving the plane point `x` lit by a point light of intensity `i` at `l`:
-/// `(a / pi) I cos / d^2`.
-pub fn point_radiance(l: DVec3, i: f64) -> impl Fn(DVec3) -> f64 {
-    move |x| {
-        let d = l - x;
-        let d2 = d.length_squared();
-        PLANE_ALBEDO / std::f64::consts::PI * i * (d.y / d2.sqrt()) / d2
-    }
-}
-
-/// The point light over the plane.
-pub fn point_over_plane(width: usize, height: usize, lobes: &LobeMap) -> Result<Known, String> {
-    let (p, i) = POINT;
-    let text = plane_scene("point-over-plane", &point_light_toml(p, i, None));
-    let scene = load(&text, "point-over-plane", lobes)?;
-    let l = glam::Vec3::from(p).as_dvec3();
-    let reference = plane_reference(&scene, width, height, point_radiance(l, i));
-    direct_known(
-        scene,
-        width,
-        height,
-        reference,
-        "closed form (a/pi) I cos/d^2",
-    )
-}
-
-/// The sphere light over the plane, radius `radius` and radiance scaled so its power
-/// equals that of [`SPHERE`] (the hard-case tests shrink it to 1e-6).
-pub fn sphere_over_plane(
-    width: usize,
-    height: usize,
-    radius: f64,
-    lobes: &LobeMap,
-) -> Result<Known, String> {
-    let ([cx, cy, cz], r0, le0) = SPHERE;
-    let le = le0 * (r0 / radius).powi(2);
-    let text = plane_scene(
-        "sphere-over-plane",
-        &format!(
-            "kind = \"sphere\"\ncenter = [{cx}, {cy}, {cz}]\nradius = {radius:e}\nradiance = [{le:e}, {le:e}, {le:e}]"
-        ),
-    );
-    let scene = load(&text, "sphere-over-plane", lobes)?;
-    let c = DVec3::new(cx as f64, cy as f64, cz as f64);
-    // The radiance actually stored is f32: use it, so the test measures the estimator.
-    let (r, le) = match scene.lights[0].kind {
-        crate::light::LightKind::Sphere {
-            radius, radiance, ..
-        } => (radius as f64, radiance.x as f64),
-        _ => unreachable!("the scene text declares a sphere light"),
-    };
-    let reference = plane_reference(&scene, width, height, |x| {
-        let d = c - x;
-        let d2 = d.length_squared();
-        PLANE_ALBEDO * le * (r * r / d2) * (d.y / d2.sqrt())
-    });
-    direct_known(
-        scene,
-        width,
-        height,
-        reference,
-        "closed form a Le (R/d)^2 cos",
-    )
-}
-
-/// Beauty and `direct = C<RD>L` share the plane scenes' reference.
-fn direct_known(
-    scene: Scene,
-    width: usize,
-    height: usize,
-    reference: Vec<DVec3>,
-    source: &str,
-) -> Result<Known, String> {
-    let mut aovs = AovList::default();
-    aovs.push("direct", "C<RD>L", &Parser::default())?;
-    Ok(Known {
-        scene,
-        aovs,
-        width,
-        height,
-        reference: vec![reference.clone(), reference],
-        source: source.into(),
-    })
-}
-
-/// Bounce AOVs of the furnace in the table.
-const FURNACE_BOUNCES: u32 = 3;
-
-/// The furnace: beauty `Le/(1-a)`, `C<RD>{k}O` = `Le a^k`, at every pixel.
-pub fn furnace(width: usize, height: usize, lobes: &LobeMap) -> Result<Known, String> {
-    let scene = Scene::load("furnace", lobes).map_err(|e| e.to_string())?;
-    let (a, le) = crate::app::furnace_params(&scene).ok_or("furnace: unexpected scene")?;
-    let mut aovs = AovList::default();
-    let mut reference = vec![vec![DVec3::splat(le / (1.0 - a)); width * height]];
-    for k in 0..=FURNACE_BOUNCES {
-        aovs.push(
-            &format!("bounce{k}"),
-            &format!("C<RD>{{{k}}}O"),
-            &Parser::default(),
-        )?;
-        reference.push(vec![DVec3::splat(le * a.powi(k as i32)); width * height]);
-    }
-    Ok(Known {
-        scene,
-        aovs,
-        width,
-        height,
-        reference,
-        source: "closed form Le/(1-a), Le a^k".into(),
-    })
-}
-
-/// `cornell` with the seven basic AOVs against an MIS render at `ref_spp` with its own
-/// seed, cached in `cache_dir` (the file names its size, spp and seed, so a cache never
-/// stands in for another reference).
-pub fn cornell(
-    width: usize,
-    height: usize,
-    ref_spp: u32,
-    cache_dir: &Path,
-    lobes: &LobeMap,
-) -> Result<Known, String> {
-    let scene = Scene::load("cornell", lobes).map_err(|e| e.to_string())?;
-    let parser = Parser::default();
-    let aovs = AovList::basic(&parser)?;
-    const REF_SEED: u64 = 0x5EED_CAFE;
-    let file = cache_dir.join(format!(
-        "converge_ref_cornell_{width}x{height}_{ref_spp}spp_{REF_SEED:x}.bin"
-    ));
-    let layers = 1 + aovs.aovs.len();
-    let reference = match read_cache(&file, width * height * layers) {
-        Some(flat) => flat,
-        None => {
-            let settings = Settings {
-                width,
-                height,
-                spp: ref_spp,
-                seed: REF_SEED,
-                ..Settings::default()
-            };
-            let r = Engine::FastDfa.render(&scene, &aovs, lobes, &settings)?;
-            let flat: Vec<DVec3> = (0..layers).flat_map(|l| r.film.layer(l)).collect();
-            write_cache(&file, &flat)?;
-            flat
-        }
-    };
-    Ok(Known {
-        scene,
-        aovs,
-        width,
-        height,
-        reference: reference
-            .chunks(width * height)
-            .map(<[_]>::to_vec)
-            .collect(),
-        source: format!("MIS render at {ref_spp} spp, cached in {}", file.display()),
-    })
-}
-
-fn read_cache(file: &Path, n: usize) -> Option<Vec<DVec3>> {
-    let bytes = std::fs::read(file).ok()?;
-    if bytes.len() != n * 24 {
-        return None;
-    }
-    let f = |i: usize| f64::from_le_bytes(bytes[i * 8..i * 8 + 8].try_into().expect("8 bytes"));
-    Some(
-        (0..n)
-            .map(|i| DVec3::new(f(3 * i), f(3 * i + 1), f(3 * i + 2)))
-            .collect(),
-    )
-}
-
-fn write_cache(file: &Path, data: &[DVec3]) -> Result<(), String> {
-    let bytes: Vec<u8> = data
-        .iter()
-        .flat_map(|v| v.to_array())
-        .flat_map(f64::to_le_bytes)
-        .collect();
-    crate::output::atomic_write(file, &bytes).map_err(|e| format!("{}: {e}", file.display()))
 }
 
 /// Error of one layer of a film against a reference.
@@ -581,7 +301,7 @@ pub fn run_variant(
             .aovs
             .partitions
             .first()
-            .map(|p| crate::check::partition(&r.film, &known.aovs, p).measured);
+            .map(|p| crate::verify::invariants::partition(&r.film, &known.aovs, p).measured);
         for (layer, reference) in known.reference.iter().enumerate() {
             let e = layer_error(&r.film, layer, reference);
             out.push(Point {
@@ -743,7 +463,7 @@ pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcom
     // pixel (the stress set's scene), basic AOVs against beauty for both films.
     let mixed_spp = cfg.mixed_spp;
     let t0 = std::time::Instant::now();
-    let (errors, _) = crate::stress::mixed_partition(mixed_spp, &lobes)?;
+    let (errors, _) = crate::verify::stress::mixed_partition(mixed_spp, &lobes)?;
     log(&format!(
         "{mixed_spp} mixed samples, every film: {:.1}s",
         t0.elapsed().as_secs_f64()
@@ -782,13 +502,13 @@ pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcom
         serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?,
     )?;
     // Error against time, beauty, one panel per scene.
-    let panels: Vec<crate::plot::Panel> = scenes
+    let panels: Vec<crate::verify::plot::Panel> = scenes
         .iter()
-        .map(|(k, _)| crate::plot::Panel {
+        .map(|(k, _)| crate::verify::plot::Panel {
             title: format!("{} (beauty)", k.scene.name),
             lines: Variant::all()
                 .iter()
-                .map(|v| crate::plot::Line {
+                .map(|v| crate::verify::plot::Line {
                     label: v.name.clone(),
                     points: points
                         .iter()
@@ -801,7 +521,8 @@ pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcom
                 .collect(),
         })
         .collect();
-    let plot_text = crate::plot::write(out, "converge", &panels, "render time (s)", "relMSE")?;
+    let plot_text =
+        crate::verify::plot::write(out, "converge", &panels, "render time (s)", "relMSE")?;
     files.push(out.join("converge.png"));
     files.push(out.join("converge.svg"));
     Ok(Outcome {

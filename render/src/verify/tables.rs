@@ -1,0 +1,1 @@
+//! Markdown tables (placeholder, filled by the table writer).
