@@ -2,7 +2,17 @@
 
 use lpe::{LobeMap, Parser};
 
-use crate::aov::AovList;
+use crate::aov::{AovError, AovList};
+use crate::integrator::RenderError;
+
+/// Why the bench could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum BenchError {
+    #[error(transparent)]
+    Aov(#[from] AovError),
+    #[error(transparent)]
+    Render(#[from] RenderError),
+}
 use crate::integrator::{render, Settings};
 use crate::scene::Scene;
 
@@ -25,7 +35,7 @@ pub fn bench(
     parser: &Parser,
     settings: &Settings,
     rounds: usize,
-) -> Result<Bench, String> {
+) -> Result<Bench, BenchError> {
     let mut aovs = AovList::defaults(scene, parser)?;
     // Pad with distinct, plausible AOVs up to 32.
     let extra = [

@@ -22,6 +22,18 @@ use std::sync::{Mutex, RwLock};
 /// matcher's own types, shared so engines hand masks over without converting.
 pub use lpe::aov::{AovMask, MAX_AOVS};
 
+/// Why a whole-path matcher could not be built.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum MatcherError {
+    #[error("at most {max} AOVs, got {count}")]
+    TooMany { count: usize, max: usize },
+    #[error("{engine}: {reason}")]
+    Engine {
+        engine: &'static str,
+        reason: String,
+    },
+}
+
 /// An LPE engine as the integrator uses it. AOV `i` is the `i`-th expression the
 /// matcher was built from.
 pub trait PathMatcher: Sync {
@@ -125,7 +137,7 @@ pub struct Reference(Vec<Lpe>);
 
 impl Reference {
     /// The reference engine for these expressions (at most [`MAX_AOVS`]).
-    pub fn new(aovs: &[Lpe]) -> Result<Reference, String> {
+    pub fn new(aovs: &[Lpe]) -> Result<Reference, MatcherError> {
         check_count(aovs)?;
         Ok(Reference(aovs.to_vec()))
     }
@@ -139,9 +151,12 @@ impl WholePath for Reference {
     }
 }
 
-fn check_count(aovs: &[Lpe]) -> Result<(), String> {
+fn check_count(aovs: &[Lpe]) -> Result<(), MatcherError> {
     match aovs.len() {
-        n if n > MAX_AOVS => Err(format!("at most {MAX_AOVS} AOVs, got {n}")),
+        n if n > MAX_AOVS => Err(MatcherError::TooMany {
+            count: n,
+            max: MAX_AOVS,
+        }),
         _ => Ok(()),
     }
 }
@@ -161,11 +176,12 @@ impl CheckEngine {
     pub fn new(
         engine: &'static dyn oracle::engine::Engine,
         aovs: &[Lpe],
-    ) -> Result<CheckEngine, String> {
+    ) -> Result<CheckEngine, MatcherError> {
         check_count(aovs)?;
-        let first = engine
-            .compile(aovs)
-            .map_err(|e| format!("{}: {e}", engine.name()))?;
+        let first = engine.compile(aovs).map_err(|e| MatcherError::Engine {
+            engine: engine.name(),
+            reason: e.to_string(),
+        })?;
         let mut compiled: Vec<_> = (0..SLOTS).map(|_| Mutex::new(None)).collect();
         compiled[0] = Mutex::new(Some(first));
         Ok(CheckEngine {

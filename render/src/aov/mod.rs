@@ -6,5 +6,6 @@ pub mod matcher;
 pub mod plan;
 
 pub use list::{
-    parse_display_channels, split_aov_arg, Aov, AovFlags, AovList, DisplayChannels, Partition,
+    parse_display_channels, split_aov_arg, Aov, AovError, AovFlags, AovList, DisplayChannels,
+    DisplayProblem, Partition,
 };

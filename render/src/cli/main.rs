@@ -15,7 +15,7 @@ mod converge;
 mod render;
 mod stress;
 
-use args::{parse_res, positive_u32, positive_usize, InputError};
+use args::{parse_res, positive_u32, positive_usize};
 
 #[derive(Parser)]
 #[command(
@@ -127,7 +127,7 @@ fn main() -> ExitCode {
     match result {
         Ok(true) => ExitCode::SUCCESS,
         Ok(false) => ExitCode::from(1),
-        Err(InputError(e)) => {
+        Err(e) => {
             eprintln!("error: {e}");
             ExitCode::from(2)
         }

@@ -16,9 +16,14 @@ fn load_config(ini: Option<&PathBuf>) -> Result<lpe::Config, InputError> {
     let Some(path) = ini else {
         return Ok(lpe::Config::default());
     };
-    let text = std::fs::read_to_string(path)
-        .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
-    lpe::Config::from_ini(&text).map_err(|e| InputError(format!("{}:{e}", path.display())))
+    let text = std::fs::read_to_string(path).map_err(|source| InputError::Read {
+        path: path.clone(),
+        source,
+    })?;
+    lpe::Config::from_ini(&text).map_err(|source| InputError::Ini {
+        path: path.clone(),
+        source,
+    })
 }
 
 pub fn print_invariants(list: &[Invariant]) -> bool {
@@ -51,15 +56,20 @@ pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
 
     let mut aovs = AovList::default();
     if let Some(path) = &args.display {
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
+        let text = std::fs::read_to_string(path).map_err(|source| InputError::Read {
+            path: path.clone(),
+            source,
+        })?;
         let read = parse_display_channels(&text, &path.display().to_string())?;
         for w in read.warnings {
             eprintln!("warning: {w}");
         }
         for (name, source) in read.channels {
             aovs.push(&name, &source, &parser)
-                .map_err(|e| InputError(format!("{}: {e}", path.display())))?;
+                .map_err(|source| InputError::DisplayAov {
+                    path: path.clone(),
+                    source,
+                })?;
         }
     }
     for arg in &args.aovs {
@@ -80,13 +90,12 @@ pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
     // than abort on allocation.
     let film_bytes = (args.res.0 * args.res.1) as u128 * (1 + aovs.aovs.len()) as u128 * 24;
     if film_bytes > 8 << 30 {
-        return Err(InputError(format!(
-            "{}x{} with {} AOVs needs {:.1} GiB of film; at most 8 GiB",
-            args.res.0,
-            args.res.1,
-            aovs.aovs.len(),
-            film_bytes as f64 / (1u64 << 30) as f64
-        )));
+        return Err(InputError::FilmTooLarge {
+            width: args.res.0,
+            height: args.res.1,
+            aovs: aovs.aovs.len(),
+            bytes: film_bytes,
+        });
     }
     let settings = Settings {
         width: args.res.0,

@@ -2,7 +2,7 @@
 
 use lpe::LobeMap;
 
-use super::{Integrator, Render, Settings};
+use super::{Integrator, Render, RenderError, Settings};
 use crate::aov::matcher::{PathMatcher, Reference, ReferenceMatcher};
 use crate::aov::AovList;
 use crate::scene::Scene;
@@ -17,7 +17,7 @@ pub fn render(
     aovs: &AovList,
     lobes: &LobeMap,
     settings: &Settings,
-) -> Result<Render, String> {
+) -> Result<Render, RenderError> {
     render_announcing(scene, aovs, lobes, settings, &mut |_| {})
 }
 
@@ -29,7 +29,7 @@ pub fn render_announcing(
     lobes: &LobeMap,
     settings: &Settings,
     on_plan: &mut dyn FnMut(&crate::aov::plan::Plan),
-) -> Result<Render, String> {
+) -> Result<Render, RenderError> {
     match lpe::aov::AovSet::compile(&aovs.named()) {
         Ok(set) => render_with(&set, scene, aovs, lobes, settings, on_plan),
         Err(e) => {
@@ -50,7 +50,7 @@ pub fn render_with<M: PathMatcher>(
     lobes: &LobeMap,
     settings: &Settings,
     on_plan: &mut dyn FnMut(&crate::aov::plan::Plan),
-) -> Result<Render, String> {
+) -> Result<Render, RenderError> {
     let integrator = Integrator::new(scene, aovs, matcher, lobes, settings);
     on_plan(&integrator.plan());
     integrator.render()

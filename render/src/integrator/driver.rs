@@ -6,14 +6,14 @@ use rayon::prelude::*;
 use std::time::Instant;
 
 use super::contributions::Tally;
-use super::{Integrator, Render};
+use super::{Integrator, Render, RenderError};
 use crate::aov::matcher::PathMatcher;
 use crate::film::{Film, SampleValues};
 use crate::rng::Rng;
 
 impl<M: PathMatcher> Integrator<'_, M> {
     /// Renders the whole image; rows in parallel, each pixel's samples in order.
-    pub fn render(&self) -> Result<Render, String> {
+    pub fn render(&self) -> Result<Render, RenderError> {
         let s = self.settings;
         let (w, h) = (s.width, s.height);
         let n = self.weighting.len();
@@ -22,7 +22,7 @@ impl<M: PathMatcher> Integrator<'_, M> {
         if let Some(t) = s.threads {
             builder = builder.num_threads(t);
         }
-        let pool = builder.build().map_err(|e| format!("thread pool: {e}"))?;
+        let pool = builder.build()?;
         let bar = if s.progress {
             ProgressBar::new(h as u64).with_style(
                 ProgressStyle::with_template(

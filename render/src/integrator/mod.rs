@@ -43,7 +43,7 @@
 
 use lpe::LobeMap;
 
-use crate::aov::matcher::PathMatcher;
+use crate::aov::matcher::{MatcherError, PathMatcher};
 use crate::aov::plan::Plan;
 use crate::aov::AovList;
 use crate::camera::Camera;
@@ -57,6 +57,18 @@ mod estimator;
 
 use contributions::Vertices;
 pub use dispatch::{render, render_announcing, render_with, ENGINE};
+
+/// Why a render could not run.
+#[derive(Debug, thiserror::Error)]
+pub enum RenderError {
+    #[error("thread pool: {0}")]
+    ThreadPool(#[from] rayon::ThreadPoolBuildError),
+    #[error(transparent)]
+    Matcher(#[from] MatcherError),
+    /// The fast matcher refused the AOV set (only where no fallback is wanted).
+    #[error("the fast matcher cannot compile this AOV set: {reason}")]
+    Compile { reason: String },
+}
 
 /// Which strategies estimate direct lighting (issue 6 compares them).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]

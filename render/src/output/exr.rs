@@ -8,12 +8,12 @@ use exr::prelude::{
 use std::io::Cursor;
 use std::path::Path;
 
-use super::layer_names;
+use super::{layer_names, OutputError};
 use crate::aov::AovList;
 use crate::film::Film;
 
 /// The EXR file as bytes: 32-bit float channels, ZIP-compressed (lossless).
-pub fn exr_bytes(film: &Film, aovs: &AovList) -> Result<Vec<u8>, String> {
+pub fn exr_bytes(film: &Film, aovs: &AovList) -> Result<Vec<u8>, OutputError> {
     let size = Vec2(film.width, film.height);
     let mut channels = Vec::new();
     for (layer, name) in layer_names(aovs).into_iter().enumerate() {
@@ -34,10 +34,7 @@ pub fn exr_bytes(film: &Film, aovs: &AovList) -> Result<Vec<u8>, String> {
         AnyChannels::sort(SmallVec::from_vec(channels)),
     );
     let mut buf = Cursor::new(Vec::new());
-    Image::from_layer(layer)
-        .write()
-        .to_buffered(&mut buf)
-        .map_err(|e| format!("encoding EXR: {e}"))?;
+    Image::from_layer(layer).write().to_buffered(&mut buf)?;
     Ok(buf.into_inner())
 }
 
@@ -53,9 +50,11 @@ pub struct ExrLayer {
 }
 
 /// Reads an EXR written by [`exr_bytes`] (or any RGB EXR with `NAME.R` layers) back.
-pub fn read_exr(path: &Path) -> Result<Vec<ExrLayer>, String> {
-    let image =
-        read_all_flat_layers_from_file(path).map_err(|e| format!("{}: {e}", path.display()))?;
+pub fn read_exr(path: &Path) -> Result<Vec<ExrLayer>, OutputError> {
+    let image = read_all_flat_layers_from_file(path).map_err(|e| OutputError::Read {
+        path: path.to_path_buf(),
+        source: e,
+    })?;
     let mut layers: Vec<ExrLayer> = Vec::new();
     for part in &image.layer_data {
         let (w, h) = (part.size.0, part.size.1);

@@ -9,6 +9,44 @@ use std::path::{Path, PathBuf};
 use crate::aov::AovList;
 use crate::film::Film;
 
+/// Why an output could not be written (or read back).
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    #[error("writing {}: {source}", path.display())]
+    Write {
+        path: PathBuf,
+        source: std::io::Error,
+    },
+    #[error("reading {}: {source}", path.display())]
+    Read {
+        path: PathBuf,
+        source: ::exr::error::Error,
+    },
+    #[error("encoding EXR: {0}")]
+    Exr(#[from] ::exr::error::Error),
+    #[error("encoding PNG: {0}")]
+    Png(#[from] image::ImageError),
+    #[error("report JSON: {0}")]
+    Json(#[from] serde_json::Error),
+    #[error("plot {}: {reason}", file.display())]
+    Plot { file: PathBuf, reason: String },
+}
+
+impl OutputError {
+    /// An I/O error writing `path`.
+    pub fn write(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError + '_ {
+        move |source| OutputError::Write {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
+}
+
+/// Writes `bytes` to `path` atomically, naming the file in the error.
+pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+    atomic_write(path, bytes).map_err(OutputError::write(path))
+}
+
 mod exr;
 mod png;
 mod report;
@@ -47,11 +85,10 @@ pub fn write_all(
     film: &Film,
     aovs: &AovList,
     report: &mut Report,
-) -> Result<Vec<PathBuf>, String> {
-    let io = |p: &Path, e: std::io::Error| format!("writing {}: {e}", p.display());
+) -> Result<Vec<PathBuf>, OutputError> {
     let mut files = Vec::new();
     let exr = dir.join(format!("{}.exr", report.scene));
-    atomic_write(&exr, &exr_bytes(film, aovs)?).map_err(|e| io(&exr, e))?;
+    write_file(&exr, &exr_bytes(film, aovs)?)?;
     files.push(exr);
     let tonemap = Tonemap::from_beauty(film);
     let images: Vec<RgbImage> = (0..film.layers).map(|l| tonemap.image(film, l)).collect();
@@ -59,11 +96,11 @@ pub fn write_all(
         let p = dir
             .join("png")
             .join(format!("{}.png", name.unwrap_or("beauty")));
-        atomic_write(&p, &png_bytes(img)?).map_err(|e| io(&p, e))?;
+        write_file(&p, &png_bytes(img)?)?;
         files.push(p);
     }
     let sheet = dir.join("contact_sheet.png");
-    atomic_write(&sheet, &png_bytes(&contact_sheet(&images))?).map_err(|e| io(&sheet, e))?;
+    write_file(&sheet, &png_bytes(&contact_sheet(&images))?)?;
     files.push(sheet);
     let md = dir.join("report.md");
     let json = dir.join("report.json");
@@ -76,9 +113,9 @@ pub fn write_all(
         .into_iter()
         .map(|n| n.unwrap_or("beauty").to_string())
         .collect();
-    atomic_write(&md, report.markdown().as_bytes()).map_err(|e| io(&md, e))?;
-    let j = serde_json::to_string_pretty(report).map_err(|e| format!("report JSON: {e}"))?;
-    atomic_write(&json, j.as_bytes()).map_err(|e| io(&json, e))?;
+    write_file(&md, report.markdown().as_bytes())?;
+    let j = serde_json::to_string_pretty(report)?;
+    write_file(&json, j.as_bytes())?;
     files.push(md);
     files.push(json);
     Ok(files)

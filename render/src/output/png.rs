@@ -4,6 +4,7 @@ use glam::DVec3;
 use image::{ImageFormat, Rgb, RgbImage};
 use std::io::Cursor;
 
+use super::OutputError;
 use crate::film::Film;
 
 /// Display transform shared by all previews: one exposure (from beauty) for every layer
@@ -50,10 +51,9 @@ impl Tonemap {
     }
 }
 
-pub fn png_bytes(img: &RgbImage) -> Result<Vec<u8>, String> {
+pub fn png_bytes(img: &RgbImage) -> Result<Vec<u8>, OutputError> {
     let mut buf = Cursor::new(Vec::new());
-    img.write_to(&mut buf, ImageFormat::Png)
-        .map_err(|e| format!("encoding PNG: {e}"))?;
+    img.write_to(&mut buf, ImageFormat::Png)?;
     Ok(buf.into_inner())
 }
 

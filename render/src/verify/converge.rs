@@ -9,6 +9,7 @@
 //! the fitted log-log slope of MSE against spp (-1 for an unbiased estimator, flattening
 //! to 0 at a bias floor) and the efficiency `1 / (MSE x time)`.
 
+use super::VerifyError;
 use glam::DVec3;
 use lpe::LobeMap;
 use serde::Serialize;
@@ -18,7 +19,8 @@ use super::known::{cornell, furnace, point_over_plane, sphere_over_plane, Known,
 use crate::aov::matcher::{CheckEngine, Reference, WholePathMatcher};
 use crate::aov::AovList;
 use crate::film::{Accumulation, Film};
-use crate::integrator::{Render, Settings, Technique};
+use crate::integrator::{Render, RenderError, Settings, Technique};
+use crate::output::OutputError;
 use crate::scene::Scene;
 
 /// The matchers `converge` times, one row group each, named as the engine registry
@@ -65,14 +67,16 @@ impl MatcherRow {
         aovs: &AovList,
         lobes: &LobeMap,
         settings: &Settings,
-    ) -> Result<Render, String> {
+    ) -> Result<Render, RenderError> {
         let lpes = aovs.lpes();
         let fast = |dfa_budget| {
             let opts = lpe::aov::Options {
                 dfa_budget,
                 ..lpe::aov::Options::default()
             };
-            lpe::aov::AovSet::compile_with(&aovs.named(), &opts).map_err(|e| e.to_string())
+            lpe::aov::AovSet::compile_with(&aovs.named(), &opts).map_err(|e| RenderError::Compile {
+                reason: e.to_string(),
+            })
         };
         use crate::integrator::render_with;
         let quiet = &mut |_: &crate::aov::plan::Plan| {};
@@ -270,7 +274,7 @@ pub fn run_variant(
     max_spp: u32,
     cfg: &Config,
     lobes: &LobeMap,
-) -> Result<Vec<Point>, String> {
+) -> Result<Vec<Point>, VerifyError> {
     let mut scene = known.scene.clone();
     if let Some(k) = variant.clamp {
         let mean = known.reference[0]
@@ -431,8 +435,8 @@ pub struct Outcome {
 
 /// `lpe-render converge`: every variant on every known scene, then CSV, Markdown and
 /// plots in `out`.
-pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcome, String> {
-    std::fs::create_dir_all(out).map_err(|e| format!("{}: {e}", out.display()))?;
+pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcome, VerifyError> {
+    std::fs::create_dir_all(out).map_err(OutputError::write(out))?;
     let lobes = LobeMap::default();
     let (pr, cr) = (cfg.plane_res, cfg.cornell_res);
     log("references: closed forms, and cornell from the cache or a fresh render");
@@ -480,10 +484,9 @@ pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcom
         );
     }
     let mut files = Vec::new();
-    let mut write = |name: &str, text: String| -> Result<(), String> {
+    let mut write = |name: &str, text: String| -> Result<(), VerifyError> {
         let f = out.join(name);
-        crate::output::atomic_write(&f, text.as_bytes())
-            .map_err(|e| format!("{}: {e}", f.display()))?;
+        crate::output::write_file(&f, text.as_bytes())?;
         files.push(f);
         Ok(())
     };
@@ -499,7 +502,7 @@ pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcom
     write("converge.md", md)?;
     write(
         "converge.json",
-        serde_json::to_string_pretty(&summary).map_err(|e| e.to_string())?,
+        serde_json::to_string_pretty(&summary).map_err(OutputError::from)?,
     )?;
     // Error against time, beauty, one panel per scene.
     let panels: Vec<crate::verify::plot::Panel> = scenes

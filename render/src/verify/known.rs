@@ -3,6 +3,7 @@
 //! scene bodies are TOML files under `verify/scenes/`; only what varies (a light, a name)
 //! is added as text.
 
+use super::VerifyError;
 use glam::{DVec3, Vec3};
 use lpe::{LobeMap, Parser};
 use std::path::Path;
@@ -107,8 +108,8 @@ pub fn plane_reference(
     out
 }
 
-fn load(text: &str, name: &str, lobes: &LobeMap) -> Result<Scene, String> {
-    Scene::from_toml(text, name, lobes).map_err(|e| e.to_string())
+fn load(text: &str, name: &str, lobes: &LobeMap) -> Result<Scene, VerifyError> {
+    Ok(Scene::from_toml(text, name, lobes)?)
 }
 
 /// `[[lights]]` body of a point light of intensity `i` (grey) at `p`.
@@ -131,7 +132,11 @@ pub fn point_radiance(l: DVec3, i: f64) -> impl Fn(DVec3) -> f64 {
 }
 
 /// The point light over the plane.
-pub fn point_over_plane(width: usize, height: usize, lobes: &LobeMap) -> Result<Known, String> {
+pub fn point_over_plane(
+    width: usize,
+    height: usize,
+    lobes: &LobeMap,
+) -> Result<Known, VerifyError> {
     let (p, i) = POINT;
     let text = plane_scene("point-over-plane", &point_light_toml(p, i, None));
     let scene = load(&text, "point-over-plane", lobes)?;
@@ -153,7 +158,7 @@ pub fn sphere_over_plane(
     height: usize,
     radius: f64,
     lobes: &LobeMap,
-) -> Result<Known, String> {
+) -> Result<Known, VerifyError> {
     let ([cx, cy, cz], r0, le0) = SPHERE;
     let le = le0 * (r0 / radius).powi(2);
     let text = plane_scene(
@@ -192,7 +197,7 @@ fn direct_known(
     height: usize,
     reference: Vec<DVec3>,
     source: &str,
-) -> Result<Known, String> {
+) -> Result<Known, VerifyError> {
     let mut aovs = AovList::default();
     aovs.push("direct", "C<RD>L", &Parser::default())?;
     Ok(Known {
@@ -209,9 +214,11 @@ fn direct_known(
 const CONVERGE_FURNACE_BOUNCES: u32 = 3;
 
 /// The furnace: beauty `Le/(1-a)`, `C<RD>{k}O` = `Le a^k`, at every pixel.
-pub fn furnace(width: usize, height: usize, lobes: &LobeMap) -> Result<Known, String> {
-    let scene = Scene::load("furnace", lobes).map_err(|e| e.to_string())?;
-    let (a, le) = furnace_params(&scene).ok_or("furnace: unexpected scene")?;
+pub fn furnace(width: usize, height: usize, lobes: &LobeMap) -> Result<Known, VerifyError> {
+    let scene = Scene::load("furnace", lobes)?;
+    let (a, le) = furnace_params(&scene).ok_or_else(|| VerifyError::NotAFurnace {
+        scene: scene.name.clone(),
+    })?;
     let mut aovs = AovList::default();
     let mut reference = vec![vec![DVec3::splat(le / (1.0 - a)); width * height]];
     for k in 0..=CONVERGE_FURNACE_BOUNCES {
@@ -241,8 +248,8 @@ pub fn cornell(
     ref_spp: u32,
     cache_dir: &Path,
     lobes: &LobeMap,
-) -> Result<Known, String> {
-    let scene = Scene::load("cornell", lobes).map_err(|e| e.to_string())?;
+) -> Result<Known, VerifyError> {
+    let scene = Scene::load("cornell", lobes)?;
     let parser = Parser::default();
     let aovs = AovList::basic(&parser)?;
     const REF_SEED: u64 = 0x5EED_CAFE;
@@ -292,13 +299,13 @@ fn read_cache(file: &Path, n: usize) -> Option<Vec<DVec3>> {
     )
 }
 
-fn write_cache(file: &Path, data: &[DVec3]) -> Result<(), String> {
+fn write_cache(file: &Path, data: &[DVec3]) -> Result<(), VerifyError> {
     let bytes: Vec<u8> = data
         .iter()
         .flat_map(|v| v.to_array())
         .flat_map(f64::to_le_bytes)
         .collect();
-    crate::output::atomic_write(file, &bytes).map_err(|e| format!("{}: {e}", file.display()))
+    Ok(crate::output::write_file(file, &bytes)?)
 }
 
 /// Point lights with intensities 1e-6 .. 1e12 over the plane, one light group each.
@@ -310,7 +317,7 @@ pub const INTENSITIES: [(f64, [f32; 3]); 4] = [
 ];
 
 /// The plane lit by [`INTENSITIES`], with AOV `gK = C<RD><L.'gK'>` per light.
-pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList), String> {
+pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList), VerifyError> {
     let text: Vec<String> = INTENSITIES
         .iter()
         .enumerate()
@@ -320,8 +327,7 @@ pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList), String> {
         &plane_scene("intensities", &text.join("\n[[lights]]\n")),
         "intensities",
         lobes,
-    )
-    .map_err(|e| e.to_string())?;
+    )?;
     let mut aovs = AovList::default();
     for k in 0..INTENSITIES.len() {
         aovs.push(

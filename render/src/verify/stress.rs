@@ -1,6 +1,7 @@
 //! `lpe-render stress`: the hard-case scene set of issue 6, rendered, one table row per
 //! measured property. The same scenes and checks back `render/tests/hard_cases.rs`.
 
+use super::VerifyError;
 use glam::{DVec3, Vec3};
 use lpe::{LobeMap, Parser};
 
@@ -66,8 +67,8 @@ pub fn mean_check(got: &[DVec3], want: &[DVec3]) -> (f64, f64) {
 pub fn mixed_partition(
     spp: u32,
     lobes: &LobeMap,
-) -> Result<(Vec<(Accumulation, f64)>, DVec3), String> {
-    let scene = Scene::from_toml(MIXED, "mixed", lobes).map_err(|e| e.to_string())?;
+) -> Result<(Vec<(Accumulation, f64)>, DVec3), VerifyError> {
+    let scene = Scene::from_toml(MIXED, "mixed", lobes)?;
     let aovs = AovList::basic(&Parser::default())?;
     let basic = &aovs.partitions[0];
     let render = |accumulation| {
@@ -80,19 +81,16 @@ pub fn mixed_partition(
             accumulation,
             ..Settings::default()
         };
-        crate::integrator::render(&scene, &aovs, lobes, &settings)
+        crate::integrator::render(&scene, &aovs, lobes, &settings).map_err(VerifyError::from)
     };
-    let renders: Vec<Result<Render, String>> = std::thread::scope(|t| {
+    let renders: Vec<Result<Render, VerifyError>> = std::thread::scope(|t| {
         let handles: Vec<_> = Accumulation::ALL
             .map(|a| t.spawn(move || render(a)))
             .into_iter()
             .collect();
         handles
             .into_iter()
-            .map(|h| {
-                h.join()
-                    .unwrap_or_else(|_| Err("render thread panicked".into()))
-            })
+            .map(|h| h.join().unwrap_or_else(|_| Err(VerifyError::Panicked)))
             .collect()
     });
     let mut errors = Vec::new();
@@ -100,10 +98,9 @@ pub fn mixed_partition(
     for (a, r) in Accumulation::ALL.into_iter().zip(renders) {
         let r = r?;
         if r.film.rejected > 0 {
-            return Err(format!(
-                "{} samples rejected as non-finite",
-                r.film.rejected
-            ));
+            return Err(VerifyError::Rejected {
+                samples: r.film.rejected,
+            });
         }
         if a == Accumulation::F64 {
             beauty = r.film.pixel(0, 0, 0);
@@ -144,12 +141,17 @@ pub fn ggx_furnace(alpha: f32, cos: f32, n: usize) -> (f64, f64, usize) {
     (m, se, bad)
 }
 
-fn render(scene: &Scene, aovs: &AovList, s: &Settings) -> Result<Render, String> {
-    crate::integrator::render(scene, aovs, &LobeMap::default(), s)
+fn render(scene: &Scene, aovs: &AovList, s: &Settings) -> Result<Render, VerifyError> {
+    Ok(crate::integrator::render(
+        scene,
+        aovs,
+        &LobeMap::default(),
+        s,
+    )?)
 }
 
 /// Runs the set. `quick`: fewer samples (the 10^7-sample film test uses 10^5).
-pub fn run(quick: bool) -> Result<Vec<Row>, String> {
+pub fn run(quick: bool) -> Result<Vec<Row>, VerifyError> {
     let lobes = LobeMap::default();
     let mut rows = Vec::new();
     let small = |spp| Settings {
@@ -199,8 +201,7 @@ pub fn run(quick: bool) -> Result<Vec<Row>, String> {
         ));
     }
 
-    let scene =
-        Scene::from_toml(MIS_EXTREMES, "mis-extremes", &lobes).map_err(|e| e.to_string())?;
+    let scene = Scene::from_toml(MIS_EXTREMES, "mis-extremes", &lobes)?;
     let aovs = AovList::defaults(&scene, &Parser::default())?;
     for t in [Technique::Mis, Technique::BsdfOnly, Technique::LightOnly] {
         let r = render(

@@ -1,5 +1,6 @@
 //! `lpe-render check`: every invariant on small renders of the built-in scenes.
 
+use super::VerifyError;
 use lpe::Parser;
 
 use super::invariants::{self as check, invariants, Invariant, ALPHA};
@@ -24,10 +25,10 @@ fn small(width: usize, spp: u32, threads: Option<usize>) -> Settings {
 pub fn check_suite(
     threads: Option<usize>,
     log: &mut dyn FnMut(&str),
-) -> Result<Vec<Invariant>, String> {
+) -> Result<Vec<Invariant>, VerifyError> {
     let cfg = lpe::Config::default();
     let parser = Parser::new(cfg.limits.clone(), cfg.macros.clone());
-    let load = |n: &str| Scene::load(n, &cfg.lobes).map_err(|e| e.to_string());
+    let load = |n: &str| Scene::load(n, &cfg.lobes);
     let mut out = Vec::new();
 
     // 1, 2, 4: partitions, finiteness, furnace closed form.
