@@ -32,19 +32,23 @@ pub fn run(
         threads.map_or("all".to_string(), |t| t.to_string()),
         integrator::ENGINE
     );
-    println!(
-        "  beauty only: best {:.3}s ({:.0} paths/s)",
-        b.beauty_seconds,
-        b.paths as f64 / b.beauty_seconds
+    print!(
+        "{}",
+        lpe_render::output::table::markdown(
+            &["configuration", "best s", "paths/s"],
+            [
+                ("beauty only".to_string(), b.beauty_seconds),
+                (format!("{} AOVs", b.aov_count), b.aov_seconds),
+            ]
+            .map(|(what, t)| vec![
+                what,
+                format!("{t:.3}"),
+                format!("{:.0}", b.paths as f64 / t)
+            ]),
+        )
     );
     println!(
-        "  {} AOVs:     best {:.3}s ({:.0} paths/s)",
-        b.aov_count,
-        b.aov_seconds,
-        b.paths as f64 / b.aov_seconds
-    );
-    println!(
-        "  LPE tracking overhead (median of {rounds} paired rounds): {:+.1}%",
+        "LPE tracking overhead (median of {rounds} paired rounds): {:+.1}%",
         b.overhead * 100.0
     );
     Ok(true)

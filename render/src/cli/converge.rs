@@ -17,7 +17,7 @@ pub fn run(quick: bool, out: &std::path::Path, threads: Option<usize>) -> Result
     let o = converge::run(&cfg, out, &mut |s| eprintln!("  {s}"))?;
     println!(
         "{}",
-        converge::markdown(
+        lpe_render::verify::tables::converge(
             &o.summary,
             &["beauty", "direct", "bounce3", "directDiffuse"]
         )

@@ -27,25 +27,13 @@ fn load_config(ini: Option<&PathBuf>) -> Result<lpe::Config, InputError> {
 }
 
 pub fn print_invariants(list: &[Invariant]) -> bool {
-    let mut ok = true;
     for i in list {
-        let tag = match i.passed {
-            Some(true) => "pass",
-            Some(false) => {
-                ok = false;
-                "FAIL"
-            }
-            None => "skip",
-        };
-        eprintln!(
-            "  [{tag}] {} — measured {:.3e} (tolerance {:.3e})",
-            i.name, i.measured, i.tolerance
-        );
-        if i.passed != Some(true) {
+        eprintln!("  {}", i.line());
+        if i.passed != Some(true) && !i.formal {
             eprintln!("         {}", i.detail);
         }
     }
-    ok
+    !list.iter().any(Invariant::failed)
 }
 
 pub fn run(args: &RenderArgs) -> Result<bool, InputError> {

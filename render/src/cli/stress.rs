@@ -6,6 +6,6 @@ use crate::args::InputError;
 
 pub fn run(quick: bool) -> Result<bool, InputError> {
     let rows = stress::run(quick)?;
-    println!("{}", stress::markdown(&rows));
+    println!("{}", lpe_render::verify::tables::stress(&rows));
     Ok(rows.iter().all(|r| r.passed))
 }

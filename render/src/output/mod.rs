@@ -28,6 +28,8 @@ pub enum OutputError {
     Png(#[from] image::ImageError),
     #[error("report JSON: {0}")]
     Json(#[from] serde_json::Error),
+    #[error("CSV: {0}")]
+    Csv(#[from] ::csv::Error),
     #[error("plot {}: {reason}", file.display())]
     Plot { file: PathBuf, reason: String },
 }
@@ -50,6 +52,7 @@ pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
 mod exr;
 mod png;
 mod report;
+pub mod table;
 
 pub use exr::{exr_bytes, read_exr, ExrLayer};
 pub use png::{contact_sheet, png_bytes, Tonemap};

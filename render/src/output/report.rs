@@ -3,6 +3,8 @@
 
 use serde::Serialize;
 
+use super::table::markdown;
+
 use crate::aov::AovList;
 use crate::integrator::{Render, Settings};
 use crate::scene::Scene;
@@ -58,36 +60,41 @@ impl Report {
             "{}x{} pixels, {} samples per pixel, seed {}, {} threads, matcher: {}.\n\n",
             self.width, self.height, self.spp, self.seed, self.threads, self.matcher
         );
-        s += "## Timing\n\n| render s | total s | paths | rays | paths/s | rays/s |\n|---|---|---|---|---|---|\n";
-        s += &format!(
-            "| {:.2} | {:.2} | {} | {} | {:.0} | {:.0} |\n\n",
-            t.render_seconds,
-            t.total_seconds,
-            t.paths,
-            t.rays,
-            t.paths_per_second,
-            t.rays_per_second
+        s += "## Timing\n\n";
+        s += &markdown(
+            &["render s", "total s", "paths", "rays", "paths/s", "rays/s"],
+            [vec![
+                format!("{:.2}", t.render_seconds),
+                format!("{:.2}", t.total_seconds),
+                t.paths.to_string(),
+                t.rays.to_string(),
+                format!("{:.0}", t.paths_per_second),
+                format!("{:.0}", t.rays_per_second),
+            ]],
         );
+        s += "\n";
         s += "## Effects plan\n\n";
         for l in &self.effects_plan {
             s += &format!("- `{l}`\n");
         }
-        s += "\n## Invariants\n\n| invariant | measured | tolerance | result | detail |\n|---|---|---|---|---|\n";
-        for i in &self.invariants {
-            let r = match i.passed {
-                Some(true) => "pass",
-                Some(false) => "**FAIL**",
-                None => "not checked",
-            };
-            s += &format!(
-                "| {} | {:.3e} | {:.3e} | {} | {} |\n",
-                i.name,
-                i.measured,
-                i.tolerance,
-                r,
-                i.detail.replace('|', "\\|")
-            );
-        }
+        s += "\n## Invariants\n\n";
+        s += &markdown(
+            &["invariant", "measured", "tolerance", "result", "detail"],
+            self.invariants.iter().map(|i| {
+                let r = match i.passed {
+                    Some(true) => "pass",
+                    Some(false) => "**FAIL**",
+                    None => "not checked",
+                };
+                vec![
+                    i.name.clone(),
+                    i.measured_text(),
+                    i.tolerance_text(),
+                    r.to_string(),
+                    i.detail.replace('|', "\\|"),
+                ]
+            }),
+        );
         s += &format!(
             "\nSamples rejected as non-finite: {}; AOV-only values dropped: {}.\n",
             self.rejected_samples, self.rejected_aov_values
@@ -98,15 +105,17 @@ impl Report {
                 s += &format!("- {n}\n");
             }
         }
-        s += "\n## AOVs\n\n| layer | source | expression |\n|---|---|---|\n";
-        for a in &self.aovs {
-            s += &format!(
-                "| `{}` | `{}` | `{}` |\n",
-                a.name,
-                a.source.replace('|', "\\|"),
-                a.expression.replace('|', "\\|")
-            );
-        }
+        s += "\n## AOVs\n\n";
+        s += &markdown(
+            &["layer", "source", "expression"],
+            self.aovs.iter().map(|a| {
+                vec![
+                    format!("`{}`", a.name),
+                    format!("`{}`", a.source.replace('|', "\\|")),
+                    format!("`{}`", a.expression.replace('|', "\\|")),
+                ]
+            }),
+        );
         s += &format!(
             "\n## Files\n\n{}\n\nContact sheet, left to right, top to bottom: {}.\n",
             self.files

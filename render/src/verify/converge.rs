@@ -9,7 +9,7 @@
 //! the fitted log-log slope of MSE against spp (-1 for an unbiased estimator, flattening
 //! to 0 at a bias floor) and the efficiency `1 / (MSE x time)`.
 
-use super::VerifyError;
+use super::{tables, VerifyError};
 use glam::DVec3;
 use lpe::LobeMap;
 use serde::Serialize;
@@ -370,58 +370,6 @@ pub fn summarize(points: &[Point]) -> Vec<Summary> {
         .collect()
 }
 
-pub fn csv(points: &[Point]) -> String {
-    let mut s = String::from("scene,variant,layer,spp,seconds,mse,rel_mse,partition_error\n");
-    for p in points {
-        s += &format!(
-            "{},\"{}\",{},{},{:.6},{:.6e},{:.6e},{}\n",
-            p.scene,
-            p.variant,
-            p.layer,
-            p.spp,
-            p.seconds,
-            p.mse,
-            p.rel_mse,
-            p.partition_error
-                .map_or(String::new(), |e| format!("{e:.3e}"))
-        );
-    }
-    s
-}
-
-/// The Markdown table of [`Summary`] rows (`layers`: which layers to include, all if
-/// empty).
-pub fn markdown(rows: &[Summary], layers: &[&str]) -> String {
-    let mut s = String::from(
-        "| scene | variant | layer | spp | time s | MSE | relMSE | slope | efficiency 1/(MSE·s) | partition err |\n\
-         |---|---|---|---:|---:|---:|---:|---:|---:|---:|\n",
-    );
-    for r in rows
-        .iter()
-        .filter(|r| layers.is_empty() || layers.contains(&r.last.layer.as_str()))
-    {
-        let p = &r.last;
-        s += &format!(
-            "| {} | {} | {} | {} | {:.3} | {:.3e} | {:.3e} | {} | {} | {} |\n",
-            p.scene,
-            p.variant,
-            p.layer,
-            p.spp,
-            p.seconds,
-            p.mse,
-            p.rel_mse,
-            r.slope.map_or("exact".into(), |x| format!("{x:.2}")),
-            if p.mse > 0.0 {
-                format!("{:.3e}", r.efficiency)
-            } else {
-                "∞".into()
-            },
-            p.partition_error.map_or("".into(), |e| format!("{e:.1e}")),
-        );
-    }
-    s
-}
-
 /// What [`run`] wrote.
 pub struct Outcome {
     pub summary: Vec<Summary>,
@@ -472,17 +420,7 @@ pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcom
         "{mixed_spp} mixed samples, every film: {:.1}s",
         t0.elapsed().as_secs_f64()
     ));
-    let mut accumulation = String::from(
-        "| film | samples in the pixel | basic AOVs vs beauty (max rel.) | within 1e-6 |\n\
-         |---|---:|---:|---|\n",
-    );
-    for (a, e) in errors {
-        accumulation += &format!(
-            "| {} | {mixed_spp} | {e:.2e} | {} |\n",
-            a.name(),
-            if e <= 1e-6 { "yes" } else { "**no**" }
-        );
-    }
+    let accumulation = tables::accumulation(&errors, mixed_spp);
     let mut files = Vec::new();
     let mut write = |name: &str, text: String| -> Result<(), VerifyError> {
         let f = out.join(name);
@@ -490,13 +428,13 @@ pub fn run(cfg: &Config, out: &Path, log: &mut dyn FnMut(&str)) -> Result<Outcom
         files.push(f);
         Ok(())
     };
-    write("converge.csv", csv(&points))?;
+    write("converge.csv", tables::csv(&points)?)?;
     let mut md = String::from("# lpe-render converge\n\nReferences:\n");
     for (k, _) in &scenes {
         md += &format!("- `{}`: {}\n", k.scene.name, k.source);
     }
     md += "\n";
-    md += &markdown(&summary, &[]);
+    md += &tables::converge(&summary, &[]);
     md += "\n## Accumulation\n\n";
     md += &accumulation;
     write("converge.md", md)?;

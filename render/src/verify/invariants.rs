@@ -23,6 +23,9 @@ pub struct Invariant {
     /// not partition every path).
     pub passed: Option<bool>,
     pub detail: String,
+    /// Decided on the automata for every possible path (no measurement: `measured` and
+    /// `tolerance` mean nothing; `detail` says what was decided, with a witness path).
+    pub formal: bool,
 }
 
 impl Invariant {
@@ -38,6 +41,43 @@ impl Invariant {
             tolerance,
             passed: Some(measured <= tolerance),
             detail: detail.into(),
+            formal: false,
+        }
+    }
+
+    /// The measurement as printed (`-` for a formal check).
+    pub fn measured_text(&self) -> String {
+        if self.formal {
+            "-".into()
+        } else {
+            format!("{:.3e}", self.measured)
+        }
+    }
+
+    /// The tolerance as printed (`-` for a formal check).
+    pub fn tolerance_text(&self) -> String {
+        if self.formal {
+            "-".into()
+        } else {
+            format!("{:.3e}", self.tolerance)
+        }
+    }
+
+    /// One console line: the outcome and name, then what was measured against what,
+    /// or for a formal check what was decided and its witness.
+    pub fn line(&self) -> String {
+        let tag = match self.passed {
+            Some(true) => "pass",
+            Some(false) => "FAIL",
+            None => "skip",
+        };
+        if self.formal {
+            format!("[{tag}] {} — {}", self.name, self.detail)
+        } else {
+            format!(
+                "[{tag}] {} — measured {:.3e} (tolerance {:.3e})",
+                self.name, self.measured, self.tolerance
+            )
         }
     }
 
@@ -175,6 +215,7 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
                 tolerance: 0.0,
                 passed,
                 detail,
+                formal: true,
             }
         })
         .collect()

@@ -36,21 +36,6 @@ fn row(case: &str, measure: &str, value: f64, bound: f64, passed: bool) -> Row {
     }
 }
 
-pub fn markdown(rows: &[Row]) -> String {
-    let mut s = String::from("| case | measure | value | bound | ok |\n|---|---|---:|---:|---|\n");
-    for r in rows {
-        s += &format!(
-            "| {} | {} | {:.3e} | {:.3e} | {} |\n",
-            r.case,
-            r.measure,
-            r.value,
-            r.bound,
-            if r.passed { "yes" } else { "**NO**" }
-        );
-    }
-    s
-}
-
 /// Relative error of the image mean of `got` (red channel) against `want`, and the
 /// bound it must meet: 5 standard errors of the per-pixel residuals (significance
 /// < 1e-6) plus 1e-4 relative (f32 radiance and pdfs).

@@ -133,6 +133,7 @@ pub fn check_suite(
             tolerance: 0.0,
             passed: Some(a == b),
             detail: format!("{} bytes each", a.len()),
+            formal: false,
         });
     }
     {
@@ -203,5 +204,6 @@ fn identical(name: &str, a: &Render, b: &Render, pairs: &[(usize, usize)]) -> In
                 differ.join(", ")
             }
         ),
+        formal: false,
     }
 }
