@@ -103,7 +103,11 @@ pub fn write_all(
         files.push(p);
     }
     let sheet = dir.join("contact_sheet.png");
-    write_file(&sheet, &png_bytes(&contact_sheet(&images))?)?;
+    let names: Vec<&str> = layer_names(aovs)
+        .into_iter()
+        .map(|n| n.unwrap_or("beauty"))
+        .collect();
+    write_file(&sheet, &png_bytes(&contact_sheet(&images, &names))?)?;
     files.push(sheet);
     let md = dir.join("report.md");
     let json = dir.join("report.json");
