@@ -6,13 +6,13 @@ use lpe::LobeMap;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
-use super::{CameraDesc, Object, Scene, SceneSettings, MAX_DEPTH_LIMIT, MAX_LABELS};
+use super::{CameraDesc, Object, Scene, SceneProblem, SceneSettings, MAX_DEPTH_LIMIT, MAX_LABELS};
 use crate::geometry::{Bvh, Shape};
 use crate::light::{Light, LightKind};
 use crate::material::{Lobe, Material, Model};
 
 type Spanned<T> = toml::Spanned<T>;
-pub(super) type BuildError = (Option<std::ops::Range<usize>>, String);
+pub(super) type BuildError = (Option<std::ops::Range<usize>>, SceneProblem);
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -174,36 +174,36 @@ struct LightFile {
 }
 
 /// A finite vector, or an error naming the field.
-fn vec3(v: [f32; 3], what: &str) -> Result<Vec3, String> {
+fn vec3(v: [f32; 3], what: &'static str) -> Result<Vec3, SceneProblem> {
     if v.iter().all(|x| x.is_finite()) {
         Ok(Vec3::from(v))
     } else {
-        Err(format!("{what} must be finite, got {v:?}"))
+        Err(SceneProblem::NotFinite { what, value: v })
     }
 }
 
-fn color(v: [f32; 3], what: &str) -> Result<Vec3, String> {
+fn color(v: [f32; 3], what: &'static str) -> Result<Vec3, SceneProblem> {
     let c = vec3(v, what)?;
     if c.min_element() < 0.0 {
-        return Err(format!("{what} must not be negative, got {v:?}"));
+        return Err(SceneProblem::Negative { what, value: v });
     }
     Ok(c)
 }
 
-fn positive(x: f32, what: &str) -> Result<f32, String> {
+fn positive(x: f32, what: &'static str) -> Result<f32, SceneProblem> {
     if x.is_finite() && x > 0.0 {
         Ok(x)
     } else {
-        Err(format!("{what} must be a positive number, got {x}"))
+        Err(SceneProblem::NotPositive { what, value: x })
     }
 }
 
-fn need<T>(x: Option<T>, what: &str, kind: &str) -> Result<T, String> {
-    x.ok_or_else(|| format!("a {kind} needs `{what}`"))
+fn need<T>(x: Option<T>, what: &'static str, kind: &'static str) -> Result<T, SceneProblem> {
+    x.ok_or(SceneProblem::Missing { kind, what })
 }
 
 impl LobeFile {
-    fn build(&self, lobes: &LobeMap) -> Result<Lobe, String> {
+    fn build(&self, lobes: &LobeMap) -> Result<Lobe, SceneProblem> {
         let model = match self.model.as_str() {
             "lambert" => Model::Lambert {
                 albedo: color(need(self.albedo, "albedo", "lambert lobe")?, "albedo")?,
@@ -217,7 +217,7 @@ impl LobeFile {
             "ggx" => {
                 let r = need(self.roughness, "roughness", "ggx lobe")?;
                 if !(r.is_finite() && (0.0..=1.0).contains(&r)) {
-                    return Err(format!("roughness must be in [0, 1], got {r}"));
+                    return Err(SceneProblem::Roughness { value: r });
                 }
                 Model::Ggx {
                     f0: color(need(self.f0, "f0", "ggx lobe")?, "f0")?,
@@ -230,20 +230,20 @@ impl LobeFile {
                 tint: color(self.tint.unwrap_or([1.0; 3]), "tint")?,
             },
             other => {
-                return Err(format!(
-                    "unknown lobe model `{other}` (lambert, diffuse_transmission, ggx, dielectric)"
-                ))
+                return Err(SceneProblem::UnknownLobeModel {
+                    model: other.into(),
+                })
             }
         };
         Ok(Lobe::new(&self.name, model, lobes))
     }
 }
 
-fn box_triangles(b: &BoxFile) -> Result<Vec<Shape>, String> {
+fn box_triangles(b: &BoxFile) -> Result<Vec<Shape>, SceneProblem> {
     let lo = vec3(b.min, "box min")?;
     let hi = vec3(b.max, "box max")?;
     if !(hi.cmpgt(lo).all()) {
-        return Err("box max must exceed min on every axis".into());
+        return Err(SceneProblem::EmptyBox);
     }
     let c = (lo + hi) * 0.5;
     let rot = glam::Quat::from_rotation_y(b.rotate_y.to_radians());
@@ -282,7 +282,7 @@ fn box_triangles(b: &BoxFile) -> Result<Vec<Shape>, String> {
 }
 
 impl ObjectFile {
-    fn shapes(&self) -> Result<Vec<Shape>, String> {
+    fn shapes(&self) -> Result<Vec<Shape>, SceneProblem> {
         let given = [
             self.sphere.is_some(),
             self.quad.is_some(),
@@ -290,7 +290,7 @@ impl ObjectFile {
             self.mesh.is_some(),
         ];
         if given.iter().filter(|g| **g).count() != 1 {
-            return Err("an object needs exactly one of `sphere`, `quad`, `box`, `mesh`".into());
+            return Err(SceneProblem::ShapeCount);
         }
         if let Some(s) = &self.sphere {
             return Ok(vec![Shape::Sphere {
@@ -301,7 +301,7 @@ impl ObjectFile {
         if let Some(q) = &self.quad {
             let (u, v) = (vec3(q.u, "u")?, vec3(q.v, "v")?);
             if u.cross(v).length_squared() == 0.0 {
-                return Err("quad edges `u` and `v` are parallel (zero area)".into());
+                return Err(SceneProblem::DegenerateQuad { light: false });
             }
             return Ok(vec![Shape::Quad {
                 corner: vec3(q.corner, "corner")?,
@@ -321,9 +321,13 @@ impl ObjectFile {
         let mut out = Vec::new();
         for t in &m.triangles {
             let p = |i: u32| {
-                verts.get(i as usize).copied().ok_or_else(|| {
-                    format!("triangle index {i} out of range ({} vertices)", verts.len())
-                })
+                verts
+                    .get(i as usize)
+                    .copied()
+                    .ok_or(SceneProblem::TriangleIndex {
+                        index: i,
+                        vertices: verts.len(),
+                    })
             };
             let (a, b, c) = (p(t[0])?, p(t[1])?, p(t[2])?);
             // Zero-area triangles can never be hit; skipping them keeps normals finite.
@@ -340,7 +344,7 @@ impl ObjectFile {
 }
 
 impl LightFile {
-    fn build(&self) -> Result<LightKind, String> {
+    fn build(&self) -> Result<LightKind, SceneProblem> {
         let k = self.kind.as_str();
         Ok(match k {
             "quad" => {
@@ -349,7 +353,7 @@ impl LightFile {
                     vec3(need(self.v, "v", "quad light")?, "v")?,
                 );
                 if u.cross(v).length_squared() == 0.0 {
-                    return Err("quad light edges `u` and `v` are parallel (zero area)".into());
+                    return Err(SceneProblem::DegenerateQuad { light: true });
                 }
                 LightKind::Quad {
                     corner: vec3(need(self.corner, "corner", "quad light")?, "corner")?,
@@ -376,7 +380,7 @@ impl LightFile {
                     "direction",
                 )?;
                 if d.length_squared() == 0.0 {
-                    return Err("distant light direction must not be zero".into());
+                    return Err(SceneProblem::ZeroDirection);
                 }
                 LightKind::Distant {
                     direction: d.normalize(),
@@ -389,11 +393,7 @@ impl LightFile {
             "dome" => LightKind::Dome {
                 radiance: color(need(self.radiance, "radiance", "dome light")?, "radiance")?,
             },
-            other => {
-                return Err(format!(
-                    "unknown light kind `{other}` (quad, sphere, point, distant, dome)"
-                ))
-            }
+            other => return Err(SceneProblem::UnknownLightKind { kind: other.into() }),
         })
     }
 }
@@ -401,7 +401,7 @@ impl LightFile {
 impl SceneFile {
     pub(super) fn build(self, lobe_map: &LobeMap) -> Result<Scene, BuildError> {
         let c = &self.camera;
-        let at = |m: String| (None, m);
+        let at = |m: SceneProblem| (None, m);
         let camera = CameraDesc {
             position: vec3(c.position, "camera position").map_err(at)?,
             look_at: vec3(c.look_at, "camera look_at").map_err(at)?,
@@ -413,19 +413,16 @@ impl SceneFile {
             .length_squared()
             == 0.0
         {
-            return Err((
-                None,
-                "camera: look_at must differ from position and not lie along up".into(),
-            ));
+            return Err((None, SceneProblem::CameraAxis));
         }
         let r = &self.render;
         if r.max_depth == 0 || r.max_depth > MAX_DEPTH_LIMIT {
             return Err((
                 None,
-                format!(
-                    "render.max_depth must be 1..={MAX_DEPTH_LIMIT}, got {}",
-                    r.max_depth
-                ),
+                SceneProblem::MaxDepth {
+                    value: r.max_depth,
+                    max: MAX_DEPTH_LIMIT,
+                },
             ));
         }
         if let Some(cl) = r.clamp {
@@ -447,9 +444,9 @@ impl SceneFile {
                 .iter()
                 .map(|l| l.build(lobe_map))
                 .collect::<Result<Vec<_>, _>>()
-                .map_err(|e| (span.clone(), format!("material `{name}`: {e}")))?;
+                .map_err(|e| (span.clone(), e.in_material(name)))?;
             let glow = color(m.glow.unwrap_or([0.0; 3]), "glow")
-                .map_err(|e| (span.clone(), format!("material `{name}`: {e}")))?;
+                .map_err(|e| (span.clone(), e.in_material(name)))?;
             materials.push(Material::new(lobes, glow));
             material_names.push(name.clone());
         }
@@ -470,16 +467,14 @@ impl SceneFile {
                 .ok_or_else(|| {
                     (
                         span.clone(),
-                        format!(
-                            "object `{name}`: unknown material `{}` (defined: {})",
-                            o.material,
-                            material_names.join(", ")
-                        ),
+                        SceneProblem::UnknownMaterial {
+                            material: o.material.clone(),
+                            defined: material_names.join(", "),
+                        }
+                        .in_object(&name),
                     )
                 })?;
-            let shapes = o
-                .shapes()
-                .map_err(|e| (span.clone(), format!("object `{name}`: {e}")))?;
+            let shapes = o.shapes().map_err(|e| (span.clone(), e.in_object(&name)))?;
             let id = objects.len() as u32;
             prims.extend(shapes.into_iter().map(|s| (s, id)));
             objects.push(Object {
@@ -497,7 +492,7 @@ impl SceneFile {
             let lf = l.get_ref();
             let kind = lf
                 .build()
-                .map_err(|e| (span.clone(), format!("light {}: {e}", lights.len())))?;
+                .map_err(|e| (span.clone(), e.in_light(lights.len())))?;
             let light = Light {
                 kind,
                 group: lf.group.clone(),
@@ -527,10 +522,10 @@ impl SceneFile {
         if labels.len() > MAX_LABELS {
             return Err((
                 None,
-                format!(
-                    "{} distinct lpegroup/group labels; at most {MAX_LABELS}",
-                    labels.len()
-                ),
+                SceneProblem::TooManyLabels {
+                    labels: labels.len(),
+                    max: MAX_LABELS,
+                },
             ));
         }
         if lights
@@ -539,7 +534,7 @@ impl SceneFile {
             .count()
             > 1
         {
-            return Err((None, "at most one dome light".into()));
+            return Err((None, SceneProblem::SecondDome));
         }
         Ok(Scene {
             name: self.name,

@@ -108,13 +108,15 @@ impl Scene {
         let text = std::fs::read_to_string(name_or_path).map_err(|e| SceneError {
             file: name_or_path.to_string(),
             line: None,
-            message: if std::path::Path::new(name_or_path).extension().is_none() {
-                format!(
-                    "not a built-in scene ({}) and not a readable file: {e}",
-                    BUILTIN.map(|b| b.0).join(", ")
-                )
+            problem: if std::path::Path::new(name_or_path).extension().is_none() {
+                SceneProblem::NotFound {
+                    builtins: BUILTIN.map(|b| b.0).join(", "),
+                    error: e.to_string(),
+                }
             } else {
-                format!("cannot read: {e}")
+                SceneProblem::Unreadable {
+                    error: e.to_string(),
+                }
             },
         })?;
         let stem = std::path::Path::new(name_or_path)
@@ -130,36 +132,127 @@ impl Scene {
 
     /// Parses a TOML scene; `file` names it in errors.
     pub fn from_toml(text: &str, file: &str, lobes: &LobeMap) -> Result<Scene, SceneError> {
-        let err = |span: Option<std::ops::Range<usize>>, message: String| SceneError {
+        let err = |span: Option<std::ops::Range<usize>>, problem: SceneProblem| SceneError {
             file: file.to_string(),
             line: span.map(|s| 1 + text[..s.start.min(text.len())].matches('\n').count()),
-            message,
+            problem,
         };
-        let desc: file::SceneFile =
-            toml::from_str(text).map_err(|e| err(e.span(), e.message().to_string()))?;
+        let desc: file::SceneFile = toml::from_str(text).map_err(|e| {
+            err(
+                e.span(),
+                SceneProblem::Toml {
+                    message: e.message().to_string(),
+                },
+            )
+        })?;
         desc.build(lobes)
-            .map_err(|(span, message)| err(span, message))
+            .map_err(|(span, problem)| err(span, problem))
     }
 }
 
 /// A scene file problem: file, line (when known) and what.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub struct SceneError {
     pub file: String,
     pub line: Option<usize>,
-    pub message: String,
+    pub problem: SceneProblem,
 }
 
 impl fmt::Display for SceneError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self.line {
-            Some(l) => write!(f, "{}:{}: {}", self.file, l, self.message),
-            None => write!(f, "{}: {}", self.file, self.message),
+            Some(l) => write!(f, "{}:{}: {}", self.file, l, self.problem),
+            None => write!(f, "{}: {}", self.file, self.problem),
         }
     }
 }
 
-impl std::error::Error for SceneError {}
+/// What is wrong with a scene file.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SceneProblem {
+    #[error("not a built-in scene ({builtins}) and not a readable file: {error}")]
+    NotFound { builtins: String, error: String },
+    #[error("cannot read: {error}")]
+    Unreadable { error: String },
+    /// TOML syntax or a field of the wrong type or name (toml's message).
+    #[error("{message}")]
+    Toml { message: String },
+    #[error("{what} must be finite, got {value:?}")]
+    NotFinite { what: &'static str, value: [f32; 3] },
+    #[error("{what} must not be negative, got {value:?}")]
+    Negative { what: &'static str, value: [f32; 3] },
+    #[error("{what} must be a positive number, got {value}")]
+    NotPositive { what: &'static str, value: f32 },
+    #[error("a {kind} needs `{what}`")]
+    Missing {
+        kind: &'static str,
+        what: &'static str,
+    },
+    #[error("roughness must be in [0, 1], got {value}")]
+    Roughness { value: f32 },
+    #[error("unknown lobe model `{model}` (lambert, diffuse_transmission, ggx, dielectric)")]
+    UnknownLobeModel { model: String },
+    #[error("box max must exceed min on every axis")]
+    EmptyBox,
+    #[error("an object needs exactly one of `sphere`, `quad`, `box`, `mesh`")]
+    ShapeCount,
+    #[error("{}edges `u` and `v` are parallel (zero area)", if *light { "quad light " } else { "quad " })]
+    DegenerateQuad { light: bool },
+    #[error("triangle index {index} out of range ({vertices} vertices)")]
+    TriangleIndex { index: u32, vertices: usize },
+    #[error("distant light direction must not be zero")]
+    ZeroDirection,
+    #[error("unknown light kind `{kind}` (quad, sphere, point, distant, dome)")]
+    UnknownLightKind { kind: String },
+    #[error("camera: look_at must differ from position and not lie along up")]
+    CameraAxis,
+    #[error("render.max_depth must be 1..={max}, got {value}")]
+    MaxDepth { value: u32, max: u32 },
+    #[error("unknown material `{material}` (defined: {defined})")]
+    UnknownMaterial { material: String, defined: String },
+    #[error("{labels} distinct lpegroup/group labels; at most {max}")]
+    TooManyLabels { labels: usize, max: usize },
+    #[error("at most one dome light")]
+    SecondDome,
+    #[error("material `{name}`: {problem}")]
+    InMaterial {
+        name: String,
+        problem: Box<SceneProblem>,
+    },
+    #[error("object `{name}`: {problem}")]
+    InObject {
+        name: String,
+        problem: Box<SceneProblem>,
+    },
+    #[error("light {index}: {problem}")]
+    InLight {
+        index: usize,
+        problem: Box<SceneProblem>,
+    },
+}
+
+impl SceneProblem {
+    fn in_material(self, name: &str) -> SceneProblem {
+        SceneProblem::InMaterial {
+            name: name.into(),
+            problem: Box::new(self),
+        }
+    }
+
+    fn in_object(self, name: &str) -> SceneProblem {
+        SceneProblem::InObject {
+            name: name.into(),
+            problem: Box::new(self),
+        }
+    }
+
+    fn in_light(self, index: usize) -> SceneProblem {
+        SceneProblem::InLight {
+            index,
+            problem: Box::new(self),
+        }
+    }
+}
 
 #[cfg(test)]
 mod tests {
@@ -180,7 +273,10 @@ mod tests {
         let e = Scene::from_toml(text, "s.toml", &map).unwrap_err();
         assert_eq!(e.line, Some(5), "{e}");
         assert!(e.to_string().starts_with("s.toml:5: "), "{e}");
-        assert!(e.message.contains("unknown material `nope`"), "{e}");
+        assert!(
+            e.problem.to_string().contains("unknown material `nope`"),
+            "{e}"
+        );
 
         let e = Scene::from_toml(
             "[camera]\nposition = [0,0,0]\nlook_at = [0,0,1]\nfoo = 1\n",
@@ -189,7 +285,7 @@ mod tests {
         )
         .unwrap_err();
         assert_eq!(e.line, Some(4), "{e}");
-        assert!(e.message.contains("foo"), "{e}");
+        assert!(e.problem.to_string().contains("foo"), "{e}");
 
         let e = Scene::from_toml(
             "[camera]\nposition = [0,0,nan]\nlook_at = [0,0,1]\n",
@@ -197,6 +293,6 @@ mod tests {
             &map,
         )
         .unwrap_err();
-        assert!(e.message.contains("finite"), "{e}");
+        assert!(e.problem.to_string().contains("finite"), "{e}");
     }
 }
