@@ -19,7 +19,7 @@ use crate::aov::matcher::AovMask;
 use crate::aov::{AovFlags, AovList};
 use crate::sampling::max_component;
 
-/// How a film adds samples into its pixel sums (issue 6 compares them).
+/// How a film adds samples into its pixel sums (`converge` and `stress` compare them).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub enum Accumulation {
     /// f64 sums: the renderer's film.

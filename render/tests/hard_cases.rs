@@ -1,4 +1,4 @@
-//! Hard cases stay numerically stable (issue 6). Each test compares against a closed form
+//! Hard cases stay numerically stable. Each test compares against a closed form
 //! or an independent computation; statistical ones state their significance.
 
 use glam::{DVec3, Vec3};

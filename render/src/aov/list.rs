@@ -41,7 +41,7 @@ pub enum DisplayProblem {
     SourceWithoutValue { name: String },
 }
 
-/// How an AOV accumulates: its prefixes, decoded (DESIGN.md §3; the integrator
+/// How an AOV accumulates: its prefixes, decoded (docs/language.md §7; the integrator
 /// documents each one where it applies it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct AovFlags {

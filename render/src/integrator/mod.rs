@@ -16,7 +16,7 @@
 //! contribution is attributed to exactly the lobe that scattered, so every path the
 //! matcher sees is a real light path with its own value.
 //!
-//! # Prefixes (how an AOV weighs a contribution; DESIGN.md §3)
+//! # Prefixes (how an AOV weighs a contribution; docs/language.md §7)
 //! Every contribution is an `Arrival`: the matcher state of its complete path, the
 //! throughput `beta` up to its last scattering vertex, the `local` estimate at that vertex
 //! (`f cos Le / pdf`, no MIS, no visibility) and its `Strategy`. An AOV's value is
@@ -70,7 +70,7 @@ pub enum RenderError {
     Compile { reason: String },
 }
 
-/// Which strategies estimate direct lighting (issue 6 compares them).
+/// Which strategies estimate direct lighting (`converge` compares them).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 pub enum Technique {
     /// Light sampling and BSDF sampling, power heuristic.

@@ -511,7 +511,7 @@ impl SceneFile {
             lights.push(light);
         }
         // Labels become distinct matcher vertices (label x event x R/T); bounding them
-        // keeps every scene within the matcher's class space (see `matcher.rs`).
+        // keeps every scene within the matcher's class space (see `aov::matcher`).
         let mut labels: Vec<&str> = objects
             .iter()
             .filter_map(|o| o.lpegroup.as_deref())

@@ -70,7 +70,7 @@ pub struct Scene {
 pub const MAX_LABELS: usize = 1024;
 
 /// Most scattering vertices a path may have: paths are kept in fixed-size buffers by
-/// the reference matcher (see `matcher.rs`).
+/// the reference matcher (see `aov::matcher`).
 pub const MAX_DEPTH_LIMIT: u32 = 60;
 
 impl Scene {

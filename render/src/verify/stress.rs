@@ -1,5 +1,6 @@
-//! `lpe-render stress`: the hard-case scene set of issue 6, rendered, one table row per
-//! measured property. The same scenes and checks back `render/tests/hard_cases.rs`.
+//! `lpe-render stress`: the hard-case scene set (tiny lights, extreme intensities and
+//! pdfs, a 10^7-sample film, degenerate input), rendered, one table row per measured
+//! property. The same scenes and checks back `render/tests/hard_cases.rs`.
 
 use super::VerifyError;
 use glam::{DVec3, Vec3};
