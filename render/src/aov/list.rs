@@ -17,7 +17,10 @@ pub enum AovError {
     #[error("AOV name `{name}` is used twice (`beauty` is reserved)")]
     DuplicateName { name: String },
     #[error("AOV `{name}`: {error}")]
-    Parse { name: String, error: lpe::Error },
+    Parse {
+        name: String,
+        error: Box<lpe::Error>,
+    },
     #[error("--aov `{arg}`: expected NAME=LPE, e.g. diffuse=lpe:C<RD>[<L.>O]")]
     BadArgument { arg: String },
     #[error("at most {max} AOVs, got {count}")]
@@ -119,7 +122,7 @@ impl AovList {
         }
         let lpe = parser.parse(source).map_err(|error| AovError::Parse {
             name: name.into(),
-            error,
+            error: Box::new(error),
         })?;
         self.aovs.push(Aov {
             name: name.to_string(),
