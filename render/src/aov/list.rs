@@ -133,7 +133,7 @@ impl AovList {
         Ok(self.aovs.len() - 1)
     }
 
-    /// `(name, expression)` pairs, as `lpe::aov::AovSet::compile` takes them.
+    /// `(name, expression)` pairs, as `lpe::AovSet::compile` takes them.
     pub fn named(&self) -> Vec<(String, Lpe)> {
         self.aovs
             .iter()

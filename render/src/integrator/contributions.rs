@@ -45,6 +45,8 @@ pub(super) struct Vertices<C> {
     pub(super) light_seen: Vec<C>,
     /// Per object: its glow `O` vertex.
     pub(super) glow: Vec<C>,
+    /// The camera vertex `C`, every path's first.
+    pub(super) camera: C,
     /// Per object: the AOVs each user-signal pseudo path `C <R Un> L` matches.
     pub(super) user: Vec<Vec<(UserSignal, AovMask)>>,
 }
@@ -57,6 +59,7 @@ impl<C: Copy> Vertices<C> {
         labels: bool,
     ) -> Self {
         let label = |l: &Option<String>| if labels { l.clone() } else { None };
+        let camera = m.classify(&Vertex::camera());
         let mut scatter = Vec::new();
         let mut glow = Vec::new();
         let mut user = Vec::new();
@@ -79,7 +82,7 @@ impl<C: Copy> Vertices<C> {
             let pseudo = |sig: UserSignal| {
                 let ev = lobes.event(LobeCategory::User, sig.name());
                 let s = m.step(
-                    m.start(),
+                    m.step(m.start(), camera),
                     m.classify(&Vertex::scatter(VertexType::R, ev, group.as_deref())),
                 );
                 m.matches(m.step(s, m.classify(&Vertex::light(None))))
@@ -105,12 +108,13 @@ impl<C: Copy> Vertices<C> {
             light,
             light_seen,
             glow,
+            camera,
             user,
         }
     }
 }
 
-impl<M: PathMatcher> Integrator<'_, M> {
+impl<M: PathMatcher + Sync> Integrator<'_, M> {
     /// Hands a contribution whose complete path ended in matcher state `state` to the
     /// sample's values.
     pub(super) fn splat(&self, state: M::State, c: &Contribution, acc: &mut Tally) {

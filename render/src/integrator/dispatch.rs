@@ -9,7 +9,7 @@ use crate::scene::Scene;
 
 /// Renders `scene` with `aovs`.
 ///
-/// ENGINE: the one place that picks the matcher: the fast matcher (`lpe::aov::AovSet`),
+/// ENGINE: the one place that picks the matcher: the fast matcher (`lpe::AovSet`),
 /// or, for a set it refuses to compile (over its size limits), the memoized reference
 /// matcher with a warning on stderr. Both give the same image; only the time differs.
 pub fn render(
@@ -30,7 +30,7 @@ pub fn render_announcing(
     settings: &Settings,
     on_plan: &mut dyn FnMut(&crate::aov::plan::Plan),
 ) -> Result<Render, RenderError> {
-    match lpe::aov::AovSet::compile(&aovs.named()) {
+    match lpe::AovSet::compile(&aovs.named()) {
         Ok(set) => render_with(&set, scene, aovs, lobes, settings, on_plan),
         Err(e) => {
             eprintln!(
@@ -43,7 +43,7 @@ pub fn render_announcing(
 }
 
 /// Renders with a given matcher, calling `on_plan` with the effects plan first.
-pub fn render_with<M: PathMatcher>(
+pub fn render_with<M: PathMatcher + Sync>(
     matcher: &M,
     scene: &Scene,
     aovs: &AovList,

@@ -11,7 +11,7 @@ use crate::aov::matcher::PathMatcher;
 use crate::film::{Film, SampleValues};
 use crate::rng::Rng;
 
-impl<M: PathMatcher> Integrator<'_, M> {
+impl<M: PathMatcher + Sync> Integrator<'_, M> {
     /// Renders the whole image; rows in parallel, each pixel's samples in order.
     pub fn render(&self) -> Result<Render, RenderError> {
         let s = self.settings;

@@ -25,7 +25,7 @@ pub(super) struct PathState<S> {
     pub(super) holdout: bool,
 }
 
-impl<M: PathMatcher> Integrator<'_, M> {
+impl<M: PathMatcher + Sync> Integrator<'_, M> {
     /// Traces one camera sample through pixel `(x, y)`.
     pub(super) fn sample(&self, x: usize, y: usize, rng: &mut Rng, acc: &mut Tally) {
         let s = self.settings;
@@ -37,7 +37,7 @@ impl<M: PathMatcher> Integrator<'_, M> {
             (y as f32 + jitter.y) / s.height as f32,
         );
         let mut path = PathState {
-            matcher: m.start(),
+            matcher: m.step(m.start(), self.vertices.camera),
             beta: Vec3::ONE,
             bounce: Vec3::ONE,
             prev: None,

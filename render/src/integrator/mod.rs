@@ -136,7 +136,7 @@ pub struct Render {
 /// them for lobe collisions).
 pub const USER_SIGNALS: [&str; 3] = ["Albedo", "Position", "Normal"];
 
-pub struct Integrator<'a, M: PathMatcher> {
+pub struct Integrator<'a, M: PathMatcher + Sync> {
     scene: &'a Scene,
     matcher: &'a M,
     /// How contributions weigh into each AOV (handed to the film).
@@ -149,7 +149,7 @@ pub struct Integrator<'a, M: PathMatcher> {
     camera: Camera,
 }
 
-impl<'a, M: PathMatcher> Integrator<'a, M> {
+impl<'a, M: PathMatcher + Sync> Integrator<'a, M> {
     pub fn new(
         scene: &'a Scene,
         aovs: &AovList,

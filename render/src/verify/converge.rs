@@ -70,11 +70,11 @@ impl MatcherRow {
     ) -> Result<Render, RenderError> {
         let lpes = aovs.lpes();
         let fast = |dfa_budget| {
-            let opts = lpe::aov::Options {
+            let opts = lpe::Options {
                 dfa_budget,
-                ..lpe::aov::Options::default()
+                ..lpe::Options::default()
             };
-            lpe::aov::AovSet::compile_with(&aovs.named(), &opts).map_err(|e| RenderError::Compile {
+            lpe::AovSet::compile_with(&aovs.named(), &opts).map_err(|e| RenderError::Compile {
                 reason: e.to_string(),
             })
         };
@@ -82,7 +82,7 @@ impl MatcherRow {
         let quiet = &mut |_: &crate::aov::plan::Plan| {};
         match self {
             MatcherRow::Fast => {
-                let set = fast(lpe::aov::Options::default().dfa_budget)?;
+                let set = fast(lpe::Options::default().dfa_budget)?;
                 render_with(&set, scene, aovs, lobes, settings, quiet)
             }
             MatcherRow::Nfa => render_with(&fast(0)?, scene, aovs, lobes, settings, quiet),
