@@ -14,7 +14,7 @@
 //! - [`output`]: EXR, PNG, contact sheet and the report;
 //! - [`verify`]: invariants, statistics, chi-square tests, known-answer scenes, the
 //!   `check` suite, `converge`, `stress`, plots and tables;
-//! - [`bench`]: the cost of LPE tracking.
+//! - [`bench`](mod@bench): the cost of LPE tracking.
 
 // `!(x > 0.0)` is used on purpose throughout: it is true for NaN, which must take the
 // rejecting branch; `x <= 0.0` would let NaN through.
