@@ -27,7 +27,7 @@ const TYPE_EVENTS: u8 = 51;
 /// value "any other label").
 pub const MAX_LABELS: usize = 254;
 
-/// Why the baseline could not be built for a set.
+/// Why the baseline could not be built for a set (regex-automata's large errors boxed).
 #[derive(Clone, Debug, thiserror::Error)]
 pub enum BaselineError {
     /// The set mentions more labels than the label byte numbers.
@@ -40,13 +40,13 @@ pub enum BaselineError {
     },
     /// The Thompson NFA (over [`SIZE_LIMIT`], or otherwise unbuildable).
     #[error("{0}")]
-    Nfa(thompson::BuildError),
+    Nfa(Box<thompson::BuildError>),
     /// The dense DFA (over [`SIZE_LIMIT`], or otherwise unbuildable).
     #[error("{0}")]
-    Dense(dense::BuildError),
+    Dense(Box<dense::BuildError>),
     /// The lazy DFA.
     #[error("{0}")]
-    Lazy(hybrid::BuildError),
+    Lazy(Box<hybrid::BuildError>),
     /// The dense DFA has no anchored start state.
     #[error("{0}")]
     Start(regex_automata::dfa::StartError),
@@ -200,7 +200,7 @@ pub fn nfa(enc: &Encoding, aovs: &[(String, Lpe)]) -> Result<thompson::NFA, Base
                 .which_captures(thompson::WhichCaptures::None),
         )
         .build_many_from_hir(&hirs)
-        .map_err(BaselineError::Nfa)
+        .map_err(|e| BaselineError::Nfa(Box::new(e)))
 }
 
 /// A dense DFA reporting every matching pattern, anchored starts only.
@@ -214,7 +214,7 @@ pub fn dense(nfa: &thompson::NFA) -> Result<dense::DFA<Vec<u32>>, BaselineError>
                 .determinize_size_limit(Some(SIZE_LIMIT)),
         )
         .build_from_nfa(nfa)
-        .map_err(BaselineError::Dense)
+        .map_err(|e| BaselineError::Dense(Box::new(e)))
 }
 
 /// A lazy DFA reporting every matching pattern.
@@ -222,7 +222,7 @@ pub fn lazy(nfa: thompson::NFA) -> Result<hybrid::dfa::DFA, BaselineError> {
     hybrid::dfa::Builder::new()
         .configure(hybrid::dfa::DFA::config().match_kind(MatchKind::All))
         .build_from_nfa(nfa)
-        .map_err(BaselineError::Lazy)
+        .map_err(|e| BaselineError::Lazy(Box::new(e)))
 }
 
 fn anchored() -> start::Config {

@@ -562,9 +562,33 @@ mod tests {
         let rule: Vec<&str> = lines[1].split('|').collect();
         assert!(rule[1].ends_with('-') && rule[3].ends_with(':'), "{text}");
         assert!(rule[6].ends_with(':') && rule[7].ends_with('-'), "{text}");
-        for cell in ["1.23", "0.50x", "250 µs", "3.0 MiB", "DFA"] {
-            assert!(lines[2].contains(cell), "{cell}: {text}");
-        }
-        assert!(lines[3].contains("| - "), "{text}");
+        let cells =
+            |line: &str| -> Vec<String> { line.split('|').map(|c| c.trim().to_string()).collect() };
+        let filled = [
+            "",
+            "basic",
+            "fast, on vertices",
+            "1.23",
+            "0.50x",
+            "250 µs",
+            "3.0 MiB",
+            "DFA",
+            "",
+        ];
+        assert_eq!(cells(lines[2]), filled, "{text}");
+        let empty = [
+            "",
+            "basic",
+            "reference, per path",
+            "-",
+            "-",
+            "-",
+            "-",
+            "",
+            "",
+        ];
+        assert_eq!(cells(lines[3]), empty, "{text}");
+        // Right-aligned: a figure's cell ends at the column rule.
+        assert!(lines[2].contains(" 1.23 |"), "{text}");
     }
 }

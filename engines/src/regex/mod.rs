@@ -33,7 +33,8 @@ use regex_syntax::hir::{Hir, Look};
 use crate::engine::{Engine, EngineError, Matcher};
 use encode::Labels;
 
-/// Why the regex-automata engine cannot build a set.
+/// Why the regex-automata engine cannot build a set. regex-automata's errors are boxed:
+/// they are large, and every `compile` result carries this type.
 #[derive(Clone, Debug, thiserror::Error)]
 pub enum BuildError {
     /// The set mentions more distinct labels than the label byte can number.
@@ -46,14 +47,14 @@ pub enum BuildError {
     },
     /// The Thompson NFA is over [`SizeLimits::nfa`] (or otherwise unbuildable).
     #[error("NFA: {0}")]
-    Nfa(thompson::BuildError),
+    Nfa(Box<thompson::BuildError>),
     /// The dense DFA failed for a reason other than its size limit (over the limit,
     /// the eager engine falls back to the lazy DFA).
     #[error("DFA: {0}")]
-    Dfa(dense::BuildError),
+    Dfa(Box<dense::BuildError>),
     /// The lazy DFA could not be configured.
     #[error("lazy DFA: {0}")]
-    LazyDfa(hybrid::BuildError),
+    LazyDfa(Box<hybrid::BuildError>),
 }
 
 /// Limits on what one compile may allocate.
@@ -146,7 +147,7 @@ impl RegexEngine {
                     .nfa_size_limit(Some(self.limits.nfa)),
             )
             .build_many_from_hir(&hirs)
-            .map_err(BuildError::Nfa)?;
+            .map_err(|e| BuildError::Nfa(Box::new(e)))?;
         let dense = if self.eager {
             dense::Builder::new()
                 .configure(
@@ -165,7 +166,7 @@ impl RegexEngine {
             Ok(Some(d)) => Searcher::Dense(Box::new(d)),
             Ok(None) => self.lazy(nfa)?,
             Err(e) if e.is_size_limit_exceeded() => self.lazy(nfa)?,
-            Err(e) => return Err(BuildError::Dfa(e)),
+            Err(e) => return Err(BuildError::Dfa(Box::new(e))),
         };
         Ok(RegexMatcher {
             labels,
@@ -187,7 +188,7 @@ impl RegexEngine {
                     .minimum_cache_clear_count(None),
             )
             .build_from_nfa(nfa)
-            .map_err(BuildError::LazyDfa)?;
+            .map_err(|e| BuildError::LazyDfa(Box::new(e)))?;
         let cache = RefCell::new(lazy.create_cache());
         Ok(Searcher::Lazy(Box::new((lazy, cache))))
     }
