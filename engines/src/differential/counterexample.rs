@@ -7,7 +7,7 @@ use lpe::{Lpe, Path};
 /// Engines that disagree, on a minimized input.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Counterexample {
-    /// The minimized expressions (one for [`check`]).
+    /// The minimized expressions (one for [`check`](super::check())).
     pub exprs: Vec<Lpe>,
     /// The minimized path.
     pub path: Path,

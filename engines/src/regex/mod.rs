@@ -1,6 +1,6 @@
 //! The engine registered as `oracle`: light path expressions translated to
 //! `regex-automata` over a fixed-width byte encoding of vertices ([`encode`]), by set
-//! algebra over the finite vertex universe ([`translate`]).
+//! algebra over the finite vertex universe ([`translate`](mod@translate)).
 //!
 //! One compile builds **one** multi-pattern automaton for the whole set of expressions
 //! (`MatchKind::All`, anchored start, `$` at the end of every pattern); one overlapping
