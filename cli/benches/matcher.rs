@@ -8,8 +8,7 @@
 use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use lpe::aov::Options;
-use lpe::AovSet;
+use lpe::{AovSet, Options};
 use lpe_cli::bench::{self, baseline, sample, workload};
 
 /// Small enough for quick runs, large enough to leave the caches' comfort zone no more

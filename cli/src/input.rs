@@ -29,7 +29,7 @@ pub enum InputError {
         /// The file.
         path: PathBuf,
         /// Which line, and what.
-        error: lpe::ini::IniError,
+        error: lpe::IniError,
     },
     /// An expression does not parse (the error shows the byte position with a caret).
     #[error("{0}")]

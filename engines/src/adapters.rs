@@ -1,8 +1,7 @@
 //! The workspace's own matchers behind [`Engine`]: the backtracking reference and lpe's
 //! AOV set in its two stepping modes.
 
-use lpe::aov::Options;
-use lpe::{AovSet, Lpe, Path};
+use lpe::{AovSet, Lpe, Options, Path};
 
 use crate::engine::{Engine, EngineError, Matcher};
 

@@ -15,7 +15,7 @@ pub enum EngineError {
     /// lpe's compiler refused the set (the `fast` and `nfa` engines): too many AOVs, or
     /// an automaton over a limit.
     #[error("cannot build: {0}")]
-    Compile(lpe::aov::CompileError),
+    Compile(lpe::CompileError),
     /// The regex-automata translation refused the set (the `oracle` engine).
     #[error("cannot build: {0}")]
     Regex(BuildError),
@@ -24,8 +24,8 @@ pub enum EngineError {
 // Written out rather than `#[from]`, which would also make the inner error the
 // `source()`: its text is already in the message, and error-chain printers would show
 // it twice.
-impl From<lpe::aov::CompileError> for EngineError {
-    fn from(e: lpe::aov::CompileError) -> Self {
+impl From<lpe::CompileError> for EngineError {
+    fn from(e: lpe::CompileError) -> Self {
         EngineError::Compile(e)
     }
 }

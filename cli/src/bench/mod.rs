@@ -16,8 +16,7 @@ pub mod workload;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use lpe::aov::Options;
-use lpe::{AovMask, AovSet, Class};
+use lpe::{AovMask, AovSet, Class, Options};
 use lpe::{Lpe, Path, Vertex};
 use regex_automata::dfa::dense;
 use regex_automata::hybrid;
@@ -272,7 +271,7 @@ pub enum BenchError {
         /// The workload.
         workload: &'static str,
         /// Why.
-        error: lpe::aov::CompileError,
+        error: lpe::CompileError,
     },
     /// The regex-automata baseline could not be built for a workload.
     #[error("{0}")]
@@ -411,7 +410,7 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
             None => {
                 r.note = format!(
                     "over the {} positions a stepping state holds",
-                    64 * lpe::aov::NFA_STATE_WORDS
+                    64 * lpe::automata::mask::NFA_STATE_WORDS
                 )
             }
         }

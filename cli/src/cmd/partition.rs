@@ -11,8 +11,7 @@
 use std::process::ExitCode;
 
 use lpe::analysis::{self, Partition};
-use lpe::aov::AovSet;
-use lpe::Lpe;
+use lpe::{AovSet, Lpe};
 
 use crate::input::{bad_input, load_parser, InputError};
 use crate::witness::{self, Disagreement, Expect};

@@ -7,7 +7,8 @@
 //! Case `i` of seed `s` is generated from its own PRNG stream, so a run is deterministic
 //! for a seed and a reported case can be regenerated alone (`--first i --cases 1`).
 
-use lpe::generate::{self, Choices, Config, Rng};
+use lpe::generate::{self, Choices, Config};
+use lpe::rng::SplitMix64 as Rng;
 use lpe::{Lpe, Path};
 
 use super::check::{check_with, Outcome};
