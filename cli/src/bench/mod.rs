@@ -1,4 +1,4 @@
-//! The matcher benchmark shared by `lpe-check bench` (a table) and `cargo bench -p lpe`
+//! The matcher benchmark shared by `lpe-check bench` (a table) and `cargo bench -p lpe-cli`
 //! (criterion): workloads, a path sampler, the regex-automata baseline, and one timed
 //! loop per engine.
 //!
