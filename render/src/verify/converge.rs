@@ -16,7 +16,9 @@ use serde::Serialize;
 use std::path::Path;
 
 use super::known::{cornell, furnace, point_over_plane, sphere_over_plane, Known, SPHERE};
-use crate::aov::matcher::{CheckEngine, Reference, WholePathMatcher};
+#[cfg(feature = "engines")]
+use crate::aov::matcher::CheckEngine;
+use crate::aov::matcher::{Reference, WholePathMatcher};
 use crate::aov::AovList;
 use crate::film::{Accumulation, Film};
 use crate::integrator::{Render, RenderError, Settings, Technique};
@@ -33,8 +35,9 @@ pub enum MatcherRow {
     Fast,
     /// The fast matcher with its DFA budget at 0: the bitset NFA stepped per vertex.
     Nfa,
-    /// The regex-automata oracle (lazy DFA over the encoded path), run on every emitter
-    /// reached.
+    /// The regex-automata engine (lazy DFA over the encoded path), run on every emitter
+    /// reached. Only with the `engines` feature.
+    #[cfg(feature = "engines")]
     Oracle,
     /// `reference::is_match`, memoized per distinct vertex sequence.
     ReferenceMemo,
@@ -43,10 +46,18 @@ pub enum MatcherRow {
 }
 
 impl MatcherRow {
+    #[cfg(feature = "engines")]
     pub const ALL: [MatcherRow; 5] = [
         MatcherRow::Fast,
         MatcherRow::Nfa,
         MatcherRow::Oracle,
+        MatcherRow::ReferenceMemo,
+        MatcherRow::Reference,
+    ];
+    #[cfg(not(feature = "engines"))]
+    pub const ALL: [MatcherRow; 4] = [
+        MatcherRow::Fast,
+        MatcherRow::Nfa,
         MatcherRow::ReferenceMemo,
         MatcherRow::Reference,
     ];
@@ -55,6 +66,7 @@ impl MatcherRow {
         match self {
             MatcherRow::Fast => "fast",
             MatcherRow::Nfa => "nfa",
+            #[cfg(feature = "engines")]
             MatcherRow::Oracle => "oracle",
             MatcherRow::ReferenceMemo => "reference-memo",
             MatcherRow::Reference => "reference",
@@ -86,11 +98,9 @@ impl MatcherRow {
                 render_with(&set, scene, aovs, lobes, settings, quiet)
             }
             MatcherRow::Nfa => render_with(&fast(0)?, scene, aovs, lobes, settings, quiet),
+            #[cfg(feature = "engines")]
             MatcherRow::Oracle => {
-                let m = WholePathMatcher::direct(CheckEngine::new(
-                    &oracle::regex_oracle::ORACLE,
-                    &lpes,
-                )?);
+                let m = WholePathMatcher::direct(CheckEngine::new(&engines::regex::LAZY, &lpes)?);
                 render_with(&m, scene, aovs, lobes, settings, quiet)
             }
             MatcherRow::ReferenceMemo => {
