@@ -1,0 +1,401 @@
+//! The AOV list: from `--aov NAME=LPE`, RenderMan `DisplayChannel` lines, or the
+//! defaults (the seven basic AOVs, the per-lobe set, per-light-group splits), plus the
+//! partitions of beauty the defaults are known to form.
+
+use lpe::macros::{BASIC, OTHER, PER_LOBE};
+use lpe::{EventKind, Lpe, Parser, Prefix};
+
+use crate::scene::Scene;
+
+/// Why an AOV list could not be built.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum AovError {
+    #[error(
+        "AOV name `{name}`: use letters, digits, `_` and `-` (it names an EXR layer and a file)"
+    )]
+    BadName { name: String },
+    #[error("AOV name `{name}` is used twice (`beauty` is reserved)")]
+    DuplicateName { name: String },
+    #[error("AOV `{name}`: {error}")]
+    Parse {
+        name: String,
+        error: Box<lpe::Error>,
+    },
+    #[error("--aov `{arg}`: expected NAME=LPE, e.g. diffuse=lpe:C<RD>[<L.>O]")]
+    BadArgument { arg: String },
+    #[error("at most {max} AOVs, got {count}")]
+    TooMany { count: usize, max: usize },
+    #[error("{file}:{line}: {problem}")]
+    DisplayChannel {
+        file: String,
+        line: usize,
+        problem: DisplayProblem,
+    },
+}
+
+/// What is wrong with a `DisplayChannel` line.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum DisplayProblem {
+    #[error("unterminated string")]
+    UnterminatedString,
+    #[error("expected `DisplayChannel \"color NAME\" ...`")]
+    NoDeclaration,
+    #[error("channel `{name}`: \"string source\" needs a value")]
+    SourceWithoutValue { name: String },
+}
+
+/// How an AOV accumulates: its prefixes, decoded (docs/language.md §7; the integrator
+/// documents each one where it applies it).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct AovFlags {
+    pub unoccluded: bool,
+    pub shadows: bool,
+    pub nothruput: bool,
+    pub noclamp: bool,
+    pub overwrite: bool,
+    pub noinfinitecheck: bool,
+    pub holdouts: bool,
+}
+
+impl AovFlags {
+    /// No prefix that changes what a contribution adds (weights, throughput, clamp,
+    /// holdouts): such an AOV receives exactly beauty's contribution. `overwrite` and
+    /// `noinfinitecheck` act when a sample is committed, not per contribution.
+    pub fn values_like_beauty(&self) -> bool {
+        !(self.unoccluded || self.shadows || self.nothruput || self.noclamp || self.holdouts)
+    }
+
+    pub fn of(lpe: &Lpe) -> AovFlags {
+        let p = lpe.prefixes;
+        AovFlags {
+            unoccluded: p.contains(Prefix::Unoccluded),
+            shadows: p.contains(Prefix::Shadows),
+            nothruput: p.contains(Prefix::Nothruput),
+            noclamp: p.contains(Prefix::Noclamp),
+            overwrite: p.contains(Prefix::Overwrite),
+            noinfinitecheck: p.contains(Prefix::Noinfinitecheck),
+            holdouts: p.contains(Prefix::Holdouts),
+        }
+    }
+}
+
+/// One AOV: its layer name, the source as given, and the parsed expression.
+#[derive(Clone, Debug)]
+pub struct Aov {
+    pub name: String,
+    pub source: String,
+    pub lpe: Lpe,
+    pub flags: AovFlags,
+}
+
+/// AOVs whose sum should equal beauty, by construction of the default set.
+#[derive(Clone, Debug)]
+pub struct Partition {
+    pub name: String,
+    pub members: Vec<usize>,
+    /// Whether the members partition *every* light-transport path, or only this scene's
+    /// (the per-lobe set covers just the lobes the scene's materials map into it).
+    pub universal: bool,
+}
+
+#[derive(Clone, Debug, Default)]
+pub struct AovList {
+    pub aovs: Vec<Aov>,
+    pub partitions: Vec<Partition>,
+    /// Why a default partition was not checked (e.g. lobes outside the per-lobe set).
+    pub notes: Vec<String>,
+}
+
+impl AovList {
+    /// Parses and appends one AOV; names must be unique and usable as EXR layer and
+    /// file names.
+    pub fn push(&mut self, name: &str, source: &str, parser: &Parser) -> Result<usize, AovError> {
+        if name.is_empty()
+            || !name
+                .chars()
+                .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
+        {
+            return Err(AovError::BadName { name: name.into() });
+        }
+        if name == "beauty" || self.aovs.iter().any(|a| a.name == name) {
+            return Err(AovError::DuplicateName { name: name.into() });
+        }
+        let lpe = parser.parse(source).map_err(|error| AovError::Parse {
+            name: name.into(),
+            error: Box::new(error),
+        })?;
+        self.aovs.push(Aov {
+            name: name.to_string(),
+            source: source.to_string(),
+            flags: AovFlags::of(&lpe),
+            lpe,
+        });
+        Ok(self.aovs.len() - 1)
+    }
+
+    /// `(name, expression)` pairs, as `lpe::AovSet::compile` takes them.
+    pub fn named(&self) -> Vec<(String, Lpe)> {
+        self.aovs
+            .iter()
+            .map(|a| (a.name.clone(), a.lpe.clone()))
+            .collect()
+    }
+
+    pub fn lpes(&self) -> Vec<Lpe> {
+        self.aovs.iter().map(|a| a.lpe.clone()).collect()
+    }
+
+    pub fn index(&self, name: &str) -> Option<usize> {
+        self.aovs.iter().position(|a| a.name == name)
+    }
+
+    /// The seven basic AOVs, declared as the partition of beauty they are.
+    pub fn basic(parser: &Parser) -> Result<AovList, AovError> {
+        let mut list = AovList::default();
+        let members = BASIC
+            .iter()
+            .map(|(n, _)| list.push(n, &format!("lpe:{n}"), parser))
+            .collect::<Result<_, _>>()?;
+        list.partitions.push(Partition {
+            name: "basic AOVs".into(),
+            members,
+            universal: true,
+        });
+        Ok(list)
+    }
+
+    /// The AOV list for a render: the defaults, plus for the furnace the per-bounce AOVs
+    /// `furnace_bounceK = C<RD>{K}O`.
+    pub fn for_render(scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
+        let mut list = AovList::defaults(scene, parser)?;
+        if crate::verify::known::furnace_params(scene).is_some() {
+            for k in 0..=crate::verify::known::FURNACE_BOUNCES {
+                list.push(
+                    &format!("furnace_bounce{k}"),
+                    &format!("C<RD>{{{k}}}O"),
+                    parser,
+                )?;
+            }
+        }
+        Ok(list)
+    }
+
+    /// The default AOVs for `scene` and the partitions they form.
+    pub fn defaults(scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
+        let mut list = AovList::basic(parser)?;
+        let basic = list.partitions[0].members.clone();
+
+        let glass_t = OTHER.iter().find(|(n, _)| *n == "transmissiveGlassLobe");
+        let mut lobes: Vec<usize> = PER_LOBE
+            .iter()
+            .chain(glass_t)
+            .map(|(n, _)| list.push(n, &format!("lpe:{n}"), parser))
+            .collect::<Result<_, _>>()?;
+        // The per-lobe set splits paths by the event of their first vertex: it covers
+        // beauty only if every lobe in the scene maps to D2, D3 or S2..S8.
+        let outside: Vec<String> = scene
+            .materials
+            .iter()
+            .flat_map(|m| &m.lobes)
+            .filter(|l| {
+                let e = l.event;
+                !matches!(
+                    (e.kind(), e.lobe()),
+                    (EventKind::D, 2 | 3) | (EventKind::S, 2..=8)
+                )
+            })
+            .map(|l| format!("{} ({})", l.name, l.event))
+            .collect();
+        if outside.is_empty() {
+            lobes.push(basic[6]); // emissive
+            list.partitions.push(Partition {
+                name: "per-lobe AOVs + emissive".into(),
+                members: lobes,
+                universal: false,
+            });
+        } else {
+            list.notes.push(format!(
+                "per-lobe partition not checked: lobes outside the per-lobe set: {}",
+                outside.join(", ")
+            ));
+        }
+
+        let groups: Vec<String> = scene
+            .light_groups()
+            .into_iter()
+            .filter(|g| !g.contains('\''))
+            .collect();
+        if !groups.is_empty() {
+            let mut members = Vec::new();
+            for g in &groups {
+                members.push(list.push(
+                    &format!("lightgroup_{}", sanitize(g)),
+                    &format!("C.*<L.'{g}'>"),
+                    parser,
+                )?);
+            }
+            let quoted: Vec<String> = groups.iter().map(|g| format!("'{g}'")).collect();
+            members.push(list.push(
+                "lightgroup_default",
+                &format!("C.*<L.[^{}]>", quoted.join(" ")),
+                parser,
+            )?);
+            members.push(list.push("lightgroup_emission", "C.*O", parser)?);
+            list.partitions.push(Partition {
+                name: "light groups + default group + emission".into(),
+                members,
+                universal: true,
+            });
+        }
+        Ok(list)
+    }
+}
+
+/// A light group name as a layer-name fragment.
+fn sanitize(g: &str) -> String {
+    g.chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '-' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect()
+}
+
+/// Splits `NAME=LPE` (the first `=` separates: expressions never contain one).
+pub fn split_aov_arg(arg: &str) -> Result<(&str, &str), AovError> {
+    arg.split_once('=')
+        .map(|(n, s)| (n.trim(), s.trim()))
+        .ok_or_else(|| AovError::BadArgument { arg: arg.into() })
+}
+
+/// AOVs read from `DisplayChannel` lines.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct DisplayChannels {
+    /// `(name, source)` of each LPE channel, in file order.
+    pub channels: Vec<(String, String)>,
+    /// Channels skipped because their source is not an LPE, with file and line.
+    pub warnings: Vec<String>,
+}
+
+/// Reads RenderMan `DisplayChannel` lines:
+/// `DisplayChannel "color NAME" "string source" ["color lpe:EXPR"]`.
+pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels, AovError> {
+    let mut out = Vec::new();
+    let mut warnings = Vec::new();
+    for (n, line) in text.lines().enumerate() {
+        let at = |m: String| format!("{file}:{}: {m}", n + 1);
+        let fail = |problem| AovError::DisplayChannel {
+            file: file.into(),
+            line: n + 1,
+            problem,
+        };
+        let t = line.trim();
+        if !t.starts_with("DisplayChannel") {
+            continue;
+        }
+        let mut quoted = Vec::new();
+        let mut rest = &t["DisplayChannel".len()..];
+        while let Some(start) = rest.find('"') {
+            let Some(len) = rest[start + 1..].find('"') else {
+                return Err(fail(DisplayProblem::UnterminatedString));
+            };
+            quoted.push(&rest[start + 1..start + 1 + len]);
+            rest = &rest[start + 2 + len..];
+        }
+        let Some(decl) = quoted.first() else {
+            return Err(fail(DisplayProblem::NoDeclaration));
+        };
+        let name = decl
+            .split_whitespace()
+            .last()
+            .unwrap_or_default()
+            .to_string();
+        let Some(pos) = quoted
+            .iter()
+            .position(|q| q.split_whitespace().collect::<Vec<_>>() == ["string", "source"])
+        else {
+            warnings.push(at(format!(
+                "channel `{name}` has no \"string source\": skipped"
+            )));
+            continue;
+        };
+        let Some(src) = quoted.get(pos + 1) else {
+            return Err(fail(DisplayProblem::SourceWithoutValue { name }));
+        };
+        // The value is "TYPE SOURCE", e.g. "color lpe:C<RD>[<L.>O]".
+        let source = src
+            .trim()
+            .split_once(char::is_whitespace)
+            .map_or(src.trim(), |(_, s)| s.trim());
+        if !source.starts_with("lpe:") {
+            warnings.push(at(format!(
+                "channel `{name}` has source `{source}`, not an LPE: skipped (beauty is always written)"
+            )));
+            continue;
+        }
+        out.push((name, source.to_string()));
+    }
+    Ok(DisplayChannels {
+        channels: out,
+        warnings,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn display_channels_are_read() {
+        let text = r#"
+# a comment
+DisplayChannel "color directDiffuse" "string source" ["color lpe:C<RD>[<L.>O]"]
+DisplayChannel "varying color key" "string source" "color lpe:C.*<L.'key'>"
+DisplayChannel "color Ci"
+DisplayChannel "color beauty2" "string source" ["color Ci"]
+"#;
+        let DisplayChannels {
+            channels: ch,
+            warnings: warn,
+        } = parse_display_channels(text, "d.rib").unwrap();
+        assert_eq!(
+            ch,
+            vec![
+                ("directDiffuse".into(), "lpe:C<RD>[<L.>O]".into()),
+                ("key".into(), "lpe:C.*<L.'key'>".into()),
+            ]
+        );
+        assert_eq!(warn.len(), 2);
+        assert!(warn[0].starts_with("d.rib:5:"), "{warn:?}");
+        let e = parse_display_channels("DisplayChannel \"color x", "d.rib").unwrap_err();
+        assert!(e.to_string().starts_with("d.rib:1:"), "{e}");
+    }
+
+    #[test]
+    fn names_and_expressions_are_checked() {
+        let p = Parser::default();
+        let mut l = AovList::default();
+        l.push("a", "C<RD>L", &p).unwrap();
+        assert!(l
+            .push("a", "CL", &p)
+            .unwrap_err()
+            .to_string()
+            .contains("twice"));
+        assert!(l.push("beauty", "CL", &p).is_err());
+        assert!(l
+            .push("a.b", "CL", &p)
+            .unwrap_err()
+            .to_string()
+            .contains("letters"));
+        assert!(l
+            .push("b", "C<L'key'>", &p)
+            .unwrap_err()
+            .to_string()
+            .contains("AOV `b`"));
+        assert!(split_aov_arg("noequals").is_err());
+        assert_eq!(split_aov_arg("x=C.*L").unwrap(), ("x", "C.*L"));
+    }
+}
