@@ -65,6 +65,17 @@ pub struct Case {
     pub refused_by: Vec<String>,
 }
 
+impl Case {
+    /// Expectations the case states: one per (expression, path) answer, per landing,
+    /// per expected error and per malformed path.
+    pub fn vectors(&self) -> usize {
+        (self.matches.len() + self.no_match.len()) * (1 + self.same_as.len())
+            + self.lands.len()
+            + usize::from(self.error.is_some())
+            + self.bad_path.len()
+    }
+}
+
 /// One AOV of a set.
 #[derive(Clone, Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -264,7 +275,7 @@ fn validate(case: &Case) -> Result<(), String> {
             return Err(format!("`{}` is not an error kind", e.kind));
         }
     }
-    for p in case.matches.iter().filter(|p| case.no_match.contains(p)) {
+    if let Some(p) = case.matches.iter().find(|p| case.no_match.contains(p)) {
         return Err(format!("`{p}` is in both `match` and `no_match`"));
     }
     Ok(())
@@ -489,6 +500,53 @@ fn answer_text(m: bool) -> String {
     if m { "match" } else { "no-match" }.to_string()
 }
 
+/// What a case compiles and asks: the expressions (compiled together, as one set), a
+/// label for failures, and per path the expected answer of each expression.
+struct Plan<'a> {
+    sources: Vec<&'a str>,
+    label: String,
+    expected: Vec<(&'a str, Vec<bool>)>,
+}
+
+impl<'a> Plan<'a> {
+    fn of(case: &'a Case) -> Plan<'a> {
+        if let Some(expr) = &case.expr {
+            let mut sources = vec![expr.as_str()];
+            sources.extend(case.same_as.iter().map(String::as_str));
+            let n = sources.len();
+            let expected = case
+                .matches
+                .iter()
+                .map(|p| (p.as_str(), vec![true; n]))
+                .chain(case.no_match.iter().map(|p| (p.as_str(), vec![false; n])))
+                .collect();
+            return Plan {
+                sources,
+                label: expr.clone(),
+                expected,
+            };
+        }
+        let label = case
+            .aovs
+            .iter()
+            .map(|a| format!("{}={}", a.name, a.expr))
+            .collect::<Vec<_>>()
+            .join(", ");
+        Plan {
+            sources: case.aovs.iter().map(|a| a.expr.as_str()).collect(),
+            label: format!("{{{label}}}"),
+            expected: case
+                .lands
+                .iter()
+                .map(|l| {
+                    let hit = case.aovs.iter().map(|a| l.aovs.contains(&a.name)).collect();
+                    (l.path.as_str(), hit)
+                })
+                .collect(),
+        }
+    }
+}
+
 fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
     let case = &loaded.case;
     let fail =
@@ -547,10 +605,7 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
             Ok(l) => format!("a valid expression `{l}`"),
             Err(e) => {
                 let text = e.to_string();
-                let needle_ok = want
-                    .says
-                    .as_ref()
-                    .map_or(true, |s| text.contains(s.as_str()));
+                let needle_ok = want.says.as_ref().is_none_or(|s| text.contains(s.as_str()));
                 if kind_name(e.kind()) == want.kind && e.span().start == want.at && needle_ok {
                     return;
                 }
@@ -579,37 +634,11 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
         return;
     }
 
-    // The expressions to compile together, and per path the expected answer of each.
-    let (sources, label, expected): (Vec<&str>, String, Vec<(&str, Vec<bool>)>) =
-        if let Some(expr) = &case.expr {
-            let mut sources = vec![expr.as_str()];
-            sources.extend(case.same_as.iter().map(String::as_str));
-            let n = sources.len();
-            let rows = case
-                .matches
-                .iter()
-                .map(|p| (p.as_str(), vec![true; n]))
-                .chain(case.no_match.iter().map(|p| (p.as_str(), vec![false; n])))
-                .collect();
-            (sources, expr.clone(), rows)
-        } else {
-            let sources = case.aovs.iter().map(|a| a.expr.as_str()).collect();
-            let label = case
-                .aovs
-                .iter()
-                .map(|a| format!("{}={}", a.name, a.expr))
-                .collect::<Vec<_>>()
-                .join(", ");
-            let rows = case
-                .lands
-                .iter()
-                .map(|l| {
-                    let hit = case.aovs.iter().map(|a| l.aovs.contains(&a.name)).collect();
-                    (l.path.as_str(), hit)
-                })
-                .collect();
-            (sources, format!("{{{label}}}"), rows)
-        };
+    let Plan {
+        sources,
+        label,
+        expected,
+    } = Plan::of(case);
     if expected.is_empty() {
         return;
     }
@@ -656,7 +685,7 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
         let (engine, config) = (subject.engine(), subject.config());
         // Paths over the configuration's `max_path_len` have unspecified answers.
         let keep: Vec<usize> = (0..paths.len())
-            .filter(|&i| subject.max_path_len().map_or(true, |n| paths[i].len() <= n))
+            .filter(|&i| subject.max_path_len().is_none_or(|n| paths[i].len() <= n))
             .collect();
         report.too_long += paths.len() - keep.len();
         let kept: Vec<&Path> = keep.iter().map(|&i| &paths[i]).collect();
