@@ -1,9 +1,9 @@
 //! AOV sets: many expressions compiled into one automaton, stepped once per vertex.
 //!
 //! [`AovSet::compile`] builds, for a list of `(name, expression)` pairs:
-//! 1. the compressed alphabet ([`crate::alphabet`]): vertices grouped into [`Class`]es;
-//! 2. one bitset Glushkov NFA holding every AOV's positions (module `nfa`);
-//! 3. a minimized dense DFA over it (module `dfa`), unless that would exceed
+//! 1. the compressed alphabet (module `automata::alphabet`): vertices grouped into [`Class`]es;
+//! 2. one bitset Glushkov NFA holding every AOV's positions (module `automata::nfa`);
+//! 3. a minimized dense DFA over it (module `automata::dfa`), unless that would exceed
 //!    [`Options::dfa_budget`]; then the set steps the NFA instead. Both give the same
 //!    answers (the `fast` and `nfa` engines of the differential harness check that).
 //!
@@ -41,76 +41,14 @@
 
 use std::fmt;
 
-use crate::alphabet::Alphabet;
-pub use crate::alphabet::Class;
-use crate::analysis::{self, Warning};
+use crate::analysis::emptiness::{self, Warning};
 use crate::ast::Atom;
-use crate::bits;
-use crate::dfa::Dfa;
-use crate::nfa::{Builder, Nfa, Parts};
+use crate::automata::alphabet::Alphabet;
+use crate::automata::dfa::Dfa;
+use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
+use crate::automata::nfa::{Builder, Nfa, Parts};
 use crate::path::{Path, Vertex};
 use crate::Lpe;
-
-/// Most AOVs one set holds (the width of [`AovMask`]).
-pub const MAX_AOVS: usize = 256;
-const MASK_WORDS: usize = MAX_AOVS / 64;
-
-/// Which AOVs of a set match: bit `i` is the set's `i`-th AOV.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
-pub struct AovMask([u64; MASK_WORDS]);
-
-impl AovMask {
-    /// No AOV.
-    pub const EMPTY: AovMask = AovMask([0; MASK_WORDS]);
-
-    /// Whether AOV `i` matches (false for `i >= MAX_AOVS`).
-    #[inline]
-    pub fn contains(&self, i: usize) -> bool {
-        i < MAX_AOVS && bits::get(&self.0, i)
-    }
-
-    /// Adds AOV `i` (ignored for `i >= MAX_AOVS`).
-    pub fn insert(&mut self, i: usize) {
-        if i < MAX_AOVS {
-            bits::set(&mut self.0, i);
-        }
-    }
-
-    /// No AOV matches.
-    #[inline]
-    pub fn is_empty(&self) -> bool {
-        self.0.iter().all(|&w| w == 0)
-    }
-
-    /// How many AOVs match.
-    #[inline]
-    pub fn count(&self) -> usize {
-        self.0.iter().map(|w| w.count_ones() as usize).sum()
-    }
-
-    /// The matching AOVs, in increasing order.
-    pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
-        bits::ones(self.0)
-    }
-}
-
-impl FromIterator<usize> for AovMask {
-    /// The mask of these AOV indices (indices `>= MAX_AOVS` are ignored).
-    fn from_iter<I: IntoIterator<Item = usize>>(iter: I) -> AovMask {
-        let mut m = AovMask::EMPTY;
-        iter.into_iter().for_each(|i| m.insert(i));
-        m
-    }
-}
-
-/// Widest NFA state a [`State`] holds inline: sets stepped on the NFA (their DFA is over
-/// budget) may have at most `64 * NFA_STATE_WORDS` positions.
-pub const NFA_STATE_WORDS: usize = 4;
-
-/// Where a path is in the automaton: a DFA state id, or the active NFA positions. Small,
-/// `Copy`, and only meaningful for the set that produced it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct State([u64; NFA_STATE_WORDS]);
 
 /// Compile-time knobs.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -147,8 +85,26 @@ impl Default for Options {
 pub enum CompileError {
     /// More than [`MAX_AOVS`] expressions.
     TooManyAovs(usize),
-    /// The automaton exceeds a limit; the message says which and how to get under it.
-    TooLarge(String),
+    /// The NFA's follow sets alone (one row per position: `positions^2 / 8` bytes) would
+    /// exceed [`Options::nfa_budget`].
+    NfaOverBudget {
+        /// NFA positions the set unrolls to, the start included.
+        positions: u64,
+        /// Bytes the follow sets would take; `None` when that overflows `u64`.
+        bytes: Option<u64>,
+        /// [`Options::nfa_budget`].
+        budget: usize,
+    },
+    /// The DFA exceeds [`Options::dfa_budget`], and the NFA has more positions than a
+    /// [`State`] holds, so the set cannot step the NFA instead either.
+    TooManyPositions {
+        /// NFA positions, the start included.
+        positions: usize,
+        /// Most positions a stepping state holds (`64 * NFA_STATE_WORDS`).
+        max: usize,
+        /// [`Options::dfa_budget`].
+        dfa_budget: usize,
+    },
 }
 
 impl fmt::Display for CompileError {
@@ -160,7 +116,33 @@ impl fmt::Display for CompileError {
                     "{n} AOVs in one set, over the limit of {MAX_AOVS}: split the set"
                 )
             }
-            CompileError::TooLarge(why) => f.write_str(why),
+            CompileError::NfaOverBudget {
+                positions,
+                bytes,
+                budget,
+            } => {
+                let need = bytes.map_or("more than 2^64 bytes".into(), |b| {
+                    format!("{} MiB", b >> 20)
+                });
+                write!(
+                    f,
+                    "the set unrolls to {positions} NFA positions; its follow sets would need \
+                     {need}, over the NFA budget of {} MiB (lower the repetition counts, \
+                     or set `max_path_len` so long bounded repeats compile as unbounded)",
+                    budget >> 20
+                )
+            }
+            CompileError::TooManyPositions {
+                positions,
+                max,
+                dfa_budget,
+            } => write!(
+                f,
+                "the set's DFA exceeds the budget of {} MiB and its NFA has {positions} \
+                 positions, more than the {max} a stepping state holds: raise `dfa_budget`, \
+                 or split the set",
+                dfa_budget >> 20
+            ),
         }
     }
 }
@@ -206,17 +188,15 @@ impl AovSet {
             None
         };
         if dfa.is_none() && nfa.words() > NFA_STATE_WORDS {
-            return Err(CompileError::TooLarge(format!(
-                "the set's DFA exceeds the budget of {} MiB and its NFA has {} positions, \
-                 more than the {} a stepping state holds: raise `dfa_budget`, or split the set",
-                opts.dfa_budget >> 20,
-                nfa.positions,
-                64 * NFA_STATE_WORDS
-            )));
+            return Err(CompileError::TooManyPositions {
+                positions: nfa.positions,
+                max: 64 * NFA_STATE_WORDS,
+                dfa_budget: opts.dfa_budget,
+            });
         }
         let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
         let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
-        let warnings = analysis::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
+        let warnings = emptiness::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
         let nfa_positions = nfa.positions;
         Ok(AovSet {
             names,
@@ -242,13 +222,11 @@ impl AovSet {
             .checked_mul(positions.div_ceil(64))
             .and_then(|r| r.checked_mul(8));
         if rows.is_none_or(|r| r > opts.nfa_budget as u64) {
-            return Err(CompileError::TooLarge(format!(
-                "the set unrolls to {positions} NFA positions; its follow sets would need {} \
-                 MiB, over the NFA budget of {} MiB (lower the repetition counts, or set \
-                 `max_path_len` so long bounded repeats compile as unbounded)",
-                rows.map_or("more than 2^64 bytes".into(), |t| (t >> 20).to_string()),
-                opts.nfa_budget >> 20
-            )));
+            return Err(CompileError::NfaOverBudget {
+                positions,
+                bytes: rows,
+                budget: opts.nfa_budget,
+            });
         }
         let mut builder = Builder::new(opts.max_path_len);
         let mut parts = Parts {
@@ -400,19 +378,14 @@ impl AovSet {
     }
 }
 
-impl State {
-    #[inline]
-    fn id(id: u32) -> State {
-        let mut s = [0u64; NFA_STATE_WORDS];
-        s[0] = u64::from(id);
-        State(s)
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::parse;
+
+    fn lpe(s: &str) -> Lpe {
+        parse(s).unwrap()
+    }
 
     fn set(srcs: &[&str], opts: &Options) -> AovSet {
         let aovs: Vec<(String, Lpe)> = srcs
@@ -436,19 +409,36 @@ mod tests {
     }
 
     #[test]
-    fn mask_holds_more_than_64_aovs() {
-        let mut m = AovMask::EMPTY;
-        m.insert(3);
-        m.insert(200);
-        m.insert(MAX_AOVS);
-        assert!(m.contains(200) && m.contains(3) && !m.contains(4));
-        assert_eq!(m.iter().collect::<Vec<_>>(), [3, 200]);
-        assert_eq!(m.count(), 2);
+    fn emptiness_warning_for_camera_star() {
+        let set = AovSet::compile(&[("c".into(), lpe("C.*")), ("ok".into(), lpe("C.*L"))]).unwrap();
+        let w = set.warnings();
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert_eq!(w[0].aov, 0);
+        assert!(
+            w[0].message.contains("never reaches an emitter"),
+            "{}",
+            w[0]
+        );
+    }
+
+    #[test]
+    fn emptiness_reasons() {
+        let cases = [
+            ("C<CD>L", "matches no vertex"),
+            ("RDL", "other than the camera"),
+            ("CLRDL", "in the middle"),
+        ];
+        for (src, needle) in cases {
+            let set = AovSet::compile(&[("x".into(), lpe(src))]).unwrap();
+            let w = set.warnings();
+            assert_eq!(w.len(), 1, "{src}: {w:?}");
+            assert!(w[0].message.contains(needle), "{src}: {}", w[0]);
+        }
     }
 
     #[test]
     fn hand_checked_paths() {
-        // Expected answers worked out from DESIGN.md §3 by hand.
+        // Expected answers worked out by hand from the spec (docs/language.md).
         let cases = [
             ("C<RD>[<L.>O]", "C RD2 L", true),
             ("C<RD>[<L.>O]", "C TD2 L", false),
@@ -567,6 +557,24 @@ mod tests {
         let e = parse("C(.{256}){200}L").unwrap();
         let err = AovSet::compile(&[("big".into(), e)]).unwrap_err();
         assert!(err.to_string().contains("NFA budget"), "{err}");
+        assert!(
+            matches!(err, CompileError::NfaOverBudget { positions, bytes: Some(b), budget }
+                if positions > 50_000 && b > budget as u64 && budget == 16 << 20),
+            "{err:?}"
+        );
+        // 303 positions (the start included) are five words, one more than a stepping
+        // state holds: without a DFA the set cannot step.
+        let e = parse("C(.{100}){3}L").unwrap();
+        let err = AovSet::compile_with(&[("wide".into(), e)], &nfa_only()).unwrap_err();
+        assert_eq!(
+            err,
+            CompileError::TooManyPositions {
+                positions: 303,
+                max: 256,
+                dfa_budget: 0
+            }
+        );
+        assert!(err.to_string().contains("raise `dfa_budget`"), "{err}");
         let many: Vec<(String, Lpe)> = (0..=MAX_AOVS)
             .map(|i| (i.to_string(), parse("CL").unwrap()))
             .collect();

@@ -1,5 +1,5 @@
 //! The abstract syntax of light path expressions, independent of any dialect's surface
-//! syntax (DESIGN.md §3).
+//! syntax (docs/language.md, expressions).
 //!
 //! A front end ([`crate::syntax`] for RenderMan's dialect) produces these values; every
 //! engine consumes them. The [`fmt::Display`] impls are the canonical printer: printing
@@ -26,8 +26,9 @@
 //! at this position, minus the items". At the top level `.` is an R/T vertex with a D or
 //! S event; in a triple's type position `.` is `[RT]`; in the event position it is "D or
 //! S" for R/T and "no event" for C/L/O; in the label position it is "any label or none",
-//! so `[^'foo']` there matches unlabelled vertices too. DESIGN.md fixes the top level and
-//! the label position; the type and event positions follow the same rule by choice.
+//! so `[^'foo']` there matches unlabelled vertices too. The spec (docs/language.md) fixes the
+//! top level and the label position; the type and event positions follow the same rule by
+//! choice.
 
 use std::fmt;
 

@@ -8,7 +8,7 @@
 //! (mutate a field, drop it, duplicate it), and [`uniform_path`] draws noise.
 //! [`biased_path`] mixes the three.
 //!
-//! Every function draws its decisions from a [`Choices`] source: a seeded [`Rng`]
+//! Every function draws its decisions from a [`Choices`] source: a seeded [`SplitMix64`]
 //! (deterministic runs, e.g. `lpe-check diff --seed`), or with feature `arbitrary` a
 //! fuzzer's `arbitrary::Unstructured` (so a fuzzer's mutations steer the structure and
 //! an exhausted input still yields a small, valid value).
@@ -19,10 +19,11 @@
 //! # Testing your own matcher
 //!
 //! ```
-//! use lpe::generate::{self, Config, Rng};
+//! use lpe::generate::{self, Config};
+//! use lpe::rng::SplitMix64;
 //!
 //! let cfg = Config::default();
-//! let mut rng = Rng::new(42);
+//! let mut rng = SplitMix64::new(42);
 //! for _ in 0..100 {
 //!     let expr = generate::path_shaped_expr(&mut rng, &cfg);
 //!     let path = generate::biased_path(&expr, &mut rng, &cfg);
@@ -43,6 +44,7 @@ use crate::ast::{
 };
 use crate::path::{Event, EventKind, Path, Vertex, VertexType};
 use crate::prefix::{Prefix, Prefixes};
+use crate::rng::SplitMix64;
 
 /// A source of decisions.
 pub trait Choices {
@@ -60,30 +62,9 @@ pub trait Choices {
     }
 }
 
-/// A small deterministic PRNG (SplitMix64): same seed, same cases, on every platform.
-#[derive(Clone, Debug)]
-pub struct Rng(u64);
-
-impl Rng {
-    /// A generator for `seed`.
-    pub fn new(seed: u64) -> Rng {
-        Rng(seed)
-    }
-
-    /// The next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-}
-
-impl Choices for Rng {
+impl Choices for SplitMix64 {
     fn below(&mut self, n: usize) -> usize {
-        // Multiply-high: unbiased enough for test generation, no division.
-        ((u128::from(self.next_u64()) * n.max(1) as u128) >> 64) as usize
+        SplitMix64::below(self, n)
     }
 }
 
@@ -755,7 +736,7 @@ mod tests {
     #[test]
     fn generated_expressions_are_normalized_and_bounded() {
         let cfg = Config::default();
-        let mut rng = Rng::new(7);
+        let mut rng = SplitMix64::new(7);
         for _ in 0..20_000 {
             let e = if rng.chance(50) {
                 expr(&mut rng, &cfg)
@@ -809,9 +790,9 @@ mod tests {
             items: vec![],
         });
         for e in [empty_alt, empty_class] {
-            assert_eq!(matching_path(&e, &mut Rng::new(1), &cfg), None);
+            assert_eq!(matching_path(&e, &mut SplitMix64::new(1), &cfg), None);
             // biased_path falls back to noise.
-            assert!(biased_path(&e, &mut Rng::new(1), &cfg).len() >= 2);
+            assert!(biased_path(&e, &mut SplitMix64::new(1), &cfg).len() >= 2);
         }
     }
 
@@ -819,7 +800,7 @@ mod tests {
     fn same_seed_same_cases() {
         let cfg = Config::default();
         let run = |seed| {
-            let mut rng = Rng::new(seed);
+            let mut rng = SplitMix64::new(seed);
             (0..50)
                 .map(|_| {
                     let e = path_shaped_expr(&mut rng, &cfg);
@@ -835,7 +816,7 @@ mod tests {
     #[test]
     fn walks_of_simple_expressions_give_the_expected_shapes() {
         let cfg = Config::default();
-        let mut rng = Rng::new(1);
+        let mut rng = SplitMix64::new(1);
         let e = crate::parse("C<RD'floor'><TS8>[<L.'key'>]").unwrap().expr;
         let p = matching_path(&e, &mut rng, &cfg).unwrap();
         let v = p.vertices();
@@ -850,7 +831,7 @@ mod tests {
     #[test]
     fn near_misses_differ_from_their_path_and_stay_valid() {
         let cfg = Config::default();
-        let mut rng = Rng::new(9);
+        let mut rng = SplitMix64::new(9);
         let mut changed = 0;
         for _ in 0..500 {
             let p = uniform_path(&mut rng, &cfg);

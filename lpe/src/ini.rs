@@ -13,9 +13,9 @@
 
 use std::fmt;
 
-use crate::lobes::{LobeCategory, LobeMap};
+use crate::lobes::{LobeCategory, LobeError, LobeMap};
 use crate::macros::MacroTable;
-use crate::syntax::{Limits, Parser};
+use crate::syntax::{Error, Limits, Parser};
 
 /// Macros and lobe mappings, from defaults plus an optional ini file.
 #[derive(Clone, Debug, Default)]
@@ -34,16 +34,60 @@ pub struct IniError {
     /// One-based line number.
     pub line: usize,
     /// What is wrong.
-    pub message: String,
+    pub kind: IniErrorKind,
+}
+
+/// What is wrong with one line of an ini file.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum IniErrorKind {
+    /// `/prman/lpe/macro/NAME` with a name that is not letters, digits and `_`.
+    BadMacroName(String),
+    /// A macro defined with no expression.
+    EmptyMacro(String),
+    /// A key under `/prman/lpe/` that is neither a macro nor a lobe mapping.
+    UnknownKey(String),
+    /// A lobe mapping that names no lobes.
+    NoLobeNames(String),
+    /// A lobe mapping outside its category's range.
+    Lobe(LobeError),
+    /// A macro whose expression does not parse.
+    Macro(Box<Error>),
+}
+
+impl fmt::Display for IniErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            IniErrorKind::BadMacroName(name) => {
+                write!(f, "macro name `{name}` must be letters, digits and `_`")
+            }
+            IniErrorKind::EmptyMacro(name) => write!(f, "macro `{name}` has no expression"),
+            IniErrorKind::UnknownKey(key) => write!(
+                f,
+                "unknown key `{key}`: expected /prman/lpe/macro/NAME, /prman/lpe/diffuseN, \
+                 /prman/lpe/specularN or /prman/lpe/userN"
+            ),
+            IniErrorKind::NoLobeNames(key) => write!(f, "`{key}` lists no lobe names"),
+            IniErrorKind::Lobe(e) => write!(f, "{e}"),
+            IniErrorKind::Macro(e) => f.write_str(&e.one_line()),
+        }
+    }
 }
 
 impl fmt::Display for IniError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "line {}: {}", self.line, self.message)
+        write!(f, "line {}: {}", self.line, self.kind)
     }
 }
 
-impl std::error::Error for IniError {}
+impl std::error::Error for IniError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match &self.kind {
+            IniErrorKind::Lobe(e) => Some(e),
+            IniErrorKind::Macro(e) => Some(e.as_ref()),
+            _ => None,
+        }
+    }
+}
 
 impl Config {
     /// The defaults updated by the lines of an ini file.
@@ -58,7 +102,7 @@ impl Config {
         let mut defined = Vec::new();
         for (n, raw) in text.lines().enumerate() {
             let line = n + 1;
-            let err = |message: String| IniError { line, message };
+            let err = |kind: IniErrorKind| IniError { line, kind };
             let trimmed = raw.trim();
             if trimmed.is_empty() || trimmed.starts_with('#') {
                 continue;
@@ -72,12 +116,10 @@ impl Config {
             };
             if let Some(name) = rest.strip_prefix("macro/") {
                 if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
-                    return Err(err(format!(
-                        "macro name `{name}` must be letters, digits and `_`"
-                    )));
+                    return Err(err(IniErrorKind::BadMacroName(name.to_string())));
                 }
                 if value.is_empty() {
-                    return Err(err(format!("macro `{name}` has no expression")));
+                    return Err(err(IniErrorKind::EmptyMacro(name.to_string())));
                 }
                 self.macros.define(name, value);
                 defined.push((line, name.to_string()));
@@ -88,9 +130,7 @@ impl Config {
                     .is_some_and(|d| !d.is_empty() && d.bytes().all(|b| b.is_ascii_digit()))
             });
             let Some(category) = category else {
-                return Err(err(format!(
-                    "unknown key `{key}`: expected /prman/lpe/macro/NAME, /prman/lpe/diffuseN, /prman/lpe/specularN or /prman/lpe/userN"
-                )));
+                return Err(err(IniErrorKind::UnknownKey(key.to_string())));
             };
             let lobe: u8 = rest[category.ini_name().len()..].parse().unwrap_or(0);
             let names: Vec<&str> = value
@@ -99,15 +139,17 @@ impl Config {
                 .filter(|s| !s.is_empty())
                 .collect();
             if names.is_empty() {
-                return Err(err(format!("`{key}` lists no lobe names")));
+                return Err(err(IniErrorKind::NoLobeNames(key.to_string())));
             }
-            self.lobes.assign(category, lobe, names).map_err(err)?;
+            self.lobes
+                .assign(category, lobe, names)
+                .map_err(|e| err(IniErrorKind::Lobe(e)))?;
         }
         let parser = self.parser();
         for (line, name) in defined {
             parser.parse(&name).map_err(|e| IniError {
                 line,
-                message: e.one_line(),
+                kind: IniErrorKind::Macro(Box::new(e)),
             })?;
         }
         Ok(())

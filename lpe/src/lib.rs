@@ -1,14 +1,33 @@
 //! # lpe — Light Path Expressions, parsed and matched right
 //!
 //! Renderers route every light path into AOVs with expressions such as
-//! `C<RD>.+[<L.>O]` ("indirect diffuse"). This crate holds the language: the path model
-//! ([`path`]), the expression syntax tree ([`ast`]), the RenderMan-dialect front end
-//! ([`syntax`]) with prefixes ([`prefix`]), macros ([`macros`]), lobe mappings
-//! ([`lobes`]) and `rendermn.ini` loading ([`ini`]).
+//! `C<RD>.+[<L.>O]` ("indirect diffuse"). This crate holds the language, the automata a
+//! set of expressions compiles into, and the formal analysis on them. It depends on no
+//! other crate of the workspace.
 //!
-//! The semantics are pinned down in the project's DESIGN.md and executed by the
-//! `lpe-reference` crate; the decisions this crate makes where DESIGN.md is silent are
-//! documented on the items that make them ([`path`], [`ast`], [`syntax`]).
+//! # Modules, bottom-up
+//!
+//! - The language: the path model ([`path`]), the expression syntax tree ([`ast`]), the
+//!   RenderMan-dialect front end ([`syntax`]: lexer, parser, errors with spans) with
+//!   prefixes ([`prefix`]), macros ([`macros`]), lobe mappings ([`lobes`]) and
+//!   `rendermn.ini` loading ([`ini`]).
+//! - The automata ([`automata`]): the shared ids in the leaf [`automata::mask`]
+//!   ([`AovMask`], [`Class`], [`State`], [`MAX_AOVS`]), then the compressed alphabet,
+//!   the bitset Glushkov NFA and the minimized DFA (crate-private).
+//! - The facade ([`aov`]): [`AovSet`] compiles a list of AOVs under [`Options`] into one
+//!   automaton and steps it; [`CompileError`] says why a set did not compile.
+//! - The seam ([`matcher`]): [`PathMatcher`], the incremental matcher trait renderers
+//!   program against; [`AovSet`] implements it.
+//! - The formal side ([`analysis`]): emptiness warnings (on the NFA alone), equivalence
+//!   and inclusion, partition checks, each with a shortest witness path.
+//! - Utilities: [`rng`] (the workspace's one SplitMix64), [`fxhash`] (fast maps for small
+//!   keys), and behind features the test generators `generate` (`arbitrary` or
+//!   `proptest`) and `strategy` (`proptest`).
+//!
+//! The semantics are specified in the repository's docs/language.md and executed by the
+//! `lpe-reference` crate; the decisions this crate makes where a renderer could expect
+//! either answer are documented on the items that make them ([`path`], [`ast`],
+//! [`syntax`]).
 //!
 //! ```
 //! use lpe::{parse, Path};
@@ -25,14 +44,15 @@
 //!
 //! # Matching in a renderer
 //!
-//! [`aov::AovSet`] compiles a list of AOVs into one automaton (a minimized DFA over
+//! [`AovSet`] compiles a list of AOVs into one automaton (a minimized DFA over
 //! compressed vertex classes, or a bitset Glushkov NFA when the DFA is over its memory
 //! budget). Compile once at scene load, classify each material lobe once, share the set
 //! across render threads (it is `Send + Sync`, lock-free and immutable), and step one
-//! vertex at a time; a step never allocates:
+//! vertex at a time; a step never allocates (the same loop, generic over any engine, is
+//! in [`matcher`]):
 //!
 //! ```
-//! use lpe::aov::{AovSet, Class};
+//! use lpe::{AovSet, Class};
 //! use lpe::{parse, Event, EventKind, Lpe, Vertex, VertexType};
 //!
 //! // Scene load: compile the AOVs, classify every material lobe once.
@@ -81,19 +101,19 @@
 
 #![warn(missing_docs)]
 
-pub mod alphabet;
 pub mod analysis;
 pub mod aov;
 pub mod ast;
+pub mod automata;
 mod bits;
-mod dfa;
 pub mod fxhash;
 pub mod ini;
 pub mod lobes;
 pub mod macros;
-mod nfa;
+pub mod matcher;
 pub mod path;
 pub mod prefix;
+pub mod rng;
 pub mod syntax;
 
 #[cfg(any(feature = "arbitrary", feature = "proptest"))]
@@ -101,10 +121,12 @@ pub mod generate;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 
-pub use aov::{AovMask, AovSet, Class, State};
+pub use aov::{AovSet, CompileError, Options};
 pub use ast::{Expr, Lpe};
-pub use ini::Config;
-pub use lobes::{LobeCategory, LobeMap};
+pub use automata::mask::{AovMask, Class, State, MAX_AOVS};
+pub use ini::{Config, IniError, IniErrorKind};
+pub use lobes::{LobeCategory, LobeError, LobeMap};
+pub use matcher::PathMatcher;
 pub use path::{Event, EventKind, Path, PathError, Vertex, VertexType};
 pub use prefix::{Prefix, Prefixes};
 pub use syntax::{parse, Error, ErrorKind, Limits, Parser};

@@ -1,4 +1,4 @@
-//! Named material lobes to LPE lobes (DESIGN.md §2, "Lobe map").
+//! Named material lobes to LPE lobes (docs/language.md, lobes).
 //!
 //! Materials name their lobes (`Diffuse`, `Clearcoat`, `Albedo`…); a [`LobeMap`] turns a
 //! named lobe of a given [`LobeCategory`] into the [`Event`] a vertex records. Names not
@@ -6,6 +6,7 @@
 //! case-sensitively, as RenderMan's do.
 
 use std::collections::BTreeMap;
+use std::fmt;
 
 use crate::path::{Event, EventKind};
 
@@ -125,15 +126,14 @@ impl LobeMap {
         category: LobeCategory,
         lobe: u8,
         names: impl IntoIterator<Item = &'a str>,
-    ) -> Result<(), String> {
+    ) -> Result<(), LobeError> {
         let kind = category.kind();
         if Event::new(kind, lobe).is_none() {
-            return Err(format!(
-                "{}{lobe}: {} lobes are 1 to {}",
-                category.ini_name(),
-                category.ini_name(),
-                kind.max_lobe()
-            ));
+            return Err(LobeError::OutOfRange {
+                category,
+                lobe,
+                max: kind.max_lobe(),
+            });
         }
         let map = &mut self.maps[category as usize];
         for n in names {
@@ -155,6 +155,37 @@ impl LobeMap {
         by_lobe.into_iter().filter(|(_, v)| v.len() > 1).collect()
     }
 }
+
+/// Why a lobe mapping was refused.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum LobeError {
+    /// `lobe` is not in `1..=max` for its category.
+    OutOfRange {
+        /// The category the name was mapped in.
+        category: LobeCategory,
+        /// The lobe asked for.
+        lobe: u8,
+        /// The category's last lobe.
+        max: u8,
+    },
+}
+
+impl fmt::Display for LobeError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            LobeError::OutOfRange {
+                category,
+                lobe,
+                max,
+            } => {
+                let name = category.ini_name();
+                write!(f, "{name}{lobe}: {name} lobes are 1 to {max}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for LobeError {}
 
 #[cfg(test)]
 mod tests {

@@ -1,5 +1,5 @@
 //! Named expressions: RenderMan's built-in LPE macros and user macros from a
-//! `rendermn.ini`-style file (DESIGN.md §3).
+//! `rendermn.ini`-style file (docs/language.md, macros).
 //!
 //! Names are case-insensitive. A user macro with a built-in's name replaces it (the last
 //! definition wins), as a later `rendermn.ini` line would.
@@ -62,7 +62,7 @@ impl Default for MacroTable {
 }
 
 impl MacroTable {
-    /// The built-in macros of DESIGN.md §3.
+    /// RenderMan's built-in macros (docs/language.md, macros).
     pub fn builtin() -> MacroTable {
         MacroTable {
             entries: BASIC

@@ -1,4 +1,4 @@
-//! Light paths as a renderer records them (DESIGN.md §2).
+//! Light paths as a renderer records them (docs/language.md, paths).
 //!
 //! A path is `C v1 ... vn E`: a camera vertex, scattering vertices (`R`/`T`) and one
 //! emitter at the end (`L` light or `O` emissive object). Scattering vertices carry an
@@ -8,7 +8,7 @@
 //! event with lobe number (bare `D`, `S`, `U` mean lobe 1), then an optional label in
 //! single quotes: `C RD2'floor' TS8 RS1 L'key'`.
 //!
-//! Decisions where DESIGN.md is silent (documented here so the engines agree):
+//! Decisions a renderer could expect either way (documented here so the engines agree):
 //! - interior vertices must be `R` or `T` (a renderer never records a camera or an emitter
 //!   mid-path), and a path has at least two vertices (`C L`);
 //! - the camera vertex carries no label;

@@ -211,7 +211,7 @@ pub fn biased_paths(expr: &Expr, n: usize) -> impl Strategy<Value = Vec<Path>> {
             labels: LABELS.map(str::to_string).to_vec(),
             ..crate::generate::Config::default()
         };
-        let mut rng = crate::generate::Rng::new(seed);
+        let mut rng = crate::rng::SplitMix64::new(seed);
         (0..n)
             .map(|_| crate::generate::biased_path(&expr, &mut rng, &cfg))
             .collect()

@@ -20,7 +20,7 @@ use std::sync::{Mutex, RwLock};
 
 /// Most AOVs one render can route to, and the mask of AOVs that match: the fast
 /// matcher's own types, shared so engines hand masks over without converting.
-pub use lpe::aov::{AovMask, MAX_AOVS};
+pub use lpe::{AovMask, MAX_AOVS};
 
 /// An LPE engine as the integrator uses it. AOV `i` is the `i`-th expression the
 /// matcher was built from.
@@ -44,8 +44,8 @@ pub trait PathMatcher: Sync {
 /// The fast matcher: one automaton for all AOVs, stepped once per vertex on the classes
 /// computed at scene setup.
 impl PathMatcher for lpe::aov::AovSet {
-    type Class = lpe::aov::Class;
-    type State = lpe::aov::State;
+    type Class = lpe::Class;
+    type State = lpe::State;
 
     fn classify(&self, v: &Vertex) -> Self::Class {
         lpe::aov::AovSet::classify(self, v)

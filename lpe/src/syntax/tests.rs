@@ -1,5 +1,5 @@
 //! Parser tests: each construct against a hand-built AST, and every error case of
-//! DESIGN.md §3 with its kind and position.
+//! docs/language.md with its kind and position.
 
 use super::*;
 use crate::ast::{EventPattern, Expr, Repetition};

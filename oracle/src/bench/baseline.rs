@@ -20,7 +20,7 @@ use regex_automata::util::start;
 use regex_automata::{Anchored, MatchKind};
 use regex_syntax::hir::{self, Class, ClassBytes, ClassBytesRange, Hir, Look};
 
-use lpe::aov::AovMask;
+use lpe::AovMask;
 
 const TYPE_EVENTS: u8 = 51;
 

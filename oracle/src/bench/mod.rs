@@ -16,7 +16,7 @@ pub mod workload;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use lpe::aov::{AovMask, AovSet, Class, Options};
+use lpe::{AovMask, AovSet, Class, Options};
 use lpe::{Lpe, Path, Vertex};
 use regex_automata::dfa::dense;
 use regex_automata::hybrid;
@@ -372,7 +372,7 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, String> {
             None => {
                 r.note = format!(
                     "over the {} positions a stepping state holds",
-                    64 * lpe::aov::NFA_STATE_WORDS
+                    64 * lpe::automata::mask::NFA_STATE_WORDS
                 )
             }
         }

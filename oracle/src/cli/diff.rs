@@ -11,7 +11,8 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use lpe::generate::{self, Choices, Config, Rng};
+use lpe::generate::{self, Choices, Config};
+use lpe::rng::SplitMix64 as Rng;
 use lpe::{Lpe, Path};
 
 use crate::differential::{self, Outcome};

@@ -11,28 +11,16 @@
 //! exact (OSL does the same with a per-state default transition).
 //!
 //! Each distinct atom of the compiled set is evaluated once on every raw symbol (with the
-//! predicate code in this module, written from DESIGN.md §3 and the table in
+//! predicate code in this module, written from docs/language.md and the table in
 //! [`crate::ast`]); raw symbols with the same answers from every atom form one [`Class`].
 //! `Alphabet::classify` is then arithmetic plus one label lookup plus one table load.
 
 use crate::fxhash::FxMap;
 
 use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
+use crate::automata::mask::Class;
 use crate::bits;
 use crate::path::{Event, Vertex, VertexType};
-
-/// An equivalence class of vertices: no compiled atom tells two vertices of one class
-/// apart. Obtained from [`crate::aov::AovSet::classify`]; only meaningful for the set
-/// that produced it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Class(pub(crate) u32);
-
-impl Class {
-    /// The class number, `0..class_count`.
-    pub fn index(self) -> usize {
-        self.0 as usize
-    }
-}
 
 /// Number of `(type, event)` combinations: C, L, O, then R and T with 24 events each.
 pub(crate) const TYPE_EVENTS: usize = 3 + 2 * EVENTS;
@@ -369,7 +357,7 @@ impl Alphabet {
     }
 }
 
-// --- The predicates: one atom against one raw symbol (DESIGN.md §3). ---
+// --- The predicates: one atom against one raw symbol (docs/language.md, atoms). ---
 
 /// `.` at the top level: R or T with a D or S event.
 fn dot(s: &Sym) -> bool {

@@ -22,9 +22,9 @@
 
 use crate::fxhash::FxMap;
 
-use crate::alphabet::Alphabet;
-use crate::aov::AovMask;
 use crate::ast::{Atom, Expr, Repetition};
+use crate::automata::alphabet::Alphabet;
+use crate::automata::mask::AovMask;
 use crate::bits::{self, set};
 
 /// What the Glushkov construction computes for one subexpression.
@@ -447,20 +447,12 @@ impl Nfa {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::aov::Options;
     use crate::parse;
+    use crate::rng::SplitMix64;
 
-    /// SplitMix64: `crate::generate::Rng` exists only with the test-generation features.
-    struct Rng(u64);
-
-    impl Rng {
-        fn next_u64(&mut self) -> u64 {
-            self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-            let z = (self.0 ^ (self.0 >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-            let z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-            z ^ (z >> 31)
-        }
-    }
+    /// `Options::default().nfa_budget`, spelled out so that the automata need not see
+    /// the facade.
+    const DEFAULT_NFA_BUDGET: usize = 16 << 20;
 
     /// The NFA of `srcs` with the given table budget, and its class count.
     fn nfa(srcs: &[&str], table_budget: usize) -> (Nfa, usize) {
@@ -489,9 +481,9 @@ mod tests {
             &["C(.{100}){3}L", "C<RD'a'>*<TS'b'>L"],
             &["CR<CD>L", "C<L.'a'>", "C(U|S2)+O"],
         ];
-        let mut rng = Rng(7);
+        let mut rng = SplitMix64::new(7);
         for srcs in sets {
-            let (tabled, classes) = nfa(srcs, Options::default().nfa_budget);
+            let (tabled, classes) = nfa(srcs, DEFAULT_NFA_BUDGET);
             let (rows_only, _) = nfa(srcs, 0);
             assert!(tabled.has_step_tables(), "{srcs:?}");
             assert!(!rows_only.has_step_tables(), "{srcs:?}");

@@ -14,8 +14,8 @@
 
 use crate::fxhash::FxMap;
 
-use crate::aov::AovMask;
-use crate::nfa::Nfa;
+use crate::automata::mask::AovMask;
+use crate::automata::nfa::Nfa;
 
 /// Hashing work (state x class visits) minimization may spend before giving up.
 const MAX_MINIMIZE_WORK: usize = 20_000_000;

@@ -1,0 +1,26 @@
+//! Formal analysis on the automata: emptiness, equivalence and inclusion, partition
+//! checks, each with the shortest witness path.
+//!
+//! All searches run over *paths* only (docs/language.md, paths: `C`, then `R`/`T` vertices, then one
+//! `L` or `O`), as the product of the set's automaton with that path shape:
+//! - emptiness ([`crate::aov::AovSet::warnings`]) needs no determinization: a breadth-first search
+//!   over `(NFA position, shape state)` pairs, linear in the NFA;
+//! - comparisons and partitions need subsets of positions, so they search over
+//!   [`crate::State`]s (the DFA's when it was built, else NFA subsets made on the
+//!   fly), breadth-first, so the first witness found is a shortest one, bounded by
+//!   [`MAX_SEARCH_STATES`].
+//!
+//! A witness is built from one representative vertex per class (an unmentioned label
+//! becomes a fresh name such as `other`). Callers that print witnesses should re-check
+//! them with an independent matcher; `lpe-check` does, with the reference matcher.
+
+mod compare;
+pub(crate) mod emptiness;
+mod partition;
+mod search;
+mod shape;
+
+pub use compare::{compare, Comparison};
+pub use emptiness::Warning;
+pub use partition::{default_universe, partition, Partition, DEFAULT_UNIVERSE};
+pub use search::{AnalysisError, MAX_SEARCH_STATES};

@@ -1,0 +1,112 @@
+//! The breadth-first search over complete paths that comparisons and partitions share,
+//! with the witness it rebuilds and the error it gives up with.
+
+use std::fmt;
+
+use super::shape::{NONE, PATH};
+use crate::aov::{AovSet, CompileError, Options};
+use crate::automata::alphabet::Group;
+use crate::automata::mask::{AovMask, State};
+use crate::fxhash::FxSet;
+use crate::path::{Path, Vertex};
+
+/// Most `(state, shape)` pairs a comparison or partition search visits before giving up.
+pub const MAX_SEARCH_STATES: usize = 2_000_000;
+
+/// Why an analysis gave no answer.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum AnalysisError {
+    /// The expressions did not compile into one set.
+    Compile(CompileError),
+    /// The search passed [`MAX_SEARCH_STATES`].
+    TooLarge(usize),
+}
+
+impl fmt::Display for AnalysisError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            AnalysisError::Compile(e) => write!(f, "{e}"),
+            AnalysisError::TooLarge(n) => write!(
+                f,
+                "the search visited more than {n} automaton states without finishing"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for AnalysisError {}
+
+impl From<CompileError> for AnalysisError {
+    fn from(e: CompileError) -> Self {
+        AnalysisError::Compile(e)
+    }
+}
+
+/// Visits every distinct end state of a complete path, shortest path first, calling
+/// `visit(mask, witness)`; `visit` returns `true` to stop. Dead states are pruned, so
+/// masks are never empty.
+pub(super) fn explore(
+    set: &AovSet,
+    mut visit: impl FnMut(AovMask, &dyn Fn() -> Path) -> bool,
+) -> Result<(), AnalysisError> {
+    let alphabet = set.alphabet();
+    // Letters: (class, group) with a representative vertex.
+    let letters: Vec<(usize, Group, Vertex)> = (0..alphabet.class_count())
+        .flat_map(|c| {
+            Group::ALL
+                .into_iter()
+                .filter_map(move |g| alphabet.representative(c, g).map(|v| (c, g, v)))
+        })
+        .collect();
+    let classes: Vec<_> = letters.iter().map(|(_, _, v)| set.classify(v)).collect();
+    // Node: (state, shape state); parent index and letter, for the witness.
+    let mut nodes: Vec<(State, u8, usize, usize)> = vec![(set.start(), 0, usize::MAX, 0)];
+    let mut seen: FxSet<(State, u8)> = FxSet::default();
+    seen.insert((set.start(), 0));
+    let mut head = 0;
+    while head < nodes.len() {
+        let (state, shape, _, _) = nodes[head];
+        for (l, (_, group, _)) in letters.iter().enumerate() {
+            let t = PATH.next[shape as usize][group.index()];
+            if t == NONE {
+                continue;
+            }
+            let next = set.step_class(state, classes[l]);
+            if set.is_dead(next) || !seen.insert((next, t)) {
+                continue;
+            }
+            if nodes.len() >= MAX_SEARCH_STATES {
+                return Err(AnalysisError::TooLarge(MAX_SEARCH_STATES));
+            }
+            nodes.push((next, t, head, l));
+            if PATH.accept[t as usize] {
+                let end = nodes.len() - 1;
+                let witness = || {
+                    let mut vs = Vec::new();
+                    let mut i = end;
+                    while nodes[i].2 != usize::MAX {
+                        vs.push(letters[nodes[i].3].2.clone());
+                        i = nodes[i].2;
+                    }
+                    vs.reverse();
+                    // Built along the PATH shape from constructible vertices: valid.
+                    Path::new(vs).expect("witnesses follow the path shape")
+                };
+                if visit(set.matches(next), &witness) {
+                    return Ok(());
+                }
+            }
+        }
+        head += 1;
+    }
+    Ok(())
+}
+
+/// Analysis sets get a larger DFA budget than renderer sets: a search visits every state
+/// anyway, so a DFA built once is cheaper than subsets rebuilt per visit.
+pub(super) fn analysis_options() -> Options {
+    Options {
+        dfa_budget: 64 << 20,
+        ..Options::default()
+    }
+}
