@@ -12,8 +12,7 @@ use std::collections::BTreeSet;
 use std::fmt;
 use std::path::{Path as FsPath, PathBuf};
 
-use lpe::aov::Options;
-use lpe::{AovSet, ErrorKind, Lpe, Parser, Path};
+use lpe::{AovSet, ErrorKind, Lpe, Options, Parser, Path};
 use serde::Deserialize;
 
 // The one line to change when the engine registry moves crates.

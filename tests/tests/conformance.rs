@@ -186,7 +186,7 @@ fn a_wrong_vector_fails_on_every_subject() {
 #[test]
 fn a_refusal_fails_unless_the_case_allows_it() {
     // More AOVs than a set holds: the engines built on lpe's AOV set refuse it.
-    let aovs: Vec<String> = (0..=lpe::aov::MAX_AOVS)
+    let aovs: Vec<String> = (0..=lpe::MAX_AOVS)
         .map(|i| format!("{{ name = \"a{i}\", expr = \"CL\" }}"))
         .collect();
     let case = |refused_by: &str| {
