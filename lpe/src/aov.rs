@@ -41,10 +41,10 @@
 
 use std::fmt;
 
-use crate::analysis::emptiness::{self, Warning};
 use crate::ast::Atom;
 use crate::automata::alphabet::Alphabet;
 use crate::automata::dfa::Dfa;
+use crate::automata::emptiness::{self, Warning};
 use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
 use crate::automata::nfa::{Builder, Nfa, Parts};
 use crate::path::{Path, Vertex};

@@ -3,7 +3,8 @@
 //!
 //! All searches run over *paths* only (docs/language.md, paths: `C`, then `R`/`T` vertices, then one
 //! `L` or `O`), as the product of the set's automaton with that path shape:
-//! - emptiness ([`crate::aov::AovSet::warnings`]) needs no determinization: a breadth-first search
+//! - emptiness ([`crate::aov::AovSet::warnings`], computed in the automata layer when a set
+//!   compiles) needs no determinization: a breadth-first search
 //!   over `(NFA position, shape state)` pairs, linear in the NFA;
 //! - comparisons and partitions need subsets of positions, so they search over
 //!   [`crate::State`]s (the DFA's when it was built, else NFA subsets made on the
@@ -15,12 +16,10 @@
 //! them with an independent matcher; `lpe-check` does, with the reference matcher.
 
 mod compare;
-pub(crate) mod emptiness;
 mod partition;
 mod search;
-mod shape;
 
+pub use crate::automata::emptiness::Warning;
 pub use compare::{compare, Comparison};
-pub use emptiness::Warning;
 pub use partition::{default_universe, partition, Partition, DEFAULT_UNIVERSE};
 pub use search::{AnalysisError, MAX_SEARCH_STATES};

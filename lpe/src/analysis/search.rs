@@ -3,10 +3,10 @@
 
 use std::fmt;
 
-use super::shape::{NONE, PATH};
 use crate::aov::{AovSet, CompileError, Options};
 use crate::automata::alphabet::Group;
 use crate::automata::mask::{AovMask, State};
+use crate::automata::shape::{NONE, PATH};
 use crate::fxhash::FxSet;
 use crate::path::{Path, Vertex};
 

@@ -3,11 +3,17 @@
 //!   [`AovMask`](mask::AovMask)), a leaf every other layer uses;
 //! - `alphabet`: vertices folded into the classes the compiled atoms can tell apart;
 //! - `nfa`: the bitset Glushkov NFA of all AOVs at once;
-//! - `dfa`: the minimized dense DFA built from it, when it fits its budget.
+//! - `dfa`: the minimized dense DFA built from it, when it fits its budget;
+//! - `shape`: small DFAs over vertex groups (camera, scatter, emitter) that searches run in
+//!   product with, so they visit only sequences of a path's shape;
+//! - `emptiness`: which AOVs can match no path, a search on the NFA alone (no DFA, no
+//!   `AovSet`), so compiling a set can warn about them.
 //!
 //! [`crate::aov`] is the facade that builds and steps them.
 
 pub(crate) mod alphabet;
 pub(crate) mod dfa;
+pub(crate) mod emptiness;
 pub mod mask;
 pub(crate) mod nfa;
+pub(crate) mod shape;
