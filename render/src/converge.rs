@@ -18,7 +18,9 @@ use crate::aovs::AovList;
 use crate::camera::Camera;
 use crate::film::{Accumulation, Film};
 use crate::integrator::{Render, Settings, Technique};
-use crate::matcher::{CheckEngine, Reference, WholePathMatcher};
+#[cfg(feature = "engines")]
+use crate::matcher::CheckEngine;
+use crate::matcher::{Reference, WholePathMatcher};
 use crate::scene::Scene;
 
 /// The LPE engines `converge` can time. Each renders the same image (same paths, same
@@ -30,8 +32,9 @@ pub enum Engine {
     FastDfa,
     /// The fast matcher with its DFA budget at 0: the bitset NFA stepped per vertex.
     BitsetNfa,
-    /// The regex-automata oracle of `lpe-check` (lazy DFA over the encoded path), run on
-    /// every emitter reached.
+    /// The regex-automata engine of `lpe-check` (`oracle`: lazy DFA over the encoded
+    /// path), run on every emitter reached. Only with the `engines` feature.
+    #[cfg(feature = "engines")]
     Oracle,
     /// `reference::is_match`, memoized per distinct vertex sequence.
     ReferenceMemo,
@@ -40,10 +43,18 @@ pub enum Engine {
 }
 
 impl Engine {
+    #[cfg(feature = "engines")]
     pub const ALL: [Engine; 5] = [
         Engine::FastDfa,
         Engine::BitsetNfa,
         Engine::Oracle,
+        Engine::ReferenceMemo,
+        Engine::ReferenceDirect,
+    ];
+    #[cfg(not(feature = "engines"))]
+    pub const ALL: [Engine; 4] = [
+        Engine::FastDfa,
+        Engine::BitsetNfa,
         Engine::ReferenceMemo,
         Engine::ReferenceDirect,
     ];
@@ -52,6 +63,7 @@ impl Engine {
         match self {
             Engine::FastDfa => "fast-dfa",
             Engine::BitsetNfa => "bitset-nfa",
+            #[cfg(feature = "engines")]
             Engine::Oracle => "oracle",
             Engine::ReferenceMemo => "reference-memo",
             Engine::ReferenceDirect => "reference-direct",
@@ -81,11 +93,9 @@ impl Engine {
                 render_with(&set, scene, aovs, lobes, settings, quiet)
             }
             Engine::BitsetNfa => render_with(&fast(0)?, scene, aovs, lobes, settings, quiet),
+            #[cfg(feature = "engines")]
             Engine::Oracle => {
-                let m = WholePathMatcher::direct(CheckEngine::new(
-                    &oracle::regex_oracle::ORACLE,
-                    &lpes,
-                )?);
+                let m = WholePathMatcher::direct(CheckEngine::new(&engines::regex::LAZY, &lpes)?);
                 render_with(&m, scene, aovs, lobes, settings, quiet)
             }
             Engine::ReferenceMemo => {

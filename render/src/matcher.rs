@@ -11,8 +11,9 @@
 //! records the vertices, and at an emitter the engine ([`WholePath`]) answers for the
 //! whole path. [`ReferenceMatcher`] does this with `reference::is_match`, memoized per
 //! distinct path (renders revisit the same few vertex sequences millions of times) so
-//! a render on the fallback stays within budget; [`CheckEngine`] does it with any
-//! engine of `lpe-check`, which is how `converge` times the regex-automata oracle.
+//! a render on the fallback stays within budget; `CheckEngine` (feature `engines`) does
+//! it with any engine of the `lpe-engines` registry, which is how `converge` times the
+//! regex-automata engine (`oracle`).
 
 use lpe::{Lpe, Path, Vertex, VertexType};
 use std::hash::{Hash, Hasher};
@@ -146,22 +147,21 @@ fn check_count(aovs: &[Lpe]) -> Result<(), String> {
     }
 }
 
-/// An engine of `lpe-check` (`oracle::engine`), e.g. the regex-automata oracle. Its
-/// compiled matchers keep a mutable cache (the lazy DFA), so each thread slot compiles
-/// its own on first use.
+/// An engine of the `lpe-engines` registry, e.g. the regex-automata engine (`oracle`).
+/// Its compiled matchers keep a mutable cache (the lazy DFA), so each thread slot
+/// compiles its own on first use.
+#[cfg(feature = "engines")]
 pub struct CheckEngine {
-    engine: &'static dyn oracle::engine::Engine,
+    engine: &'static dyn engines::Engine,
     aovs: Vec<Lpe>,
-    compiled: Vec<Mutex<Option<Box<dyn oracle::engine::Matcher>>>>,
+    compiled: Vec<Mutex<Option<Box<dyn engines::Matcher>>>>,
 }
 
+#[cfg(feature = "engines")]
 impl CheckEngine {
     /// Compiles `aovs` with `engine` once up front, so an engine that cannot build the
     /// set says so here and not mid-render.
-    pub fn new(
-        engine: &'static dyn oracle::engine::Engine,
-        aovs: &[Lpe],
-    ) -> Result<CheckEngine, String> {
+    pub fn new(engine: &'static dyn engines::Engine, aovs: &[Lpe]) -> Result<CheckEngine, String> {
         check_count(aovs)?;
         let first = engine
             .compile(aovs)
@@ -175,6 +175,7 @@ impl CheckEngine {
         })
     }
 }
+#[cfg(feature = "engines")]
 impl WholePath for CheckEngine {
     fn which(&self, path: &Path) -> AovMask {
         let mut slot = self.compiled[thread_slot()]
@@ -357,12 +358,11 @@ mod tests {
         agrees_with_is_match(&m, &exprs, &PATHS);
     }
 
+    #[cfg(feature = "engines")]
     #[test]
     fn the_oracle_through_check_engine_agrees_with_is_match_on_every_thread() {
         let exprs = exprs();
-        let m = WholePathMatcher::direct(
-            CheckEngine::new(&oracle::regex_oracle::ORACLE, &exprs).unwrap(),
-        );
+        let m = WholePathMatcher::direct(CheckEngine::new(&engines::regex::LAZY, &exprs).unwrap());
         // Slot 0 holds the matcher compiled up front; rayon workers compile their own.
         agrees_with_is_match(&m, &exprs, &PATHS);
         rayon::scope(|s| {
@@ -376,6 +376,7 @@ mod tests {
     fn too_many_aovs_is_an_error_for_every_whole_path_engine() {
         let many = vec![lpe::parse("CL").unwrap(); MAX_AOVS + 1];
         assert!(Reference::new(&many).is_err());
-        assert!(CheckEngine::new(&oracle::regex_oracle::ORACLE, &many).is_err());
+        #[cfg(feature = "engines")]
+        assert!(CheckEngine::new(&engines::regex::LAZY, &many).is_err());
     }
 }

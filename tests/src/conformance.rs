@@ -16,7 +16,7 @@ use lpe::{AovSet, ErrorKind, Lpe, Options, Parser, Path};
 use serde::Deserialize;
 
 // The one line to change when the engine registry moves crates.
-use oracle::engine as registry;
+use engines as registry;
 
 /// One `tests/testdata/*.toml` file.
 #[derive(Debug, Deserialize)]

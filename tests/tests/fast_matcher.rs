@@ -469,16 +469,13 @@ fn blow_up_shapes_compile_in_bounded_time() {
 #[test]
 fn engines_are_registered() {
     for name in ["reference", "fast", "nfa"] {
-        assert!(oracle::engine::by_name(name).is_some(), "{name}");
+        assert!(engines::by_name(name).is_some(), "{name}");
     }
     let exprs: Vec<Lpe> = basic().into_iter().map(|(_, l)| l).collect();
     let p: Path = "C RD2 RS L'key'".parse().unwrap();
     let want: Vec<bool> = exprs.iter().map(|e| reference::is_match(e, &p)).collect();
     for name in ["fast", "nfa"] {
-        let m = oracle::engine::by_name(name)
-            .unwrap()
-            .compile(&exprs)
-            .unwrap();
+        let m = engines::by_name(name).unwrap().compile(&exprs).unwrap();
         assert_eq!(m.which(&p), want, "{name}");
     }
 }

@@ -7,23 +7,23 @@
 //! because persisted seeds stop reproducing when a strategy changes, should also be
 //! copied into a named unit test.
 
+use engines::differential::{self, Outcome};
+use engines::{Engine, Reference};
 use lpe::ast::Expr;
 use lpe::macros::{MacroTable, BASIC};
 use lpe::strategy;
 use lpe::{Event, EventKind, Lpe, Path, Prefixes, Vertex};
 use lpe_tests::cases;
-use oracle::differential::{self, Outcome};
-use oracle::engine::{self, Engine, Reference};
-use oracle::regex_oracle::EAGER_ORACLE;
 use proptest::prelude::*;
 
-/// The engines compared: the registry plus the eager (dense DFA) form of the oracle,
-/// which the registry does not use. The eager form falls back to the lazy DFA over its
-/// size limit without saying so; the oracle's unit tests check that it really builds
-/// the dense DFA on the design cases and the basic AOVs.
+/// The engines compared: the registry plus the eager (dense DFA) form of the
+/// regex-automata engine (`oracle`), which the registry does not use. The eager form
+/// falls back to the lazy DFA over its size limit without saying so; that engine's unit
+/// tests check that it really builds the dense DFA on the conformance cases and the
+/// basic AOVs.
 fn engines() -> Vec<&'static dyn Engine> {
-    let mut all = engine::all();
-    all.push(&EAGER_ORACLE);
+    let mut all = engines::all();
+    all.push(&engines::regex::EAGER);
     all
 }
 

@@ -1,0 +1,593 @@
+//! The matcher benchmark shared by `lpe-check bench` (a table) and `cargo bench -p lpe-cli`
+//! (criterion): workloads, a path sampler, the regex-automata baseline, and one timed
+//! loop per engine.
+//!
+//! Every engine runs over the same sampled paths. The fast matcher is timed on
+//! [`Vertex`]es (classification included: a label hash lookup per labelled vertex) and on
+//! classes computed beforehand (what a renderer does once per material lobe); the
+//! regex-automata DFAs step their own two-byte encoding, computed beforehand; the
+//! reference matcher runs per whole path on a prefix of the paths. Before timing, every
+//! engine's answers are compared with the reference's on those paths.
+
+pub mod baseline;
+pub mod sample;
+pub mod workload;
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use lpe::{AovMask, AovSet, Class, Options};
+use lpe::{Lpe, Path, Vertex};
+use regex_automata::dfa::dense;
+use regex_automata::hybrid;
+use regex_automata::util::primitives::StateID;
+use tabled::builder::Builder;
+use tabled::settings::object::Columns;
+use tabled::settings::{Alignment, Style};
+
+/// Paths flattened for the timed loops: one contiguous buffer and path end offsets.
+pub struct Flat<T> {
+    /// Every path's items, back to back.
+    pub items: Vec<T>,
+    /// End offset of each path in `items`.
+    pub ends: Vec<u32>,
+}
+
+impl<T> Flat<T> {
+    fn build(paths: &[Path], mut f: impl FnMut(&Path, &mut Vec<T>)) -> Flat<T> {
+        let mut items = Vec::new();
+        let mut ends = Vec::with_capacity(paths.len());
+        for p in paths {
+            f(p, &mut items);
+            ends.push(items.len() as u32);
+        }
+        Flat { items, ends }
+    }
+
+    /// The paths, one slice each.
+    pub fn paths(&self) -> impl Iterator<Item = &[T]> + '_ {
+        let mut start = 0usize;
+        self.ends.iter().map(move |&e| {
+            let s = &self.items[start..e as usize];
+            start = e as usize;
+            s
+        })
+    }
+}
+
+/// Classes of every vertex, for one set.
+pub fn classify(set: &AovSet, paths: &[Path]) -> Flat<Class> {
+    Flat::build(paths, |p, out| {
+        out.extend(p.vertices().iter().map(|v| set.classify(v)))
+    })
+}
+
+/// The baseline's bytes for every path.
+pub fn encode(enc: &baseline::Encoding, paths: &[Path]) -> Flat<u8> {
+    Flat::build(paths, |p, out| enc.encode(p, out))
+}
+
+/// Paths per timed chunk: short enough (a fraction of a millisecond) that some
+/// repetition of each chunk runs without being preempted on a shared machine.
+const CHUNK_PATHS: usize = 4096;
+
+/// `f` applied to each chunk of paths.
+fn chunked<T>(paths: &[Path], f: impl Fn(&[Path]) -> Flat<T>) -> Vec<Flat<T>> {
+    paths.chunks(CHUNK_PATHS).map(f).collect()
+}
+
+/// A digest of a mask, so the loops' results cannot be optimized away.
+#[inline]
+fn digest(m: AovMask) -> u64 {
+    m.count() as u64 + u64::from(m.contains(0))
+}
+
+/// Every vertex, back to back (labels cloned in order, so they sit in order on the heap
+/// too): the vertices a renderer just made are in cache; `Vec<Path>` would add a cache
+/// miss per path that no other engine pays.
+pub fn flatten(paths: &[Path]) -> Flat<Vertex> {
+    Flat::build(paths, |p, out| out.extend(p.vertices().iter().cloned()))
+}
+
+/// The fast matcher on vertices (classification included).
+pub fn run_vertices(set: &AovSet, vertices: &Flat<Vertex>) -> u64 {
+    vertices.paths().fold(0u64, |acc, p| {
+        let s = p.iter().fold(set.start(), |s, v| set.step(s, v));
+        acc.wrapping_add(digest(set.matches(s)))
+    })
+}
+
+/// The fast matcher (DFA or NFA) on classes computed beforehand.
+pub fn run_classes(set: &AovSet, classes: &Flat<Class>) -> u64 {
+    classes.paths().fold(0u64, |acc, p| {
+        let s = p.iter().fold(set.start(), |s, &c| set.step_class(s, c));
+        acc.wrapping_add(digest(set.matches(s)))
+    })
+}
+
+/// regex-automata's dense DFA, `next_state` per byte.
+pub fn run_dense(dfa: &dense::DFA<Vec<u32>>, start: StateID, bytes: &Flat<u8>) -> u64 {
+    bytes.paths().fold(0u64, |acc, p| {
+        acc.wrapping_add(digest(baseline::dense_run(dfa, start, p)))
+    })
+}
+
+/// regex-automata's dense DFA, encoding each path from its vertices first (into a
+/// reused buffer): the like-for-like comparison with [`run_vertices`].
+pub fn run_dense_encoding(
+    dfa: &dense::DFA<Vec<u32>>,
+    start: StateID,
+    enc: &baseline::Encoding,
+    vertices: &Flat<Vertex>,
+) -> u64 {
+    let mut buf = Vec::with_capacity(64);
+    vertices.paths().fold(0u64, |acc, p| {
+        buf.clear();
+        enc.encode_vertices(p, &mut buf);
+        acc.wrapping_add(digest(baseline::dense_run(dfa, start, &buf)))
+    })
+}
+
+/// regex-automata's lazy DFA; `None` if its cache gave up.
+pub fn run_lazy(
+    dfa: &hybrid::dfa::DFA,
+    cache: &mut hybrid::dfa::Cache,
+    bytes: &Flat<u8>,
+) -> Option<u64> {
+    let mut acc = 0u64;
+    for p in bytes.paths() {
+        acc = acc.wrapping_add(digest(baseline::lazy_run(dfa, cache, p)?));
+    }
+    Some(acc)
+}
+
+/// The reference matcher, one expression at a time.
+pub fn reference_mask(aovs: &[(String, Lpe)], p: &Path) -> AovMask {
+    let mut m = AovMask::EMPTY;
+    for (i, (_, l)) in aovs.iter().enumerate() {
+        if reference::is_match(l, p) {
+            m.insert(i);
+        }
+    }
+    m
+}
+
+/// What to run.
+#[derive(Clone, Debug)]
+pub struct Config {
+    /// Total vertices of sampled paths (at least).
+    pub vertices: usize,
+    /// Paths the reference matcher runs on (and all engines are checked on).
+    pub reference_paths: usize,
+    /// Timed repetitions per engine; the best counts.
+    pub reps: usize,
+    /// Sampler seed.
+    pub seed: u64,
+    /// Workload names to run (all if empty).
+    pub workloads: Vec<String>,
+}
+
+impl Default for Config {
+    fn default() -> Self {
+        Config {
+            vertices: 1_000_000,
+            reference_paths: 20_000,
+            reps: 5,
+            seed: 1,
+            workloads: Vec::new(),
+        }
+    }
+}
+
+/// One table row.
+#[derive(Clone, Debug)]
+pub struct Row {
+    /// Workload name.
+    pub workload: String,
+    /// Engine and mode.
+    pub engine: String,
+    /// Nanoseconds per vertex, if it ran.
+    pub ns_per_vertex: Option<f64>,
+    /// Ratio to the regex-automata dense DFA's ns/vertex.
+    pub ratio: Option<f64>,
+    /// Build time.
+    pub compile: Option<Duration>,
+    /// Automaton bytes.
+    pub memory: Option<usize>,
+    /// Anything to know: size, fallbacks, failures, disagreements.
+    pub note: String,
+}
+
+/// A timed loop over the paths of one chunk; returns a digest of the answers.
+type Job<'a> = Box<dyn FnMut(usize) -> u64 + 'a>;
+
+/// Times every job on every chunk `reps` times, round-robin so that every engine sees
+/// the same machine load, and sums each job's best time per chunk: preemption on this
+/// shared machine then only costs a repetition, not the measurement.
+fn best_times(reps: usize, chunks: usize, jobs: &mut [Job<'_>]) -> Vec<Duration> {
+    let mut best = vec![vec![Duration::MAX; chunks]; jobs.len()];
+    for _ in 0..reps.max(1) {
+        for c in 0..chunks {
+            for (job, b) in jobs.iter_mut().zip(&mut best) {
+                let t = Instant::now();
+                black_box(job(c));
+                b[c] = b[c].min(t.elapsed());
+            }
+        }
+    }
+    best.into_iter().map(|b| b.into_iter().sum()).collect()
+}
+
+/// Builds `f` up to 5 times (fewer if slow), returning the last result and the fastest
+/// build time.
+fn timed_build<T>(mut f: impl FnMut() -> T) -> (T, Duration) {
+    let t = Instant::now();
+    let mut out = f();
+    let mut fastest = t.elapsed();
+    let mut spent = fastest;
+    for _ in 0..4 {
+        if spent > Duration::from_millis(300) {
+            break;
+        }
+        let t = Instant::now();
+        out = f();
+        let d = t.elapsed();
+        fastest = fastest.min(d);
+        spent += d;
+    }
+    (out, fastest)
+}
+
+fn row(workload: &str, engine: &str) -> Row {
+    Row {
+        workload: workload.to_string(),
+        engine: engine.to_string(),
+        ns_per_vertex: None,
+        ratio: None,
+        compile: None,
+        memory: None,
+        note: String::new(),
+    }
+}
+
+/// An engine whose answers differ from the reference's on some checked paths.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{workload}: {engine} disagrees with the reference on {paths} paths")]
+pub struct Disagreement {
+    /// The workload.
+    pub workload: &'static str,
+    /// The engine and mode.
+    pub engine: String,
+    /// How many checked paths it answered differently.
+    pub paths: usize,
+}
+
+/// Why the benchmark produced no table.
+#[derive(Debug, thiserror::Error)]
+pub enum BenchError {
+    /// lpe could not compile a workload.
+    #[error("{workload}: {error}")]
+    Compile {
+        /// The workload.
+        workload: &'static str,
+        /// Why.
+        error: lpe::CompileError,
+    },
+    /// The regex-automata baseline could not be built for a workload.
+    #[error("{0}")]
+    Baseline(#[from] baseline::BaselineError),
+    /// Some engines disagree with the reference (one line each).
+    #[error("{}", .0.iter().map(ToString::to_string).collect::<Vec<_>>().join("\n"))]
+    Disagree(Vec<Disagreement>),
+}
+
+/// Runs the benchmark; `Err` if any engine disagrees with the reference.
+pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
+    let paths = sample::paths(cfg.vertices, cfg.seed);
+    let flat = chunked(&paths, flatten);
+    let vertices: usize = paths.iter().map(Path::len).sum();
+    let checked = &paths[..cfg.reference_paths.min(paths.len())];
+    let checked_vertices: usize = checked.iter().map(Path::len).sum();
+    let ns = |d: Duration, n: usize| d.as_secs_f64() * 1e9 / n as f64;
+    let mut rows = Vec::new();
+    let mut disagreements = Vec::new();
+    for w in workload::all() {
+        if !cfg.workloads.is_empty() && !cfg.workloads.iter().any(|n| n == w.name) {
+            continue;
+        }
+        let aovs = &w.aovs;
+        let want: Vec<AovMask> = checked.iter().map(|p| reference_mask(aovs, p)).collect();
+        let mut check = |engine: &str, got: &mut dyn FnMut(&Path) -> Option<AovMask>| {
+            let bad = checked
+                .iter()
+                .zip(&want)
+                .filter(|(p, w)| got(p).is_some_and(|g| g != **w))
+                .count();
+            if bad > 0 {
+                disagreements.push(Disagreement {
+                    workload: w.name,
+                    engine: engine.to_string(),
+                    paths: bad,
+                });
+            }
+        };
+
+        // Build everything, check it against the reference, then time it.
+        let (fast, fast_time) = timed_build(|| AovSet::compile(aovs));
+        let fast = fast.map_err(|error| BenchError::Compile {
+            workload: w.name,
+            error,
+        })?;
+        check("fast", &mut |p| Some(fast.match_path(p)));
+        let fast_classes = chunked(&paths, |c| classify(&fast, c));
+        let nfa_opts = Options {
+            dfa_budget: 0,
+            ..Options::default()
+        };
+        let (nfa_set, nfa_set_time) = timed_build(|| AovSet::compile_with(aovs, &nfa_opts));
+        let nfa_set = nfa_set.ok();
+        if let Some(set) = &nfa_set {
+            check("nfa", &mut |p| Some(set.match_path(p)));
+        }
+        let nfa_classes = nfa_set
+            .as_ref()
+            .map(|s| chunked(&paths, |c| classify(s, c)));
+
+        let enc = baseline::Encoding::new(aovs)?;
+        let bytes = chunked(&paths, |c| encode(&enc, c));
+        let (ra_nfa, ra_nfa_time) = timed_build(|| baseline::nfa(&enc, aovs));
+        let ra_nfa = ra_nfa?;
+        let (dense, dense_time) = timed_build(|| baseline::dense(&ra_nfa));
+        let dense = dense.and_then(|d| baseline::dense_start(&d).map(|s| (d, s)));
+        if let Ok((dfa, start)) = &dense {
+            check("regex-automata dense", &mut |p| {
+                let mut b = Vec::new();
+                enc.encode(p, &mut b);
+                Some(baseline::dense_run(dfa, *start, &b))
+            });
+        }
+        let (lazy, lazy_time) = timed_build(|| baseline::lazy(ra_nfa.clone()));
+        let mut lazy = lazy.map(|d| {
+            let c = d.create_cache();
+            (d, c)
+        });
+        if let Ok((dfa, cache)) = &mut lazy {
+            check("regex-automata lazy", &mut |p| {
+                let mut b = Vec::new();
+                enc.encode(p, &mut b);
+                baseline::lazy_run(dfa, cache, &b)
+            });
+        }
+
+        let lazy_gave_up = std::cell::Cell::new(false);
+        let mut jobs: Vec<Job<'_>> = vec![
+            Box::new(|c| run_vertices(&fast, &flat[c])),
+            Box::new(|c| run_classes(&fast, &fast_classes[c])),
+        ];
+        if let (Some(set), Some(classes)) = (&nfa_set, &nfa_classes) {
+            jobs.push(Box::new(move |c| run_classes(set, &classes[c])));
+        }
+        if let Ok((dfa, start)) = &dense {
+            jobs.push(Box::new(|c| run_dense(dfa, *start, &bytes[c])));
+            let (enc, flat) = (&enc, &flat);
+            jobs.push(Box::new(move |c| {
+                run_dense_encoding(dfa, *start, enc, &flat[c])
+            }));
+        }
+        if let Ok((dfa, cache)) = &mut lazy {
+            let (bytes, gave_up) = (&bytes, &lazy_gave_up);
+            jobs.push(Box::new(move |c| {
+                run_lazy(dfa, cache, &bytes[c]).unwrap_or_else(|| {
+                    gave_up.set(true);
+                    0
+                })
+            }));
+        }
+        let mut times = best_times(cfg.reps, flat.len(), &mut jobs).into_iter();
+        drop(jobs);
+
+        let mut wrows = Vec::new();
+        let mut r = row(w.name, "fast, on vertices");
+        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+        r.compile = Some(fast_time);
+        r.memory = Some(fast.memory_bytes());
+        r.note = match fast.dfa_states() {
+            Some(n) => format!("DFA, {n} states, {} classes", fast.class_count()),
+            None => format!("NFA fallback, {} positions", fast.nfa_positions()),
+        };
+        wrows.push(r);
+        let mut r = row(w.name, "fast, on classes");
+        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+        wrows.push(r);
+        let mut r = row(w.name, "bitset NFA, on classes");
+        match &nfa_set {
+            Some(set) => {
+                r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+                r.compile = Some(nfa_set_time);
+                r.memory = Some(set.memory_bytes());
+                r.note = format!("{} positions", set.nfa_positions());
+            }
+            None => {
+                r.note = format!(
+                    "over the {} positions a stepping state holds",
+                    64 * lpe::automata::mask::NFA_STATE_WORDS
+                )
+            }
+        }
+        wrows.push(r);
+        let mut r = row(w.name, "regex-automata dense DFA");
+        r.compile = Some(ra_nfa_time + dense_time);
+        let dense_ns = match &dense {
+            Ok((dfa, _)) => {
+                r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+                r.memory = Some(dfa.memory_usage());
+                r.note = "on its bytes, encoded beforehand".into();
+                r.ns_per_vertex
+            }
+            Err(e) => {
+                r.note = format!("no DFA: {e}");
+                None
+            }
+        };
+        wrows.push(r);
+        if dense.is_ok() {
+            let mut r = row(w.name, "regex-automata dense DFA, encoding included");
+            r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+            r.note = "encodes each path from its vertices, like `fast, on vertices`".into();
+            wrows.push(r);
+        }
+        let mut r = row(w.name, "regex-automata lazy DFA");
+        r.compile = Some(ra_nfa_time + lazy_time);
+        match &lazy {
+            Ok((dfa, cache)) => {
+                let t = times.next();
+                if lazy_gave_up.get() {
+                    r.note = "cache gave up".into();
+                } else {
+                    r.ns_per_vertex = t.map(|t| ns(t, vertices));
+                }
+                r.memory = Some(dfa.memory_usage() + cache.memory_usage());
+            }
+            Err(e) => r.note = format!("no lazy DFA: {e}"),
+        }
+        wrows.push(r);
+
+        let mut r = row(w.name, "reference, per path");
+        let t = Instant::now();
+        black_box(checked.iter().fold(0u64, |acc, p| {
+            acc.wrapping_add(digest(reference_mask(aovs, p)))
+        }));
+        r.ns_per_vertex = Some(ns(t.elapsed(), checked_vertices));
+        r.note = format!("{} paths", checked.len());
+        wrows.push(r);
+
+        for r in &mut wrows {
+            r.ratio = match (r.ns_per_vertex, dense_ns) {
+                (Some(x), Some(d)) => Some(x / d),
+                _ => None,
+            };
+        }
+        rows.extend(wrows);
+    }
+    if disagreements.is_empty() {
+        Ok(rows)
+    } else {
+        Err(BenchError::Disagree(disagreements))
+    }
+}
+
+fn human_bytes(b: usize) -> String {
+    if b >= 1 << 20 {
+        format!("{:.1} MiB", b as f64 / f64::from(1 << 20))
+    } else {
+        format!("{:.1} KiB", b as f64 / 1024.0)
+    }
+}
+
+fn human_time(d: Duration) -> String {
+    let us = d.as_secs_f64() * 1e6;
+    if us >= 1000.0 {
+        format!("{:.1} ms", us / 1000.0)
+    } else {
+        format!("{us:.0} µs")
+    }
+}
+
+/// The rows as a Markdown table, the figure columns right-aligned.
+pub fn table(rows: &[Row]) -> String {
+    let mut b = Builder::default();
+    b.push_record([
+        "workload",
+        "engine",
+        "ns/vertex",
+        "vs RA dense",
+        "compile",
+        "memory",
+        "note",
+    ]);
+    for r in rows {
+        b.push_record([
+            r.workload.clone(),
+            r.engine.clone(),
+            r.ns_per_vertex.map_or("-".into(), |x| format!("{x:.2}")),
+            r.ratio.map_or("-".into(), |x| format!("{x:.2}x")),
+            r.compile.map_or("-".into(), human_time),
+            r.memory.map_or("-".into(), human_bytes),
+            r.note.clone(),
+        ]);
+    }
+    let mut t = b.build();
+    t.with(Style::markdown())
+        .modify(Columns::new(FIGURES), Alignment::right());
+    let text = t.to_string();
+    // tabled pads the cells but writes no alignment row markers; Markdown readers need
+    // `---:` to right-align the figure columns.
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    if let Some(rule) = lines.get_mut(1) {
+        *rule = rule
+            .split('|')
+            .enumerate()
+            .map(|(i, cell)| match i.checked_sub(1) {
+                Some(col) if FIGURES.contains(&col) && cell.len() > 1 => {
+                    format!("{}:", &cell[..cell.len() - 1])
+                }
+                _ => cell.to_string(),
+            })
+            .collect::<Vec<_>>()
+            .join("|");
+    }
+    lines.join("\n") + "\n"
+}
+
+/// The right-aligned columns of [`table`]: ns/vertex, ratio, compile time, memory.
+const FIGURES: std::ops::Range<usize> = 2..6;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn table_is_markdown_with_right_aligned_figures() {
+        let mut r = row("basic", "fast, on vertices");
+        r.ns_per_vertex = Some(1.234);
+        r.ratio = Some(0.5);
+        r.compile = Some(Duration::from_micros(250));
+        r.memory = Some(3 << 20);
+        r.note = "DFA".into();
+        let text = table(&[r, row("basic", "reference, per path")]);
+        let lines: Vec<&str> = text.lines().collect();
+        assert_eq!(lines.len(), 4, "{text}");
+        assert!(lines[0].starts_with("| workload "), "{text}");
+        let rule: Vec<&str> = lines[1].split('|').collect();
+        assert!(rule[1].ends_with('-') && rule[3].ends_with(':'), "{text}");
+        assert!(rule[6].ends_with(':') && rule[7].ends_with('-'), "{text}");
+        let cells =
+            |line: &str| -> Vec<String> { line.split('|').map(|c| c.trim().to_string()).collect() };
+        let filled = [
+            "",
+            "basic",
+            "fast, on vertices",
+            "1.23",
+            "0.50x",
+            "250 µs",
+            "3.0 MiB",
+            "DFA",
+            "",
+        ];
+        assert_eq!(cells(lines[2]), filled, "{text}");
+        let empty = [
+            "",
+            "basic",
+            "reference, per path",
+            "-",
+            "-",
+            "-",
+            "-",
+            "",
+            "",
+        ];
+        assert_eq!(cells(lines[3]), empty, "{text}");
+        // Right-aligned: a figure's cell ends at the column rule.
+        assert!(lines[2].contains(" 1.23 |"), "{text}");
+    }
+}

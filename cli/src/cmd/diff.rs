@@ -1,0 +1,118 @@
+//! `lpe-check diff`: the differential harness on generated cases.
+//!
+//! Each case is one expression (or, one time in five, an AOV set of 2-5 expressions
+//! compiled at once) and `--paths` paths generated *from* it; see
+//! `engines::differential::cases`. Every engine answers; the first disagreements are
+//! minimized and printed, and the process exits 3.
+
+use std::process::ExitCode;
+use std::time::Instant;
+
+use engines::differential::{run_cases, Run};
+
+use crate::input::{bad_input, select_engines};
+
+/// Arguments of `lpe-check diff`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Number of cases (expressions or AOV sets) to generate.
+    #[arg(long, default_value_t = 10_000)]
+    pub cases: u64,
+    /// Seed of the generator; the same seed gives the same cases.
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// Index of the first case (to regenerate one case of a run).
+    #[arg(long, default_value_t = 0)]
+    pub first: u64,
+    /// Most atoms in one generated expression.
+    #[arg(long, default_value_t = 10)]
+    pub max_size: usize,
+    /// Paths generated per case.
+    #[arg(long, default_value_t = 4)]
+    pub paths: usize,
+    /// Engine to run: `all` (the harness needs at least two).
+    #[arg(long, default_value = "all")]
+    pub engine: String,
+    /// Stop after this many disagreements.
+    #[arg(long, default_value_t = 3)]
+    pub max_failures: usize,
+}
+
+impl Args {
+    /// The run these arguments ask for.
+    pub fn run(&self) -> Run {
+        Run {
+            cases: self.cases,
+            seed: self.seed,
+            first: self.first,
+            max_size: self.max_size,
+            paths: self.paths,
+            max_failures: self.max_failures,
+        }
+    }
+}
+
+/// Runs `lpe-check diff`.
+pub fn run(args: Args) -> ExitCode {
+    let engines = match select_engines(&args.engine) {
+        Ok(e) => e,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    if engines.len() < 2 {
+        eprintln!("error: a differential run needs at least two engines; use --engine all");
+        return ExitCode::from(2);
+    }
+    let names: Vec<&str> = engines.iter().map(|e| e.name()).collect();
+    let start = Instant::now();
+    let t = run_cases(&args.run(), &engines);
+    let secs = start.elapsed().as_secs_f64().max(1e-9);
+    println!(
+        "engines: {}; seed {}, cases {}..{}, max size {}, {} paths per case",
+        names.join(", "),
+        args.seed,
+        args.first,
+        args.first + t.cases,
+        args.max_size,
+        args.paths
+    );
+    println!(
+        "{} cases, {} expression/path pairs in {:.2} s: {:.0} cases/s, {:.0} pairs/s",
+        t.cases,
+        t.pairs,
+        secs,
+        t.cases as f64 / secs,
+        t.pairs as f64 / secs
+    );
+    let rate = if t.pairs == 0 {
+        0.0
+    } else {
+        100.0 * t.matched as f64 / t.pairs as f64
+    };
+    println!(
+        "match rate: {rate:.1}% ({} of {} pairs)",
+        t.matched, t.pairs
+    );
+    if t.skips.is_empty() {
+        println!("skips: none");
+    }
+    for (name, n, why) in &t.skips {
+        println!("skips: {name} could not build {n} cases (first: {why})");
+    }
+    if t.uncompared > 0 {
+        println!(
+            "uncompared: {} cases had fewer than two engines",
+            t.uncompared
+        );
+    }
+    if t.failures.is_empty() {
+        println!("all engines agree");
+        return ExitCode::SUCCESS;
+    }
+    for (index, c) in &t.failures {
+        println!(
+            "\ncase {index} (regenerate: lpe-check diff --seed {} --first {index} --cases 1 --max-size {} --paths {}):\n{c}",
+            args.seed, args.max_size, args.paths
+        );
+    }
+    ExitCode::from(3)
+}

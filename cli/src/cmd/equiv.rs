@@ -1,0 +1,118 @@
+//! `lpe-check equiv A B`: are two expressions equivalent on every path?
+//!
+//! Prints `equivalent` (exit 0), or `not equivalent` with the shortest path matched by
+//! one and not the other, for each direction that has one, and which inclusion holds
+//! (exit 1). Every witness is re-checked with the reference matcher first
+//! ([`crate::witness`]); a failed re-check exits 3. Errors exit 2.
+
+use std::process::ExitCode;
+
+use lpe::analysis::{self, Comparison};
+use lpe::Lpe;
+
+use crate::input::{bad_input, load_parser};
+use crate::witness::{self, Disagreement, Expect};
+
+/// Arguments of `lpe-check equiv`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// A rendermn.ini-style file with user macros and lobe mappings.
+    #[arg(long)]
+    pub ini: Option<std::path::PathBuf>,
+    /// The first expression.
+    pub a: String,
+    /// The second expression.
+    pub b: String,
+}
+
+/// Runs `lpe-check equiv`.
+pub fn run(args: Args) -> ExitCode {
+    let parser = match load_parser(args.ini.as_deref()) {
+        Ok(p) => p,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    let parse = |s: &str| parser.parse(s).map_err(|e| format!("error: {e}"));
+    let (a, b) = match (parse(&args.a), parse(&args.b)) {
+        (Ok(a), Ok(b)) => (a, b),
+        (Err(e), _) | (_, Err(e)) => {
+            eprintln!("{e}");
+            return ExitCode::from(2);
+        }
+    };
+    let c = match analysis::compare(&a, &b) {
+        Ok(c) => c,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    witness::exit_with(report(&a, &b, &c), c.equivalent())
+}
+
+/// The text printed for a comparison, after re-checking its witnesses.
+pub fn report(a: &Lpe, b: &Lpe, c: &Comparison) -> Result<String, Disagreement> {
+    let (sa, sb) = (a.to_string(), b.to_string());
+    let check = |path: &lpe::Path, in_a: bool| {
+        witness::recheck(
+            path,
+            &[
+                Expect {
+                    name: &sa,
+                    lpe: a,
+                    matches: in_a,
+                },
+                Expect {
+                    name: &sb,
+                    lpe: b,
+                    matches: !in_a,
+                },
+            ],
+        )
+    };
+    if c.equivalent() {
+        return Ok("equivalent\n".to_string());
+    }
+    let mut out = String::from("not equivalent\n");
+    if let Some(p) = &c.first_only {
+        check(p, true)?;
+        out.push_str(&format!("only A: {p}\n"));
+    }
+    if let Some(p) = &c.second_only {
+        check(p, false)?;
+        out.push_str(&format!("only B: {p}\n"));
+    }
+    match (&c.first_only, &c.second_only) {
+        (None, Some(_)) => out.push_str("A is strictly included in B\n"),
+        (Some(_), None) => out.push_str("B is strictly included in A\n"),
+        _ => {}
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lpe(s: &str) -> Lpe {
+        lpe::parse(s).unwrap()
+    }
+
+    #[test]
+    fn reports_inclusion_with_a_rechecked_witness() {
+        let (a, b) = (lpe("C.+L"), lpe("C.*L"));
+        let text = report(&a, &b, &analysis::compare(&a, &b).unwrap()).unwrap();
+        assert_eq!(
+            text,
+            "not equivalent\nonly B: C L\nA is strictly included in B\n"
+        );
+    }
+
+    #[test]
+    fn a_wrong_witness_is_refused_not_printed() {
+        let (a, b) = (lpe("C.+L"), lpe("C.*L"));
+        // `C RD L` is matched by both: claiming it is only in A must fail the re-check.
+        let forged = Comparison {
+            first_only: Some("C RD L".parse().unwrap()),
+            second_only: None,
+        };
+        let err = report(&a, &b, &forged).unwrap_err().to_string();
+        assert!(err.contains("internal disagreement"), "{err}");
+    }
+}

@@ -1,0 +1,188 @@
+//! `lpe-check match`: match expressions against paths with every selected engine.
+//!
+//! `match EXPR PATH...` prints `match` or `no-match` per path. `match --batch` reads
+//! `EXPR<TAB>PATH` lines from stdin and prints exactly one line per input line:
+//! `match`, `no-match`, `error: <message>`, or `disagree: <engine=answer ...>` when
+//! engines differ (the process then exits 3 at the end). Blank lines and `#` comments
+//! are echoed as they are.
+
+use std::io::{BufRead, Write};
+use std::process::ExitCode;
+
+use lpe::{Lpe, Parser, Path};
+
+use engines::Engine;
+
+use crate::input::{bad_input, load_parser, select_engines};
+
+/// Arguments of `lpe-check match`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// Read `EXPR<TAB>PATH` lines from stdin instead of arguments.
+    #[arg(long)]
+    pub batch: bool,
+    /// Engine to run: a name or `all`.
+    #[arg(long, default_value = "all")]
+    pub engine: String,
+    /// A rendermn.ini-style file with user macros and lobe mappings.
+    #[arg(long)]
+    pub ini: Option<std::path::PathBuf>,
+    /// The expression (not with --batch).
+    #[arg(required_unless_present = "batch", conflicts_with = "batch")]
+    pub expr: Option<String>,
+    /// Paths in text form, e.g. `C RD2'floor' L'key'` (quote each path).
+    #[arg(conflicts_with = "batch")]
+    pub paths: Vec<String>,
+}
+
+/// One answer for one expression and path, over all engines.
+#[derive(Debug, PartialEq, Eq)]
+pub enum Verdict {
+    /// Every engine that could build said yes.
+    Match,
+    /// Every engine that could build said no.
+    NoMatch,
+    /// Engines differ: `(engine, answer)` for each, answer `match`/`no-match`/`skip: ...`.
+    Disagree(Vec<(&'static str, String)>),
+    /// No engine could build the expression.
+    Skipped(Vec<(&'static str, String)>),
+}
+
+impl std::fmt::Display for Verdict {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let list = |v: &[(&str, String)]| {
+            v.iter()
+                .map(|(e, a)| format!("{e}={a}"))
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        match self {
+            Verdict::Match => f.write_str("match"),
+            Verdict::NoMatch => f.write_str("no-match"),
+            Verdict::Disagree(v) => write!(f, "disagree: {}", list(v)),
+            Verdict::Skipped(v) => write!(f, "error: no engine could build: {}", list(v)),
+        }
+    }
+}
+
+/// Runs every engine on one expression and path. An engine that cannot build the
+/// expression is reported but does not count as disagreeing.
+pub fn verdict(engines: &[&dyn Engine], lpe: &Lpe, path: &Path) -> Verdict {
+    let mut answers = Vec::new();
+    let mut skips = Vec::new();
+    for e in engines {
+        match e.compile(std::slice::from_ref(lpe)) {
+            Ok(m) => answers.push((e.name(), m.which(path)[0])),
+            Err(why) => skips.push((e.name(), format!("skip({why})"))),
+        }
+    }
+    let shown = |b: bool| if b { "match" } else { "no-match" }.to_string();
+    match answers.first() {
+        None => Verdict::Skipped(skips),
+        Some(&(_, first)) if answers.iter().all(|(_, a)| *a == first) => {
+            if first {
+                Verdict::Match
+            } else {
+                Verdict::NoMatch
+            }
+        }
+        Some(_) => Verdict::Disagree(answers.into_iter().map(|(e, a)| (e, shown(a))).collect()),
+    }
+}
+
+/// Answers one `EXPR<TAB>PATH` line (not blank, not a comment).
+pub fn batch_line(parser: &Parser, engines: &[&dyn Engine], line: &str) -> LineOutcome {
+    let Some((expr, path)) = line.split_once('\t') else {
+        return LineOutcome::Error("expected `EXPR<TAB>PATH`, found no tab".into());
+    };
+    let lpe = match parser.parse(expr) {
+        Ok(l) => l,
+        Err(e) => return LineOutcome::Error(format!("expression: {}", e.one_line())),
+    };
+    match path.parse::<Path>() {
+        Ok(p) => LineOutcome::Ran(verdict(engines, &lpe, &p)),
+        Err(e) => LineOutcome::Error(format!("path: {e}")),
+    }
+}
+
+/// The outcome of one batch line.
+#[derive(Debug, PartialEq, Eq)]
+pub enum LineOutcome {
+    /// The engines ran.
+    Ran(Verdict),
+    /// The line, expression or path is malformed.
+    Error(String),
+}
+
+impl std::fmt::Display for LineOutcome {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            LineOutcome::Ran(v) => write!(f, "{v}"),
+            LineOutcome::Error(e) => write!(f, "error: {e}"),
+        }
+    }
+}
+
+/// Runs `lpe-check match`.
+pub fn run(args: Args) -> ExitCode {
+    let engines = match select_engines(&args.engine) {
+        Ok(e) => e,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    let parser = match load_parser(args.ini.as_deref()) {
+        Ok(p) => p,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    let mut disagreed = false;
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    if args.batch {
+        for line in std::io::stdin().lock().lines() {
+            let line = match line {
+                Ok(l) => l,
+                Err(e) => return bad_input(format!("error: reading stdin: {e}")),
+            };
+            let trimmed = line.trim();
+            let answer = if trimmed.is_empty() || trimmed.starts_with('#') {
+                line.clone()
+            } else {
+                let v = batch_line(&parser, &engines, &line);
+                disagreed |= matches!(v, LineOutcome::Ran(Verdict::Disagree(_)));
+                v.to_string()
+            };
+            if writeln!(out, "{answer}").is_err() {
+                return ExitCode::from(2);
+            }
+        }
+    } else {
+        let expr = args.expr.unwrap_or_default();
+        let lpe = match parser.parse(&expr) {
+            Ok(l) => l,
+            Err(e) => return bad_input(e),
+        };
+        if args.paths.is_empty() {
+            eprintln!("error: give at least one path after the expression, e.g. \"C RD L\"");
+            return ExitCode::from(2);
+        }
+        for text in &args.paths {
+            let v = match text.parse::<Path>() {
+                Ok(p) => verdict(&engines, &lpe, &p).to_string(),
+                Err(e) => {
+                    let _ = out.flush();
+                    eprintln!("error: path `{text}`: {e}");
+                    return ExitCode::from(2);
+                }
+            };
+            disagreed |= v.starts_with("disagree");
+            if writeln!(out, "{v}").is_err() {
+                return ExitCode::from(2);
+            }
+        }
+    }
+    let _ = out.flush();
+    if disagreed {
+        ExitCode::from(3)
+    } else {
+        ExitCode::SUCCESS
+    }
+}

@@ -1,0 +1,8 @@
+//! Subcommands of `lpe-check`, one module each; the binary only dispatches.
+
+pub mod bench;
+pub mod diff;
+pub mod equiv;
+pub mod matching;
+pub mod parse;
+pub mod partition;

@@ -1,0 +1,196 @@
+//! `lpe-check partition EXPR... [--universe U]`: does a set of AOVs split the universe
+//! (default `C.*[<L.>O]`) into disjoint parts that cover it?
+//!
+//! Each `EXPR` is `name=expression` or just an expression or macro (then named by its
+//! text). Prints the emptiness warnings, then every overlapping pair with the shortest
+//! path both match, the shortest universe path no AOV matches, and for each AOV that
+//! matches outside the universe the shortest such path; `clean partition` if there is
+//! none of these (exit 0), else exit 1. Witnesses are re-checked with the reference
+//! matcher before printing ([`crate::witness`]); a failed re-check exits 3; errors exit 2.
+
+use std::process::ExitCode;
+
+use lpe::analysis::{self, Partition};
+use lpe::{AovSet, Lpe};
+
+use crate::input::{bad_input, load_parser, InputError};
+use crate::witness::{self, Disagreement, Expect};
+
+/// Arguments of `lpe-check partition`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The universe to partition.
+    #[arg(long, default_value = analysis::DEFAULT_UNIVERSE)]
+    pub universe: String,
+    /// A rendermn.ini-style file with user macros and lobe mappings.
+    #[arg(long)]
+    pub ini: Option<std::path::PathBuf>,
+    /// The AOVs: `name=expression`, or an expression or macro name.
+    #[arg(required = true)]
+    pub aovs: Vec<String>,
+}
+
+/// Runs `lpe-check partition`.
+pub fn run(args: Args) -> ExitCode {
+    match prepare(&args) {
+        Ok((aovs, universe)) => {
+            let warnings = AovSet::compile(&aovs)
+                .map(|s| s.warnings().to_vec())
+                .unwrap_or_default();
+            for w in warnings {
+                println!("warning: {w}");
+            }
+            let p = match analysis::partition(&aovs, &universe) {
+                Ok(p) => p,
+                Err(e) => return bad_input(format!("error: {e}")),
+            };
+            witness::exit_with(report(&aovs, &universe, &p), p.is_clean())
+        }
+        Err(e) => bad_input(format!("error: {e}")),
+    }
+}
+
+type Named = Vec<(String, Lpe)>;
+
+fn prepare(args: &Args) -> Result<(Named, Lpe), InputError> {
+    let parser = load_parser(args.ini.as_deref())?;
+    let parse = |s: &str| parser.parse(s).map_err(InputError::from);
+    let universe = parse(&args.universe)?;
+    let aovs = args
+        .aovs
+        .iter()
+        .map(|a| {
+            // `name=expr` only when the part before `=` is a plain name: `=` never
+            // occurs in expressions, but keep odd input an expression error.
+            match a.split_once('=') {
+                Some((n, e))
+                    if !n.is_empty() && n.chars().all(|c| c.is_alphanumeric() || c == '_') =>
+                {
+                    Ok((n.to_string(), parse(e)?))
+                }
+                _ => Ok((a.clone(), parse(a)?)),
+            }
+        })
+        .collect::<Result<Vec<_>, InputError>>()?;
+    Ok((aovs, universe))
+}
+
+/// The text printed for a partition check, after re-checking every witness.
+pub fn report(
+    aovs: &[(String, Lpe)],
+    universe: &Lpe,
+    p: &Partition,
+) -> Result<String, Disagreement> {
+    let uname = format!("universe {universe}");
+    let mut out = format!("partition of {universe} by {} AOVs\n", aovs.len());
+    for (i, j, path) in &p.overlaps {
+        let (a, b) = (&aovs[*i], &aovs[*j]);
+        witness::recheck(
+            path,
+            &[
+                Expect {
+                    name: &uname,
+                    lpe: universe,
+                    matches: true,
+                },
+                Expect {
+                    name: &a.0,
+                    lpe: &a.1,
+                    matches: true,
+                },
+                Expect {
+                    name: &b.0,
+                    lpe: &b.1,
+                    matches: true,
+                },
+            ],
+        )?;
+        out.push_str(&format!("overlap: {} & {}: {path}\n", a.0, b.0));
+    }
+    if let Some(path) = &p.gap {
+        let mut expects = vec![Expect {
+            name: &uname,
+            lpe: universe,
+            matches: true,
+        }];
+        expects.extend(aovs.iter().map(|(n, l)| Expect {
+            name: n,
+            lpe: l,
+            matches: false,
+        }));
+        witness::recheck(path, &expects)?;
+        out.push_str(&format!("gap: {path}\n"));
+    }
+    for (i, path) in &p.outside {
+        let a = &aovs[*i];
+        witness::recheck(
+            path,
+            &[
+                Expect {
+                    name: &uname,
+                    lpe: universe,
+                    matches: false,
+                },
+                Expect {
+                    name: &a.0,
+                    lpe: &a.1,
+                    matches: true,
+                },
+            ],
+        )?;
+        out.push_str(&format!("outside: {}: {path}\n", a.0));
+    }
+    if p.is_clean() {
+        out.push_str("clean partition\n");
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use lpe::macros::BASIC;
+
+    fn basic() -> Named {
+        BASIC
+            .iter()
+            .map(|(n, s)| (n.to_string(), lpe::parse(s).unwrap()))
+            .collect()
+    }
+
+    #[test]
+    fn basic_set_is_clean() {
+        let u = analysis::default_universe();
+        let p = analysis::partition(&basic(), &u).unwrap();
+        let text = report(&basic(), &u, &p).unwrap();
+        assert!(text.ends_with("clean partition\n"), "{text}");
+    }
+
+    #[test]
+    fn caustics_overlap_is_printed_with_its_witness() {
+        let mut aovs = basic();
+        aovs.push(("caustics".into(), lpe::parse("caustics").unwrap()));
+        let u = analysis::default_universe();
+        let p = analysis::partition(&aovs, &u).unwrap();
+        let text = report(&aovs, &u, &p).unwrap();
+        assert!(
+            text.contains("overlap: indirectDiffuse & caustics: C RD"),
+            "{text}"
+        );
+        assert!(!text.contains("clean"), "{text}");
+    }
+
+    #[test]
+    fn a_wrong_witness_is_refused_not_printed() {
+        let aovs = basic();
+        let u = analysis::default_universe();
+        // `C RD L` is directDiffuse alone: not a gap.
+        let forged = Partition {
+            overlaps: Vec::new(),
+            gap: Some("C RD L".parse().unwrap()),
+            outside: Vec::new(),
+        };
+        let err = report(&aovs, &u, &forged).unwrap_err().to_string();
+        assert!(err.contains("directDiffuse"), "{err}");
+    }
+}

@@ -1,0 +1,79 @@
+//! Reading the subcommands' shared input: `--engine`, `--ini`, expressions.
+
+use std::path::PathBuf;
+
+use engines::Engine;
+
+/// Bad input to a subcommand: reported on stderr, exit status 2.
+#[derive(Debug, thiserror::Error)]
+pub enum InputError {
+    /// `--engine` names no registered engine.
+    #[error("unknown engine `{name}`: available engines are {}, or `all`", .available.join(", "))]
+    UnknownEngine {
+        /// What was asked for.
+        name: String,
+        /// The registered names.
+        available: Vec<&'static str>,
+    },
+    /// The `--ini` file cannot be read.
+    #[error("cannot read {}: {error}", .path.display())]
+    ReadIni {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        error: std::io::Error,
+    },
+    /// The `--ini` file has a bad line (the line number is in `error`).
+    #[error("{}: {error}", .path.display())]
+    Ini {
+        /// The file.
+        path: PathBuf,
+        /// Which line, and what.
+        error: lpe::IniError,
+    },
+    /// An expression does not parse (the error shows the byte position with a caret).
+    #[error("{0}")]
+    Expr(lpe::Error),
+}
+
+impl From<lpe::Error> for InputError {
+    fn from(e: lpe::Error) -> Self {
+        InputError::Expr(e)
+    }
+}
+
+/// Reports bad input (an argument, a file, an expression) on stderr: exit status 2.
+pub fn bad_input(message: impl std::fmt::Display) -> std::process::ExitCode {
+    eprintln!("{message}");
+    std::process::ExitCode::from(2)
+}
+
+/// `--engine` values: one engine name, or `all`.
+pub fn select_engines(name: &str) -> Result<Vec<&'static dyn Engine>, InputError> {
+    if name == "all" {
+        return Ok(engines::all());
+    }
+    engines::by_name(name)
+        .map(|e| vec![e])
+        .ok_or_else(|| InputError::UnknownEngine {
+            name: name.to_string(),
+            available: engines::names(),
+        })
+}
+
+/// The parser for the built-in macros, or for those plus an ini file's.
+pub fn load_parser(ini: Option<&std::path::Path>) -> Result<lpe::Parser, InputError> {
+    let Some(path) = ini else {
+        return Ok(lpe::Parser::default());
+    };
+    let text = std::fs::read_to_string(path).map_err(|error| InputError::ReadIni {
+        path: path.to_path_buf(),
+        error,
+    })?;
+    lpe::Config::from_ini(&text)
+        .map(|c| c.parser())
+        .map_err(|error| InputError::Ini {
+            path: path.to_path_buf(),
+            error,
+        })
+}

@@ -1,0 +1,73 @@
+//! Re-checking analysis witnesses with the reference matcher before printing them.
+//!
+//! The analysis in `lpe` builds witnesses from its own automata; printing one that the
+//! executable semantics disagrees with would present an engine bug as a fact about the
+//! user's expressions. So every witness goes through [`recheck`] first, and a failure is
+//! reported as an internal disagreement (exit code 3), not as the answer.
+
+use std::process::ExitCode;
+
+use lpe::{Lpe, Path};
+
+/// What one expression must answer on a witness.
+pub struct Expect<'a> {
+    /// Display name of the expression.
+    pub name: &'a str,
+    /// The expression.
+    pub lpe: &'a Lpe,
+    /// Whether it must match.
+    pub matches: bool,
+}
+
+/// A witness the reference matcher does not confirm: an engine bug, not an answer.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error(
+    "internal disagreement: the analysis says `{name}` {} `{path}`, the reference \
+     matcher says it {} (please report this)",
+    if *.claimed { "matches" } else { "does not match" },
+    if *.claimed { "does not" } else { "does" }
+)]
+pub struct Disagreement {
+    /// Display name of the expression.
+    pub name: String,
+    /// The witness.
+    pub path: Path,
+    /// Whether the analysis claimed the expression matches the witness (the reference
+    /// says the opposite).
+    pub claimed: bool,
+}
+
+/// `Ok` if the reference agrees with every expectation on `path`, else the first
+/// expression it disagrees on.
+pub fn recheck(path: &Path, expects: &[Expect<'_>]) -> Result<(), Disagreement> {
+    for e in expects {
+        let got = reference::is_match(e.lpe, path);
+        if got != e.matches {
+            return Err(Disagreement {
+                name: e.name.to_string(),
+                path: path.clone(),
+                claimed: e.matches,
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Exit code for a witness that failed its re-check.
+pub const DISAGREE: u8 = 3;
+
+/// Prints a re-checked report and gives the exit code shared by `equiv` and
+/// `partition`: 0 when `clean`, 1 when not, [`DISAGREE`] when a witness failed its
+/// re-check (then only the disagreement is printed, on stderr).
+pub fn exit_with(report: Result<String, Disagreement>, clean: bool) -> ExitCode {
+    match report {
+        Ok(text) => {
+            print!("{text}");
+            ExitCode::from(u8::from(!clean))
+        }
+        Err(e) => {
+            eprintln!("{e}");
+            ExitCode::from(DISAGREE)
+        }
+    }
+}

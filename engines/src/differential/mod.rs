@@ -1,0 +1,57 @@
+//! The differential harness: every engine on the same expressions and paths.
+//!
+//! - [`check`](mod@check): [`check()`] (one expression), [`check_set`] (an AOV set
+//!   compiled at once) and [`check_with`] (chosen engines) run each engine and compare
+//!   the answers path by path. Agreement comes back with counts (pairs compared, how
+//!   many matched, which engines could not build); a disagreement comes back as a
+//!   minimized [`Counterexample`].
+//! - [`shrink`]: the minimizer, expression subtrees dropped or simplified, set members
+//!   dropped, and path vertices dropped or unlabelled, for as long as the engines still
+//!   disagree, so what is printed is small enough to read.
+//! - [`counterexample`]: what a disagreement reports, and how it prints.
+//! - [`cases`]: generated cases (expressions or AOV sets, with paths aimed at them),
+//!   deterministic per seed and index, and a run over a range of them (`lpe-check diff`).
+//!
+//! An engine that cannot build the input ([`EngineError`](crate::EngineError)) does not
+//! take part in that comparison; the skip is recorded in [`Agreement::skipped`] and
+//! reported by callers, never hidden.
+
+pub mod cases;
+pub mod check;
+pub mod counterexample;
+pub mod shrink;
+
+pub use cases::{case_rng, generate_case, run_cases, Case, Run, Totals};
+pub use check::{answers_of, check, check_set, check_with, Agreement, Outcome};
+pub use counterexample::Counterexample;
+pub use shrink::{minimize, shrink_expr, shrink_path};
+
+#[cfg(test)]
+pub(crate) mod tests {
+    use lpe::ast::{Atom, Item};
+    use lpe::Lpe;
+
+    use crate::adapters::ReferenceMatcher;
+    use crate::engine::{Engine, EngineError, Matcher};
+
+    /// A deliberately wrong engine: it ignores labels in `'g'` items by answering like
+    /// the reference on the expression with every label item replaced by `.`.
+    pub(crate) struct LabelBlind;
+
+    impl Engine for LabelBlind {
+        fn name(&self) -> &'static str {
+            "label-blind"
+        }
+        fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
+            let mut blind = exprs.to_vec();
+            for e in &mut blind {
+                e.expr.for_each_atom_mut(&mut |a| {
+                    if matches!(a, Atom::Item(Item::Label(_))) {
+                        *a = Atom::Item(Item::Any);
+                    }
+                });
+            }
+            Ok(Box::new(ReferenceMatcher(blind)))
+        }
+    }
+}

@@ -1,0 +1,344 @@
+//! Greedy minimization of a disagreement: simpler expressions, fewer set members,
+//! shorter and less labelled paths, for as long as the engines still disagree.
+
+use lpe::ast::{Atom, EventPos, Expr, Item, LabelPos, Repetition, TypePos};
+use lpe::{Lpe, Path};
+
+use super::check::answers_of;
+use crate::engine::Engine;
+
+/// Whether at least two engines that build give different answers on `path`.
+fn disagrees(engines: &[&dyn Engine], exprs: &[Lpe], path: &Path) -> bool {
+    let answers: Vec<Vec<bool>> = answers_of(engines, exprs, path)
+        .into_iter()
+        .filter_map(|(_, a)| a.ok())
+        .collect();
+    answers.windows(2).any(|w| w[0] != w[1])
+}
+
+/// Most candidate inputs the minimizer tries (each compiles every engine once).
+const MAX_SHRINK_TRIES: usize = 20_000;
+
+/// Greedy minimization: take the first simpler input on which the engines still
+/// disagree, and start again from it, until no simpler input disagrees.
+pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) -> (Vec<Lpe>, Path) {
+    let mut tries = 0;
+    'outer: loop {
+        // Fewer expressions first: a set of one is easiest to read.
+        if exprs.len() > 1 {
+            for i in 0..exprs.len() {
+                let mut fewer = exprs.clone();
+                fewer.remove(i);
+                tries += 1;
+                if disagrees(engines, &fewer, &path) {
+                    exprs = fewer;
+                    continue 'outer;
+                }
+            }
+        }
+        for i in 0..exprs.len() {
+            for smaller in shrink_expr(&exprs[i].expr) {
+                if tries >= MAX_SHRINK_TRIES {
+                    break 'outer;
+                }
+                tries += 1;
+                let mut candidate = exprs.clone();
+                candidate[i] = Lpe {
+                    prefixes: lpe::Prefixes::NONE,
+                    expr: smaller,
+                };
+                if disagrees(engines, &candidate, &path) {
+                    exprs = candidate;
+                    continue 'outer;
+                }
+            }
+            // Prefixes never affect matching; drop them for readability.
+            if !exprs[i].prefixes.is_empty() {
+                let mut candidate = exprs.clone();
+                candidate[i].prefixes = lpe::Prefixes::NONE;
+                if disagrees(engines, &candidate, &path) {
+                    exprs = candidate;
+                    continue 'outer;
+                }
+            }
+        }
+        let smaller_paths = shrink_path(&path);
+        for smaller in &smaller_paths {
+            if tries >= MAX_SHRINK_TRIES {
+                break 'outer;
+            }
+            tries += 1;
+            if disagrees(engines, &exprs, smaller) {
+                path = smaller.clone();
+                continue 'outer;
+            }
+        }
+        // Joint steps: dropping an atom often needs the vertex it matched dropped too
+        // (`C.'a'L` on `C RD RD'b' L` -> `C'a'L` on `C RD'b' L`).
+        for i in 0..exprs.len() {
+            for smaller in shrink_expr(&exprs[i].expr) {
+                for smaller_path in &smaller_paths {
+                    if tries >= MAX_SHRINK_TRIES {
+                        break 'outer;
+                    }
+                    tries += 1;
+                    let mut candidate = exprs.clone();
+                    candidate[i].expr = smaller.clone();
+                    if disagrees(engines, &candidate, smaller_path) {
+                        exprs = candidate;
+                        path = smaller_path.clone();
+                        continue 'outer;
+                    }
+                }
+            }
+        }
+        break;
+    }
+    (exprs, path)
+}
+
+/// Simpler paths: one interior vertex dropped, or one label removed.
+pub fn shrink_path(path: &Path) -> Vec<Path> {
+    let v = path.vertices();
+    let mut out = Vec::new();
+    for i in 1..v.len().saturating_sub(1) {
+        let mut w = v.to_vec();
+        w.remove(i);
+        out.extend(Path::new(w).ok());
+    }
+    for i in 0..v.len() {
+        if v[i].label().is_some() {
+            let mut w = v.to_vec();
+            w[i] = match w[i].event() {
+                Some(e) => lpe::Vertex::scatter(w[i].ty(), e, None),
+                None if w[i].ty() == lpe::VertexType::L => lpe::Vertex::light(None),
+                None => lpe::Vertex::emissive(None),
+            };
+            out.extend(Path::new(w).ok());
+        }
+    }
+    out
+}
+
+/// One-step simplifications of an expression, whole subtrees first. Every candidate
+/// is normalized and strictly simpler (fewer nodes, fewer items, looser positions or
+/// smaller counts), so repeated shrinking terminates.
+pub fn shrink_expr(e: &Expr) -> Vec<Expr> {
+    let mut out = Vec::new();
+    match e {
+        Expr::Atom(a) => {
+            out.extend(shrink_atom(a).into_iter().map(Expr::Atom));
+        }
+        Expr::Concat(es) | Expr::Alt(es) => {
+            let rebuild = |parts: Vec<Expr>| match e {
+                Expr::Concat(_) => Expr::concat(parts),
+                _ => Expr::alt(parts),
+            };
+            out.extend(es.iter().cloned());
+            for i in 0..es.len() {
+                let mut fewer = es.clone();
+                fewer.remove(i);
+                out.push(rebuild(fewer));
+            }
+            for i in 0..es.len() {
+                for smaller in shrink_expr(&es[i]) {
+                    let mut parts = es.clone();
+                    parts[i] = smaller;
+                    out.push(rebuild(parts));
+                }
+            }
+        }
+        Expr::Repeat(body, r) => {
+            out.push((**body).clone());
+            for r2 in shrink_repetition(*r) {
+                out.push(Expr::Repeat(body.clone(), r2));
+            }
+            for smaller in shrink_expr(body) {
+                out.push(Expr::Repeat(Box::new(smaller), *r));
+            }
+        }
+    }
+    out
+}
+
+fn shrink_repetition(r: Repetition) -> Vec<Repetition> {
+    let mut out = Vec::new();
+    if r.min > 0 {
+        out.push(Repetition { min: 0, max: r.max });
+        out.push(Repetition {
+            min: r.min - 1,
+            max: r.max,
+        });
+    }
+    if let Some(m) = r.max {
+        if m > r.min {
+            out.push(Repetition {
+                min: r.min,
+                max: Some(r.min),
+            });
+            out.push(Repetition {
+                min: r.min,
+                max: Some(m - 1),
+            });
+        }
+    }
+    out.retain(|x| *x != r);
+    out
+}
+
+fn shrink_atom(a: &Atom) -> Vec<Atom> {
+    let mut out = Vec::new();
+    match a {
+        Atom::Item(i) => out.extend(shrink_item(i).into_iter().map(Atom::Item)),
+        Atom::Class { negated, items } => {
+            if !negated {
+                out.extend(items.iter().cloned().map(Atom::Item));
+            }
+            if items.len() > 1 {
+                for i in 0..items.len() {
+                    let mut fewer = items.clone();
+                    fewer.remove(i);
+                    out.push(Atom::Class {
+                        negated: *negated,
+                        items: fewer,
+                    });
+                }
+            }
+            for i in 0..items.len() {
+                for smaller in shrink_item(&items[i]) {
+                    let mut parts = items.clone();
+                    parts[i] = smaller;
+                    out.push(Atom::Class {
+                        negated: *negated,
+                        items: parts,
+                    });
+                }
+            }
+        }
+    }
+    out
+}
+
+fn shrink_item(i: &Item) -> Vec<Item> {
+    let mut out = Vec::new();
+    if let Item::Triple(t) = i {
+        if t.ty != TypePos::Any {
+            let mut u = t.clone();
+            u.ty = TypePos::Any;
+            out.push(Item::Triple(u));
+        }
+        if t.event != EventPos::Any {
+            let mut u = t.clone();
+            u.event = EventPos::Any;
+            out.push(Item::Triple(u));
+        }
+        if t.label != LabelPos::Any {
+            let mut u = t.clone();
+            u.label = LabelPos::Any;
+            out.push(Item::Triple(u));
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::adapters::Reference;
+    use crate::differential::tests::LabelBlind;
+    use crate::differential::{check_with, Outcome};
+
+    #[test]
+    fn a_planted_bug_is_found_and_minimized() {
+        let engines: Vec<&dyn Engine> = vec![&Reference, &LabelBlind];
+        let e = lpe::parse("unoccluded;C(<RD>|<TS>)*'floor'(.|U2)+[<L.>O]").unwrap();
+        let p: Path = "C RD TS RD'wall' RS1 TS2 L".parse().unwrap();
+        let Outcome::Disagree(c) = check_with(&engines, std::slice::from_ref(&e), &[p]) else {
+            panic!("the planted bug went unnoticed");
+        };
+        // Down to a label item against a vertex with another label, between the
+        // camera and the emitter (the joint expression+path steps drop the `.`s).
+        assert_eq!(c.exprs.len(), 1);
+        assert_eq!(c.exprs[0].to_string(), "C'floor'<L.>");
+        assert_eq!(c.path.len(), 3, "{}", c.path);
+        assert_ne!(c.path.vertices()[1].label(), Some("floor"));
+        let text = c.to_string();
+        assert!(text.contains("reference: no-match"), "{text}");
+        assert!(text.contains("label-blind: match"), "{text}");
+    }
+
+    #[test]
+    fn sets_shrink_to_the_member_that_disagrees() {
+        let engines: Vec<&dyn Engine> = vec![&Reference, &LabelBlind];
+        let exprs: Vec<Lpe> = ["C<RD>[<L.>O]", "C'key'L", "CD+L"]
+            .iter()
+            .map(|s| lpe::parse(s).unwrap())
+            .collect();
+        let p: Path = "C RD'fill' L".parse().unwrap();
+        let Outcome::Disagree(c) = check_with(&engines, &exprs, &[p]) else {
+            panic!("the planted bug went unnoticed");
+        };
+        assert_eq!(c.exprs.len(), 1);
+        assert_eq!(c.exprs[0].to_string(), "C'key'L");
+        assert_eq!(c.path.to_string(), "C RD1 L");
+    }
+
+    /// What every step of [`shrink_expr`] lowers, compared lexicographically: nodes,
+    /// then item slots (a class counts one more than its items, so `[x]` -> `x` is a
+    /// step), then specific triple positions, then the sum of repetition bounds.
+    /// Tuples of naturals under this order have no infinite descending chain, so a
+    /// strict decrease on every step proves that shrinking terminates.
+    fn measure(e: &Expr) -> (usize, usize, usize, u64) {
+        fn item_positions(i: &Item) -> usize {
+            match i {
+                Item::Triple(t) => {
+                    usize::from(t.ty != TypePos::Any)
+                        + usize::from(t.event != EventPos::Any)
+                        + usize::from(t.label != LabelPos::Any)
+                }
+                _ => 0,
+            }
+        }
+        match e {
+            Expr::Atom(Atom::Item(i)) => (1, 1, item_positions(i), 0),
+            Expr::Atom(Atom::Class { items, .. }) => (
+                1,
+                items.len() + 1,
+                items.iter().map(item_positions).sum(),
+                0,
+            ),
+            Expr::Concat(es) | Expr::Alt(es) => es
+                .iter()
+                .map(measure)
+                .fold((1, 0, 0, 0), |(n, i, p, c), (n2, i2, p2, c2)| {
+                    (n + n2, i + i2, p + p2, c + c2)
+                }),
+            Expr::Repeat(body, r) => {
+                let (n, i, p, c) = measure(body);
+                let bounds = u64::from(r.min) + u64::from(r.max.unwrap_or(0));
+                (n + 1, i, p, c + bounds)
+            }
+        }
+    }
+
+    #[test]
+    fn shrinking_terminates_and_stays_normalized() {
+        let e = lpe::parse("C([^D'a'<T[^D2]['x']>]|(S{2,7})*)+L")
+            .unwrap()
+            .expr;
+        let mut frontier = vec![e];
+        let mut seen = 0;
+        while let Some(x) = frontier.pop() {
+            seen += 1;
+            assert!(seen < 200_000, "shrinking does not terminate");
+            for y in shrink_expr(&x) {
+                assert!(measure(&y) < measure(&x), "{y} is no smaller than {x}");
+                let text = y.to_string();
+                assert_eq!(lpe::parse(&text).unwrap().expr, y, "{text}");
+                if seen < 2000 {
+                    frontier.push(y);
+                }
+            }
+        }
+    }
+}

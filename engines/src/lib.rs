@@ -1,0 +1,27 @@
+//! LPE matching engines behind one trait, and the tools that run them side by side.
+//!
+//! - [`engine`]: the seam, [`Engine`] compiles a set of expressions into a [`Matcher`]
+//!   that answers, per whole path, which of them match; [`EngineError`] says why an
+//!   engine refused a set.
+//! - [`adapters`]: the workspace's own matchers behind that seam, the backtracking
+//!   [`Reference`], lpe's [`Fast`] matcher (minimized DFA, NFA over budget) and its
+//!   [`BitsetNfa`] alone.
+//! - [`regex`]: the independent second engine, LPE translated to `regex-automata` over a
+//!   byte encoding of vertices ([`regex::RegexEngine`], registered as `oracle`).
+//! - [`registry`]: [`all()`] and [`by_name()`], the one list of engines every tool uses;
+//!   the names (`reference`, `oracle`, `fast`, `nfa`) are what `lpe-check --engine` takes.
+//! - [`differential`]: the differential harness, generated cases, and the shrinker that
+//!   minimizes a disagreement before it is printed.
+//! - [`fuzzing`]: the bodies of the cargo-fuzz targets in `fuzz/`, as plain functions
+//!   that `cargo test` also replays.
+
+pub mod adapters;
+pub mod differential;
+pub mod engine;
+pub mod fuzzing;
+pub mod regex;
+pub mod registry;
+
+pub use adapters::{BitsetNfa, Fast, Reference};
+pub use engine::{Engine, EngineError, Matcher};
+pub use registry::{all, by_name, names};

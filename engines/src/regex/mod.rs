@@ -1,0 +1,374 @@
+//! The engine registered as `oracle`: light path expressions translated to
+//! `regex-automata` over a fixed-width byte encoding of vertices ([`encode`]), by set
+//! algebra over the finite vertex universe ([`translate`](mod@translate)).
+//!
+//! One compile builds **one** multi-pattern automaton for the whole set of expressions
+//! (`MatchKind::All`, anchored start, `$` at the end of every pattern); one overlapping
+//! search per path fills a `PatternSet` with every expression that matches the whole
+//! path.
+//!
+//! Two forms of the same automaton: a lazy (hybrid) DFA, which determinizes only the
+//! states the searched paths visit, and an eager dense DFA. The registered engine
+//! ([`LAZY`]) is lazy because the harness compiles a new set for every case and runs
+//! only a few paths on it, where eager determinization took 90% of the time; a
+//! [`RegexEngine`] with `eager: true` ([`EAGER`]) builds the dense DFA first and falls
+//! back to the lazy one when the dense DFA exceeds its size limit.
+//!
+//! Size limits are explicit (regex-automata has none by default). When even the NFA is
+//! over its limit the engine refuses the set with a [`BuildError`], which the harness
+//! counts as a skip.
+
+pub mod encode;
+pub mod translate;
+
+use std::cell::RefCell;
+
+use lpe::{Lpe, Path};
+use regex_automata::dfa::{dense, Automaton};
+use regex_automata::hybrid;
+use regex_automata::nfa::thompson::{self, WhichCaptures, NFA};
+use regex_automata::{Anchored, Input, MatchKind, PatternSet};
+use regex_syntax::hir::{Hir, Look};
+
+use crate::engine::{Engine, EngineError, Matcher};
+use encode::Labels;
+
+/// Why the regex-automata engine cannot build a set. regex-automata's errors are boxed:
+/// they are large, and every `compile` result carries this type.
+#[derive(Clone, Debug, thiserror::Error)]
+pub enum BuildError {
+    /// The set mentions more distinct labels than the label byte can number.
+    #[error("{labels} distinct labels, the byte encoding holds {max}")]
+    TooManyLabels {
+        /// Distinct labels the set mentions.
+        labels: usize,
+        /// Most the encoding holds ([`encode::MAX_LABELS`]).
+        max: usize,
+    },
+    /// The Thompson NFA is over [`SizeLimits::nfa`] (or otherwise unbuildable).
+    #[error("NFA: {0}")]
+    Nfa(Box<thompson::BuildError>),
+    /// The dense DFA failed for a reason other than its size limit (over the limit,
+    /// the eager engine falls back to the lazy DFA).
+    #[error("DFA: {0}")]
+    Dfa(Box<dense::BuildError>),
+    /// The lazy DFA could not be configured.
+    #[error("lazy DFA: {0}")]
+    LazyDfa(Box<hybrid::BuildError>),
+}
+
+/// Limits on what one compile may allocate.
+#[derive(Clone, Copy, Debug)]
+pub struct SizeLimits {
+    /// Thompson NFA heap size.
+    pub nfa: usize,
+    /// Dense DFA size, and the determinizer's working memory.
+    pub dfa: usize,
+    /// Lazy DFA cache.
+    pub lazy_cache: usize,
+}
+
+impl SizeLimits {
+    /// The defaults: generous for real AOVs, small enough that a refusal is quick.
+    pub const DEFAULT: SizeLimits = SizeLimits {
+        nfa: 8 << 20,
+        dfa: 4 << 20,
+        lazy_cache: 2 << 20,
+    };
+}
+
+impl Default for SizeLimits {
+    fn default() -> Self {
+        SizeLimits::DEFAULT
+    }
+}
+
+/// The regex-automata engine.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct RegexEngine {
+    /// Size limits for every compile.
+    pub limits: SizeLimits,
+    /// Build the dense DFA up front (falling back to the lazy DFA over the limit).
+    pub eager: bool,
+}
+
+/// The lazy engine with default limits, registered as `oracle` in [`crate::all`].
+pub static LAZY: RegexEngine = RegexEngine {
+    limits: SizeLimits::DEFAULT,
+    eager: false,
+};
+
+/// The engine building dense DFAs eagerly (same name, `oracle`; not registered).
+pub static EAGER: RegexEngine = RegexEngine {
+    limits: SizeLimits::DEFAULT,
+    eager: true,
+};
+
+/// The anchored regex of each expression, plus the label interning they share.
+pub fn translate(exprs: &[Lpe]) -> Result<(Labels, Vec<Hir>), BuildError> {
+    let mut all = Vec::new();
+    for e in exprs {
+        all.extend(e.expr.labels());
+    }
+    all.sort();
+    all.dedup();
+    let labels = Labels::new(&all).ok_or(BuildError::TooManyLabels {
+        labels: all.len(),
+        max: encode::MAX_LABELS,
+    })?;
+    let tr = translate::Translator::new(&labels);
+    let hirs = exprs
+        .iter()
+        .map(|e| Hir::concat(vec![tr.expr(&e.expr), Hir::look(Look::End)]))
+        .collect();
+    Ok((labels, hirs))
+}
+
+/// The compiled automaton: dense when it fits, lazy otherwise.
+enum Searcher {
+    Dense(Box<dense::DFA<Vec<u32>>>),
+    Lazy(Box<(hybrid::dfa::DFA, RefCell<hybrid::dfa::Cache>)>),
+}
+
+struct RegexMatcher {
+    labels: Labels,
+    patterns: usize,
+    dfa: Searcher,
+}
+
+impl RegexEngine {
+    fn build(&self, exprs: &[Lpe]) -> Result<RegexMatcher, BuildError> {
+        let (labels, hirs) = translate(exprs)?;
+        let nfa: NFA = thompson::Compiler::new()
+            .configure(
+                thompson::Config::new()
+                    .utf8(false)
+                    .which_captures(WhichCaptures::None)
+                    .nfa_size_limit(Some(self.limits.nfa)),
+            )
+            .build_many_from_hir(&hirs)
+            .map_err(|e| BuildError::Nfa(Box::new(e)))?;
+        let dense = if self.eager {
+            dense::Builder::new()
+                .configure(
+                    dense::Config::new()
+                        .match_kind(MatchKind::All)
+                        .start_kind(regex_automata::dfa::StartKind::Anchored)
+                        .dfa_size_limit(Some(self.limits.dfa))
+                        .determinize_size_limit(Some(self.limits.dfa)),
+                )
+                .build_from_nfa(&nfa)
+                .map(Some)
+        } else {
+            Ok(None)
+        };
+        let dfa = match dense {
+            Ok(Some(d)) => Searcher::Dense(Box::new(d)),
+            Ok(None) => self.lazy(nfa)?,
+            Err(e) if e.is_size_limit_exceeded() => self.lazy(nfa)?,
+            Err(e) => return Err(BuildError::Dfa(Box::new(e))),
+        };
+        Ok(RegexMatcher {
+            labels,
+            patterns: exprs.len(),
+            dfa,
+        })
+    }
+}
+
+impl RegexEngine {
+    fn lazy(&self, nfa: NFA) -> Result<Searcher, BuildError> {
+        let lazy = hybrid::dfa::Builder::new()
+            .configure(
+                hybrid::dfa::Config::new()
+                    .match_kind(MatchKind::All)
+                    .cache_capacity(self.limits.lazy_cache)
+                    .skip_cache_capacity_check(true)
+                    // Never give up: a slow answer beats no answer for a checking engine.
+                    .minimum_cache_clear_count(None),
+            )
+            .build_from_nfa(nfa)
+            .map_err(|e| BuildError::LazyDfa(Box::new(e)))?;
+        let cache = RefCell::new(lazy.create_cache());
+        Ok(Searcher::Lazy(Box::new((lazy, cache))))
+    }
+}
+
+impl Matcher for RegexMatcher {
+    fn which(&self, path: &Path) -> Vec<bool> {
+        let mut bytes = Vec::with_capacity(path.len() * encode::WIDTH);
+        for v in path.vertices() {
+            encode::encode_vertex(&self.labels, v, &mut bytes);
+        }
+        let input = Input::new(&bytes).anchored(Anchored::Yes);
+        let mut set = PatternSet::new(self.patterns);
+        let searched = match &self.dfa {
+            Searcher::Dense(d) => d.try_which_overlapping_matches(&input, &mut set),
+            Searcher::Lazy(lazy) => {
+                let (d, cache) = &**lazy;
+                d.try_which_overlapping_matches(&mut cache.borrow_mut(), &input, &mut set)
+            }
+        };
+        // Neither automaton has quit bytes, and the lazy one never gives up, so a
+        // search error is a bug in this engine's configuration.
+        if let Err(e) = searched {
+            panic!("regex-automata search failed on `{path}`: {e}");
+        }
+        (0..self.patterns)
+            .map(|i| set.contains(regex_automata::PatternID::new_unchecked(i)))
+            .collect()
+    }
+}
+
+impl Engine for RegexEngine {
+    fn name(&self) -> &'static str {
+        "oracle"
+    }
+
+    fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
+        Ok(Box::new(self.build(exprs)?))
+    }
+}
+
+/// Whether one expression matches the whole path (`Err` if the engine cannot build it).
+pub fn is_match(lpe: &Lpe, path: &Path) -> Result<bool, BuildError> {
+    let m = LAZY.build(std::slice::from_ref(lpe))?;
+    Ok(m.which(path)[0])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Whether `engine` built the dense form for `exprs`.
+    fn dense(engine: &RegexEngine, exprs: &[Lpe]) -> bool {
+        matches!(engine.build(exprs).unwrap().dfa, Searcher::Dense(_))
+    }
+
+    /// The lazy and the eager automaton's answer, which must be the same.
+    fn m(expr: &str, path: &str) -> bool {
+        let lpe = lpe::parse(expr).unwrap();
+        let path: Path = path.parse().unwrap();
+        let lazy = is_match(&lpe, &path).unwrap();
+        // The eager build falls back to the lazy DFA silently; without this the
+        // comparison below could be the lazy DFA against itself.
+        assert!(dense(&EAGER, std::slice::from_ref(&lpe)), "{lpe}");
+        assert!(!dense(&LAZY, std::slice::from_ref(&lpe)), "{lpe}");
+        let eager = EAGER.compile(std::slice::from_ref(&lpe)).unwrap();
+        assert_eq!(eager.which(&path), [lazy], "{lpe} on {path}");
+        lazy
+    }
+
+    // Expected values come from the semantics table (docs/language.md), written by hand.
+    #[test]
+    fn design_table_cases() {
+        assert!(m("C<RD>[<L.>O]", "C RD2 L'key'"));
+        assert!(m("C<RD>[<L.>O]", "C RD1 O"));
+        assert!(!m("C<RD>[<L.>O]", "C TD1 L"));
+        assert!(!m("C<RD>[<L.>O]", "C RD1 RD1 L"));
+        assert!(m("C.L", "C TS8'x' L"));
+        assert!(!m("C.L", "C RU3 L"), "user lobes match only explicitly");
+        assert!(m("CUL", "C RU3 L"));
+        assert!(m("CU3L", "C TU3 L"));
+        assert!(!m("CU3L", "C TU4 L"));
+        assert!(!m("C[^D]L", "C RU1 L"), "negated class is `.` minus items");
+        assert!(m("C[^D]L", "C RS2 L"));
+        assert!(m("C<R.[^'foo']>L", "C RD L"), "no label is not foo");
+        assert!(!m("C<R.[^'foo']>L", "C RD'foo' L"));
+        assert!(m("C<R.[^'foo']>L", "C RD'bar' L"));
+        assert!(m("CD|(SD)L", "C RS1 RD1 L"));
+        assert!(m("CD|(SD)L", "C RD L"));
+        assert!(m("C<L.'key'>", "C L'key'"));
+        assert!(!m("C<L.'key'>", "C L'fill'"));
+        assert!(!m("C<L.'key'>", "C L"));
+        assert!(m("C'floor'L", "C RD'floor' L"));
+        assert!(!m("C'floor'L", "C RU1'floor' L"));
+        assert!(m("C.{0}L", "C L"));
+        assert!(m("C.{2,3}L", "C RD RD RD L"));
+        assert!(!m("C.{2,3}L", "C RD RD RD RD L"));
+        assert!(m("C<.[^D]>L", "C RS3 L"));
+        assert!(!m("C<.[^D]>L", "C RU3 L"));
+        assert!(m("C<[^R]>L", "C TD L"));
+        assert!(!m("C<[^R]>L", "C RD L"));
+        // A label no expression mentions shares the "other" byte: it is not 'a', and
+        // it is a label (so `<L.'a'>` and `'a'` do not match it).
+        assert!(m("C<R.[^'a']>L", "C RD'zzz' L"));
+        assert!(!m("C'a'L", "C RD'zzz' L"));
+        assert!(!m("C<L.'a'>", "C L'zzz'"));
+        assert!(m("C<L.[^'a']>", "C L"));
+        // Event position `.` on an emitter means "no event": `<L.>` matches a light.
+        assert!(m("C<L.>", "C L'k'"));
+        assert!(!m("C<LD>", "C L"));
+    }
+
+    #[test]
+    fn too_many_labels_is_a_typed_refusal() {
+        let labels: String = (0..encode::MAX_LABELS + 1)
+            .map(|i| format!("'l{i}'"))
+            .collect();
+        let lpe = lpe::parse(&format!("C[{labels}]L")).unwrap();
+        let r = LAZY.compile(std::slice::from_ref(&lpe));
+        assert!(matches!(
+            r,
+            Err(EngineError::Regex(BuildError::TooManyLabels { labels, max }))
+                if labels == encode::MAX_LABELS + 1 && max == encode::MAX_LABELS
+        ));
+        // One fewer fits, and the last label still gets its own byte.
+        let labels: String = (0..encode::MAX_LABELS).map(|i| format!("'l{i}'")).collect();
+        let lpe = lpe::parse(&format!("C[{labels}]L")).unwrap();
+        let last = format!("C RD'l{}' L", encode::MAX_LABELS - 1);
+        assert!(is_match(&lpe, &last.parse().unwrap()).unwrap());
+        assert!(!is_match(&lpe, &"C RD'other' L".parse().unwrap()).unwrap());
+    }
+
+    #[test]
+    fn aov_set_is_one_automaton_answering_each_pattern() {
+        let exprs: Vec<Lpe> = lpe::macros::BASIC
+            .iter()
+            .map(|(_, s)| lpe::parse(s).unwrap())
+            .collect();
+        assert!(dense(&EAGER, &exprs));
+        assert!(!dense(&LAZY, &exprs));
+        for engine in [&LAZY, &EAGER] {
+            let m = engine.compile(&exprs).unwrap();
+            let p: Path = "C RD RS RD L".parse().unwrap();
+            assert_eq!(
+                m.which(&p),
+                [false, true, false, false, false, false, false]
+            );
+            let p: Path = "C O".parse().unwrap();
+            assert_eq!(
+                m.which(&p),
+                [false, false, false, false, false, false, true]
+            );
+            // The pattern set is fresh per search: a second path does not inherit answers.
+            let p: Path = "C TS8 L".parse().unwrap();
+            assert_eq!(
+                m.which(&p),
+                [false, false, false, false, false, true, false]
+            );
+        }
+    }
+
+    #[test]
+    fn huge_counts_are_a_typed_refusal_not_a_hang() {
+        let lpe = lpe::parse("C(.{0,200}){200}L").unwrap();
+        let r = LAZY.compile(std::slice::from_ref(&lpe));
+        assert!(matches!(r, Err(EngineError::Regex(BuildError::Nfa(_)))));
+    }
+
+    #[test]
+    fn dfa_blowup_falls_back_to_the_lazy_dfa() {
+        // "the 20th vertex from the end is diffuse": exponential for any DFA.
+        let lpe = lpe::parse("C.*D.{20}L").unwrap();
+        assert!(!dense(&EAGER, std::slice::from_ref(&lpe)));
+        let m = EAGER.compile(std::slice::from_ref(&lpe)).unwrap();
+        let mut text = String::from("C RS RD");
+        for _ in 0..20 {
+            text.push_str(" RS");
+        }
+        text.push_str(" L");
+        assert_eq!(m.which(&text.parse().unwrap()), [true]);
+        assert_eq!(m.which(&text.replace("RD", "RS").parse().unwrap()), [false]);
+    }
+}
