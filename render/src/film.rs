@@ -7,12 +7,19 @@
 //! and a compensated one (an f32 sum plus an f32 running error, renormalized after each
 //! addition, so the stored estimate is within an f32 rounding or two of the exact sum
 //! at any count).
-//! The accumulation is isolated here ([`Accumulation`]) so the integrator does not
-//! care which film it writes.
+//! The film owns accumulation: the integrator hands it [`Contribution`]s, which a
+//! [`SampleValues`] weighs into beauty and the matched AOVs by their prefixes
+//! ([`Weighting`]), and a [`FilmRow`] commits each finished sample to its pixel with the
+//! film's [`Accumulation`], so the integrator does not care which film it writes.
 
 use glam::{DVec3, Vec3};
+use rayon::prelude::*;
 
-/// How a film adds samples into its pixel sums (issue 6 compares them).
+use crate::aov::matcher::AovMask;
+use crate::aov::{AovFlags, AovList};
+use crate::sampling::max_component;
+
+/// How a film adds samples into its pixel sums (`converge` and `stress` compare them).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub enum Accumulation {
     /// f64 sums: the renderer's film.
@@ -180,6 +187,25 @@ impl Film {
             .collect()
     }
 
+    /// The rows, for workers to fill in parallel (row `y`, its pixels).
+    pub fn rows_mut(&mut self) -> impl IndexedParallelIterator<Item = (usize, FilmRow<'_>)> {
+        let (stride, layers, accumulation) = (self.stride(), self.layers, self.accumulation);
+        self.data
+            .par_chunks_mut(self.width * stride)
+            .enumerate()
+            .map(move |(y, pixels)| {
+                (
+                    y,
+                    FilmRow {
+                        pixels,
+                        stride,
+                        layers,
+                        accumulation,
+                    },
+                )
+            })
+    }
+
     /// Bitwise equality of one layer with another film's (determinism checks).
     pub fn layer_bits_equal(&self, layer: usize, other: &Film, other_layer: usize) -> bool {
         self.width == other.width
@@ -189,6 +215,207 @@ impl Film {
                 let b = other.total(p, other_layer);
                 a.to_array().map(f64::to_bits) == b.to_array().map(f64::to_bits)
             })
+    }
+}
+
+/// How a contribution was found (the integrator's module docs say how each AOV prefix weighs it).
+#[derive(Clone, Copy, Debug)]
+pub enum Strategy {
+    /// The path itself reached the emitter; `w` is its MIS weight and `nee_could` says
+    /// whether light sampling also estimates this connection.
+    Hit { w: f32, nee_could: bool },
+    /// A light sample with MIS weight `w` and its visibility.
+    Nee { w: f32, visible: bool },
+}
+
+impl Strategy {
+    /// The weight of this contribution in an AOV with these prefixes (beauty: none).
+    pub fn weight(self, f: &AovFlags) -> f32 {
+        let unshadowed = f.unoccluded || f.shadows;
+        match self {
+            Strategy::Hit {
+                nee_could: true, ..
+            } if unshadowed => 0.0,
+            Strategy::Hit { .. } if f.shadows => 0.0,
+            Strategy::Hit { w, .. } => w,
+            Strategy::Nee { visible, .. } if f.shadows => (!visible) as u8 as f32,
+            Strategy::Nee { .. } if f.unoccluded => 1.0,
+            Strategy::Nee { w, visible } => w * visible as u8 as f32,
+        }
+    }
+}
+
+/// A hit on an emitter that no other strategy estimates: full weight.
+pub const ONLY_STRATEGY: Strategy = Strategy::Hit {
+    w: 1.0,
+    nee_could: false,
+};
+
+/// One contribution reaching an emitter, as the film weighs it.
+#[derive(Clone, Copy, Debug)]
+pub struct Contribution {
+    /// Throughput up to the last scattering vertex.
+    pub beta: Vec3,
+    /// Estimate at the last scattering vertex (or the emitted radiance, for `C E`).
+    pub local: Vec3,
+    pub strategy: Strategy,
+    pub holdout: bool,
+}
+
+/// How contributions weigh into each AOV: its prefixes, and the scene's clamp.
+#[derive(Clone, Debug)]
+pub struct Weighting {
+    flags: Vec<AovFlags>,
+    /// AOVs with no prefix that changes a contribution's value: they receive beauty's.
+    like_beauty: AovMask,
+    clamp: Option<f32>,
+}
+
+impl Weighting {
+    pub fn new(aovs: &AovList, clamp: Option<f32>) -> Weighting {
+        Weighting {
+            flags: aovs.aovs.iter().map(|a| a.flags).collect(),
+            like_beauty: (aovs.aovs.iter().enumerate())
+                .filter(|(_, a)| a.flags.values_like_beauty())
+                .map(|(i, _)| i)
+                .collect(),
+            clamp,
+        }
+    }
+
+    /// Number of AOVs.
+    pub fn len(&self) -> usize {
+        self.flags.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.flags.is_empty()
+    }
+
+    /// Per AOV: whether its pixel keeps the last value written (`overwrite;`).
+    pub fn overwrite(&self) -> Vec<bool> {
+        self.flags.iter().map(|f| f.overwrite).collect()
+    }
+}
+
+/// The values of one camera sample, before they join the pixel.
+#[derive(Clone, Debug)]
+pub struct SampleValues {
+    beauty: DVec3,
+    aov: Vec<DVec3>,
+    touched: AovMask,
+    /// All light-transport contributions were finite.
+    finite: bool,
+    /// AOV-only values dropped as non-finite, over every sample this accumulator saw.
+    pub aov_rejected: u64,
+}
+
+impl SampleValues {
+    pub fn new(aovs: usize) -> SampleValues {
+        SampleValues {
+            beauty: DVec3::ZERO,
+            aov: vec![DVec3::ZERO; aovs],
+            touched: AovMask::EMPTY,
+            finite: true,
+            aov_rejected: 0,
+        }
+    }
+
+    /// Adds one contribution to beauty and to the AOVs in `matched` (the AOVs whose
+    /// expressions match its path), each weighed by its prefixes.
+    pub fn add(&mut self, w: &Weighting, a: &Contribution, matched: AovMask) {
+        let clamp = w.clamp;
+        let clamped = |v: Vec3, f: &AovFlags| match clamp {
+            Some(c) if !f.noclamp && max_component(v) > c => v * (c / max_component(v)),
+            _ => v,
+        };
+        let full = a.beta * a.local;
+        let none = AovFlags::default();
+        let wb = a.strategy.weight(&none);
+        let beauty = clamped(full * wb, &none);
+        let beauty_d = beauty.as_dvec3();
+        let counts_in_beauty = wb > 0.0 && !a.holdout;
+        if wb > 0.0 {
+            self.finite &= beauty.is_finite();
+        }
+        if counts_in_beauty {
+            self.beauty += beauty_d;
+        }
+        for i in matched.iter() {
+            if w.like_beauty.contains(i) {
+                if counts_in_beauty {
+                    self.aov[i] += beauty_d;
+                    self.touched.insert(i);
+                }
+                continue;
+            }
+            let f = &w.flags[i];
+            if f.holdouts != a.holdout {
+                continue;
+            }
+            let wi = a.strategy.weight(f);
+            if !(wi > 0.0) {
+                continue;
+            }
+            let v = clamped(if f.nothruput { a.local } else { full } * wi, f);
+            // Values beauty also received were judged with the sample; AOV-only values
+            // (other weights or no throughput) are dropped alone if not finite.
+            let aov_only = wi != wb || f.nothruput;
+            if aov_only && !v.is_finite() && !f.noinfinitecheck {
+                self.aov_rejected += 1;
+                continue;
+            }
+            self.aov[i] += v.as_dvec3();
+            self.touched.insert(i);
+        }
+    }
+
+    /// A material signal (user-lobe pseudo path) for AOV `i`: not light transport, so
+    /// never in beauty; `overwrite;` AOVs keep the last value.
+    pub fn add_signal(&mut self, w: &Weighting, i: usize, value: DVec3) {
+        if w.flags[i].overwrite {
+            self.aov[i] = value;
+        } else {
+            self.aov[i] += value;
+        }
+        self.touched.insert(i);
+    }
+}
+
+/// One row of the film, handed to one worker.
+pub struct FilmRow<'a> {
+    pixels: &'a mut [DVec3],
+    stride: usize,
+    layers: usize,
+    accumulation: Accumulation,
+}
+
+impl FilmRow<'_> {
+    /// Adds a finished sample to pixel `x` of this row and clears it; returns whether
+    /// the sample was rejected as non-finite.
+    pub fn commit(&mut self, x: usize, acc: &mut SampleValues, w: &Weighting) -> bool {
+        let rejected = !(acc.finite && acc.beauty.is_finite());
+        let (layers, accumulation, stride) = (self.layers, self.accumulation, self.stride);
+        let pixel = &mut self.pixels[x * stride..(x + 1) * stride];
+        let add = |pixel: &mut [DVec3], layer, x| accumulation.add(pixel, layers, layer, x);
+        if !rejected {
+            add(pixel, 0, acc.beauty);
+        }
+        for i in acc.touched.iter() {
+            let f = &w.flags[i];
+            if !rejected || f.noinfinitecheck {
+                if f.overwrite {
+                    pixel[1 + i] = acc.aov[i];
+                } else {
+                    add(pixel, 1 + i, acc.aov[i]);
+                }
+            }
+            acc.aov[i] = DVec3::ZERO;
+        }
+        acc.touched = AovMask::EMPTY;
+        acc.beauty = DVec3::ZERO;
+        acc.finite = true;
+        rejected
     }
 }
 

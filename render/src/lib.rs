@@ -3,31 +3,33 @@
 //! it, results do not depend on threads or on which other AOVs were requested, the
 //! furnace's closed form).
 //!
-//! Modules: [`geometry`] (shapes, BVH), [`camera`], [`material`] (named lobes),
-//! [`light`], [`scene`] (TOML scene files and built-ins), [`matcher`] (the engine seam),
-//! [`aovs`], [`plan`] (effects plan), [`integrator`], [`film`], [`output`] (EXR, PNG,
-//! report), [`check`] (invariants).
+//! Modules, by pipeline stage:
+//! - [`scene`]: the in-memory scene and the TOML scene file format;
+//! - [`geometry`] (shapes, BVH), [`camera`], [`material`] (named lobes), [`light`],
+//!   [`sampling`] (frames, MIS heuristics), [`rng`] (per-sample random streams);
+//! - [`aov`]: the AOV list, the matcher seam and the effects plan;
+//! - [`integrator`]: render dispatch, the row loop, the path estimator and the
+//!   contributions it hands the film;
+//! - [`film`]: accumulation of samples and prefix weighting of contributions;
+//! - [`output`]: EXR, PNG, contact sheet and the report;
+//! - [`verify`]: invariants, statistics, chi-square tests, known-answer scenes, the
+//!   `check` suite, `converge`, `stress`, plots and tables;
+//! - [`bench`](mod@bench): the cost of LPE tracking.
 
 // `!(x > 0.0)` is used on purpose throughout: it is true for NaN, which must take the
 // rejecting branch; `x <= 0.0` would let NaN through.
 #![allow(clippy::neg_cmp_op_on_partial_ord)]
 
-pub mod aovs;
-pub mod app;
+pub mod aov;
+pub mod bench;
 pub mod camera;
-pub mod check;
-pub mod chi2;
-pub mod converge;
 pub mod film;
 pub mod geometry;
 pub mod integrator;
 pub mod light;
-pub mod matcher;
 pub mod material;
 pub mod output;
-pub mod plan;
-pub mod plot;
 pub mod rng;
 pub mod sampling;
 pub mod scene;
-pub mod stress;
+pub mod verify;

@@ -1,4 +1,4 @@
-//! Materials: sums of named lobes (DESIGN.md §2). Each lobe is one BSDF model; its name
+//! Materials: sums of named lobes (docs/language.md §2.4). Each lobe is one BSDF model; its name
 //! goes through the [`lpe::LobeMap`] to the event its vertices record.
 //!
 //! A material's BSDF is the sum of its lobes. Paths pick one lobe per vertex with

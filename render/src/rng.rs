@@ -12,12 +12,10 @@ pub struct Rng {
     inc: u64,
 }
 
-/// SplitMix64 finaliser: a bijective avalanche mix used to derive stream seeds.
-fn mix64(mut z: u64) -> u64 {
-    z = z.wrapping_add(0x9E37_79B9_7F4A_7C15);
-    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-    z ^ (z >> 31)
+/// The workspace's SplitMix64 finaliser: a bijective avalanche mix that derives each
+/// sample's stream seed from `(seed, pixel, sample)`.
+fn mix64(z: u64) -> u64 {
+    lpe::rng::SplitMix64::mix(z)
 }
 
 impl Rng {

@@ -24,8 +24,8 @@
 
 use glam::Vec3;
 use lpe::LobeMap;
-use lpe_render::chi2::{self, ChiSquare, Grid, HalfVectorGrid, SphereGrid};
 use lpe_render::material::{Lobe, Model};
+use lpe_render::verify::chi2::{self, ChiSquare, Grid, HalfVectorGrid, SphereGrid};
 
 const ALPHA: f64 = 0.01;
 const SAMPLES: u64 = 400_000;
@@ -127,7 +127,7 @@ fn cases() -> Vec<Case> {
 /// Runs the cases on one grid kind; Sidak over every case in the file.
 fn run(half_vector: bool) {
     let cases = cases();
-    let each = chi2::sidak(ALPHA, cases.len());
+    let each = lpe_render::verify::stats::sidak(ALPHA, cases.len());
     let mut failed = Vec::new();
     for (i, case) in cases.iter().enumerate() {
         if case.half_vector.is_some() != half_vector {

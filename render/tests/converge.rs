@@ -2,7 +2,7 @@
 //! estimators are (about -1 unbiased, about 0 at the clamp's bias floor), and it writes
 //! its CSV, Markdown and plots.
 
-use lpe_render::converge::{self, Config, Summary};
+use lpe_render::verify::converge::{self, Config, Summary};
 
 fn run(dir: &std::path::Path, threads: usize) -> Vec<Summary> {
     let cfg = Config {
@@ -58,7 +58,7 @@ fn quick_converge_is_deterministic_and_its_slopes_mean_what_they_say() {
     // Every matcher engine renders the same image, beauty and every AOV, on every scene:
     // only the time differs.
     let mut compared = 0;
-    for e in converge::Engine::ALL.into_iter().skip(1) {
+    for e in converge::MatcherRow::ALL.into_iter().skip(1) {
         let variant = format!("MIS, {}", e.name());
         for r in a.iter().filter(|r| r.last.variant == variant) {
             let m = find(&a, &r.last.scene, "MIS", &r.last.layer);

@@ -2,8 +2,8 @@
 //! `lpe::analysis` for every path, with a witness the reference matcher confirms.
 
 use lpe::{Parser, Path};
-use lpe_render::aovs::{AovList, Partition};
-use lpe_render::check::formal_partition;
+use lpe_render::aov::{AovList, Partition};
+use lpe_render::verify::invariants::formal_partition;
 
 fn list(aovs: &[(&str, &str)], declare: bool) -> AovList {
     let parser = Parser::default();

@@ -1,12 +1,9 @@
-//! Hard cases stay numerically stable (issue 6). Each test compares against a closed form
+//! Hard cases stay numerically stable. Each test compares against a closed form
 //! or an independent computation; statistical ones state their significance.
 
 use glam::{DVec3, Vec3};
 use lpe::{LobeMap, Parser};
-use lpe_render::aovs::AovList;
-use lpe_render::check::{critical_z, mean_and_se};
-use lpe_render::chi2::sidak;
-use lpe_render::converge;
+use lpe_render::aov::AovList;
 use lpe_render::film::Accumulation;
 use lpe_render::geometry::{Bvh, Ray, Shape};
 use lpe_render::integrator::{Render, Settings, Technique};
@@ -15,7 +12,9 @@ use lpe_render::material::{fresnel_dielectric, Lobe, Model};
 use lpe_render::rng::Rng;
 use lpe_render::sampling::power_heuristic;
 use lpe_render::scene::Scene;
-use lpe_render::stress;
+use lpe_render::verify::known;
+use lpe_render::verify::stats::{critical_z, mean_and_se, sidak};
+use lpe_render::verify::stress;
 
 /// Family-wise significance of each statistical test below (Sidak over its cases).
 const ALPHA: f64 = 0.01;
@@ -29,7 +28,7 @@ fn wo(cos: f32) -> Vec3 {
 }
 
 fn render(scene: &Scene, aovs: &AovList, settings: &Settings) -> Render {
-    lpe_render::app::render(scene, aovs, &lobes(), settings).unwrap()
+    lpe_render::integrator::render(scene, aovs, &lobes(), settings).unwrap()
 }
 
 #[test]
@@ -264,7 +263,7 @@ fn tiny_sphere_light_over_a_plane_renders_its_closed_form() {
     // radius 0.5 and of radius 1e-6 with the same power, against a Le (R/d)^2 cos.
     let (w, h) = (12, 12);
     for radius in [0.5, 1e-6] {
-        let known = converge::sphere_over_plane(w, h, radius, &lobes()).unwrap();
+        let known = known::sphere_over_plane(w, h, radius, &lobes()).unwrap();
         for technique in [Technique::Mis, Technique::LightOnly] {
             let settings = Settings {
                 width: w,
@@ -296,7 +295,7 @@ fn assert_mean_matches(got: &[DVec3], want: &[DVec3], what: &str) {
 fn intensities_from_1e_minus_6_to_1e12_in_one_scene_each_keep_their_light_group() {
     // Four point lights whose intensities span 18 orders of magnitude, each in its own
     // light group; each group's AOV must match its closed form (a/pi) I cos/d^2.
-    let (scene, aovs) = stress::intensities_scene(&lobes()).unwrap();
+    let (scene, aovs) = known::intensities_scene(&lobes()).unwrap();
     let (w, h) = (12, 12);
     let settings = Settings {
         width: w,
@@ -308,8 +307,8 @@ fn intensities_from_1e_minus_6_to_1e12_in_one_scene_each_keep_their_light_group(
     let r = render(&scene, &aovs, &settings);
     assert_eq!(r.film.rejected + r.film.aov_rejected, 0);
     assert!(r.film.layer(0).iter().all(|v| v.is_finite()));
-    for k in 0..stress::INTENSITIES.len() {
-        let want = stress::intensity_reference(&scene, k, w, h);
+    for k in 0..known::INTENSITIES.len() {
+        let want = known::intensity_reference(&scene, k, w, h);
         assert_mean_matches(&r.film.layer(1 + k), &want, &format!("light {k}"));
     }
 }
@@ -343,7 +342,7 @@ fn mis_weights_stay_finite_and_complementary_for_pdfs_from_0_to_1e30_and_beyond(
     }
     // In a render: a near-mirror (alpha 1e-7, pdf peak ~1e13) lit by a 1e-6 sphere light
     // (light pdf ~1e12), a point light and a dome: nothing is rejected as non-finite.
-    let scene = Scene::from_toml(stress::MIS_EXTREMES, "mis", &lobes()).unwrap();
+    let scene = Scene::from_toml(known::MIS_EXTREMES, "mis", &lobes()).unwrap();
     let aovs = AovList::defaults(&scene, &Parser::default()).unwrap();
     for technique in [Technique::Mis, Technique::BsdfOnly, Technique::LightOnly] {
         let s = Settings {

@@ -4,10 +4,11 @@
 //! definitions in `integrator.rs`.
 
 use lpe::{Config, Parser};
-use lpe_render::aovs::AovList;
-use lpe_render::app;
+use lpe_render::aov::AovList;
+use lpe_render::integrator;
 use lpe_render::integrator::{Render, Settings};
 use lpe_render::scene::Scene;
+use lpe_render::verify;
 
 fn parser() -> Parser {
     let c = Config::default();
@@ -30,12 +31,12 @@ fn small(w: usize, spp: u32) -> Settings {
 }
 
 fn render(s: &Scene, aovs: &AovList, settings: &Settings) -> Render {
-    app::render(s, aovs, &Config::default().lobes, settings).unwrap()
+    integrator::render(s, aovs, &Config::default().lobes, settings).unwrap()
 }
 
 #[test]
 fn the_check_suite_passes() {
-    let list = app::check_suite(Some(2), &mut |_| {}).unwrap();
+    let list = verify::suite::check_suite(Some(2), &mut |_| {}).unwrap();
     let failed: Vec<_> = list.iter().filter(|i| i.failed()).collect();
     assert!(failed.is_empty(), "{failed:#?}");
     // Everything is actually checked but the formal check of the per-lobe set, which is
@@ -145,7 +146,7 @@ fn user_lobe_pseudo_paths_carry_the_albedo_and_only_when_asked() {
 #[test]
 fn exr_reads_back_with_the_expected_layers_and_values() {
     let s = scene("cornell");
-    let aovs = app::default_aovs(&s, &parser()).unwrap();
+    let aovs = AovList::for_render(&s, &parser()).unwrap();
     let r = render(
         &s,
         &aovs,
@@ -162,7 +163,7 @@ fn exr_reads_back_with_the_expected_layers_and_values() {
         spp: 2,
         seed: 5,
         threads: 2,
-        matcher: app::ENGINE.into(),
+        matcher: integrator::ENGINE.into(),
         timing: lpe_render::output::Timing {
             render_seconds: r.seconds,
             total_seconds: r.seconds,
@@ -174,7 +175,7 @@ fn exr_reads_back_with_the_expected_layers_and_values() {
         effects_plan: r.plan.describe(),
         effects: r.plan,
         aovs: Vec::new(),
-        invariants: app::invariants(&s, &aovs, &r),
+        invariants: verify::invariants::invariants(&s, &aovs, &r),
         notes: Vec::new(),
         rejected_samples: 0,
         rejected_aov_values: 0,
@@ -247,7 +248,7 @@ fn non_finite_samples_are_rejected_everywhere_but_in_noinfinitecheck_aovs() {
         );
     }
     assert!(r.film.layer(1 + kept).iter().any(|v| !v.is_finite()));
-    let inv = app::invariants(&s, &aovs, &r);
+    let inv = verify::invariants::invariants(&s, &aovs, &r);
     let finite = inv
         .iter()
         .find(|i| i.name.starts_with("no NaN/Inf"))

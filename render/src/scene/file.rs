@@ -1,175 +1,22 @@
-//! Scenes: the in-memory form the integrator reads, and the TOML scene file format
-//! (built-in scenes are TOML files compiled into the binary, so they double as
-//! documented examples of the format; see `render/scenes/README.md`).
+//! The TOML scene file format (serde) and its translation into a [`Scene`]. Unknown keys
+//! are errors so that typos do not pass silently.
 
 use glam::Vec3;
 use lpe::LobeMap;
 use serde::Deserialize;
 use std::collections::BTreeMap;
-use std::fmt;
 
-use crate::geometry::{Bvh, Hit, Ray, Shape};
+use super::{CameraDesc, Object, Scene, SceneProblem, SceneSettings, MAX_DEPTH_LIMIT, MAX_LABELS};
+use crate::geometry::{Bvh, Shape};
 use crate::light::{Light, LightKind};
 use crate::material::{Lobe, Material, Model};
 
-/// A built-in scene: name and TOML source.
-pub const BUILTIN: [(&str, &str); 3] = [
-    ("cornell", include_str!("../scenes/cornell.toml")),
-    ("still-life", include_str!("../scenes/still-life.toml")),
-    ("furnace", include_str!("../scenes/furnace.toml")),
-];
-
-/// An object: geometry (in the BVH) with a material or an area light.
-#[derive(Clone, Debug)]
-pub struct Object {
-    pub name: String,
-    /// Index into [`Scene::materials`]; `None` for an area light's surface.
-    pub material: Option<usize>,
-    /// The label of the object's R/T/O vertices.
-    pub lpegroup: Option<String>,
-    /// Paths touching a holdout object go only to `holdouts;` AOVs.
-    pub holdout: bool,
-    /// Index into [`Scene::lights`] when the object is an area light.
-    pub light: Option<usize>,
-}
-
-/// Pinhole camera placement (the aspect ratio comes from the image size).
-#[derive(Clone, Copy, Debug)]
-pub struct CameraDesc {
-    pub position: Vec3,
-    pub look_at: Vec3,
-    pub up: Vec3,
-    pub fov: f32,
-}
-
-/// Integrator settings a scene file may set.
-#[derive(Clone, Copy, Debug)]
-pub struct SceneSettings {
-    /// Most scattering vertices on a path.
-    pub max_depth: u32,
-    /// Russian roulette starts after this many scattering vertices.
-    pub rr_depth: u32,
-    /// Largest component a single contribution may have (`noclamp;` AOVs bypass it).
-    pub clamp: Option<f32>,
-}
-
-/// A scene ready to render.
-#[derive(Clone, Debug)]
-pub struct Scene {
-    pub name: String,
-    pub camera: CameraDesc,
-    pub objects: Vec<Object>,
-    pub materials: Vec<Material>,
-    pub material_names: Vec<String>,
-    pub lights: Vec<Light>,
-    pub settings: SceneSettings,
-    bvh: Bvh,
-}
-
-/// Most distinct labels (object `lpegroup`s and light groups) in one scene.
-pub const MAX_LABELS: usize = 1024;
-
-/// Most scattering vertices a path may have: paths are kept in fixed-size buffers by
-/// the reference matcher (see `matcher.rs`).
-pub const MAX_DEPTH_LIMIT: u32 = 60;
-
-impl Scene {
-    pub fn intersect(&self, ray: &Ray, t_max: f32) -> Option<Hit> {
-        self.bvh.intersect(ray, t_max)
-    }
-
-    pub fn occluded(&self, ray: &Ray, t_max: f32) -> bool {
-        self.bvh.occluded(ray, t_max)
-    }
-
-    /// The dome light, if any (what escaping rays see).
-    pub fn dome(&self) -> Option<usize> {
-        self.lights
-            .iter()
-            .position(|l| matches!(l.kind, LightKind::Dome { .. }))
-    }
-
-    /// Light groups in order of first appearance.
-    pub fn light_groups(&self) -> Vec<String> {
-        let mut out: Vec<String> = Vec::new();
-        for g in self.lights.iter().filter_map(|l| l.group.clone()) {
-            if !out.contains(&g) {
-                out.push(g);
-            }
-        }
-        out
-    }
-
-    /// Loads a built-in scene by name or a TOML file by path.
-    pub fn load(name_or_path: &str, lobes: &LobeMap) -> Result<Scene, SceneError> {
-        if let Some((_, src)) = BUILTIN.iter().find(|(n, _)| *n == name_or_path) {
-            return Scene::from_toml(src, name_or_path, lobes);
-        }
-        let text = std::fs::read_to_string(name_or_path).map_err(|e| SceneError {
-            file: name_or_path.to_string(),
-            line: None,
-            message: if std::path::Path::new(name_or_path).extension().is_none() {
-                format!(
-                    "not a built-in scene ({}) and not a readable file: {e}",
-                    BUILTIN.map(|b| b.0).join(", ")
-                )
-            } else {
-                format!("cannot read: {e}")
-            },
-        })?;
-        let stem = std::path::Path::new(name_or_path)
-            .file_stem()
-            .map_or("scene".into(), |s| s.to_string_lossy().into_owned());
-        Scene::from_toml(&text, name_or_path, lobes).map(|mut s| {
-            if s.name.is_empty() {
-                s.name = stem;
-            }
-            s
-        })
-    }
-
-    /// Parses a TOML scene; `file` names it in errors.
-    pub fn from_toml(text: &str, file: &str, lobes: &LobeMap) -> Result<Scene, SceneError> {
-        let err = |span: Option<std::ops::Range<usize>>, message: String| SceneError {
-            file: file.to_string(),
-            line: span.map(|s| 1 + text[..s.start.min(text.len())].matches('\n').count()),
-            message,
-        };
-        let desc: SceneFile =
-            toml::from_str(text).map_err(|e| err(e.span(), e.message().to_string()))?;
-        desc.build(lobes)
-            .map_err(|(span, message)| err(span, message))
-    }
-}
-
-/// A scene file problem: file, line (when known) and what.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SceneError {
-    pub file: String,
-    pub line: Option<usize>,
-    pub message: String,
-}
-
-impl fmt::Display for SceneError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.line {
-            Some(l) => write!(f, "{}:{}: {}", self.file, l, self.message),
-            None => write!(f, "{}: {}", self.file, self.message),
-        }
-    }
-}
-
-impl std::error::Error for SceneError {}
-
-// ---------------------------------------------------------------------------------------
-// The file format (serde). Unknown keys are errors so that typos do not pass silently.
-
 type Spanned<T> = toml::Spanned<T>;
-type BuildError = (Option<std::ops::Range<usize>>, String);
+pub(super) type BuildError = (Option<std::ops::Range<usize>>, SceneProblem);
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
-struct SceneFile {
+pub(super) struct SceneFile {
     #[serde(default)]
     name: String,
     camera: CameraFile,
@@ -327,36 +174,36 @@ struct LightFile {
 }
 
 /// A finite vector, or an error naming the field.
-fn vec3(v: [f32; 3], what: &str) -> Result<Vec3, String> {
+fn vec3(v: [f32; 3], what: &'static str) -> Result<Vec3, SceneProblem> {
     if v.iter().all(|x| x.is_finite()) {
         Ok(Vec3::from(v))
     } else {
-        Err(format!("{what} must be finite, got {v:?}"))
+        Err(SceneProblem::NotFinite { what, value: v })
     }
 }
 
-fn color(v: [f32; 3], what: &str) -> Result<Vec3, String> {
+fn color(v: [f32; 3], what: &'static str) -> Result<Vec3, SceneProblem> {
     let c = vec3(v, what)?;
     if c.min_element() < 0.0 {
-        return Err(format!("{what} must not be negative, got {v:?}"));
+        return Err(SceneProblem::Negative { what, value: v });
     }
     Ok(c)
 }
 
-fn positive(x: f32, what: &str) -> Result<f32, String> {
+fn positive(x: f32, what: &'static str) -> Result<f32, SceneProblem> {
     if x.is_finite() && x > 0.0 {
         Ok(x)
     } else {
-        Err(format!("{what} must be a positive number, got {x}"))
+        Err(SceneProblem::NotPositive { what, value: x })
     }
 }
 
-fn need<T>(x: Option<T>, what: &str, kind: &str) -> Result<T, String> {
-    x.ok_or_else(|| format!("a {kind} needs `{what}`"))
+fn need<T>(x: Option<T>, what: &'static str, kind: &'static str) -> Result<T, SceneProblem> {
+    x.ok_or(SceneProblem::Missing { kind, what })
 }
 
 impl LobeFile {
-    fn build(&self, lobes: &LobeMap) -> Result<Lobe, String> {
+    fn build(&self, lobes: &LobeMap) -> Result<Lobe, SceneProblem> {
         let model = match self.model.as_str() {
             "lambert" => Model::Lambert {
                 albedo: color(need(self.albedo, "albedo", "lambert lobe")?, "albedo")?,
@@ -370,7 +217,7 @@ impl LobeFile {
             "ggx" => {
                 let r = need(self.roughness, "roughness", "ggx lobe")?;
                 if !(r.is_finite() && (0.0..=1.0).contains(&r)) {
-                    return Err(format!("roughness must be in [0, 1], got {r}"));
+                    return Err(SceneProblem::Roughness { value: r });
                 }
                 Model::Ggx {
                     f0: color(need(self.f0, "f0", "ggx lobe")?, "f0")?,
@@ -383,20 +230,20 @@ impl LobeFile {
                 tint: color(self.tint.unwrap_or([1.0; 3]), "tint")?,
             },
             other => {
-                return Err(format!(
-                    "unknown lobe model `{other}` (lambert, diffuse_transmission, ggx, dielectric)"
-                ))
+                return Err(SceneProblem::UnknownLobeModel {
+                    model: other.into(),
+                })
             }
         };
         Ok(Lobe::new(&self.name, model, lobes))
     }
 }
 
-fn box_triangles(b: &BoxFile) -> Result<Vec<Shape>, String> {
+fn box_triangles(b: &BoxFile) -> Result<Vec<Shape>, SceneProblem> {
     let lo = vec3(b.min, "box min")?;
     let hi = vec3(b.max, "box max")?;
     if !(hi.cmpgt(lo).all()) {
-        return Err("box max must exceed min on every axis".into());
+        return Err(SceneProblem::EmptyBox);
     }
     let c = (lo + hi) * 0.5;
     let rot = glam::Quat::from_rotation_y(b.rotate_y.to_radians());
@@ -435,7 +282,7 @@ fn box_triangles(b: &BoxFile) -> Result<Vec<Shape>, String> {
 }
 
 impl ObjectFile {
-    fn shapes(&self) -> Result<Vec<Shape>, String> {
+    fn shapes(&self) -> Result<Vec<Shape>, SceneProblem> {
         let given = [
             self.sphere.is_some(),
             self.quad.is_some(),
@@ -443,7 +290,7 @@ impl ObjectFile {
             self.mesh.is_some(),
         ];
         if given.iter().filter(|g| **g).count() != 1 {
-            return Err("an object needs exactly one of `sphere`, `quad`, `box`, `mesh`".into());
+            return Err(SceneProblem::ShapeCount);
         }
         if let Some(s) = &self.sphere {
             return Ok(vec![Shape::Sphere {
@@ -454,7 +301,7 @@ impl ObjectFile {
         if let Some(q) = &self.quad {
             let (u, v) = (vec3(q.u, "u")?, vec3(q.v, "v")?);
             if u.cross(v).length_squared() == 0.0 {
-                return Err("quad edges `u` and `v` are parallel (zero area)".into());
+                return Err(SceneProblem::DegenerateQuad { light: false });
             }
             return Ok(vec![Shape::Quad {
                 corner: vec3(q.corner, "corner")?,
@@ -474,9 +321,13 @@ impl ObjectFile {
         let mut out = Vec::new();
         for t in &m.triangles {
             let p = |i: u32| {
-                verts.get(i as usize).copied().ok_or_else(|| {
-                    format!("triangle index {i} out of range ({} vertices)", verts.len())
-                })
+                verts
+                    .get(i as usize)
+                    .copied()
+                    .ok_or(SceneProblem::TriangleIndex {
+                        index: i,
+                        vertices: verts.len(),
+                    })
             };
             let (a, b, c) = (p(t[0])?, p(t[1])?, p(t[2])?);
             // Zero-area triangles can never be hit; skipping them keeps normals finite.
@@ -493,7 +344,7 @@ impl ObjectFile {
 }
 
 impl LightFile {
-    fn build(&self) -> Result<LightKind, String> {
+    fn build(&self) -> Result<LightKind, SceneProblem> {
         let k = self.kind.as_str();
         Ok(match k {
             "quad" => {
@@ -502,7 +353,7 @@ impl LightFile {
                     vec3(need(self.v, "v", "quad light")?, "v")?,
                 );
                 if u.cross(v).length_squared() == 0.0 {
-                    return Err("quad light edges `u` and `v` are parallel (zero area)".into());
+                    return Err(SceneProblem::DegenerateQuad { light: true });
                 }
                 LightKind::Quad {
                     corner: vec3(need(self.corner, "corner", "quad light")?, "corner")?,
@@ -529,7 +380,7 @@ impl LightFile {
                     "direction",
                 )?;
                 if d.length_squared() == 0.0 {
-                    return Err("distant light direction must not be zero".into());
+                    return Err(SceneProblem::ZeroDirection);
                 }
                 LightKind::Distant {
                     direction: d.normalize(),
@@ -542,19 +393,15 @@ impl LightFile {
             "dome" => LightKind::Dome {
                 radiance: color(need(self.radiance, "radiance", "dome light")?, "radiance")?,
             },
-            other => {
-                return Err(format!(
-                    "unknown light kind `{other}` (quad, sphere, point, distant, dome)"
-                ))
-            }
+            other => return Err(SceneProblem::UnknownLightKind { kind: other.into() }),
         })
     }
 }
 
 impl SceneFile {
-    fn build(self, lobe_map: &LobeMap) -> Result<Scene, BuildError> {
+    pub(super) fn build(self, lobe_map: &LobeMap) -> Result<Scene, BuildError> {
         let c = &self.camera;
-        let at = |m: String| (None, m);
+        let at = |m: SceneProblem| (None, m);
         let camera = CameraDesc {
             position: vec3(c.position, "camera position").map_err(at)?,
             look_at: vec3(c.look_at, "camera look_at").map_err(at)?,
@@ -566,19 +413,16 @@ impl SceneFile {
             .length_squared()
             == 0.0
         {
-            return Err((
-                None,
-                "camera: look_at must differ from position and not lie along up".into(),
-            ));
+            return Err((None, SceneProblem::CameraAxis));
         }
         let r = &self.render;
         if r.max_depth == 0 || r.max_depth > MAX_DEPTH_LIMIT {
             return Err((
                 None,
-                format!(
-                    "render.max_depth must be 1..={MAX_DEPTH_LIMIT}, got {}",
-                    r.max_depth
-                ),
+                SceneProblem::MaxDepth {
+                    value: r.max_depth,
+                    max: MAX_DEPTH_LIMIT,
+                },
             ));
         }
         if let Some(cl) = r.clamp {
@@ -600,9 +444,9 @@ impl SceneFile {
                 .iter()
                 .map(|l| l.build(lobe_map))
                 .collect::<Result<Vec<_>, _>>()
-                .map_err(|e| (span.clone(), format!("material `{name}`: {e}")))?;
+                .map_err(|e| (span.clone(), e.in_material(name)))?;
             let glow = color(m.glow.unwrap_or([0.0; 3]), "glow")
-                .map_err(|e| (span.clone(), format!("material `{name}`: {e}")))?;
+                .map_err(|e| (span.clone(), e.in_material(name)))?;
             materials.push(Material::new(lobes, glow));
             material_names.push(name.clone());
         }
@@ -623,16 +467,14 @@ impl SceneFile {
                 .ok_or_else(|| {
                     (
                         span.clone(),
-                        format!(
-                            "object `{name}`: unknown material `{}` (defined: {})",
-                            o.material,
-                            material_names.join(", ")
-                        ),
+                        SceneProblem::UnknownMaterial {
+                            material: o.material.clone(),
+                            defined: material_names.join(", "),
+                        }
+                        .in_object(&name),
                     )
                 })?;
-            let shapes = o
-                .shapes()
-                .map_err(|e| (span.clone(), format!("object `{name}`: {e}")))?;
+            let shapes = o.shapes().map_err(|e| (span.clone(), e.in_object(&name)))?;
             let id = objects.len() as u32;
             prims.extend(shapes.into_iter().map(|s| (s, id)));
             objects.push(Object {
@@ -650,7 +492,7 @@ impl SceneFile {
             let lf = l.get_ref();
             let kind = lf
                 .build()
-                .map_err(|e| (span.clone(), format!("light {}: {e}", lights.len())))?;
+                .map_err(|e| (span.clone(), e.in_light(lights.len())))?;
             let light = Light {
                 kind,
                 group: lf.group.clone(),
@@ -669,7 +511,7 @@ impl SceneFile {
             lights.push(light);
         }
         // Labels become distinct matcher vertices (label x event x R/T); bounding them
-        // keeps every scene within the matcher's class space (see `matcher.rs`).
+        // keeps every scene within the matcher's class space (see `aov::matcher`).
         let mut labels: Vec<&str> = objects
             .iter()
             .filter_map(|o| o.lpegroup.as_deref())
@@ -680,10 +522,10 @@ impl SceneFile {
         if labels.len() > MAX_LABELS {
             return Err((
                 None,
-                format!(
-                    "{} distinct lpegroup/group labels; at most {MAX_LABELS}",
-                    labels.len()
-                ),
+                SceneProblem::TooManyLabels {
+                    labels: labels.len(),
+                    max: MAX_LABELS,
+                },
             ));
         }
         if lights
@@ -692,7 +534,7 @@ impl SceneFile {
             .count()
             > 1
         {
-            return Err((None, "at most one dome light".into()));
+            return Err((None, SceneProblem::SecondDome));
         }
         Ok(Scene {
             name: self.name,
@@ -704,45 +546,5 @@ impl SceneFile {
             settings,
             bvh: Bvh::new(prims),
         })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn builtin_scenes_load() {
-        for (name, _) in BUILTIN {
-            let s = Scene::load(name, &LobeMap::default()).unwrap();
-            assert!(!s.objects.is_empty(), "{name}");
-        }
-    }
-
-    #[test]
-    fn errors_name_file_and_line() {
-        let map = LobeMap::default();
-        let text = "[camera]\nposition = [0,0,0]\nlook_at = [0,0,1]\n\n[[objects]]\nmaterial = \"nope\"\nsphere = { center = [0,0,3], radius = 1 }\n";
-        let e = Scene::from_toml(text, "s.toml", &map).unwrap_err();
-        assert_eq!(e.line, Some(5), "{e}");
-        assert!(e.to_string().starts_with("s.toml:5: "), "{e}");
-        assert!(e.message.contains("unknown material `nope`"), "{e}");
-
-        let e = Scene::from_toml(
-            "[camera]\nposition = [0,0,0]\nlook_at = [0,0,1]\nfoo = 1\n",
-            "s.toml",
-            &map,
-        )
-        .unwrap_err();
-        assert_eq!(e.line, Some(4), "{e}");
-        assert!(e.message.contains("foo"), "{e}");
-
-        let e = Scene::from_toml(
-            "[camera]\nposition = [0,0,nan]\nlook_at = [0,0,1]\n",
-            "s.toml",
-            &map,
-        )
-        .unwrap_err();
-        assert!(e.message.contains("finite"), "{e}");
     }
 }

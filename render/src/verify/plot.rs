@@ -6,6 +6,7 @@
 //! Liberation Sans from the usual paths, or `LPE_PLOT_FONT`. Without one, the plots are
 //! drawn without text (lines and grid only) and the caller is told.
 
+use crate::output::OutputError;
 use plotters::coord::Shift;
 use plotters::prelude::*;
 use std::path::Path;
@@ -76,11 +77,15 @@ fn draw<DB: DrawingBackend>(
     x_label: &str,
     y_label: &str,
     text: bool,
-) -> Result<(), String>
+    file: &Path,
+) -> Result<(), OutputError>
 where
     DB::ErrorType: 'static,
 {
-    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
+    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| OutputError::Plot {
+        file: file.to_path_buf(),
+        reason: e.to_string(),
+    };
     root.fill(&WHITE).map_err(e)?;
     let areas = root.split_evenly((panels.len().div_ceil(2), 2));
     for (panel, area) in panels.iter().zip(areas.iter()) {
@@ -161,25 +166,26 @@ pub fn write(
     panels: &[Panel],
     x_label: &str,
     y_label: &str,
-) -> Result<bool, String> {
+) -> Result<bool, OutputError> {
     let text = font_available();
+    let file = dir.join(format!("{stem}.png"));
     let (w, h) = size(panels.len());
     let mut rgb = vec![0u8; (w * h * 3) as usize];
     {
         let root = BitMapBackend::with_buffer(&mut rgb, (w, h)).into_drawing_area();
-        draw(&root, panels, x_label, y_label, text)?;
+        draw(&root, panels, x_label, y_label, text, &file)?;
     }
-    let img = image::RgbImage::from_raw(w, h, rgb).ok_or("plot buffer size")?;
-    let png = crate::output::png_bytes(&img)?;
-    let file = dir.join(format!("{stem}.png"));
-    crate::output::atomic_write(&file, &png).map_err(|e| format!("{}: {e}", file.display()))?;
+    let img = image::RgbImage::from_raw(w, h, rgb).ok_or_else(|| OutputError::Plot {
+        file: file.clone(),
+        reason: "bitmap buffer of the wrong size".into(),
+    })?;
+    crate::output::write_file(&file, &crate::output::png_bytes(&img)?)?;
+    let file = dir.join(format!("{stem}.svg"));
     let mut svg = String::new();
     {
         let root = SVGBackend::with_string(&mut svg, (w, h)).into_drawing_area();
-        draw(&root, panels, x_label, y_label, text)?;
+        draw(&root, panels, x_label, y_label, text, &file)?;
     }
-    let file = dir.join(format!("{stem}.svg"));
-    crate::output::atomic_write(&file, svg.as_bytes())
-        .map_err(|e| format!("{}: {e}", file.display()))?;
+    crate::output::write_file(&file, svg.as_bytes())?;
     Ok(text)
 }

@@ -5,8 +5,12 @@
 use glam::DVec3;
 use serde::Serialize;
 
-use crate::aovs::{AovList, Partition};
+use super::known::{furnace_params, FURNACE_BOUNCES};
+use super::stats::{critical_z, mean_and_se, sidak};
+use crate::aov::{AovList, Partition};
 use crate::film::Film;
+use crate::integrator::Render;
+use crate::scene::Scene;
 
 /// One checked property and its measured error.
 #[derive(Clone, Debug, Serialize)]
@@ -19,6 +23,9 @@ pub struct Invariant {
     /// not partition every path).
     pub passed: Option<bool>,
     pub detail: String,
+    /// Decided on the automata for every possible path (no measurement: `measured` and
+    /// `tolerance` mean nothing; `detail` says what was decided, with a witness path).
+    pub formal: bool,
 }
 
 impl Invariant {
@@ -34,6 +41,43 @@ impl Invariant {
             tolerance,
             passed: Some(measured <= tolerance),
             detail: detail.into(),
+            formal: false,
+        }
+    }
+
+    /// The measurement as printed (`-` for a formal check).
+    pub fn measured_text(&self) -> String {
+        if self.formal {
+            "-".into()
+        } else {
+            format!("{:.3e}", self.measured)
+        }
+    }
+
+    /// The tolerance as printed (`-` for a formal check).
+    pub fn tolerance_text(&self) -> String {
+        if self.formal {
+            "-".into()
+        } else {
+            format!("{:.3e}", self.tolerance)
+        }
+    }
+
+    /// One console line: the outcome and name, then what was measured against what,
+    /// or for a formal check what was decided and its witness.
+    pub fn line(&self) -> String {
+        let tag = match self.passed {
+            Some(true) => "pass",
+            Some(false) => "FAIL",
+            None => "skip",
+        };
+        if self.formal {
+            format!("[{tag}] {} — {}", self.name, self.detail)
+        } else {
+            format!(
+                "[{tag}] {} — measured {:.3e} (tolerance {:.3e})",
+                self.name, self.measured, self.tolerance
+            )
         }
     }
 
@@ -171,51 +215,10 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
                 tolerance: 0.0,
                 passed,
                 detail,
+                formal: true,
             }
         })
         .collect()
-}
-
-/// Standard normal upper tail `P(Z > z)`, from `erfc` (W. J. Cody's rational
-/// approximation via Numerical Recipes' erfcc, relative error < 1.2e-7).
-pub fn normal_tail(z: f64) -> f64 {
-    let x = z / std::f64::consts::SQRT_2;
-    let t = 1.0 / (1.0 + 0.5 * x.abs());
-    let y = t
-        * (-x * x - 1.26551223
-            + t * (1.00002368
-                + t * (0.37409196
-                    + t * (0.09678418
-                        + t * (-0.18628806
-                            + t * (0.27886807
-                                + t * (-1.13520398
-                                    + t * (1.48851587 + t * (-0.82215223 + t * 0.17087277)))))))))
-            .exp();
-    let erfc = if x >= 0.0 { y } else { 2.0 - y };
-    0.5 * erfc
-}
-
-/// The two-sided critical value: `|Z| > z` with probability `alpha`.
-pub fn critical_z(alpha: f64) -> f64 {
-    let (mut lo, mut hi) = (0.0, 40.0);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if 2.0 * normal_tail(mid) > alpha {
-            lo = mid;
-        } else {
-            hi = mid;
-        }
-    }
-    0.5 * (lo + hi)
-}
-
-/// Mean of `x` and its standard error `s / sqrt(n)` (`s` the sample standard deviation;
-/// 0 for fewer than two values).
-pub fn mean_and_se(x: &[f64]) -> (f64, f64) {
-    let n = x.len() as f64;
-    let mean = x.iter().sum::<f64>() / n;
-    let var = x.iter().map(|v| (v - mean).powi(2)).sum::<f64>() / (n - 1.0).max(1.0);
-    (mean, (var / n).sqrt())
 }
 
 /// z-test of a layer's pixel means against a constant expectation. In the furnace every
@@ -276,18 +279,51 @@ pub fn zero_mean_test(name: &str, values: &[f64], z_crit: f64, detail: &str) -> 
     )
 }
 
+/// Family-wise significance of the statistical tests.
+pub const ALPHA: f64 = 1e-3;
+
+/// The invariants one render can check by itself.
+pub fn invariants(scene: &Scene, aovs: &AovList, render: &Render) -> Vec<Invariant> {
+    let film = &render.film;
+    let mut out: Vec<Invariant> = aovs
+        .partitions
+        .iter()
+        .map(|p| partition(film, aovs, p))
+        .collect();
+    out.push(finite(film, aovs));
+    if let Some((a, le)) = furnace_params(scene) {
+        let bounces: Vec<(usize, u32)> = (0..=FURNACE_BOUNCES)
+            .filter_map(|k| aovs.index(&format!("furnace_bounce{k}")).map(|i| (i, k)))
+            .collect();
+        let tests = 1 + bounces.len();
+        let each = sidak(ALPHA, tests);
+        let z = critical_z(each);
+        out.push(z_test(
+            &format!("furnace beauty = Le/(1-a) = {}", le / (1.0 - a)),
+            &channel_values(film, 0),
+            le / (1.0 - a),
+            z,
+            ALPHA,
+        ));
+        for (i, k) in bounces {
+            out.push(z_test(
+                &format!(
+                    "furnace C<RD>{{{k}}}O = Le a^{k} = {}",
+                    le * a.powi(k as i32)
+                ),
+                &channel_values(film, 1 + i),
+                le * a.powi(k as i32),
+                z,
+                ALPHA,
+            ));
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn normal_tail_matches_known_quantiles() {
-        // Table values of the standard normal distribution.
-        assert!((normal_tail(0.0) - 0.5).abs() < 1e-7);
-        assert!((normal_tail(1.959964) - 0.025).abs() < 1e-6);
-        assert!((critical_z(0.05) - 1.959964).abs() < 1e-4);
-        assert!((critical_z(0.001) - 3.290527).abs() < 1e-4);
-    }
 
     #[test]
     fn zero_mean_test_fails_on_a_shift_and_on_nothing_to_compare() {

@@ -7,7 +7,44 @@ use lpe::{EventKind, Lpe, Parser, Prefix};
 
 use crate::scene::Scene;
 
-/// How an AOV accumulates: its prefixes, decoded (DESIGN.md §3; the integrator
+/// Why an AOV list could not be built.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum AovError {
+    #[error(
+        "AOV name `{name}`: use letters, digits, `_` and `-` (it names an EXR layer and a file)"
+    )]
+    BadName { name: String },
+    #[error("AOV name `{name}` is used twice (`beauty` is reserved)")]
+    DuplicateName { name: String },
+    #[error("AOV `{name}`: {error}")]
+    Parse {
+        name: String,
+        error: Box<lpe::Error>,
+    },
+    #[error("--aov `{arg}`: expected NAME=LPE, e.g. diffuse=lpe:C<RD>[<L.>O]")]
+    BadArgument { arg: String },
+    #[error("at most {max} AOVs, got {count}")]
+    TooMany { count: usize, max: usize },
+    #[error("{file}:{line}: {problem}")]
+    DisplayChannel {
+        file: String,
+        line: usize,
+        problem: DisplayProblem,
+    },
+}
+
+/// What is wrong with a `DisplayChannel` line.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum DisplayProblem {
+    #[error("unterminated string")]
+    UnterminatedString,
+    #[error("expected `DisplayChannel \"color NAME\" ...`")]
+    NoDeclaration,
+    #[error("channel `{name}`: \"string source\" needs a value")]
+    SourceWithoutValue { name: String },
+}
+
+/// How an AOV accumulates: its prefixes, decoded (docs/language.md §7; the integrator
 /// documents each one where it applies it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct AovFlags {
@@ -72,24 +109,21 @@ pub struct AovList {
 impl AovList {
     /// Parses and appends one AOV; names must be unique and usable as EXR layer and
     /// file names.
-    pub fn push(&mut self, name: &str, source: &str, parser: &Parser) -> Result<usize, String> {
+    pub fn push(&mut self, name: &str, source: &str, parser: &Parser) -> Result<usize, AovError> {
         if name.is_empty()
             || !name
                 .chars()
                 .all(|c| c.is_ascii_alphanumeric() || c == '_' || c == '-')
         {
-            return Err(format!(
-                "AOV name `{name}`: use letters, digits, `_` and `-` (it names an EXR layer and a file)"
-            ));
+            return Err(AovError::BadName { name: name.into() });
         }
         if name == "beauty" || self.aovs.iter().any(|a| a.name == name) {
-            return Err(format!(
-                "AOV name `{name}` is used twice (`beauty` is reserved)"
-            ));
+            return Err(AovError::DuplicateName { name: name.into() });
         }
-        let lpe = parser
-            .parse(source)
-            .map_err(|e| format!("AOV `{name}`: {e}"))?;
+        let lpe = parser.parse(source).map_err(|error| AovError::Parse {
+            name: name.into(),
+            error: Box::new(error),
+        })?;
         self.aovs.push(Aov {
             name: name.to_string(),
             source: source.to_string(),
@@ -99,7 +133,7 @@ impl AovList {
         Ok(self.aovs.len() - 1)
     }
 
-    /// `(name, expression)` pairs, as `lpe::aov::AovSet::compile` takes them.
+    /// `(name, expression)` pairs, as `lpe::AovSet::compile` takes them.
     pub fn named(&self) -> Vec<(String, Lpe)> {
         self.aovs
             .iter()
@@ -116,7 +150,7 @@ impl AovList {
     }
 
     /// The seven basic AOVs, declared as the partition of beauty they are.
-    pub fn basic(parser: &Parser) -> Result<AovList, String> {
+    pub fn basic(parser: &Parser) -> Result<AovList, AovError> {
         let mut list = AovList::default();
         let members = BASIC
             .iter()
@@ -130,8 +164,24 @@ impl AovList {
         Ok(list)
     }
 
+    /// The AOV list for a render: the defaults, plus for the furnace the per-bounce AOVs
+    /// `furnace_bounceK = C<RD>{K}O`.
+    pub fn for_render(scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
+        let mut list = AovList::defaults(scene, parser)?;
+        if crate::verify::known::furnace_params(scene).is_some() {
+            for k in 0..=crate::verify::known::FURNACE_BOUNCES {
+                list.push(
+                    &format!("furnace_bounce{k}"),
+                    &format!("C<RD>{{{k}}}O"),
+                    parser,
+                )?;
+            }
+        }
+        Ok(list)
+    }
+
     /// The default AOVs for `scene` and the partitions they form.
-    pub fn defaults(scene: &Scene, parser: &Parser) -> Result<AovList, String> {
+    pub fn defaults(scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
         let mut list = AovList::basic(parser)?;
         let basic = list.partitions[0].members.clone();
 
@@ -215,10 +265,10 @@ fn sanitize(g: &str) -> String {
 }
 
 /// Splits `NAME=LPE` (the first `=` separates: expressions never contain one).
-pub fn split_aov_arg(arg: &str) -> Result<(&str, &str), String> {
+pub fn split_aov_arg(arg: &str) -> Result<(&str, &str), AovError> {
     arg.split_once('=')
         .map(|(n, s)| (n.trim(), s.trim()))
-        .ok_or_else(|| format!("--aov `{arg}`: expected NAME=LPE, e.g. diffuse=lpe:C<RD>[<L.>O]"))
+        .ok_or_else(|| AovError::BadArgument { arg: arg.into() })
 }
 
 /// AOVs read from `DisplayChannel` lines.
@@ -232,11 +282,16 @@ pub struct DisplayChannels {
 
 /// Reads RenderMan `DisplayChannel` lines:
 /// `DisplayChannel "color NAME" "string source" ["color lpe:EXPR"]`.
-pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels, String> {
+pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels, AovError> {
     let mut out = Vec::new();
     let mut warnings = Vec::new();
     for (n, line) in text.lines().enumerate() {
         let at = |m: String| format!("{file}:{}: {m}", n + 1);
+        let fail = |problem| AovError::DisplayChannel {
+            file: file.into(),
+            line: n + 1,
+            problem,
+        };
         let t = line.trim();
         if !t.starts_with("DisplayChannel") {
             continue;
@@ -245,13 +300,13 @@ pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels,
         let mut rest = &t["DisplayChannel".len()..];
         while let Some(start) = rest.find('"') {
             let Some(len) = rest[start + 1..].find('"') else {
-                return Err(at("unterminated string".into()));
+                return Err(fail(DisplayProblem::UnterminatedString));
             };
             quoted.push(&rest[start + 1..start + 1 + len]);
             rest = &rest[start + 2 + len..];
         }
         let Some(decl) = quoted.first() else {
-            return Err(at("expected `DisplayChannel \"color NAME\" ...`".into()));
+            return Err(fail(DisplayProblem::NoDeclaration));
         };
         let name = decl
             .split_whitespace()
@@ -268,9 +323,7 @@ pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels,
             continue;
         };
         let Some(src) = quoted.get(pos + 1) else {
-            return Err(at(format!(
-                "channel `{name}`: \"string source\" needs a value"
-            )));
+            return Err(fail(DisplayProblem::SourceWithoutValue { name }));
         };
         // The value is "TYPE SOURCE", e.g. "color lpe:C<RD>[<L.>O]".
         let source = src
@@ -318,7 +371,7 @@ DisplayChannel "color beauty2" "string source" ["color Ci"]
         assert_eq!(warn.len(), 2);
         assert!(warn[0].starts_with("d.rib:5:"), "{warn:?}");
         let e = parse_display_channels("DisplayChannel \"color x", "d.rib").unwrap_err();
-        assert!(e.starts_with("d.rib:1:"), "{e}");
+        assert!(e.to_string().starts_with("d.rib:1:"), "{e}");
     }
 
     #[test]
@@ -326,12 +379,21 @@ DisplayChannel "color beauty2" "string source" ["color Ci"]
         let p = Parser::default();
         let mut l = AovList::default();
         l.push("a", "C<RD>L", &p).unwrap();
-        assert!(l.push("a", "CL", &p).unwrap_err().contains("twice"));
+        assert!(l
+            .push("a", "CL", &p)
+            .unwrap_err()
+            .to_string()
+            .contains("twice"));
         assert!(l.push("beauty", "CL", &p).is_err());
-        assert!(l.push("a.b", "CL", &p).unwrap_err().contains("letters"));
+        assert!(l
+            .push("a.b", "CL", &p)
+            .unwrap_err()
+            .to_string()
+            .contains("letters"));
         assert!(l
             .push("b", "C<L'key'>", &p)
             .unwrap_err()
+            .to_string()
             .contains("AOV `b`"));
         assert!(split_aov_arg("noequals").is_err());
         assert_eq!(split_aov_arg("x=C.*L").unwrap(), ("x", "C.*L"));

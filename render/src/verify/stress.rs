@@ -1,13 +1,16 @@
-//! `lpe-render stress`: the hard-case scene set of issue 6, rendered, one table row per
-//! measured property. The same scenes and checks back `render/tests/hard_cases.rs`.
+//! `lpe-render stress`: the hard-case scene set (tiny lights, extreme intensities and
+//! pdfs, a 10^7-sample film, degenerate input), rendered, one table row per measured
+//! property. The same scenes and checks back `render/tests/hard_cases.rs`.
 
+use super::VerifyError;
 use glam::{DVec3, Vec3};
 use lpe::{LobeMap, Parser};
 
-use crate::aovs::AovList;
-use crate::converge::{
-    plane_reference, plane_scene, point_light_toml, point_radiance, sphere_over_plane,
+use super::known::{
+    intensities_scene, intensity_reference, sphere_over_plane, INTENSITIES, MIS_EXTREMES, MIXED,
 };
+use super::stats::mean_and_se;
+use crate::aov::AovList;
 use crate::film::Accumulation;
 use crate::integrator::{Render, Settings, Technique};
 use crate::material::{Lobe, Model};
@@ -34,144 +37,15 @@ fn row(case: &str, measure: &str, value: f64, bound: f64, passed: bool) -> Row {
     }
 }
 
-pub fn markdown(rows: &[Row]) -> String {
-    let mut s = String::from("| case | measure | value | bound | ok |\n|---|---|---:|---:|---|\n");
-    for r in rows {
-        s += &format!(
-            "| {} | {} | {:.3e} | {:.3e} | {} |\n",
-            r.case,
-            r.measure,
-            r.value,
-            r.bound,
-            if r.passed { "yes" } else { "**NO**" }
-        );
-    }
-    s
-}
-
 /// Relative error of the image mean of `got` (red channel) against `want`, and the
 /// bound it must meet: 5 standard errors of the per-pixel residuals (significance
 /// < 1e-6) plus 1e-4 relative (f32 radiance and pdfs).
 pub fn mean_check(got: &[DVec3], want: &[DVec3]) -> (f64, f64) {
     let res: Vec<f64> = got.iter().zip(want).map(|(g, w)| g.x - w.x).collect();
-    let (m, se) = crate::check::mean_and_se(&res);
+    let (m, se) = mean_and_se(&res);
     let scale = want.iter().map(|w| w.x).sum::<f64>() / res.len() as f64;
     ((m / scale).abs(), (5.0 * se + 1e-4 * scale) / scale)
 }
-
-/// Point lights with intensities 1e-6 .. 1e12 over the plane, one light group each.
-pub const INTENSITIES: [(f64, [f32; 3]); 4] = [
-    (1e-6, [1.0, 2.0, 0.0]),
-    (1.0, [-1.0, 2.0, 0.5]),
-    (1e6, [0.0, 3.0, -1.0]),
-    (1e12, [0.5, 1.5, 1.0]),
-];
-
-/// The plane lit by [`INTENSITIES`], with AOV `gK = C<RD><L.'gK'>` per light.
-pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList), String> {
-    let text: Vec<String> = INTENSITIES
-        .iter()
-        .enumerate()
-        .map(|(k, (i, p))| point_light_toml(*p, *i, Some(&format!("g{k}"))))
-        .collect();
-    let scene = Scene::from_toml(
-        &plane_scene("intensities", &text.join("\n[[lights]]\n")),
-        "intensities",
-        lobes,
-    )
-    .map_err(|e| e.to_string())?;
-    let mut aovs = AovList::default();
-    for k in 0..INTENSITIES.len() {
-        aovs.push(
-            &format!("g{k}"),
-            &format!("C<RD><L.'g{k}'>"),
-            &Parser::default(),
-        )?;
-    }
-    Ok((scene, aovs))
-}
-
-/// Closed form of light `k` of [`INTENSITIES`]: `(a/pi) I cos / d^2`, with I as stored.
-pub fn intensity_reference(scene: &Scene, k: usize, w: usize, h: usize) -> Vec<DVec3> {
-    let (i, p) = INTENSITIES[k];
-    // The scene stores I as f32: compare against that value.
-    plane_reference(
-        scene,
-        w,
-        h,
-        point_radiance(Vec3::from(p).as_dvec3(), i as f32 as f64),
-    )
-}
-
-/// A near-mirror (alpha 1e-7: pdf peak ~1e13) and a 1e-6 sphere light (light pdf
-/// ~1e12) with a point light and a dome: MIS between densities from 0 to ~1e13.
-pub const MIS_EXTREMES: &str = r#"
-[camera]
-position = [0.0, 1.0, 3.0]
-look_at = [0.0, 0.0, 0.0]
-[materials.mirror]
-lobes = [{ name = "Specular", model = "ggx", f0 = [1.0, 1.0, 1.0], roughness = 0.0 },
-         { name = "Diffuse", model = "lambert", albedo = [0.2, 0.2, 0.2] }]
-[[objects]]
-material = "mirror"
-quad = { corner = [-5.0, 0.0, 5.0], u = [10.0, 0.0, 0.0], v = [0.0, 0.0, -10.0] }
-[[objects]]
-material = "mirror"
-sphere = { center = [0.0, 0.5, 0.0], radius = 0.5 }
-[[lights]]
-kind = "sphere"
-center = [0.0, 2.0, -1.0]
-radius = 1e-6
-radiance = [1e12, 1e12, 1e12]
-[[lights]]
-kind = "point"
-position = [1.0, 1.0, 1.0]
-intensity = [5.0, 5.0, 5.0]
-[[lights]]
-kind = "dome"
-radiance = [0.1, 0.1, 0.1]
-"#;
-
-/// Samples spanning many magnitudes that reach every basic AOV: a diffuse + glossy
-/// floor, a glowing ball, a glass ball, lights from 1e-3 to 1e3.
-pub const MIXED: &str = r#"
-[camera]
-position = [0.0, 1.5, 4.0]
-look_at = [0.0, 0.3, 0.0]
-fov = 50.0
-[render]
-max_depth = 4
-[materials.floor]
-lobes = [{ name = "Diffuse", model = "lambert", albedo = [0.6, 0.5, 0.4] },
-         { name = "Specular", model = "ggx", f0 = [0.3, 0.3, 0.3], roughness = 0.3 }]
-[materials.glass]
-lobes = [{ name = "Glass", model = "dielectric", ior = 1.5 }]
-[materials.glow]
-glow = [50.0, 40.0, 30.0]
-lobes = [{ name = "Diffuse", model = "lambert", albedo = [0.5, 0.5, 0.5] }]
-[[objects]]
-material = "floor"
-quad = { corner = [-5.0, 0.0, 5.0], u = [10.0, 0.0, 0.0], v = [0.0, 0.0, -10.0] }
-[[objects]]
-material = "glow"
-sphere = { center = [-0.8, 0.3, 0.0], radius = 0.3 }
-[[objects]]
-material = "glass"
-sphere = { center = [0.8, 0.4, 0.2], radius = 0.4 }
-[[lights]]
-kind = "point"
-position = [0.0, 3.0, 1.0]
-intensity = [1e3, 1e3, 1e3]
-[[lights]]
-kind = "point"
-position = [2.0, 1.0, 2.0]
-intensity = [1e-3, 1e-3, 1e-3]
-[[lights]]
-kind = "sphere"
-center = [-2.0, 2.0, -1.0]
-radius = 0.2
-radiance = [30.0, 30.0, 30.0]
-"#;
 
 /// [`MIXED`] rendered into one pixel with `spp` samples by each film of
 /// [`Accumulation::ALL`] (one thread each, same samples); for each, the largest
@@ -179,8 +53,8 @@ radiance = [30.0, 30.0, 30.0]
 pub fn mixed_partition(
     spp: u32,
     lobes: &LobeMap,
-) -> Result<(Vec<(Accumulation, f64)>, DVec3), String> {
-    let scene = Scene::from_toml(MIXED, "mixed", lobes).map_err(|e| e.to_string())?;
+) -> Result<(Vec<(Accumulation, f64)>, DVec3), VerifyError> {
+    let scene = Scene::from_toml(MIXED, "mixed", lobes)?;
     let aovs = AovList::basic(&Parser::default())?;
     let basic = &aovs.partitions[0];
     let render = |accumulation| {
@@ -193,19 +67,16 @@ pub fn mixed_partition(
             accumulation,
             ..Settings::default()
         };
-        crate::app::render(&scene, &aovs, lobes, &settings)
+        crate::integrator::render(&scene, &aovs, lobes, &settings).map_err(VerifyError::from)
     };
-    let renders: Vec<Result<Render, String>> = std::thread::scope(|t| {
+    let renders: Vec<Result<Render, VerifyError>> = std::thread::scope(|t| {
         let handles: Vec<_> = Accumulation::ALL
             .map(|a| t.spawn(move || render(a)))
             .into_iter()
             .collect();
         handles
             .into_iter()
-            .map(|h| {
-                h.join()
-                    .unwrap_or_else(|_| Err("render thread panicked".into()))
-            })
+            .map(|h| h.join().unwrap_or_else(|_| Err(VerifyError::Panicked)))
             .collect()
     });
     let mut errors = Vec::new();
@@ -213,15 +84,17 @@ pub fn mixed_partition(
     for (a, r) in Accumulation::ALL.into_iter().zip(renders) {
         let r = r?;
         if r.film.rejected > 0 {
-            return Err(format!(
-                "{} samples rejected as non-finite",
-                r.film.rejected
-            ));
+            return Err(VerifyError::Rejected {
+                samples: r.film.rejected,
+            });
         }
         if a == Accumulation::F64 {
             beauty = r.film.pixel(0, 0, 0);
         }
-        errors.push((a, crate::check::partition(&r.film, &aovs, basic).measured));
+        errors.push((
+            a,
+            crate::verify::invariants::partition(&r.film, &aovs, basic).measured,
+        ));
     }
     Ok((errors, beauty))
 }
@@ -250,16 +123,21 @@ pub fn ggx_furnace(alpha: f32, cos: f32, n: usize) -> (f64, f64, usize) {
             None => 0.0,
         })
         .collect();
-    let (m, se) = crate::check::mean_and_se(&x);
+    let (m, se) = mean_and_se(&x);
     (m, se, bad)
 }
 
-fn render(scene: &Scene, aovs: &AovList, s: &Settings) -> Result<Render, String> {
-    crate::app::render(scene, aovs, &LobeMap::default(), s)
+fn render(scene: &Scene, aovs: &AovList, s: &Settings) -> Result<Render, VerifyError> {
+    Ok(crate::integrator::render(
+        scene,
+        aovs,
+        &LobeMap::default(),
+        s,
+    )?)
 }
 
 /// Runs the set. `quick`: fewer samples (the 10^7-sample film test uses 10^5).
-pub fn run(quick: bool) -> Result<Vec<Row>, String> {
+pub fn run(quick: bool) -> Result<Vec<Row>, VerifyError> {
     let lobes = LobeMap::default();
     let mut rows = Vec::new();
     let small = |spp| Settings {
@@ -309,8 +187,7 @@ pub fn run(quick: bool) -> Result<Vec<Row>, String> {
         ));
     }
 
-    let scene =
-        Scene::from_toml(MIS_EXTREMES, "mis-extremes", &lobes).map_err(|e| e.to_string())?;
+    let scene = Scene::from_toml(MIS_EXTREMES, "mis-extremes", &lobes)?;
     let aovs = AovList::defaults(&scene, &Parser::default())?;
     for t in [Technique::Mis, Technique::BsdfOnly, Technique::LightOnly] {
         let r = render(

@@ -7,7 +7,7 @@
 
 use serde::Serialize;
 
-use crate::aovs::AovList;
+use crate::aov::AovList;
 use crate::scene::Scene;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -34,7 +34,7 @@ impl Plan {
     /// The plan the scene and AOVs call for. `user_lobes` is settled later, by asking
     /// the matcher whether any AOV matches a pseudo path the scene can produce.
     pub fn derive(scene: &Scene, aovs: &AovList, beauty: bool) -> Plan {
-        let any = |f: &dyn Fn(&crate::aovs::Aov) -> bool| aovs.aovs.iter().any(f);
+        let any = |f: &dyn Fn(&crate::aov::Aov) -> bool| aovs.aovs.iter().any(f);
         Plan {
             matching: !aovs.aovs.is_empty(),
             labels: any(&|a| !a.lpe.expr.labels().is_empty()),

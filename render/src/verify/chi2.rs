@@ -30,6 +30,7 @@
 use glam::{DVec3, Vec2, Vec3};
 use std::f64::consts::PI;
 
+use super::stats::chi2_sf;
 use crate::material::Lobe;
 use crate::rng::Rng;
 
@@ -423,95 +424,9 @@ fn cell_integral(
         .sum()
 }
 
-/// Upper tail of the chi-square distribution with `k` degrees of freedom:
-/// `Q(k/2, x/2)`, the regularized upper incomplete gamma function.
-pub fn chi2_sf(x: f64, k: f64) -> f64 {
-    if !(x > 0.0) {
-        return 1.0;
-    }
-    gamma_q(0.5 * k, 0.5 * x)
-}
-
-/// `ln Gamma(a)`, Lanczos (g = 7, n = 9), relative error ~1e-15 for `a > 0`.
-fn ln_gamma(a: f64) -> f64 {
-    const C: [f64; 9] = [
-        0.999_999_999_999_809_9,
-        676.520_368_121_885_1,
-        -1_259.139_216_722_402_8,
-        771.323_428_777_653_1,
-        -176.615_029_162_140_6,
-        12.507_343_278_686_905,
-        -0.138_571_095_265_720_12,
-        9.984_369_578_019_572e-6,
-        1.505_632_735_149_311_6e-7,
-    ];
-    let x = a - 1.0;
-    let t = x + 7.5;
-    let s: f64 = C[0] + (1..9).map(|i| C[i] / (x + i as f64)).sum::<f64>();
-    0.5 * (2.0 * PI).ln() + (x + 0.5) * t.ln() - t + s.ln()
-}
-
-/// Regularized upper incomplete gamma `Q(a, x)`: series for `x < a + 1`, Lentz's
-/// continued fraction otherwise (Numerical Recipes' `gammq`).
-fn gamma_q(a: f64, x: f64) -> f64 {
-    let lead = (-x + a * x.ln() - ln_gamma(a)).exp();
-    if x < a + 1.0 {
-        let (mut sum, mut term, mut ap) = (1.0 / a, 1.0 / a, a);
-        for _ in 0..10_000 {
-            ap += 1.0;
-            term *= x / ap;
-            sum += term;
-            if term.abs() < sum.abs() * 1e-16 {
-                break;
-            }
-        }
-        (1.0 - sum * lead).max(0.0)
-    } else {
-        let tiny = 1e-300;
-        let mut b = x + 1.0 - a;
-        let mut c = 1.0 / tiny;
-        let mut d = 1.0 / b;
-        let mut h = d;
-        for i in 1..10_000 {
-            let an = -(i as f64) * (i as f64 - a);
-            b += 2.0;
-            d = an * d + b;
-            if d.abs() < tiny {
-                d = tiny;
-            }
-            c = b + an / c;
-            if c.abs() < tiny {
-                c = tiny;
-            }
-            d = 1.0 / d;
-            let delta = d * c;
-            h *= delta;
-            if (delta - 1.0).abs() < 1e-16 {
-                break;
-            }
-        }
-        lead * h
-    }
-}
-
-/// Per-test significance that keeps the family-wise rate at `alpha` over `m` independent
-/// tests (Sidak).
-pub fn sidak(alpha: f64, m: usize) -> f64 {
-    1.0 - (1.0 - alpha).powf(1.0 / m as f64)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn chi2_tail_matches_tables() {
-        // Critical values from standard chi-square tables.
-        assert!((chi2_sf(3.841459, 1.0) - 0.05).abs() < 1e-6);
-        assert!((chi2_sf(23.209251, 10.0) - 0.01).abs() < 1e-6);
-        assert!((chi2_sf(124.342113, 100.0) - 0.05).abs() < 1e-6);
-        assert!((chi2_sf(2.0, 2.0) - (-1.0f64).exp()).abs() < 1e-12);
-    }
 
     fn total(grid: &dyn Grid, pdf: impl Fn(Vec3) -> f64) -> f64 {
         let (nu, nv) = grid.bins();

@@ -1,11 +1,9 @@
-//! The seam between the renderer and an LPE engine.
-//!
-//! The integrator is generic over [`PathMatcher`]: it classifies every vertex the scene
-//! can produce once, before rendering, then per path carries a `Copy` state that it steps
-//! one vertex at a time, and at every emitter asks which AOVs match. This is exactly the
-//! shape of the fast matcher's API (`lpe::aov::AovSet`: `classify`, `start`,
-//! `step_class`, `matches`, `is_dead`), which the renderer uses by default through the
-//! thin adapter below.
+//! The renderer's matchers behind `lpe::PathMatcher`, the seam the integrator is generic
+//! over: it classifies every vertex the scene can produce once, before rendering, then
+//! per path carries a `Copy` state from `start` (before any vertex: the integrator steps
+//! the camera itself) one vertex at a time, and at every emitter asks which AOVs match.
+//! The fast matcher (`lpe::AovSet`) implements it in `lpe`; this module adds the
+//! whole-path engines.
 //!
 //! Engines that only judge whole paths plug in through [`WholePathMatcher`]: its state
 //! records the vertices, and at an emitter the engine ([`WholePath`]) answers for the
@@ -19,55 +17,20 @@ use lpe::{Lpe, Path, Vertex, VertexType};
 use std::hash::{Hash, Hasher};
 use std::sync::{Mutex, RwLock};
 
-/// Most AOVs one render can route to, and the mask of AOVs that match: the fast
-/// matcher's own types, shared so engines hand masks over without converting.
-pub use lpe::{AovMask, MAX_AOVS};
+/// Most AOVs one render can route to, the mask of AOVs that match, and the matcher
+/// trait: lpe's own, shared so engines hand masks over without converting.
+pub use lpe::{AovMask, PathMatcher, MAX_AOVS};
 
-/// An LPE engine as the integrator uses it. AOV `i` is the `i`-th expression the
-/// matcher was built from.
-pub trait PathMatcher: Sync {
-    /// A vertex after classification (computed once per scene vertex kind).
-    type Class: Copy + Send + Sync;
-    /// The state of one path: the camera vertex and the vertices stepped since.
-    type State: Copy + Send;
-
-    fn classify(&self, v: &Vertex) -> Self::Class;
-    /// The state after the camera vertex `C`.
-    fn start(&self) -> Self::State;
-    fn step(&self, s: Self::State, c: Self::Class) -> Self::State;
-    /// AOVs whose expression matches the path stepped so far as a complete path (empty
-    /// unless the last vertex is an emitter).
-    fn matches(&self, s: Self::State) -> AovMask;
-    /// True if no continuation can match any AOV (a sound "maybe alive" is `false`).
-    fn is_dead(&self, s: Self::State) -> bool;
-}
-
-/// The fast matcher: one automaton for all AOVs, stepped once per vertex on the classes
-/// computed at scene setup.
-impl PathMatcher for lpe::aov::AovSet {
-    type Class = lpe::Class;
-    type State = lpe::State;
-
-    fn classify(&self, v: &Vertex) -> Self::Class {
-        lpe::aov::AovSet::classify(self, v)
-    }
-
-    /// `AovSet::start` is the state before any vertex; ours is after the camera.
-    fn start(&self) -> Self::State {
-        lpe::aov::AovSet::step(self, lpe::aov::AovSet::start(self), &Vertex::camera())
-    }
-
-    fn step(&self, s: Self::State, c: Self::Class) -> Self::State {
-        self.step_class(s, c)
-    }
-
-    fn matches(&self, s: Self::State) -> AovMask {
-        lpe::aov::AovSet::matches(self, s)
-    }
-
-    fn is_dead(&self, s: Self::State) -> bool {
-        lpe::aov::AovSet::is_dead(self, s)
-    }
+/// Why a whole-path matcher could not be built.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum MatcherError {
+    #[error("at most {max} AOVs, got {count}")]
+    TooMany { count: usize, max: usize },
+    #[error("{engine}: {reason}")]
+    Engine {
+        engine: &'static str,
+        reason: String,
+    },
 }
 
 // ---------------------------------------------------------------------------------------
@@ -77,7 +40,8 @@ impl PathMatcher for lpe::aov::AovSet {
 /// and the emitter.
 pub const REF_MAX_VERTICES: usize = crate::scene::MAX_DEPTH_LIMIT as usize + 3;
 
-/// The reference matcher's path state: the class ids of the vertices after `C`.
+/// The reference matcher's path state: the class ids of the vertices stepped, the
+/// camera's first.
 #[derive(Clone, Copy, Debug)]
 pub struct RefState {
     len: u8,
@@ -126,7 +90,7 @@ pub struct Reference(Vec<Lpe>);
 
 impl Reference {
     /// The reference engine for these expressions (at most [`MAX_AOVS`]).
-    pub fn new(aovs: &[Lpe]) -> Result<Reference, String> {
+    pub fn new(aovs: &[Lpe]) -> Result<Reference, MatcherError> {
         check_count(aovs)?;
         Ok(Reference(aovs.to_vec()))
     }
@@ -140,9 +104,12 @@ impl WholePath for Reference {
     }
 }
 
-fn check_count(aovs: &[Lpe]) -> Result<(), String> {
+fn check_count(aovs: &[Lpe]) -> Result<(), MatcherError> {
     match aovs.len() {
-        n if n > MAX_AOVS => Err(format!("at most {MAX_AOVS} AOVs, got {n}")),
+        n if n > MAX_AOVS => Err(MatcherError::TooMany {
+            count: n,
+            max: MAX_AOVS,
+        }),
         _ => Ok(()),
     }
 }
@@ -161,11 +128,15 @@ pub struct CheckEngine {
 impl CheckEngine {
     /// Compiles `aovs` with `engine` once up front, so an engine that cannot build the
     /// set says so here and not mid-render.
-    pub fn new(engine: &'static dyn engines::Engine, aovs: &[Lpe]) -> Result<CheckEngine, String> {
+    pub fn new(
+        engine: &'static dyn engines::Engine,
+        aovs: &[Lpe],
+    ) -> Result<CheckEngine, MatcherError> {
         check_count(aovs)?;
-        let first = engine
-            .compile(aovs)
-            .map_err(|e| format!("{}: {e}", engine.name()))?;
+        let first = engine.compile(aovs).map_err(|e| MatcherError::Engine {
+            engine: engine.name(),
+            reason: e.to_string(),
+        })?;
         let mut compiled: Vec<_> = (0..SLOTS).map(|_| Mutex::new(None)).collect();
         compiled[0] = Mutex::new(Some(first));
         Ok(CheckEngine {
@@ -233,8 +204,7 @@ impl<W: WholePath> WholePathMatcher<W> {
 
     fn compute(&self, s: &RefState) -> AovMask {
         let alphabet = self.alphabet.read().unwrap_or_else(|e| e.into_inner());
-        let mut vertices = Vec::with_capacity(s.len as usize + 1);
-        vertices.push(Vertex::camera());
+        let mut vertices = Vec::with_capacity(s.len as usize);
         vertices.extend(
             s.ids[..s.len as usize]
                 .iter()
@@ -316,11 +286,11 @@ mod tests {
 
     /// Steps `m` along each path and compares its answer (twice: a memo must not
     /// change it) with `reference::is_match` per expression.
-    fn agrees_with_is_match(m: &impl PathMatcher, exprs: &[Lpe], paths: &[&str]) {
+    fn agrees_with_is_match(m: &(impl PathMatcher + Sync), exprs: &[Lpe], paths: &[&str]) {
         for text in paths {
             let path: Path = text.parse().unwrap();
             let mut s = m.start();
-            for v in &path.vertices()[1..] {
+            for v in path.vertices() {
                 s = m.step(s, m.classify(v));
             }
             let want: AovMask = (0..exprs.len())

@@ -1,0 +1,55 @@
+//! `lpe-render bench`: the cost of LPE tracking.
+
+use lpe_render::integrator::{self, Settings};
+use lpe_render::scene::Scene;
+
+use crate::args::InputError;
+
+pub fn run(
+    scene: &str,
+    spp: u32,
+    res: (usize, usize),
+    threads: Option<usize>,
+    rounds: usize,
+) -> Result<bool, InputError> {
+    let config = lpe::Config::default();
+    let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
+    let scene = Scene::load(scene, &config.lobes)?;
+    let settings = Settings {
+        width: res.0,
+        height: res.1,
+        spp,
+        threads,
+        ..Settings::default()
+    };
+    let b = lpe_render::bench::bench(&scene, &config.lobes, &parser, &settings, rounds)?;
+    println!(
+        "bench `{}` {}x{} {} spp, {} thread(s), {rounds} rounds, matcher: {}",
+        scene.name,
+        res.0,
+        res.1,
+        spp,
+        threads.map_or("all".to_string(), |t| t.to_string()),
+        integrator::ENGINE
+    );
+    print!(
+        "{}",
+        lpe_render::output::table::markdown(
+            &["configuration", "best s", "paths/s"],
+            [
+                ("beauty only".to_string(), b.beauty_seconds),
+                (format!("{} AOVs", b.aov_count), b.aov_seconds),
+            ]
+            .map(|(what, t)| vec![
+                what,
+                format!("{t:.3}"),
+                format!("{:.0}", b.paths as f64 / t)
+            ]),
+        )
+    );
+    println!(
+        "LPE tracking overhead (median of {rounds} paired rounds): {:+.1}%",
+        b.overhead * 100.0
+    );
+    Ok(true)
+}

@@ -1,0 +1,135 @@
+//! `lpe-render`: render a scene into beauty + LPE AOVs, check invariants, write EXR,
+//! PNGs and a report. `lpe-render check` runs the invariant suite on small renders;
+//! `lpe-render bench` measures what LPE tracking costs.
+//!
+//! Exit status: 0 success, 1 an invariant failed, 2 bad input.
+
+use clap::{Args, Parser, Subcommand};
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+mod args;
+mod bench;
+mod check;
+mod converge;
+mod render;
+mod stress;
+
+use args::{parse_res, positive_u32, positive_usize};
+
+#[derive(Parser)]
+#[command(
+    name = "lpe-render",
+    version,
+    about = "Path tracer routing light paths into LPE AOVs"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Run the invariant suite on small renders of the built-in scenes (CI).
+    Check {
+        #[arg(long, value_parser = positive_usize)]
+        threads: Option<usize>,
+    },
+    /// Measure the cost of LPE tracking: 32 AOVs vs beauty only, same run.
+    Bench {
+        #[arg(long, default_value = "cornell")]
+        scene: String,
+        #[arg(long, default_value_t = 8, value_parser = positive_u32)]
+        spp: u32,
+        #[arg(long, default_value = "96x96", value_parser = parse_res)]
+        res: (usize, usize),
+        /// One thread by default: a single worker is the least disturbed by other load.
+        #[arg(long, default_value_t = 1, value_parser = positive_usize)]
+        threads: usize,
+        /// Rounds, each rendering both configurations back to back.
+        #[arg(long, default_value_t = 15, value_parser = positive_usize)]
+        rounds: usize,
+    },
+    /// Accuracy vs time: MSE, relMSE, log-log slope and efficiency per technique and
+    /// AOV on scenes with known answers; CSV, Markdown and plots in --out.
+    Converge {
+        /// A small run for CI (seconds).
+        #[arg(long)]
+        quick: bool,
+        #[arg(long, default_value = "out/converge")]
+        out: PathBuf,
+        #[arg(long, value_parser = positive_usize)]
+        threads: Option<usize>,
+    },
+    /// The hard-case scene set (tiny lights, extreme intensities and pdfs, 10^7-sample
+    /// film, degenerate input): one table row per case.
+    Stress {
+        /// Fewer samples (seconds instead of about a minute).
+        #[arg(long)]
+        quick: bool,
+    },
+}
+
+#[derive(Args)]
+pub struct RenderArgs {
+    /// Built-in scene (cornell, still-life, furnace) or a TOML scene file.
+    #[arg(long, default_value = "cornell")]
+    pub scene: String,
+    /// Samples per pixel.
+    #[arg(long, default_value_t = 64, value_parser = positive_u32)]
+    pub spp: u32,
+    /// Image size, WIDTHxHEIGHT.
+    #[arg(long, default_value = "256x256", value_parser = parse_res)]
+    pub res: (usize, usize),
+    /// Worker threads (default: one per core).
+    #[arg(long, value_parser = positive_usize)]
+    pub threads: Option<usize>,
+    #[arg(long, default_value_t = 0)]
+    pub seed: u64,
+    /// An AOV as NAME=LPE (repeatable), e.g. --aov 'key=C.*<L.'"'"'key'"'"'>'.
+    #[arg(long = "aov", value_name = "NAME=LPE")]
+    pub aovs: Vec<String>,
+    /// RenderMan DisplayChannel lines to read AOVs from.
+    #[arg(long, value_name = "FILE")]
+    pub display: Option<PathBuf>,
+    /// rendermn.ini with user macros and lobe mappings.
+    #[arg(long, value_name = "FILE")]
+    pub ini: Option<PathBuf>,
+    /// Output directory.
+    #[arg(long, default_value = "out")]
+    pub out: PathBuf,
+    /// Simulate every effect (the generic path), ignoring the effects plan.
+    #[arg(long)]
+    pub all_effects: bool,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => render::run(&cli.render),
+        Some(Command::Check { threads }) => check::run(threads),
+        Some(Command::Bench {
+            scene,
+            spp,
+            res,
+            threads,
+            rounds,
+        }) => bench::run(&scene, spp, res, Some(threads), rounds),
+        Some(Command::Converge {
+            quick,
+            out,
+            threads,
+        }) => converge::run(quick, &out, threads),
+        Some(Command::Stress { quick }) => stress::run(quick),
+    };
+    match result {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
+        Err(e) => {
+            eprintln!("error: {e}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,139 @@
+//! `lpe-render [OPTIONS]`: render a scene into beauty + AOVs and write the outputs.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use lpe_render::aov::{parse_display_channels, split_aov_arg, AovList};
+use lpe_render::integrator::{self, Settings};
+use lpe_render::output::{self, Report};
+use lpe_render::scene::Scene;
+use lpe_render::verify::invariants::{self, Invariant};
+
+use crate::args::InputError;
+use crate::RenderArgs;
+
+fn load_config(ini: Option<&PathBuf>) -> Result<lpe::Config, InputError> {
+    let Some(path) = ini else {
+        return Ok(lpe::Config::default());
+    };
+    let text = std::fs::read_to_string(path).map_err(|source| InputError::Read {
+        path: path.clone(),
+        source,
+    })?;
+    lpe::Config::from_ini(&text).map_err(|source| InputError::Ini {
+        path: path.clone(),
+        source,
+    })
+}
+
+pub fn print_invariants(list: &[Invariant]) -> bool {
+    for i in list {
+        eprintln!("  {}", i.line());
+        if i.passed != Some(true) && !i.formal {
+            eprintln!("         {}", i.detail);
+        }
+    }
+    !list.iter().any(Invariant::failed)
+}
+
+pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
+    let t0 = Instant::now();
+    let config = load_config(args.ini.as_ref())?;
+    let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
+    let scene = Scene::load(&args.scene, &config.lobes)?;
+
+    let mut aovs = AovList::default();
+    if let Some(path) = &args.display {
+        let text = std::fs::read_to_string(path).map_err(|source| InputError::Read {
+            path: path.clone(),
+            source,
+        })?;
+        let read = parse_display_channels(&text, &path.display().to_string())?;
+        for w in read.warnings {
+            eprintln!("warning: {w}");
+        }
+        for (name, source) in read.channels {
+            aovs.push(&name, &source, &parser)
+                .map_err(|source| InputError::DisplayAov {
+                    path: path.clone(),
+                    source,
+                })?;
+        }
+    }
+    for arg in &args.aovs {
+        let (name, source) = split_aov_arg(arg)?;
+        aovs.push(name, source, &parser)?;
+    }
+    if args.display.is_none() && args.aovs.is_empty() {
+        aovs = AovList::for_render(&scene, &parser)?;
+    }
+    for (lobe, names) in config.lobes.user_collisions(&integrator::USER_SIGNALS) {
+        aovs.notes.push(format!(
+            "user signals {} share lobe {lobe}: they overwrite each other",
+            names.join(", ")
+        ));
+    }
+
+    // The film holds f64 RGB per pixel per layer; refuse sizes that cannot fit rather
+    // than abort on allocation.
+    let film_bytes = (args.res.0 * args.res.1) as u128 * (1 + aovs.aovs.len()) as u128 * 24;
+    if film_bytes > 8 << 30 {
+        return Err(InputError::FilmTooLarge {
+            width: args.res.0,
+            height: args.res.1,
+            aovs: aovs.aovs.len(),
+            bytes: film_bytes,
+        });
+    }
+    let settings = Settings {
+        width: args.res.0,
+        height: args.res.1,
+        spp: args.spp,
+        seed: args.seed,
+        threads: args.threads,
+        all_effects: args.all_effects,
+        progress: true,
+        ..Settings::default()
+    };
+    let threads = args.threads.unwrap_or_else(rayon::current_num_threads);
+    eprintln!(
+        "lpe-render: scene `{}`, {}x{}, {} spp, {} AOVs, {} threads, matcher: {}",
+        scene.name,
+        settings.width,
+        settings.height,
+        settings.spp,
+        aovs.aovs.len(),
+        threads,
+        integrator::ENGINE
+    );
+    let all = args.all_effects;
+    let render =
+        integrator::render_announcing(&scene, &aovs, &config.lobes, &settings, &mut |plan| {
+            eprintln!("effects plan{}:", if all { " (--all-effects)" } else { "" });
+            for line in plan.describe() {
+                eprintln!("  {line}");
+            }
+        })?;
+    let mut invariants = invariants::formal_partition(&aovs);
+    invariants.extend(invariants::invariants(&scene, &aovs, &render));
+    eprintln!(
+        "rendered in {:.2}s: {:.0} paths/s, {:.0} rays/s",
+        render.seconds,
+        render.paths as f64 / render.seconds,
+        render.rays as f64 / render.seconds
+    );
+    eprintln!("invariants:");
+    let ok = print_invariants(&invariants);
+
+    let mut report = Report::new(&scene, &settings, threads, &aovs, &render, invariants);
+    report.timing.total_seconds = t0.elapsed().as_secs_f64();
+    let files = output::write_all(&args.out, &render.film, &aovs, &mut report)?;
+    eprintln!(
+        "wrote {} files to {} ({} EXR layers + beauty) in {:.2}s total",
+        files.len(),
+        args.out.display(),
+        aovs.aovs.len(),
+        t0.elapsed().as_secs_f64()
+    );
+    Ok(ok)
+}
