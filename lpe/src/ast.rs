@@ -1,5 +1,5 @@
 //! The abstract syntax of light path expressions, independent of any dialect's surface
-//! syntax (docs/language.md, expressions).
+//! syntax (docs/language.md §4–§5).
 //!
 //! A front end ([`crate::syntax`] for RenderMan's dialect) produces these values; every
 //! engine consumes them. The [`fmt::Display`] impls are the canonical printer: printing

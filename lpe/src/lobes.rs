@@ -1,4 +1,4 @@
-//! Named material lobes to LPE lobes (docs/language.md, lobes).
+//! Named material lobes to LPE lobes (docs/language.md §2.4).
 //!
 //! Materials name their lobes (`Diffuse`, `Clearcoat`, `Albedo`…); a [`LobeMap`] turns a
 //! named lobe of a given [`LobeCategory`] into the [`Event`] a vertex records. Names not

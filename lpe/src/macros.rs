@@ -1,5 +1,5 @@
 //! Named expressions: RenderMan's built-in LPE macros and user macros from a
-//! `rendermn.ini`-style file (docs/language.md, macros).
+//! `rendermn.ini`-style file (docs/language.md §6.1).
 //!
 //! Names are case-insensitive. A user macro with a built-in's name replaces it (the last
 //! definition wins), as a later `rendermn.ini` line would.
@@ -62,7 +62,7 @@ impl Default for MacroTable {
 }
 
 impl MacroTable {
-    /// RenderMan's built-in macros (docs/language.md, macros).
+    /// RenderMan's built-in macros (docs/language.md §6.1).
     pub fn builtin() -> MacroTable {
         MacroTable {
             entries: BASIC

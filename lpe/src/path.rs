@@ -1,4 +1,4 @@
-//! Light paths as a renderer records them (docs/language.md, paths).
+//! Light paths as a renderer records them (docs/language.md §2).
 //!
 //! A path is `C v1 ... vn E`: a camera vertex, scattering vertices (`R`/`T`) and one
 //! emitter at the end (`L` light or `O` emissive object). Scattering vertices carry an

@@ -1,4 +1,4 @@
-//! Expression prefixes: `unoccluded;`, `shadows;` … (docs/language.md, prefixes).
+//! Expression prefixes: `unoccluded;`, `shadows;` … (docs/language.md §7).
 //!
 //! Prefixes change what the renderer accumulates, never what matches. They travel with
 //! the expression in [`crate::ast::Lpe::prefixes`]. A prefix given twice is the same as

@@ -1,12 +1,13 @@
-//! The reference matcher: DESIGN.md §3 executed as plainly as possible.
+//! The reference matcher: the expression semantics of docs/language.md §4–§5 executed as
+//! plainly as possible.
 //!
 //! [`is_match`] runs recursive backtracking over the AST on a complete path. It is
 //! written to be obviously right, not fast; it is the engine the others are compared
-//! with (and DESIGN.md is the tie-breaker when they disagree).
+//! with (and docs/language.md is the tie-breaker when they disagree, §13).
 //!
 //! # How each rule maps to code
 //!
-//! | DESIGN.md rule | here |
+//! | rule (docs/language.md) | here |
 //! |---|---|
 //! | an expression matches the **whole** path (anchored at both ends) | [`is_match`] accepts only if the continuation sees position `len` |
 //! | concatenation, alternation (`\|` binds only its neighbours: that is the parser's job; here an `Alt` node is plain "either") | `match_expr` |
@@ -146,7 +147,7 @@ fn event_matches(p: EventPattern, v: &Vertex) -> bool {
         .is_some_and(|e| e.kind() == p.kind && p.lobe.is_none_or(|l| l == e.lobe()))
 }
 
-/// One item against one vertex (DESIGN.md §3, "What one atom matches").
+/// One item against one vertex (docs/language.md §4.1).
 pub fn item_matches(item: &Item, v: &Vertex) -> bool {
     match item {
         Item::Type(t @ (VertexType::C | VertexType::L | VertexType::O)) => v.ty() == *t,

@@ -1,5 +1,8 @@
-//! Cross-crate property tests and conformance vectors live in `tests/`; this library
-//! holds what the test files share.
+//! Cross-crate property tests and the data-driven conformance suite live in `tests/`;
+//! this library holds what the test files share, and the suite's loader and runner
+//! ([`conformance`]).
+
+pub mod conformance;
 
 use proptest::test_runner::{Config, TestRunner};
 

@@ -110,8 +110,8 @@ proptest! {
         assert_agree(&exprs, &paths)?;
     }
 
-    /// DESIGN.md §3: every light-transport path matches exactly one of the seven basic
-    /// AOVs; a path with a user-lobe vertex (outside `C.*[<L.>O]`) matches none.
+    /// Every light-transport path matches exactly one of the seven basic AOVs; a path
+    /// with a user-lobe vertex (outside `C.*[<L.>O]`) matches none.
     #[test]
     fn basic_aovs_are_disjoint_and_exhaustive(path in strategy::path(8)) {
         let exprs: Vec<Lpe> = BASIC.iter().map(|(_, s)| lpe::parse(s).unwrap()).collect();

@@ -1,7 +1,7 @@
 //! Formal analysis on the automata: emptiness, equivalence and inclusion, partition
 //! checks, each with the shortest witness path.
 //!
-//! All searches run over *paths* only (docs/language.md, paths: `C`, then `R`/`T` vertices, then one
+//! All searches run over *paths* only (docs/language.md §2.2: `C`, then `R`/`T` vertices, then one
 //! `L` or `O`), as the product of the set's automaton with that path shape:
 //! - emptiness ([`crate::aov::AovSet::warnings`], computed in the automata layer when a set
 //!   compiles) needs no determinization: a breadth-first search

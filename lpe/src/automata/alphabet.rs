@@ -357,7 +357,7 @@ impl Alphabet {
     }
 }
 
-// --- The predicates: one atom against one raw symbol (docs/language.md, atoms). ---
+// --- The predicates: one atom against one raw symbol (docs/language.md §4.1). ---
 
 /// `.` at the top level: R or T with a D or S event.
 fn dot(s: &Sym) -> bool {
