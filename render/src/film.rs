@@ -423,6 +423,406 @@ impl FilmRow<'_> {
 mod tests {
     use super::*;
 
+    /// One AOV per prefix combination under test, each matching every path (`C.*L`
+    /// stands in: routing never looks at the expression, only at the flags and at the
+    /// matched mask the caller hands over).
+    const ROUTED: [&str; 9] = [
+        "plain",
+        "shadows;",
+        "unoccluded;",
+        "holdouts;",
+        "nothruput;",
+        "noclamp;",
+        "holdouts;unoccluded;",
+        "holdouts;shadows;",
+        "nothruput;noclamp;",
+    ];
+
+    fn weighting(clamp: Option<f32>) -> Weighting {
+        let config = lpe::Config::default();
+        let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
+        let mut aovs = AovList::default();
+        for (i, prefixes) in ROUTED.iter().enumerate() {
+            let prefixes = if *prefixes == "plain" { "" } else { prefixes };
+            aovs.push(&format!("a{i}"), &format!("{prefixes}C.*L"), &parser)
+                .unwrap();
+        }
+        Weighting::new(&aovs, clamp)
+    }
+
+    /// Routes one contribution into every AOV of [`ROUTED`]; beauty and each AOV's value,
+    /// `None` for an AOV the contribution did not reach at all.
+    fn route(c: Contribution, clamp: Option<f32>) -> (DVec3, Vec<Option<DVec3>>) {
+        let w = weighting(clamp);
+        let mut v = SampleValues::new(w.len());
+        v.add(&w, &c, (0..w.len()).collect());
+        let aovs = (0..w.len())
+            .map(|i| v.touched.contains(i).then_some(v.aov[i]))
+            .collect();
+        (v.beauty, aovs)
+    }
+
+    /// Throughput and local estimate chosen so that every product below is exact in f32.
+    const BETA: Vec3 = Vec3::splat(0.5);
+    const LOCAL: Vec3 = Vec3::new(1.0, 2.0, 4.0);
+
+    fn c(strategy: Strategy, holdout: bool) -> Contribution {
+        Contribution {
+            beta: BETA,
+            local: LOCAL,
+            strategy,
+            holdout,
+        }
+    }
+
+    fn d(x: f64, y: f64, z: f64) -> Option<DVec3> {
+        Some(DVec3::new(x, y, z))
+    }
+
+    /// Asserts beauty and every AOV of [`ROUTED`], naming the AOV that differs.
+    #[track_caller]
+    fn expect(got: (DVec3, Vec<Option<DVec3>>), beauty: DVec3, want: [Option<DVec3>; 9]) {
+        let close =
+            |a: DVec3, b: DVec3| (a - b).abs().max_element() <= 1e-6 * b.abs().max_element();
+        assert!(close(got.0, beauty), "beauty: {} != {beauty}", got.0);
+        for (i, (g, e)) in got.1.iter().zip(want).enumerate() {
+            let ok = match (g, e) {
+                (Some(g), Some(e)) => close(*g, e),
+                (None, None) => true,
+                // Touched with zero is the same image as not touched.
+                (Some(g), None) => *g == DVec3::ZERO,
+                (None, Some(e)) => e == DVec3::ZERO,
+            };
+            assert!(ok, "{:?}: got {g:?}, want {e:?}", ROUTED[i]);
+        }
+    }
+
+    // Expected values below are worked out by hand from the integrator's "Prefixes"
+    // docs: value = thru * local * weight, thru = beta = 0.5 (1 with `nothruput;`),
+    // local = (1, 2, 4), so beta * local = (0.5, 1, 2).
+
+    #[test]
+    fn visible_light_sample() {
+        // MIS weight 1/4, unblocked: the plain value is (0.5, 1, 2) / 4; `unoccluded;`
+        // drops the MIS weight (weight 1); `shadows;` gets nothing (not blocked);
+        // `holdouts;` AOVs nothing (not a holdout path).
+        let got = route(
+            c(
+                Strategy::Nee {
+                    w: 0.25,
+                    visible: true,
+                },
+                false,
+            ),
+            None,
+        );
+        expect(
+            got,
+            DVec3::new(0.125, 0.25, 0.5),
+            [
+                d(0.125, 0.25, 0.5),
+                None,
+                d(0.5, 1.0, 2.0),
+                None,
+                d(0.25, 0.5, 1.0),
+                d(0.125, 0.25, 0.5),
+                None,
+                None,
+                d(0.25, 0.5, 1.0),
+            ],
+        );
+    }
+
+    #[test]
+    fn blocked_light_sample() {
+        // Blocked: beauty and the plain AOVs get nothing; `unoccluded;` and `shadows;`
+        // both get the whole unshadowed value with weight 1 (not the MIS weight).
+        let got = route(
+            c(
+                Strategy::Nee {
+                    w: 0.25,
+                    visible: false,
+                },
+                false,
+            ),
+            None,
+        );
+        expect(
+            got,
+            DVec3::ZERO,
+            [
+                None,
+                d(0.5, 1.0, 2.0),
+                d(0.5, 1.0, 2.0),
+                None,
+                None,
+                None,
+                None,
+                None,
+                None,
+            ],
+        );
+    }
+
+    #[test]
+    fn bsdf_hit_light_sampling_could_have_made() {
+        // A BSDF-sampled hit on a light NEE samples, MIS weight 3/4: beauty and the
+        // plain-weighted AOVs get 3/4 of it; `unoccluded;` and `shadows;` get nothing
+        // (light sampling alone estimates that connection for them).
+        let got = route(
+            c(
+                Strategy::Hit {
+                    w: 0.75,
+                    nee_could: true,
+                },
+                false,
+            ),
+            None,
+        );
+        expect(
+            got,
+            DVec3::new(0.375, 0.75, 1.5),
+            [
+                d(0.375, 0.75, 1.5),
+                None,
+                None,
+                None,
+                d(0.75, 1.5, 3.0),
+                d(0.375, 0.75, 1.5),
+                None,
+                None,
+                d(0.75, 1.5, 3.0),
+            ],
+        );
+    }
+
+    #[test]
+    fn bsdf_hit_only_that_strategy_finds() {
+        // Glow, a light seen through a delta lobe: full weight everywhere but `shadows;`
+        // (nothing to be blocked) and the `holdouts;` AOVs.
+        let got = route(c(ONLY_STRATEGY, false), None);
+        expect(
+            got,
+            DVec3::new(0.5, 1.0, 2.0),
+            [
+                d(0.5, 1.0, 2.0),
+                None,
+                d(0.5, 1.0, 2.0),
+                None,
+                d(1.0, 2.0, 4.0),
+                d(0.5, 1.0, 2.0),
+                None,
+                None,
+                d(1.0, 2.0, 4.0),
+            ],
+        );
+    }
+
+    #[test]
+    fn holdout_light_samples_go_only_to_holdouts_aovs() {
+        // The same contributions on a holdout path: beauty and every AOV without
+        // `holdouts;` get nothing, and the `holdouts;` AOVs get what they would get
+        // from a path without holdout, under their other prefixes.
+        let got = route(
+            c(
+                Strategy::Nee {
+                    w: 0.25,
+                    visible: true,
+                },
+                true,
+            ),
+            None,
+        );
+        let holdouts =
+            |v: [Option<DVec3>; 3]| [None, None, None, v[0], None, None, v[1], v[2], None];
+        expect(
+            got,
+            DVec3::ZERO,
+            holdouts([d(0.125, 0.25, 0.5), d(0.5, 1.0, 2.0), None]),
+        );
+        let got = route(
+            c(
+                Strategy::Nee {
+                    w: 0.25,
+                    visible: false,
+                },
+                true,
+            ),
+            None,
+        );
+        expect(
+            got,
+            DVec3::ZERO,
+            holdouts([None, d(0.5, 1.0, 2.0), d(0.5, 1.0, 2.0)]),
+        );
+    }
+
+    #[test]
+    fn holdout_bsdf_hits_go_only_to_holdouts_aovs() {
+        let got = route(
+            c(
+                Strategy::Hit {
+                    w: 0.75,
+                    nee_could: true,
+                },
+                true,
+            ),
+            None,
+        );
+        let holdouts =
+            |v: [Option<DVec3>; 3]| [None, None, None, v[0], None, None, v[1], v[2], None];
+        expect(
+            got,
+            DVec3::ZERO,
+            holdouts([d(0.375, 0.75, 1.5), None, None]),
+        );
+        let got = route(c(ONLY_STRATEGY, true), None);
+        expect(
+            got,
+            DVec3::ZERO,
+            holdouts([d(0.5, 1.0, 2.0), d(0.5, 1.0, 2.0), None]),
+        );
+    }
+
+    #[test]
+    fn clamp_scales_by_the_max_component_except_with_noclamp() {
+        // Clamp 1: a contribution whose max component m exceeds 1 is scaled by 1/m,
+        // after its weight and throughput (so `nothruput;` clamps (1, 2, 4), not (0.5,
+        // 1, 2)); `noclamp;` AOVs keep the unclamped value.
+        let got = route(c(ONLY_STRATEGY, false), Some(1.0));
+        expect(
+            got,
+            DVec3::new(0.25, 0.5, 1.0),
+            [
+                d(0.25, 0.5, 1.0),
+                None,
+                d(0.25, 0.5, 1.0),
+                None,
+                d(0.25, 0.5, 1.0),
+                d(0.5, 1.0, 2.0),
+                None,
+                None,
+                d(1.0, 2.0, 4.0),
+            ],
+        );
+        // The clamp sees the weighted value: MIS weight 1/4 brings (0.5, 1, 2) to
+        // (0.125, 0.25, 0.5), under the clamp; `unoccluded;` (weight 1) and `shadows;`
+        // are clamped; a clamp above every value changes nothing.
+        let got = route(
+            c(
+                Strategy::Nee {
+                    w: 0.25,
+                    visible: false,
+                },
+                false,
+            ),
+            Some(1.0),
+        );
+        expect(
+            got,
+            DVec3::ZERO,
+            [
+                None,
+                d(0.25, 0.5, 1.0),
+                d(0.25, 0.5, 1.0),
+                None,
+                None,
+                None,
+                None,
+                None,
+                None,
+            ],
+        );
+        let got = route(
+            c(
+                Strategy::Nee {
+                    w: 0.25,
+                    visible: true,
+                },
+                false,
+            ),
+            Some(1.0),
+        );
+        expect(
+            got,
+            DVec3::new(0.125, 0.25, 0.5),
+            [
+                d(0.125, 0.25, 0.5),
+                None,
+                d(0.25, 0.5, 1.0),
+                None,
+                d(0.25, 0.5, 1.0),
+                d(0.125, 0.25, 0.5),
+                None,
+                None,
+                d(0.25, 0.5, 1.0),
+            ],
+        );
+        let got = route(
+            c(
+                Strategy::Hit {
+                    w: 0.75,
+                    nee_could: true,
+                },
+                false,
+            ),
+            Some(8.0),
+        );
+        expect(
+            got,
+            DVec3::new(0.375, 0.75, 1.5),
+            [
+                d(0.375, 0.75, 1.5),
+                None,
+                None,
+                None,
+                d(0.75, 1.5, 3.0),
+                d(0.375, 0.75, 1.5),
+                None,
+                None,
+                d(0.75, 1.5, 3.0),
+            ],
+        );
+    }
+
+    #[test]
+    fn only_matched_aovs_receive_and_values_add_up() {
+        // AOVs outside the matched mask get nothing, even beauty-like ones; beauty does
+        // not depend on the mask; two contributions to one sample add.
+        let w = weighting(None);
+        let mut v = SampleValues::new(w.len());
+        let matched: AovMask = [1usize, 2, 4].into_iter().collect();
+        v.add(
+            &w,
+            &c(
+                Strategy::Nee {
+                    w: 0.25,
+                    visible: true,
+                },
+                false,
+            ),
+            matched,
+        );
+        v.add(
+            &w,
+            &c(
+                Strategy::Nee {
+                    w: 0.5,
+                    visible: false,
+                },
+                false,
+            ),
+            matched,
+        );
+        assert_eq!(v.beauty, DVec3::new(0.125, 0.25, 0.5));
+        let touched: Vec<usize> = v.touched.iter().collect();
+        assert_eq!(touched, [1, 2, 4]);
+        assert_eq!(v.aov[1], DVec3::new(0.5, 1.0, 2.0)); // shadows: the blocked one
+        assert_eq!(v.aov[2], DVec3::new(1.0, 2.0, 4.0)); // unoccluded: both, weight 1
+        assert_eq!(v.aov[4], DVec3::new(0.25, 0.5, 1.0)); // nothruput: the visible one
+        assert_eq!(v.aov[0], DVec3::ZERO);
+    }
+
     /// Adds `xs` to a one-layer pixel with `a`; the stored total.
     fn sum(a: Accumulation, xs: impl Iterator<Item = f64>) -> f64 {
         let mut px = vec![DVec3::ZERO; a.slots()];
