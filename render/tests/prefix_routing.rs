@@ -308,3 +308,22 @@ fn noclamp_aovs_are_unclamped_under_every_prefix() {
         );
     }
 }
+
+#[test]
+fn nothruput_drops_the_throughput_and_keeps_the_mis_weight() {
+    // At the first scattering vertex the throughput is 1, so `nothruput;` changes
+    // nothing bit for bit, MIS weight included: on the glossy ball light samples and
+    // BSDF hits on lights both carry weights below 1. After a bounce it must differ.
+    let s = scene();
+    let src = strings(&[
+        "C<.S'gloss'>L",
+        "nothruput;C<.S'gloss'>L",
+        "C.+<.S'gloss'>L",
+        "nothruput;C.+<.S'gloss'>L",
+    ]);
+    let r = render(&s, &src, Technique::Mis);
+    assert!(total(&layer(&r, 0)) > 0.0);
+    assert!(r.film.layer_bits_equal(1, &r.film, 2));
+    assert!(total(&layer(&r, 2)) > 0.0);
+    assert!(!r.film.layer_bits_equal(3, &r.film, 4));
+}
