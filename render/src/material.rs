@@ -50,6 +50,19 @@ impl Lobe {
         }
     }
 
+    /// A GGX lobe named `Specular` with `f0 = 1`: its directional albedo is the white
+    /// furnace the stability tests and the chi-square suite measure against.
+    pub fn white_ggx(alpha: f32, lobes: &LobeMap) -> Lobe {
+        Lobe::new(
+            "Specular",
+            Model::Ggx {
+                f0: Vec3::ONE,
+                alpha,
+            },
+            lobes,
+        )
+    }
+
     /// Whether the lobe is a Dirac delta (cannot be evaluated, only sampled).
     pub fn is_delta(&self) -> bool {
         matches!(self.model, Model::Dielectric { .. })
@@ -408,14 +421,7 @@ mod tests {
         // percent: hence the tolerance.
         let map = LobeMap::default();
         for alpha in [0.1f32, 1e-3, 1e-7] {
-            let lobe = Lobe::new(
-                "Specular",
-                Model::Ggx {
-                    f0: Vec3::ONE,
-                    alpha,
-                },
-                &map,
-            );
+            let lobe = Lobe::white_ggx(alpha, &map);
             for cos in [1e-6f32, -1e-6] {
                 let wo = Vec3::new(1.0, 0.0, cos);
                 let o = wo.as_dvec3().normalize();

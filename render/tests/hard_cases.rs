@@ -42,14 +42,7 @@ fn ggx_from_alpha_1e_1_to_1e_7_and_at_grazing_is_finite_and_conserves_energy() {
     for alpha in alphas {
         // f0 = 1: a white furnace for the lobe; the mean weight is its directional
         // albedo, which single-scattering GGX keeps below 1.
-        let lobe = Lobe::new(
-            "Specular",
-            Model::Ggx {
-                f0: Vec3::ONE,
-                alpha,
-            },
-            &map,
-        );
+        let lobe = Lobe::white_ggx(alpha, &map);
         for cos in coses {
             let w = wo(cos);
             let mut rng = Rng::for_sample(1, 0, 0);

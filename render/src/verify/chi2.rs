@@ -464,11 +464,7 @@ mod tests {
     }
 
     fn ggx(alpha: f32) -> Lobe {
-        let model = crate::material::Model::Ggx {
-            f0: Vec3::ONE,
-            alpha,
-        };
-        Lobe::new("Specular", model, &lpe::LobeMap::default())
+        Lobe::white_ggx(alpha, &lpe::LobeMap::default())
     }
 
     #[test]

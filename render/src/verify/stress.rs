@@ -13,7 +13,7 @@ use super::stats::mean_and_se;
 use crate::aov::AovList;
 use crate::film::Accumulation;
 use crate::integrator::{Render, Settings, Technique};
-use crate::material::{Lobe, Model};
+use crate::material::Lobe;
 use crate::rng::Rng;
 use crate::scene::Scene;
 
@@ -102,14 +102,7 @@ pub fn mixed_partition(
 /// Mean weight of a GGX lobe with `f0 = 1` (its directional albedo: a white furnace)
 /// over `n` samples, its standard error, and how many samples were not finite.
 pub fn ggx_furnace(alpha: f32, cos: f32, n: usize) -> (f64, f64, usize) {
-    let lobe = Lobe::new(
-        "Specular",
-        Model::Ggx {
-            f0: Vec3::ONE,
-            alpha,
-        },
-        &LobeMap::default(),
-    );
+    let lobe = Lobe::white_ggx(alpha, &LobeMap::default());
     let wo = Vec3::new((1.0 - cos * cos).max(0.0).sqrt(), 0.0, cos);
     let mut rng = Rng::for_sample(1, 0, 0);
     let mut bad = 0;
