@@ -151,12 +151,11 @@ fn unoccluded_and_shadows_ignore_mis_weights_and_bsdf_hits_nee_could_make() {
     ]);
     let mis = render(&s, &src, Technique::Mis);
     let light = render(&s, &src, Technique::LightOnly);
-    for i in 0..4 {
-        assert!(total(&layer(&mis, i)) > 0.0, "{}: empty", src[i]);
+    for (i, s) in src.iter().enumerate().take(4) {
+        assert!(total(&layer(&mis, i)) > 0.0, "{s}: empty");
         assert!(
             mis.film.layer_bits_equal(1 + i, &light.film, 1 + i),
-            "{}: MIS and light-only renders differ",
-            src[i]
+            "{s}: MIS and light-only renders differ"
         );
     }
     assert!(!mis.film.layer_bits_equal(5, &light.film, 5));
