@@ -1,0 +1,111 @@
+//! What the DFA reports about its own size, on sets small enough to work out by hand:
+//! the minimized state count, where the DFA budget cuts over to the NFA (to the byte),
+//! the memory one more state costs, and the point where minimization gives up and
+//! keeps the DFA unminimized. Every expected number is derived in the comments from the
+//! layout documented on the DFA (dead state included, rows of `stride` = class count
+//! rounded up to a power of two `u32`s, one 32-byte `AovMask` per state) and from its
+//! budget accounting (`stride * 4 + 32 + 2 * words * 8 + 32` bytes per state built).
+
+use lpe::{parse, AovMask, AovSet, Options};
+
+fn set(expr: &str, dfa_budget: usize) -> AovSet {
+    let aovs = vec![("a".to_string(), parse(expr).unwrap())];
+    AovSet::compile_with(
+        &aovs,
+        &Options {
+            dfa_budget,
+            ..Options::default()
+        },
+    )
+    .unwrap()
+}
+
+fn default_set(expr: &str) -> AovSet {
+    set(expr, Options::default().dfa_budget)
+}
+
+/// `.{n}` written as repetitions the parser's 256 limit accepts.
+fn dots(n: usize) -> String {
+    let mut s = String::new();
+    for _ in 0..n / 100 {
+        s.push_str(".{100}");
+    }
+    for _ in 0..n % 100 {
+        s.push('.');
+    }
+    s
+}
+
+#[test]
+fn minimized_state_counts() {
+    // dead, before the camera, after C, after D, after L.
+    assert_eq!(default_set("CDL").dfa_states(), Some(5));
+    // The subset construction keeps "after D" and "after S" apart (two NFA
+    // positions); both then need a light, so minimization merges them: 5, not 6.
+    assert_eq!(default_set("C(D|S)L").dfa_states(), Some(5));
+    // C.{70}L: dead, start, after C, after each of the 70 dots, after L.
+    assert_eq!(default_set(&format!("C{}L", dots(70))).dfa_states(), Some(74));
+    // Matches nothing: the start state is the dead state.
+    assert_eq!(default_set("C[^.]L").dfa_states(), Some(1));
+}
+
+#[test]
+fn the_budget_cuts_over_to_the_nfa_to_the_byte() {
+    // CDL: 4 classes (camera, D scatter, light, anything else) -> stride 4; 4 NFA
+    // positions -> 1 word. A state costs 4*4 + 32 + 2*1*8 + 32 = 96 bytes, and the
+    // construction builds 5 states: 480 bytes fit, 479 do not.
+    let s = set("CDL", 480);
+    assert_eq!(s.class_count(), 4);
+    assert!(s.uses_dfa());
+    assert_eq!(s.dfa_states(), Some(5));
+    let s = set("CDL", 479);
+    assert!(!s.uses_dfa());
+    assert_eq!(s.dfa_states(), None);
+
+    // C.{70}L: 73 positions -> 2 words; 4 classes -> stride 4. 4*4 + 32 + 2*2*8 + 32 =
+    // 112 bytes a state, 74 states: 8288 bytes fit, 8287 do not.
+    let e = format!("C{}L", dots(70));
+    assert_eq!(set(&e, 8288).class_count(), 4);
+    assert!(set(&e, 8288).uses_dfa());
+    assert!(!set(&e, 8287).uses_dfa());
+
+    // C[^.]L matches nothing: classes camera, light, other -> stride 4; 1 word; 96
+    // bytes a state; the construction builds the dead and the start state only, so two
+    // states' worth (192 bytes) is enough and 191 is not.
+    let s = set("C[^.]L", 192);
+    assert_eq!(s.class_count(), 3);
+    assert!(s.uses_dfa());
+    assert_eq!(s.dfa_states(), Some(1));
+    assert!(!set("C[^.]L", 191).uses_dfa());
+}
+
+#[test]
+fn one_more_state_costs_one_row_and_one_mask() {
+    // Same atoms, so the same alphabet tables; the DFA has one more state (6 vs 5),
+    // i.e. one more row of stride 4 `u32`s and one more mask.
+    let a = default_set("C.L");
+    let b = default_set("C..L");
+    assert_eq!((a.dfa_states(), b.dfa_states()), (Some(5), Some(6)));
+    assert_eq!(
+        b.memory_bytes() - a.memory_bytes(),
+        4 * 4 + std::mem::size_of::<AovMask>()
+    );
+    assert_eq!(std::mem::size_of::<AovMask>(), 32);
+}
+
+#[test]
+fn minimization_gives_up_past_its_work_cap() {
+    // C(D|S).{1900}L: the construction builds dead, start, after C, after D, after S,
+    // one state per dot and after L: 1906 states, minimal 1905 (D and S merge). Moore's
+    // algorithm needs about one round per dot to tell the chain apart, each round
+    // costing states * (classes + 1) = 1906 * 6 units of work, so it would need about
+    // 1906 * 6 * 1904 = 21.8 M units: over the 20 M cap, and the DFA is kept
+    // unminimized. (Any miscount of the work that stays under the cap, e.g. 1906 * 5 a
+    // round, = 18.1 M, would minimize it to 1905.)
+    let s = default_set(&format!("C(D|S){}L", dots(1900)));
+    assert_eq!(s.class_count(), 5);
+    assert_eq!(s.dfa_states(), Some(1906));
+    // 1800 dots: 1806 * 6 * 1804 = 19.5 M, under the cap, so it is minimized.
+    let s = default_set(&format!("C(D|S){}L", dots(1800)));
+    assert_eq!(s.dfa_states(), Some(1805));
+}
