@@ -19,6 +19,7 @@ fn indices_past_the_width_are_outside_the_mask() {
 
     let c: AovMask = [0usize, 64, 256, 7].into_iter().collect();
     assert_eq!(c.iter().collect::<Vec<_>>(), [0, 7, 64]);
+    assert_eq!(c.count(), 3);
     assert!(!c.is_empty());
     assert!(AovMask::EMPTY.is_empty());
     assert_eq!(AovMask::default(), AovMask::EMPTY);
