@@ -44,7 +44,10 @@ fn minimized_state_counts() {
     // positions); both then need a light, so minimization merges them: 5, not 6.
     assert_eq!(default_set("C(D|S)L").dfa_states(), Some(5));
     // C.{70}L: dead, start, after C, after each of the 70 dots, after L.
-    assert_eq!(default_set(&format!("C{}L", dots(70))).dfa_states(), Some(74));
+    assert_eq!(
+        default_set(&format!("C{}L", dots(70))).dfa_states(),
+        Some(74)
+    );
     // Matches nothing: the start state is the dead state.
     assert_eq!(default_set("C[^.]L").dfa_states(), Some(1));
 }
