@@ -4,6 +4,9 @@
 
 pub mod conformance;
 
+use lpe::ast::{Atom, Expr, Item, Triple, TypePos};
+use lpe::{strategy, Lpe, VertexType};
+use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
 /// `PROPTEST_CASES` if set, else `default`. An explicit case count in a config would
@@ -24,4 +27,44 @@ pub fn runner(default_cases: u32) -> TestRunner {
         failure_persistence: None,
         ..cases(default_cases)
     })
+}
+
+/// `C e [<L.>O]`: random bodies inside the path frame, so that samples are paths.
+pub fn framed(e: Expr) -> Expr {
+    let emitter = Atom::Class {
+        negated: false,
+        items: vec![
+            Item::Triple(Triple {
+                ty: TypePos::One(VertexType::L),
+                event: lpe::ast::EventPos::Any,
+                label: lpe::ast::LabelPos::Any,
+            }),
+            Item::Type(VertexType::O),
+        ],
+    };
+    Expr::Concat(vec![
+        Expr::Atom(Atom::Item(Item::Type(VertexType::C))),
+        e,
+        Expr::Atom(emitter),
+    ])
+}
+
+/// Sets of generated expressions, about half of them framed as paths ([`framed`]).
+pub fn expr_set(sizes: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = Vec<Lpe>> {
+    let one = (strategy::lpe(), any::<bool>()).prop_map(|(mut l, frame)| {
+        if frame {
+            l.expr = framed(l.expr);
+        }
+        l
+    });
+    prop::collection::vec(one, sizes)
+}
+
+/// The expressions as an AOV list named `e0`, `e1`, ... in order.
+pub fn named(exprs: &[Lpe]) -> Vec<(String, Lpe)> {
+    exprs
+        .iter()
+        .enumerate()
+        .map(|(i, e)| (format!("e{i}"), e.clone()))
+        .collect()
 }

@@ -19,12 +19,12 @@
 use std::cell::Cell;
 use std::collections::{HashMap, VecDeque};
 
-use lpe::ast::{Atom, EventPos, Expr, Item, LabelPos, Triple, TypePos};
 use lpe::strategy::{self, LABELS};
 use lpe::{
     parse, AovSet, Class, Event, EventKind, Lpe, Options, Path, PathMatcher, State, Vertex,
     VertexType,
 };
+use lpe_tests::{expr_set, named};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
@@ -215,50 +215,12 @@ fn check_paths(
     Ok(())
 }
 
-/// `C e [<L.>O]`, so that a fair share of the random bodies can match paths.
-fn framed(e: Expr) -> Expr {
-    let emitter = Atom::Class {
-        negated: false,
-        items: vec![
-            Item::Triple(Triple {
-                ty: TypePos::One(VertexType::L),
-                event: EventPos::Any,
-                label: LabelPos::Any,
-            }),
-            Item::Type(VertexType::O),
-        ],
-    };
-    Expr::Concat(vec![
-        Expr::Atom(Atom::Item(Item::Type(VertexType::C))),
-        e,
-        Expr::Atom(emitter),
-    ])
-}
-
-fn expr_set(sizes: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = Vec<Lpe>> {
-    let one = (strategy::lpe(), any::<bool>()).prop_map(|(mut l, frame)| {
-        if frame {
-            l.expr = framed(l.expr);
-        }
-        l
-    });
-    prop::collection::vec(one, sizes)
-}
-
 /// An AOV of 66 positions that dies on the vertex after the camera unless that vertex
 /// is a `U12` lobe: placed first, it fills word 0 of an NFA state (and a little of word
 /// 1), so the drawn AOVs live in the higher words once it is dead.
 fn padding() -> Lpe {
     let alts = vec!["<RU12>"; 64].join("|");
     parse(&format!("C({alts})L")).unwrap()
-}
-
-fn named(exprs: &[Lpe]) -> Vec<(String, Lpe)> {
-    exprs
-        .iter()
-        .enumerate()
-        .map(|(i, e)| (format!("e{i}"), e.clone()))
-        .collect()
 }
 
 fn nfa_only() -> Options {

@@ -11,12 +11,13 @@ use std::time::{Duration, Instant};
 
 use lpe::analysis::{self, default_universe};
 use lpe::aov::{AovSet, Options};
-use lpe::ast::{Atom, Expr, Item, Repetition, Triple, TypePos};
+use lpe::ast::{Expr, Repetition};
 use lpe::macros::BASIC;
 use lpe::path::{Event, Path, Vertex, VertexType};
 use lpe::rng::SplitMix64 as Rng;
 use lpe::strategy::{self, LABELS};
 use lpe::{parse, Lpe};
+use lpe_tests::{expr_set, framed, named};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 
@@ -101,44 +102,6 @@ fn sampled_paths(exprs: &[Lpe], pool: &[Vertex], seed: u64, max_len: usize) -> V
         }
     }
     out
-}
-
-/// `C e [<L.>O]`: random bodies inside the path frame, so that samples are paths.
-fn framed(e: Expr) -> Expr {
-    let emitter = Atom::Class {
-        negated: false,
-        items: vec![
-            Item::Triple(Triple {
-                ty: TypePos::One(VertexType::L),
-                event: lpe::ast::EventPos::Any,
-                label: lpe::ast::LabelPos::Any,
-            }),
-            Item::Type(VertexType::O),
-        ],
-    };
-    Expr::Concat(vec![
-        Expr::Atom(Atom::Item(Item::Type(VertexType::C))),
-        e,
-        Expr::Atom(emitter),
-    ])
-}
-
-fn expr_set(sizes: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = Vec<Lpe>> {
-    let one = (strategy::lpe(), any::<bool>()).prop_map(|(mut l, frame)| {
-        if frame {
-            l.expr = framed(l.expr);
-        }
-        l
-    });
-    prop::collection::vec(one, sizes)
-}
-
-fn named(exprs: &[Lpe]) -> Vec<(String, Lpe)> {
-    exprs
-        .iter()
-        .enumerate()
-        .map(|(i, e)| (format!("e{i}"), e.clone()))
-        .collect()
 }
 
 fn nfa_only() -> Options {

@@ -14,6 +14,7 @@ use lpe::ast::{Expr, Repetition};
 use lpe::strategy;
 use lpe::Options;
 use lpe::{parse, AovSet, CompileError, Event, EventKind, Lpe, Path, Vertex, VertexType};
+use lpe_tests::named;
 use proptest::prelude::*;
 
 /// The vertices paths are enumerated over: five middle vertices (transport and user
@@ -61,14 +62,6 @@ fn paths_of_len(len: usize) -> Vec<Path> {
         }
     }
     out
-}
-
-fn named(exprs: &[Lpe]) -> Vec<(String, Lpe)> {
-    exprs
-        .iter()
-        .enumerate()
-        .map(|(i, e)| (format!("e{i}"), e.clone()))
-        .collect()
 }
 
 fn bounded(l: u32, dfa: bool) -> Options {
