@@ -5,7 +5,8 @@
 pub mod conformance;
 
 use lpe::ast::{Atom, Expr, Item, Triple, TypePos};
-use lpe::{strategy, Lpe, VertexType};
+use lpe::strategy::{self, LABELS};
+use lpe::{Event, Lpe, Vertex, VertexType};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
@@ -67,4 +68,24 @@ pub fn named(exprs: &[Lpe]) -> Vec<(String, Lpe)> {
         .enumerate()
         .map(|(i, e)| (format!("e{i}"), e.clone()))
         .collect()
+}
+
+/// Every constructible kind of vertex: the camera, and lights, emissive objects and R/T
+/// vertices of every event, each with no label, each pool label, and an unmentioned one.
+pub fn vertex_pool() -> Vec<Vertex> {
+    let labels: Vec<Option<&str>> = std::iter::once(None)
+        .chain(LABELS.iter().map(|l| Some(*l)))
+        .chain(std::iter::once(Some("zz")))
+        .collect();
+    let mut pool = vec![Vertex::camera()];
+    for l in &labels {
+        pool.push(Vertex::light(*l));
+        pool.push(Vertex::emissive(*l));
+        for ty in [VertexType::R, VertexType::T] {
+            for e in Event::all() {
+                pool.push(Vertex::scatter(ty, e, *l));
+            }
+        }
+    }
+    pool
 }

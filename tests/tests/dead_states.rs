@@ -19,34 +19,14 @@
 use std::cell::Cell;
 use std::collections::{HashMap, VecDeque};
 
-use lpe::strategy::{self, LABELS};
+use lpe::strategy;
 use lpe::{
     parse, AovSet, Class, Event, EventKind, Lpe, Options, Path, PathMatcher, State, Vertex,
     VertexType,
 };
-use lpe_tests::{expr_set, named};
+use lpe_tests::{expr_set, named, vertex_pool};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
-
-/// Every constructible kind of vertex: the camera, and lights, emissive objects and R/T
-/// vertices of every event, each with no label, each pool label, and an unmentioned one.
-fn vertex_pool() -> Vec<Vertex> {
-    let labels: Vec<Option<&str>> = std::iter::once(None)
-        .chain(LABELS.iter().map(|l| Some(*l)))
-        .chain(std::iter::once(Some("zz")))
-        .collect();
-    let mut pool = vec![Vertex::camera()];
-    for l in &labels {
-        pool.push(Vertex::light(*l));
-        pool.push(Vertex::emissive(*l));
-        for ty in [VertexType::R, VertexType::T] {
-            for e in Event::all() {
-                pool.push(Vertex::scatter(ty, e, *l));
-            }
-        }
-    }
-    pool
-}
 
 /// One class per distinct answer of `classify` over the pool. A set may have classes no
 /// constructible vertex falls in (a labelled camera, which `Vertex` cannot build), so

@@ -13,32 +13,13 @@ use lpe::analysis::{self, default_universe};
 use lpe::aov::{AovSet, Options};
 use lpe::ast::{Expr, Repetition};
 use lpe::macros::BASIC;
-use lpe::path::{Event, Path, Vertex, VertexType};
+use lpe::path::{Path, Vertex, VertexType};
 use lpe::rng::SplitMix64 as Rng;
-use lpe::strategy::{self, LABELS};
+use lpe::strategy;
 use lpe::{parse, Lpe};
-use lpe_tests::{expr_set, framed, named};
+use lpe_tests::{expr_set, framed, named, vertex_pool};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
-
-/// Every kind of vertex, with each pool label, no label, and an unmentioned label.
-fn vertex_pool() -> Vec<Vertex> {
-    let labels: Vec<Option<&str>> = std::iter::once(None)
-        .chain(LABELS.iter().map(|l| Some(*l)))
-        .chain(std::iter::once(Some("zz")))
-        .collect();
-    let mut pool = vec![Vertex::camera()];
-    for l in &labels {
-        pool.push(Vertex::light(*l));
-        pool.push(Vertex::emissive(*l));
-        for ty in [VertexType::R, VertexType::T] {
-            for e in Event::all() {
-                pool.push(Vertex::scatter(ty, e, *l));
-            }
-        }
-    }
-    pool
-}
 
 /// A vertex sequence `e` matches according to the reference's atom semantics, or `None`
 /// when some chosen atom matches no vertex.
