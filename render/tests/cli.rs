@@ -1,5 +1,7 @@
 //! The command line: bad input is a clear error with exit status 2, never a panic.
 
+mod common;
+
 use std::process::Command;
 
 fn run(args: &[&str]) -> (i32, String) {
@@ -67,15 +69,7 @@ fn bad_input_is_reported_not_panicked() {
 fn a_tiny_render_writes_everything_and_exits_zero() {
     let dir = std::env::temp_dir().join(format!("lpe-render-cli-ok-{}", std::process::id()));
     std::fs::create_dir_all(&dir).unwrap();
-    let display = dir.join("display.rib");
-    std::fs::write(
-        &display,
-        "DisplayChannel \"color key\" \"string source\" [\"color lpe:C.*<L.'key'>\"]\n\
-         DisplayChannel \"color mine\" \"string source\" [\"color lpe:myDirect\"]\n",
-    )
-    .unwrap();
-    let ini = dir.join("rendermn.ini");
-    std::fs::write(&ini, "/prman/lpe/macro/myDirect C<RD>[<L.>O]\n").unwrap();
+    let (display, ini) = common::display_and_ini(&dir, "key");
     let out = dir.join("out");
     let args = [
         "--res=16x12",

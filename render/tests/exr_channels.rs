@@ -2,6 +2,8 @@
 //! `R G B`, each AOV as `NAME.R NAME.G NAME.B`, 32-bit float, and nothing else. The file
 //! is read back with the `exr` crate's own header reader, not the renderer's.
 
+mod common;
+
 use std::process::Command;
 
 use exr::meta::attribute::SampleType;
@@ -12,15 +14,7 @@ fn exr_holds_exactly_beauty_and_one_rgb_layer_per_aov() {
     let dir = std::env::temp_dir().join(format!("lpe-render-exr-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
-    let display = dir.join("display.rib");
-    std::fs::write(
-        &display,
-        "DisplayChannel \"color keyOnly\" \"string source\" [\"color lpe:C.*<L.'key'>\"]\n\
-         DisplayChannel \"color mine\" \"string source\" [\"color lpe:myDirect\"]\n",
-    )
-    .unwrap();
-    let ini = dir.join("rendermn.ini");
-    std::fs::write(&ini, "/prman/lpe/macro/myDirect C<RD>[<L.>O]\n").unwrap();
+    let (display, ini) = common::display_and_ini(&dir, "keyOnly");
     let out = dir.join("out");
     let out_arg = format!("--out={}", out.display());
     let display_arg = format!("--display={}", display.display());
