@@ -1,6 +1,7 @@
 //! The workspace's own matchers behind [`Engine`]: the backtracking reference and lpe's
 //! AOV set in its two stepping modes.
 
+use lpe::osl::{self, Registered};
 use lpe::{AovSet, Lpe, Options, Path};
 
 use crate::engine::{Engine, EngineError, Matcher};
@@ -21,6 +22,19 @@ impl Matcher for ReferenceMatcher {
     }
 }
 
+/// The OSL reference matcher (symbol stream with STOP), one expression at a time.
+/// Crate-visible for the same reason as [`ReferenceMatcher`].
+pub(crate) struct OslReferenceMatcher(pub(crate) Vec<osl::Lpe>);
+
+impl Matcher<osl::Path> for OslReferenceMatcher {
+    fn which(&self, path: &osl::Path) -> Vec<bool> {
+        self.0
+            .iter()
+            .map(|e| reference::osl::is_match(e, path))
+            .collect()
+    }
+}
+
 impl Engine for Reference {
     fn name(&self) -> &'static str {
         "reference"
@@ -28,6 +42,15 @@ impl Engine for Reference {
 
     fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
         Ok(Box::new(ReferenceMatcher(exprs.to_vec())))
+    }
+
+    // The registration is already in the parsed trees (the eaters' exclusions).
+    fn compile_osl(
+        &self,
+        exprs: &[osl::Lpe],
+        _: &Registered,
+    ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
+        Ok(Box::new(OslReferenceMatcher(exprs.to_vec())))
     }
 }
 
@@ -41,21 +64,53 @@ pub struct BitsetNfa;
 
 struct AovSetMatcher(AovSet);
 
-impl Matcher for AovSetMatcher {
-    fn which(&self, path: &Path) -> Vec<bool> {
-        let m = self.0.match_path(path);
+impl AovSetMatcher {
+    fn which(&self, m: lpe::AovMask) -> Vec<bool> {
         (0..self.0.len()).map(|i| m.contains(i)).collect()
     }
 }
 
-fn compile_set(exprs: &[Lpe], opts: &Options) -> Result<Box<dyn Matcher>, EngineError> {
-    let aovs: Vec<(String, Lpe)> = exprs
+impl Matcher for AovSetMatcher {
+    fn which(&self, path: &Path) -> Vec<bool> {
+        AovSetMatcher::which(self, self.0.match_path(path))
+    }
+}
+
+impl Matcher<osl::Path> for AovSetMatcher {
+    fn which(&self, path: &osl::Path) -> Vec<bool> {
+        AovSetMatcher::which(self, self.0.match_osl_path(path))
+    }
+}
+
+/// The expressions as AOVs named by their index.
+fn numbered<T: Clone>(exprs: &[T]) -> Vec<(String, T)> {
+    exprs
         .iter()
         .enumerate()
         .map(|(i, e)| (i.to_string(), e.clone()))
-        .collect();
-    let set = AovSet::compile_with(&aovs, opts)?;
+        .collect()
+}
+
+fn compile_set(exprs: &[Lpe], opts: &Options) -> Result<Box<dyn Matcher>, EngineError> {
+    let set = AovSet::compile_with(&numbered(exprs), opts)?;
     Ok(Box::new(AovSetMatcher(set)))
+}
+
+fn compile_osl_set(
+    exprs: &[osl::Lpe],
+    registered: &Registered,
+    opts: &Options,
+) -> Result<Box<dyn Matcher<osl::Path>>, EngineError> {
+    let set = AovSet::compile_osl(&numbered(exprs), registered, opts)?;
+    Ok(Box::new(AovSetMatcher(set)))
+}
+
+/// The bitset NFA alone: a DFA budget of 0.
+fn nfa_only() -> Options {
+    Options {
+        dfa_budget: 0,
+        ..Options::default()
+    }
 }
 
 impl Engine for Fast {
@@ -66,6 +121,14 @@ impl Engine for Fast {
     fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
         compile_set(exprs, &Options::default())
     }
+
+    fn compile_osl(
+        &self,
+        exprs: &[osl::Lpe],
+        registered: &Registered,
+    ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
+        compile_osl_set(exprs, registered, &Options::default())
+    }
 }
 
 impl Engine for BitsetNfa {
@@ -74,12 +137,14 @@ impl Engine for BitsetNfa {
     }
 
     fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
-        compile_set(
-            exprs,
-            &Options {
-                dfa_budget: 0,
-                ..Options::default()
-            },
-        )
+        compile_set(exprs, &nfa_only())
+    }
+
+    fn compile_osl(
+        &self,
+        exprs: &[osl::Lpe],
+        registered: &Registered,
+    ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
+        compile_osl_set(exprs, registered, &nfa_only())
     }
 }

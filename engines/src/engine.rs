@@ -4,8 +4,14 @@
 //! then answers, per path, which of them match. An engine that cannot build a set (a
 //! size limit) says so with an [`EngineError`]; callers count such skips and report
 //! them, never hide them.
+//!
+//! Two dialects share the seam: [`Engine::compile`] takes RenderMan expressions and gives
+//! a [`Matcher`] over [`lpe::Path`], [`Engine::compile_osl`] takes OSL expressions and
+//! gives a `Matcher<lpe::osl::Path>`. An engine written for one dialect only keeps the
+//! default `compile_osl`, which refuses with [`EngineError::Unsupported`].
 
-use lpe::{Lpe, Path};
+use lpe::osl::{self, Registered};
+use lpe::{Dialect, Lpe, Path};
 
 use crate::regex::BuildError;
 
@@ -19,6 +25,9 @@ pub enum EngineError {
     /// The regex-automata translation refused the set (the `oracle` engine).
     #[error("cannot build: {0}")]
     Regex(BuildError),
+    /// The engine does not speak this dialect.
+    #[error("cannot build: this engine does not support the {0} dialect")]
+    Unsupported(Dialect),
 }
 
 // Written out rather than `#[from]`, which would also make the inner error the
@@ -36,12 +45,12 @@ impl From<BuildError> for EngineError {
     }
 }
 
-/// A compiled expression set. `Send`, so a multi-threaded caller (the renderer's
-/// `converge`) can keep one per thread; not `Sync`, since matchers may keep a mutable
-/// cache.
-pub trait Matcher: Send {
+/// A compiled expression set over paths of type `P` (RenderMan's [`Path`] unless
+/// named). `Send`, so a multi-threaded caller (the renderer's `converge`) can keep one
+/// per thread; not `Sync`, since matchers may keep a mutable cache.
+pub trait Matcher<P = Path>: Send {
     /// For each compiled expression, in order, whether it matches the whole path.
-    fn which(&self, path: &Path) -> Vec<bool>;
+    fn which(&self, path: &P) -> Vec<bool>;
 }
 
 /// A matching engine.
@@ -50,4 +59,13 @@ pub trait Engine: Sync {
     fn name(&self) -> &'static str;
     /// Compiles a set of expressions.
     fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError>;
+    /// Compiles a set of OSL expressions, parsed with `registered` user labels.
+    fn compile_osl(
+        &self,
+        exprs: &[osl::Lpe],
+        registered: &Registered,
+    ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
+        let _ = (exprs, registered);
+        Err(EngineError::Unsupported(Dialect::Osl))
+    }
 }

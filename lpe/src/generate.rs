@@ -35,6 +35,8 @@
 //! }
 //! ```
 //!
+//! The OSL dialect's generators are in [`osl`].
+//!
 //! With feature `arbitrary`, [`Expr`], [`Lpe`] and [`Path`] implement
 //! `arbitrary::Arbitrary` (use them as `fuzz_target!` inputs); with feature `proptest`,
 //! [`crate::strategy`] has strategies for the same shapes.
@@ -45,6 +47,8 @@ use crate::ast::{
 use crate::path::{Event, EventKind, Path, Vertex, VertexType};
 use crate::prefix::{Prefix, Prefixes};
 use crate::rng::SplitMix64;
+
+pub mod osl;
 
 /// A source of decisions.
 pub trait Choices {

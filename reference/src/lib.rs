@@ -26,8 +26,13 @@
 //! Recursion depth grows with the path length (a few frames per vertex) and the
 //! expression's nesting; run very long paths on a thread with a large stack, as
 //! `lpe-check` does.
+//!
+//! The OSL dialect has its own reference in [`osl`]: OSL defines matching over a
+//! stream of symbols, not of vertices.
 
 use std::collections::HashSet;
+
+pub mod osl;
 
 use lpe::ast::{Atom, EventPattern, EventPos, Expr, Item, LabelPos, Repetition, Triple, TypePos};
 use lpe::{Lpe, Path, Vertex, VertexType};

@@ -3,7 +3,8 @@
 use lpe::{Lpe, Path};
 
 use super::counterexample::Counterexample;
-use super::shrink::minimize;
+use super::language::{Language, RenderMan};
+use super::shrink::minimize_in;
 use crate::engine::Engine;
 use crate::registry;
 
@@ -22,14 +23,14 @@ pub struct Agreement {
 
 /// The result of a differential check.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Outcome {
+pub enum Outcome<L: Language = RenderMan> {
     /// All engines that could build agree on every path.
     Agree(Agreement),
     /// Two engines differ; minimized.
-    Disagree(Box<Counterexample>),
+    Disagree(Box<Counterexample<L>>),
 }
 
-impl Outcome {
+impl<L: Language> Outcome<L> {
     /// True for [`Outcome::Agree`].
     pub fn is_agreement(&self) -> bool {
         matches!(self, Outcome::Agree(_))
@@ -48,10 +49,20 @@ pub fn check_set(exprs: &[Lpe], paths: &[Path]) -> Outcome {
 
 /// Runs the given engines on an AOV set compiled as one.
 pub fn check_with(engines: &[&dyn Engine], exprs: &[Lpe], paths: &[Path]) -> Outcome {
+    check_in(&RenderMan, engines, exprs, paths)
+}
+
+/// Runs the given engines on a set of `lang` expressions compiled as one.
+pub fn check_in<L: Language>(
+    lang: &L,
+    engines: &[&dyn Engine],
+    exprs: &[L::Expr],
+    paths: &[L::Path],
+) -> Outcome<L> {
     let mut built = Vec::new();
     let mut skipped = Vec::new();
     for e in engines {
-        match e.compile(exprs) {
+        match lang.compile(*e, exprs) {
             Ok(m) => built.push((e.name(), m)),
             Err(why) => skipped.push((e.name(), why.to_string())),
         }
@@ -65,9 +76,10 @@ pub fn check_with(engines: &[&dyn Engine], exprs: &[Lpe], paths: &[Path]) -> Out
         let answers: Vec<Vec<bool>> = built.iter().map(|(_, m)| m.which(path)).collect();
         if answers.windows(2).any(|w| w[0] != w[1]) {
             let original = (exprs.to_vec(), path.clone());
-            let (exprs, path) = minimize(engines, exprs.to_vec(), path.clone());
+            let (exprs, path) = minimize_in(lang, engines, exprs.to_vec(), path.clone());
             return Outcome::Disagree(Box::new(Counterexample {
-                answers: answers_of(engines, &exprs, &path),
+                answers: answers_in(lang, engines, &exprs, &path),
+                lang: lang.clone(),
                 exprs,
                 path,
                 original,
@@ -87,11 +99,21 @@ pub fn answers_of(
     exprs: &[Lpe],
     path: &Path,
 ) -> Vec<(&'static str, Result<Vec<bool>, String>)> {
+    answers_in(&RenderMan, engines, exprs, path)
+}
+
+/// Each engine's answers on one path of `lang`, or its build error.
+pub fn answers_in<L: Language>(
+    lang: &L,
+    engines: &[&dyn Engine],
+    exprs: &[L::Expr],
+    path: &L::Path,
+) -> Vec<(&'static str, Result<Vec<bool>, String>)> {
     engines
         .iter()
         .map(|e| {
-            let answer = e
-                .compile(exprs)
+            let answer = lang
+                .compile(*e, exprs)
                 .map(|m| m.which(path))
                 .map_err(|why| why.to_string());
             (e.name(), answer)

@@ -2,24 +2,30 @@
 
 use std::fmt;
 
-use lpe::{Lpe, Path};
+use super::language::{Language, RenderMan};
 
 /// Engines that disagree, on a minimized input.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Counterexample {
+pub struct Counterexample<L: Language = RenderMan> {
+    /// The dialect, with what the expressions share (OSL's registered labels).
+    pub lang: L,
     /// The minimized expressions (one for [`check`](super::check())).
-    pub exprs: Vec<Lpe>,
+    pub exprs: Vec<L::Expr>,
     /// The minimized path.
-    pub path: Path,
+    pub path: L::Path,
     /// Each engine's answer per expression on `path`, or why it could not build.
     pub answers: Vec<(&'static str, Result<Vec<bool>, String>)>,
     /// The input before minimization.
-    pub original: (Vec<Lpe>, Path),
+    pub original: (Vec<L::Expr>, L::Path),
 }
 
-impl fmt::Display for Counterexample {
+impl<L: Language> fmt::Display for Counterexample<L> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "engines disagree (minimized):")?;
+        let context = self.lang.context();
+        if !context.is_empty() {
+            writeln!(f, "  {context}")?;
+        }
         for (i, e) in self.exprs.iter().enumerate() {
             writeln!(f, "  expression {i}: {e}")?;
         }

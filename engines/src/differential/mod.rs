@@ -1,8 +1,10 @@
 //! The differential harness: every engine on the same expressions and paths.
 //!
+//! - [`language`]: what the harness needs of a dialect ([`Language`]: compile, shrink), for [`RenderMan`] and [`Osl`] (with its registered labels); everything
+//!   below is written once over it.
 //! - [`check`](mod@check): [`check()`] (one expression), [`check_set`] (an AOV set
-//!   compiled at once) and [`check_with`] (chosen engines) run each engine and compare
-//!   the answers path by path. Agreement comes back with counts (pairs compared, how
+//!   compiled at once), [`check_with`] (chosen engines) and [`check_in`] (any dialect)
+//!   run each engine and compare the answers path by path. Agreement comes back with counts (pairs compared, how
 //!   many matched, which engines could not build); a disagreement comes back as a
 //!   minimized [`Counterexample`].
 //! - [`shrink`]: the minimizer, expression subtrees dropped or simplified, set members
@@ -19,12 +21,14 @@
 pub mod cases;
 pub mod check;
 pub mod counterexample;
+pub mod language;
 pub mod shrink;
 
-pub use cases::{case_rng, generate_case, run_cases, Case, Run, Totals};
-pub use check::{answers_of, check, check_set, check_with, Agreement, Outcome};
+pub use cases::{case_rng, generate_case, generate_osl_case, run_cases, run_osl_cases, Case, Run, Totals};
+pub use check::{answers_in, answers_of, check, check_in, check_set, check_with, Agreement, Outcome};
 pub use counterexample::Counterexample;
-pub use shrink::{minimize, shrink_expr, shrink_path};
+pub use language::{Language, Osl, RenderMan};
+pub use shrink::{minimize, minimize_in, shrink_expr, shrink_path};
 
 #[cfg(test)]
 pub(crate) mod tests {

@@ -1,6 +1,9 @@
 //! The engine registered as `oracle`: light path expressions translated to
 //! `regex-automata` over a fixed-width byte encoding of vertices ([`encode`]), by set
-//! algebra over the finite vertex universe ([`translate`](mod@translate)).
+//! algebra over the finite vertex universe ([`translate`](mod@translate)); OSL
+//! expressions translated over a byte encoding of the path's *symbol stream* ([`osl`]),
+//! a different model from the fast matcher's vertex classes, so the two check each
+//! other.
 //!
 //! One compile builds **one** multi-pattern automaton for the whole set of expressions
 //! (`MatchKind::All`, anchored start, `$` at the end of every pattern); one overlapping
@@ -19,6 +22,7 @@
 //! counts as a skip.
 
 pub mod encode;
+pub mod osl;
 pub mod translate;
 
 use std::cell::RefCell;
@@ -42,7 +46,8 @@ pub enum BuildError {
     TooManyLabels {
         /// Distinct labels the set mentions.
         labels: usize,
-        /// Most the encoding holds ([`encode::MAX_LABELS`]).
+        /// Most the encoding holds ([`encode::MAX_LABELS`], or [`osl::MAX_SYMBOLS`]
+        /// for an OSL set).
         max: usize,
     },
     /// The Thompson NFA is over [`SizeLimits::nfa`] (or otherwise unbuildable).
@@ -130,15 +135,53 @@ enum Searcher {
     Lazy(Box<(hybrid::dfa::DFA, RefCell<hybrid::dfa::Cache>)>),
 }
 
-struct RegexMatcher {
-    labels: Labels,
+/// One multi-pattern automaton over an encoded path, whatever the dialect's encoding:
+/// which patterns match the whole byte string.
+struct Program {
     patterns: usize,
     dfa: Searcher,
+}
+
+impl Program {
+    /// Which patterns match all of `bytes`; `path` only names the input in a panic.
+    fn which(&self, bytes: &[u8], path: &dyn std::fmt::Display) -> Vec<bool> {
+        let input = Input::new(bytes).anchored(Anchored::Yes);
+        let mut set = PatternSet::new(self.patterns);
+        let searched = match &self.dfa {
+            Searcher::Dense(d) => d.try_which_overlapping_matches(&input, &mut set),
+            Searcher::Lazy(lazy) => {
+                let (d, cache) = &**lazy;
+                d.try_which_overlapping_matches(&mut cache.borrow_mut(), &input, &mut set)
+            }
+        };
+        // Neither automaton has quit bytes, and the lazy one never gives up, so a
+        // search error is a bug in this engine's configuration.
+        if let Err(e) = searched {
+            panic!("regex-automata search failed on `{path}`: {e}");
+        }
+        (0..self.patterns)
+            .map(|i| set.contains(regex_automata::PatternID::new_unchecked(i)))
+            .collect()
+    }
+}
+
+struct RegexMatcher {
+    labels: Labels,
+    program: Program,
 }
 
 impl RegexEngine {
     fn build(&self, exprs: &[Lpe]) -> Result<RegexMatcher, BuildError> {
         let (labels, hirs) = translate(exprs)?;
+        Ok(RegexMatcher {
+            labels,
+            program: self.program(&hirs)?,
+        })
+    }
+
+    /// One automaton for all of `hirs` (each anchored at the start by the search and at
+    /// the end by its own `$`).
+    fn program(&self, hirs: &[Hir]) -> Result<Program, BuildError> {
         let nfa: NFA = thompson::Compiler::new()
             .configure(
                 thompson::Config::new()
@@ -146,7 +189,7 @@ impl RegexEngine {
                     .which_captures(WhichCaptures::None)
                     .nfa_size_limit(Some(self.limits.nfa)),
             )
-            .build_many_from_hir(&hirs)
+            .build_many_from_hir(hirs)
             .map_err(|e| BuildError::Nfa(Box::new(e)))?;
         let dense = if self.eager {
             dense::Builder::new()
@@ -168,9 +211,8 @@ impl RegexEngine {
             Err(e) if e.is_size_limit_exceeded() => self.lazy(nfa)?,
             Err(e) => return Err(BuildError::Dfa(Box::new(e))),
         };
-        Ok(RegexMatcher {
-            labels,
-            patterns: exprs.len(),
+        Ok(Program {
+            patterns: hirs.len(),
             dfa,
         })
     }
@@ -200,23 +242,29 @@ impl Matcher for RegexMatcher {
         for v in path.vertices() {
             encode::encode_vertex(&self.labels, v, &mut bytes);
         }
-        let input = Input::new(&bytes).anchored(Anchored::Yes);
-        let mut set = PatternSet::new(self.patterns);
-        let searched = match &self.dfa {
-            Searcher::Dense(d) => d.try_which_overlapping_matches(&input, &mut set),
-            Searcher::Lazy(lazy) => {
-                let (d, cache) = &**lazy;
-                d.try_which_overlapping_matches(&mut cache.borrow_mut(), &input, &mut set)
-            }
-        };
-        // Neither automaton has quit bytes, and the lazy one never gives up, so a
-        // search error is a bug in this engine's configuration.
-        if let Err(e) = searched {
-            panic!("regex-automata search failed on `{path}`: {e}");
-        }
-        (0..self.patterns)
-            .map(|i| set.contains(regex_automata::PatternID::new_unchecked(i)))
-            .collect()
+        self.program.which(&bytes, path)
+    }
+}
+
+/// An OSL set: the symbol interning and the automaton over symbol streams.
+struct OslRegexMatcher {
+    symbols: osl::Symbols,
+    program: Program,
+}
+
+impl Matcher<lpe::osl::Path> for OslRegexMatcher {
+    fn which(&self, path: &lpe::osl::Path) -> Vec<bool> {
+        self.program.which(&self.symbols.encode_path(path), path)
+    }
+}
+
+impl RegexEngine {
+    fn build_osl(&self, exprs: &[lpe::osl::Lpe]) -> Result<OslRegexMatcher, BuildError> {
+        let (symbols, hirs) = osl::translate(exprs)?;
+        Ok(OslRegexMatcher {
+            symbols,
+            program: self.program(&hirs)?,
+        })
     }
 }
 
@@ -227,6 +275,16 @@ impl Engine for RegexEngine {
 
     fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
         Ok(Box::new(self.build(exprs)?))
+    }
+
+    // The registered labels are in the parsed trees (the eaters' exclusions), which is
+    // all the translation interns.
+    fn compile_osl(
+        &self,
+        exprs: &[lpe::osl::Lpe],
+        _: &lpe::osl::Registered,
+    ) -> Result<Box<dyn Matcher<lpe::osl::Path> + '_>, EngineError> {
+        Ok(Box::new(self.build_osl(exprs)?))
     }
 }
 
@@ -242,7 +300,7 @@ mod tests {
 
     /// Whether `engine` built the dense form for `exprs`.
     fn dense(engine: &RegexEngine, exprs: &[Lpe]) -> bool {
-        matches!(engine.build(exprs).unwrap().dfa, Searcher::Dense(_))
+        matches!(engine.build(exprs).unwrap().program.dfa, Searcher::Dense(_))
     }
 
     /// The lazy and the eager automaton's answer, which must be the same.

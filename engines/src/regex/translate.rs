@@ -163,7 +163,8 @@ impl<'a> Translator<'a> {
     }
 }
 
-fn byte_class(bytes: impl IntoIterator<Item = u8>) -> Hir {
+/// The class of exactly these bytes (empty: never matches).
+pub(crate) fn byte_class(bytes: impl IntoIterator<Item = u8>) -> Hir {
     let ranges = bytes.into_iter().map(|b| ClassBytesRange::new(b, b));
     Hir::class(Class::Bytes(ClassBytes::new(ranges)))
 }

@@ -4,12 +4,20 @@
 use lpe::ast::{Atom, EventPos, Expr, Item, LabelPos, Repetition, TypePos};
 use lpe::{Lpe, Path};
 
-use super::check::answers_of;
+use super::check::answers_in;
+use super::language::{Language, RenderMan};
 use crate::engine::Engine;
 
+pub mod osl;
+
 /// Whether at least two engines that build give different answers on `path`.
-fn disagrees(engines: &[&dyn Engine], exprs: &[Lpe], path: &Path) -> bool {
-    let answers: Vec<Vec<bool>> = answers_of(engines, exprs, path)
+fn disagrees<L: Language>(
+    lang: &L,
+    engines: &[&dyn Engine],
+    exprs: &[L::Expr],
+    path: &L::Path,
+) -> bool {
+    let answers: Vec<Vec<bool>> = answers_in(lang, engines, exprs, path)
         .into_iter()
         .filter_map(|(_, a)| a.ok())
         .collect();
@@ -19,9 +27,19 @@ fn disagrees(engines: &[&dyn Engine], exprs: &[Lpe], path: &Path) -> bool {
 /// Most candidate inputs the minimizer tries (each compiles every engine once).
 const MAX_SHRINK_TRIES: usize = 20_000;
 
+/// Greedy minimization of a RenderMan disagreement ([`minimize_in`]).
+pub fn minimize(engines: &[&dyn Engine], exprs: Vec<Lpe>, path: Path) -> (Vec<Lpe>, Path) {
+    minimize_in(&RenderMan, engines, exprs, path)
+}
+
 /// Greedy minimization: take the first simpler input on which the engines still
 /// disagree, and start again from it, until no simpler input disagrees.
-pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) -> (Vec<Lpe>, Path) {
+pub fn minimize_in<L: Language>(
+    lang: &L,
+    engines: &[&dyn Engine],
+    mut exprs: Vec<L::Expr>,
+    mut path: L::Path,
+) -> (Vec<L::Expr>, L::Path) {
     let mut tries = 0;
     'outer: loop {
         // Fewer expressions first: a set of one is easiest to read.
@@ -30,45 +48,33 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
                 let mut fewer = exprs.clone();
                 fewer.remove(i);
                 tries += 1;
-                if disagrees(engines, &fewer, &path) {
+                if disagrees(lang, engines, &fewer, &path) {
                     exprs = fewer;
                     continue 'outer;
                 }
             }
         }
         for i in 0..exprs.len() {
-            for smaller in shrink_expr(&exprs[i].expr) {
+            for smaller in lang.shrink_expr(&exprs[i]) {
                 if tries >= MAX_SHRINK_TRIES {
                     break 'outer;
                 }
                 tries += 1;
                 let mut candidate = exprs.clone();
-                candidate[i] = Lpe {
-                    prefixes: lpe::Prefixes::NONE,
-                    expr: smaller,
-                };
-                if disagrees(engines, &candidate, &path) {
-                    exprs = candidate;
-                    continue 'outer;
-                }
-            }
-            // Prefixes never affect matching; drop them for readability.
-            if !exprs[i].prefixes.is_empty() {
-                let mut candidate = exprs.clone();
-                candidate[i].prefixes = lpe::Prefixes::NONE;
-                if disagrees(engines, &candidate, &path) {
+                candidate[i] = smaller;
+                if disagrees(lang, engines, &candidate, &path) {
                     exprs = candidate;
                     continue 'outer;
                 }
             }
         }
-        let smaller_paths = shrink_path(&path);
+        let smaller_paths = lang.shrink_path(&path);
         for smaller in &smaller_paths {
             if tries >= MAX_SHRINK_TRIES {
                 break 'outer;
             }
             tries += 1;
-            if disagrees(engines, &exprs, smaller) {
+            if disagrees(lang, engines, &exprs, smaller) {
                 path = smaller.clone();
                 continue 'outer;
             }
@@ -76,15 +82,15 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
         // Joint steps: dropping an atom often needs the vertex it matched dropped too
         // (`C.'a'L` on `C RD RD'b' L` -> `C'a'L` on `C RD'b' L`).
         for i in 0..exprs.len() {
-            for smaller in shrink_expr(&exprs[i].expr) {
+            for smaller in lang.shrink_expr(&exprs[i]) {
                 for smaller_path in &smaller_paths {
                     if tries >= MAX_SHRINK_TRIES {
                         break 'outer;
                     }
                     tries += 1;
                     let mut candidate = exprs.clone();
-                    candidate[i].expr = smaller.clone();
-                    if disagrees(engines, &candidate, smaller_path) {
+                    candidate[i] = smaller.clone();
+                    if disagrees(lang, engines, &candidate, smaller_path) {
                         exprs = candidate;
                         path = smaller_path.clone();
                         continue 'outer;

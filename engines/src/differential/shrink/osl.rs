@@ -1,0 +1,138 @@
+//! One-step simplifications of OSL expressions and paths, for the minimizer.
+//!
+//! A vertex pattern keeps OSL's eater rule while it shrinks (an eater, excluding the
+//! basic labels, exactly when it has fewer than five custom items), so every candidate
+//! is something the parser could have produced and its printed text means the same.
+
+use lpe::ast::Repetition;
+use lpe::osl::{Expr, Path, Symbol, SymbolPattern, VertexPattern};
+
+/// Custom items from which a vertex pattern has no eater (OSL's rule).
+const NO_EATER_FROM: usize = 5;
+
+/// Simpler paths: one vertex dropped, or one custom label of a vertex dropped.
+pub fn shrink_path(path: &Path) -> Vec<Path> {
+    let v = &path.vertices;
+    let mut out = Vec::new();
+    if v.len() > 1 {
+        for i in 0..v.len() {
+            let mut w = v.clone();
+            w.remove(i);
+            out.push(Path::new(w));
+        }
+    }
+    for (i, vertex) in v.iter().enumerate() {
+        for j in 2..vertex.symbols.len() {
+            let mut w = v.clone();
+            w[i].symbols.remove(j);
+            out.push(Path::new(w));
+        }
+    }
+    out
+}
+
+/// One-step simplifications of an expression, whole subtrees first; `basic` is the
+/// eater's exclusion list (the registration's basic labels). Every candidate has
+/// fewer nodes, fewer slots, looser slots or smaller counts, so shrinking terminates.
+pub fn shrink_expr(e: &Expr, basic: &[Symbol]) -> Vec<Expr> {
+    let mut out = Vec::new();
+    match e {
+        Expr::Vertex(v) => out.extend(shrink_vertex(v, basic).into_iter().map(Expr::Vertex)),
+        Expr::Concat(es) | Expr::Alt(es) => {
+            let rebuild = |mut parts: Vec<Expr>| match (parts.len(), e) {
+                (1, _) => parts.pop().expect("one part"),
+                (_, Expr::Concat(_)) => Expr::Concat(parts),
+                _ => Expr::Alt(parts),
+            };
+            out.extend(es.iter().cloned());
+            for i in 0..es.len() {
+                let mut fewer = es.clone();
+                fewer.remove(i);
+                out.push(rebuild(fewer));
+            }
+            for i in 0..es.len() {
+                for smaller in shrink_expr(&es[i], basic) {
+                    let mut parts = es.clone();
+                    parts[i] = smaller;
+                    out.push(rebuild(parts));
+                }
+            }
+        }
+        Expr::Repeat(body, r) => {
+            out.push((**body).clone());
+            for r2 in shrink_repetition(*r) {
+                out.push(Expr::Repeat(body.clone(), r2));
+            }
+            for smaller in shrink_expr(body, basic) {
+                out.push(Expr::Repeat(Box::new(smaller), *r));
+            }
+        }
+        Expr::Empty | Expr::Nothing => {}
+    }
+    out
+}
+
+fn shrink_repetition(r: Repetition) -> Vec<Repetition> {
+    let mut out = Vec::new();
+    if r.min > 0 {
+        out.push(Repetition { min: 0, max: r.max });
+        out.push(Repetition {
+            min: r.min - 1,
+            max: r.max,
+        });
+    }
+    if let Some(m) = r.max {
+        if m > r.min {
+            out.push(Repetition {
+                min: r.min,
+                max: Some(r.min),
+            });
+        }
+    }
+    out.retain(|x| *x != r && x.max != Some(0));
+    out
+}
+
+fn shrink_vertex(v: &VertexPattern, basic: &[Symbol]) -> Vec<VertexPattern> {
+    let mut out = Vec::new();
+    let with = |symbols: Vec<SymbolPattern>| VertexPattern {
+        eater: (symbols.len() - 2 < NO_EATER_FROM).then(|| basic.to_vec()),
+        symbols,
+    };
+    // A custom item dropped.
+    for i in 2..v.symbols.len() {
+        let mut s = v.symbols.clone();
+        s.remove(i);
+        out.push(with(s));
+    }
+    // One slot loosened: to `.`, or one listed symbol fewer.
+    for (i, p) in v.symbols.iter().enumerate() {
+        let mut looser = Vec::new();
+        match p {
+            SymbolPattern::Any => {}
+            SymbolPattern::One(_) => looser.push(SymbolPattern::Any),
+            SymbolPattern::Set(xs) | SymbolPattern::NotIn(xs) => {
+                looser.push(SymbolPattern::Any);
+                if xs.len() > 1 {
+                    for j in 0..xs.len() {
+                        let mut fewer = xs.clone();
+                        fewer.remove(j);
+                        looser.push(match p {
+                            SymbolPattern::Set(_) => SymbolPattern::Set(fewer),
+                            _ => SymbolPattern::NotIn(fewer),
+                        });
+                    }
+                }
+            }
+        }
+        for l in looser {
+            let mut s = v.symbols.clone();
+            s[i] = l;
+            out.push(VertexPattern {
+                symbols: s,
+                eater: v.eater.clone(),
+            });
+        }
+    }
+    out
+}
