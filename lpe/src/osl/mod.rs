@@ -1,0 +1,21 @@
+//! The OSL-dialect front end: Open Shading Language's light path expressions (the dialect
+//! Arnold, Karma, MoonRay and appleseed derive from), parsed into their own tree and
+//! compiled into the same [`crate::AovSet`] automata as RenderMan's.
+//!
+//! An OSL path is a stream of interned symbols: per vertex an event label, a scattering
+//! label (or NONE), zero or more custom labels, then an implied STOP. The alphabet is open
+//! (any string is a label), and the labels a renderer registers ([`Registered`]) change
+//! how expressions match. docs/language.md's OSL chapter specifies the dialect and lists
+//! where this front end differs from OSL's code (where OSL crashes or truncates).
+//!
+//! - [`symbol`]: [`Symbol`], the built-in labels, [`Registered`];
+//! - [`path`]: [`Vertex`], [`Path`] and their text notation;
+//! - [`ast`]: the expanded tree ([`Expr`] of [`VertexPattern`]s) and [`Lpe`].
+
+pub mod ast;
+pub mod path;
+pub mod symbol;
+
+pub use ast::{Expr, Lpe, SymbolPattern, VertexPattern, Warning, WarningKind};
+pub use path::{Path, PathError, PathErrorKind, Vertex};
+pub use symbol::{LabelKind, Registered, RegisteredError, Symbol};
