@@ -10,12 +10,19 @@
 //!
 //! - [`symbol`]: [`Symbol`], the built-in labels, [`Registered`];
 //! - [`path`]: [`Vertex`], [`Path`] and their text notation;
-//! - [`ast`]: the expanded tree ([`Expr`] of [`VertexPattern`]s) and [`Lpe`].
+//! - [`ast`]: the expanded tree ([`Expr`] of [`VertexPattern`]s) and [`Lpe`];
+//! - [`parse`]: the parser, with OSL's error messages ([`Error`]).
 
 pub mod ast;
+mod error;
+mod parse;
+#[cfg(test)]
+mod parse_tests;
 pub mod path;
 pub mod symbol;
 
 pub use ast::{Expr, Lpe, SymbolPattern, VertexPattern, Warning, WarningKind};
+pub use error::{Error, ErrorKind};
+pub use parse::{parse, parse_with};
 pub use path::{Path, PathError, PathErrorKind, Vertex};
 pub use symbol::{LabelKind, Registered, RegisteredError, Symbol};
