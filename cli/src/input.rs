@@ -77,3 +77,9 @@ pub fn load_parser(ini: Option<&std::path::Path>) -> Result<lpe::Parser, InputEr
             error,
         })
 }
+
+/// An OSL parse error with the expression and a caret under the byte it points at.
+pub fn osl_error(src: &str, e: &lpe::osl::Error) -> String {
+    let col = src.get(..e.pos).map_or(e.pos, |s| s.chars().count());
+    format!("error: {e}\n  {src}\n  {}^", " ".repeat(col))
+}

@@ -4,11 +4,17 @@
 //! compiled at once) and `--paths` paths generated *from* it; see
 //! `engines::differential::cases`. Every engine answers; the first disagreements are
 //! minimized and printed, and the process exits 3.
+//!
+//! `--dialect osl` generates OSL cases instead: each with its own registration (often
+//! none, else some user event and scattering labels), expressions of up to
+//! `--max-size` vertex patterns, and paths over their labels, NONE, `_`, registered and
+//! unmentioned labels.
 
 use std::process::ExitCode;
 use std::time::Instant;
 
-use engines::differential::{run_cases, Run};
+use engines::differential::{run_cases, run_osl_cases, Language, Run, Totals};
+use lpe::Dialect;
 
 use crate::input::{bad_input, select_engines};
 
@@ -24,7 +30,7 @@ pub struct Args {
     /// Index of the first case (to regenerate one case of a run).
     #[arg(long, default_value_t = 0)]
     pub first: u64,
-    /// Most atoms in one generated expression.
+    /// Most atoms (OSL: vertex patterns) in one generated expression.
     #[arg(long, default_value_t = 10)]
     pub max_size: usize,
     /// Paths generated per case.
@@ -36,6 +42,9 @@ pub struct Args {
     /// Stop after this many disagreements.
     #[arg(long, default_value_t = 3)]
     pub max_failures: usize,
+    /// The expression language: `renderman` or `osl`.
+    #[arg(long, default_value_t = Dialect::RenderMan)]
+    pub dialect: Dialect,
 }
 
 impl Args {
@@ -64,10 +73,18 @@ pub fn run(args: Args) -> ExitCode {
     }
     let names: Vec<&str> = engines.iter().map(|e| e.name()).collect();
     let start = Instant::now();
-    let t = run_cases(&args.run(), &engines);
+    match args.dialect {
+        Dialect::RenderMan => report(&args, &names, run_cases(&args.run(), &engines), start),
+        Dialect::Osl => report(&args, &names, run_osl_cases(&args.run(), &engines), start),
+    }
+}
+
+/// Prints a run's totals and disagreements; the exit code.
+fn report<L: Language>(args: &Args, names: &[&str], t: Totals<L>, start: Instant) -> ExitCode {
     let secs = start.elapsed().as_secs_f64().max(1e-9);
     println!(
-        "engines: {}; seed {}, cases {}..{}, max size {}, {} paths per case",
+        "{} dialect, engines: {}; seed {}, cases {}..{}, max size {}, {} paths per case",
+        args.dialect,
         names.join(", "),
         args.seed,
         args.first,
@@ -110,8 +127,8 @@ pub fn run(args: Args) -> ExitCode {
     }
     for (index, c) in &t.failures {
         println!(
-            "\ncase {index} (regenerate: lpe-check diff --seed {} --first {index} --cases 1 --max-size {} --paths {}):\n{c}",
-            args.seed, args.max_size, args.paths
+            "\ncase {index} (regenerate: lpe-check diff --dialect {} --seed {} --first {index} --cases 1 --max-size {} --paths {}):\n{c}",
+            args.dialect, args.seed, args.max_size, args.paths
         );
     }
     ExitCode::from(3)

@@ -5,12 +5,15 @@
 //! `match`, `no-match`, `error: <message>`, or `disagree: <engine=answer ...>` when
 //! engines differ (the process then exits 3 at the end). Blank lines and `#` comments
 //! are echoed as they are.
+//!
+//! `--dialect osl` reads OSL expressions and paths instead ([`super::match_osl`]).
 
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
 
-use lpe::{Lpe, Parser, Path};
+use lpe::{Dialect, Lpe, Parser, Path};
 
+use engines::differential::{Language, RenderMan};
 use engines::Engine;
 
 use crate::input::{bad_input, load_parser, select_engines};
@@ -24,6 +27,12 @@ pub struct Args {
     /// Engine to run: a name or `all`.
     #[arg(long, default_value = "all")]
     pub engine: String,
+    /// The expression language: `renderman` or `osl`.
+    #[arg(long, default_value_t = Dialect::RenderMan)]
+    pub dialect: Dialect,
+    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
+    #[arg(long, conflicts_with = "batch")]
+    pub register: Option<String>,
     /// A rendermn.ini-style file with user macros and lobe mappings.
     #[arg(long)]
     pub ini: Option<std::path::PathBuf>,
@@ -68,10 +77,20 @@ impl std::fmt::Display for Verdict {
 /// Runs every engine on one expression and path. An engine that cannot build the
 /// expression is reported but does not count as disagreeing.
 pub fn verdict(engines: &[&dyn Engine], lpe: &Lpe, path: &Path) -> Verdict {
+    verdict_in(&RenderMan, engines, lpe, path)
+}
+
+/// [`verdict`] in any dialect.
+pub fn verdict_in<L: Language>(
+    lang: &L,
+    engines: &[&dyn Engine],
+    lpe: &L::Expr,
+    path: &L::Path,
+) -> Verdict {
     let mut answers = Vec::new();
     let mut skips = Vec::new();
     for e in engines {
-        match e.compile(std::slice::from_ref(lpe)) {
+        match lang.compile(*e, std::slice::from_ref(lpe)) {
             Ok(m) => answers.push((e.name(), m.which(path)[0])),
             Err(why) => skips.push((e.name(), format!("skip({why})"))),
         }
@@ -129,56 +148,87 @@ pub fn run(args: Args) -> ExitCode {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),
     };
+    if args.dialect == Dialect::Osl {
+        return super::match_osl::run(&args, &engines);
+    }
+    if args.register.is_some() {
+        return bad_input("error: --register is for --dialect osl");
+    }
     let parser = match load_parser(args.ini.as_deref()) {
         Ok(p) => p,
         Err(e) => return bad_input(format!("error: {e}")),
     };
+    if args.batch {
+        return batch(|line| batch_line(&parser, &engines, line));
+    }
+    let lpe = match parser.parse(args.expr.as_deref().unwrap_or_default()) {
+        Ok(l) => l,
+        Err(e) => return bad_input(e),
+    };
+    answer_paths(&args.paths, "C RD L", |text| {
+        let p = text.parse::<Path>().map_err(|e| e.to_string())?;
+        Ok(verdict(&engines, &lpe, &p))
+    })
+}
+
+/// Answers stdin line by line with `answer`, echoing blank and `#` lines: exit 3 if any
+/// line was a disagreement, 2 if stdin or stdout failed.
+pub fn batch(mut answer: impl FnMut(&str) -> LineOutcome) -> ExitCode {
     let mut disagreed = false;
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
-    if args.batch {
-        for line in std::io::stdin().lock().lines() {
-            let line = match line {
-                Ok(l) => l,
-                Err(e) => return bad_input(format!("error: reading stdin: {e}")),
-            };
-            let trimmed = line.trim();
-            let answer = if trimmed.is_empty() || trimmed.starts_with('#') {
-                line.clone()
-            } else {
-                let v = batch_line(&parser, &engines, &line);
-                disagreed |= matches!(v, LineOutcome::Ran(Verdict::Disagree(_)));
-                v.to_string()
-            };
-            if writeln!(out, "{answer}").is_err() {
-                return ExitCode::from(2);
-            }
-        }
-    } else {
-        let expr = args.expr.unwrap_or_default();
-        let lpe = match parser.parse(&expr) {
+    for line in std::io::stdin().lock().lines() {
+        let line = match line {
             Ok(l) => l,
-            Err(e) => return bad_input(e),
+            Err(e) => return bad_input(format!("error: reading stdin: {e}")),
         };
-        if args.paths.is_empty() {
-            eprintln!("error: give at least one path after the expression, e.g. \"C RD L\"");
+        let trimmed = line.trim();
+        let shown = if trimmed.is_empty() || trimmed.starts_with('#') {
+            line.clone()
+        } else {
+            let v = answer(&line);
+            disagreed |= matches!(v, LineOutcome::Ran(Verdict::Disagree(_)));
+            v.to_string()
+        };
+        if writeln!(out, "{shown}").is_err() {
             return ExitCode::from(2);
         }
-        for text in &args.paths {
-            let v = match text.parse::<Path>() {
-                Ok(p) => verdict(&engines, &lpe, &p).to_string(),
-                Err(e) => {
-                    let _ = out.flush();
-                    eprintln!("error: path `{text}`: {e}");
-                    return ExitCode::from(2);
-                }
-            };
-            disagreed |= v.starts_with("disagree");
-            if writeln!(out, "{v}").is_err() {
-                return ExitCode::from(2);
+    }
+    finish(out, disagreed)
+}
+
+/// Prints `answer`'s verdict for each path text: exit 2 at the first path that does not
+/// parse (`answer` gives the message), 3 if any verdict was a disagreement.
+pub fn answer_paths(
+    paths: &[String],
+    example: &str,
+    mut answer: impl FnMut(&str) -> Result<Verdict, String>,
+) -> ExitCode {
+    if paths.is_empty() {
+        return bad_input(format!(
+            "error: give at least one path after the expression, e.g. \"{example}\""
+        ));
+    }
+    let mut disagreed = false;
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    for text in paths {
+        let v = match answer(text) {
+            Ok(v) => v,
+            Err(e) => {
+                let _ = out.flush();
+                return bad_input(format!("error: path `{text}`: {e}"));
             }
+        };
+        disagreed |= matches!(v, Verdict::Disagree(_));
+        if writeln!(out, "{v}").is_err() {
+            return ExitCode::from(2);
         }
     }
+    finish(out, disagreed)
+}
+
+fn finish(mut out: impl Write, disagreed: bool) -> ExitCode {
     let _ = out.flush();
     if disagreed {
         ExitCode::from(3)

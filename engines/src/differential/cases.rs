@@ -9,19 +9,22 @@
 
 use lpe::generate::{self, Choices, Config};
 use lpe::rng::SplitMix64 as Rng;
-use lpe::{Lpe, Path};
+use lpe::Lpe;
 
-use super::check::{check_with, Outcome};
+use super::check::{check_in, Outcome};
 use super::counterexample::Counterexample;
+use super::language::{Language, Osl, RenderMan};
 use crate::engine::Engine;
 
 /// One generated case.
 #[derive(Clone, Debug)]
-pub struct Case {
+pub struct Case<L: Language = RenderMan> {
+    /// The dialect and what the expressions share (OSL's registered labels).
+    pub lang: L,
     /// The expressions (one, or an AOV set).
-    pub exprs: Vec<Lpe>,
+    pub exprs: Vec<L::Expr>,
     /// Paths aimed at the expressions.
-    pub paths: Vec<Path>,
+    pub paths: Vec<L::Path>,
 }
 
 /// The PRNG of case `index` under `seed`: independent streams per case.
@@ -30,10 +33,19 @@ pub fn case_rng(seed: u64, index: u64) -> Rng {
     Rng::new(mix.next_u64() ^ index.wrapping_mul(0xD1B5_4A32_D192_ED03))
 }
 
+/// How many expressions a case compiles at once: one time in five an AOV set of 2-5.
+fn set_size(rng: &mut Rng) -> usize {
+    if rng.chance(20) {
+        2 + rng.below(4)
+    } else {
+        1
+    }
+}
+
 /// Generates case `index` of `seed`.
 pub fn generate_case(seed: u64, index: u64, cfg: &Config, paths: usize) -> Case {
     let mut rng = case_rng(seed, index);
-    let n = if rng.chance(20) { 2 + rng.below(4) } else { 1 };
+    let n = set_size(&mut rng);
     let exprs: Vec<Lpe> = (0..n).map(|_| generate::lpe(&mut rng, cfg)).collect();
     let paths = (0..paths)
         .map(|_| {
@@ -41,12 +53,43 @@ pub fn generate_case(seed: u64, index: u64, cfg: &Config, paths: usize) -> Case 
             generate::biased_path(target, &mut rng, cfg)
         })
         .collect();
-    Case { exprs, paths }
+    Case {
+        lang: RenderMan,
+        exprs,
+        paths,
+    }
+}
+
+/// Generates OSL case `index` of `seed`: a registration, then expressions and paths as
+/// for RenderMan.
+pub fn generate_osl_case(
+    seed: u64,
+    index: u64,
+    cfg: &generate::osl::Config,
+    paths: usize,
+) -> Case<Osl> {
+    let mut rng = case_rng(seed, index);
+    let registered = generate::osl::registered(&mut rng);
+    let n = set_size(&mut rng);
+    let exprs: Vec<lpe::osl::Lpe> = (0..n)
+        .map(|_| generate::osl::lpe(&mut rng, &registered, cfg))
+        .collect();
+    let paths = (0..paths)
+        .map(|_| {
+            let target = &rng.pick(&exprs).expr;
+            generate::osl::biased_path(target, &mut rng, &registered, cfg)
+        })
+        .collect();
+    Case {
+        lang: Osl { registered },
+        exprs,
+        paths,
+    }
 }
 
 /// Totals of a run.
-#[derive(Debug, Default)]
-pub struct Totals {
+#[derive(Debug)]
+pub struct Totals<L: Language = RenderMan> {
     /// Cases run.
     pub cases: u64,
     /// Expression/path pairs compared.
@@ -58,7 +101,21 @@ pub struct Totals {
     /// Cases where fewer than two engines could build (nothing compared).
     pub uncompared: u64,
     /// Minimized disagreements.
-    pub failures: Vec<(u64, Counterexample)>,
+    pub failures: Vec<(u64, Counterexample<L>)>,
+}
+
+// By hand: a derive would ask `L: Default`, which a dialect with context need not be.
+impl<L: Language> Default for Totals<L> {
+    fn default() -> Self {
+        Totals {
+            cases: 0,
+            pairs: 0,
+            matched: 0,
+            skips: Vec::new(),
+            uncompared: 0,
+            failures: Vec::new(),
+        }
+    }
 }
 
 /// Which cases a run generates, and when it stops.
@@ -70,7 +127,7 @@ pub struct Run {
     pub seed: u64,
     /// Index of the first case (to regenerate one case of a run).
     pub first: u64,
-    /// Most atoms in one generated expression.
+    /// Most atoms (OSL: vertex patterns) in one generated expression.
     pub max_size: usize,
     /// Paths generated per case.
     pub paths: usize,
@@ -78,12 +135,31 @@ pub struct Run {
     pub max_failures: usize,
 }
 
-/// Runs cases `first..first + cases` and returns the totals.
+/// Runs RenderMan cases `first..first + cases` and returns the totals.
 pub fn run_cases(args: &Run, engines: &[&dyn Engine]) -> Totals {
     let cfg = Config::default().with_max_atoms(args.max_size);
+    run_generated(args, engines, |index| {
+        generate_case(args.seed, index, &cfg, args.paths)
+    })
+}
+
+/// Runs OSL cases `first..first + cases` and returns the totals.
+pub fn run_osl_cases(args: &Run, engines: &[&dyn Engine]) -> Totals<Osl> {
+    let cfg = generate::osl::Config::default().with_max_vertices(args.max_size);
+    run_generated(args, engines, |index| {
+        generate_osl_case(args.seed, index, &cfg, args.paths)
+    })
+}
+
+/// Runs the cases `generate` makes for indices `first..first + cases`.
+fn run_generated<L: Language>(
+    args: &Run,
+    engines: &[&dyn Engine],
+    mut generate: impl FnMut(u64) -> Case<L>,
+) -> Totals<L> {
     let mut t = Totals::default();
     for index in args.first..args.first.saturating_add(args.cases) {
-        let case = generate_case(args.seed, index, &cfg, args.paths);
+        let case = generate(index);
         t.cases += 1;
         // Long runs report progress on stderr every tenth, so stdout stays the summary.
         if args.cases >= 10_000 && t.cases % (args.cases / 10) == 0 {
@@ -94,7 +170,7 @@ pub fn run_cases(args: &Run, engines: &[&dyn Engine]) -> Totals {
                 t.failures.len()
             );
         }
-        match check_with(engines, &case.exprs, &case.paths) {
+        match check_in(&case.lang, engines, &case.exprs, &case.paths) {
             Outcome::Agree(a) => {
                 t.pairs += a.pairs as u64;
                 t.matched += a.matched as u64;
@@ -161,5 +237,37 @@ mod tests {
         );
         let rate = t.matched as f64 / t.pairs as f64;
         assert!((0.2..=0.8).contains(&rate), "match rate {rate}");
+    }
+
+    #[test]
+    fn a_small_osl_run_agrees_with_a_useful_match_rate() {
+        let args = Run {
+            cases: 400,
+            seed: 1,
+            first: 0,
+            max_size: 8,
+            paths: 4,
+            max_failures: 1,
+        };
+        let t = run_osl_cases(&args, &[&crate::Reference, &crate::regex::LAZY]);
+        if let Some((i, c)) = t.failures.first() {
+            panic!("case {i}:\n{c}");
+        }
+        assert_eq!(t.uncompared, 0);
+        assert!(t.skips.is_empty(), "{:?}", t.skips);
+        let rate = t.matched as f64 / t.pairs as f64;
+        assert!((0.2..=0.8).contains(&rate), "match rate {rate}");
+    }
+
+    #[test]
+    fn osl_cases_are_deterministic_and_vary_the_registration() {
+        let cfg = generate::osl::Config::default();
+        let a = generate_osl_case(5, 17, &cfg, 4);
+        let b = generate_osl_case(5, 17, &cfg, 4);
+        assert_eq!((&a.lang, &a.exprs, &a.paths), (&b.lang, &b.exprs, &b.paths));
+        let regs: std::collections::HashSet<String> = (0..50)
+            .map(|i| generate_osl_case(5, i, &cfg, 1).lang.registered.to_string())
+            .collect();
+        assert!(regs.contains("-") && regs.len() > 3, "{regs:?}");
     }
 }
