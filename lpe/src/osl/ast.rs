@@ -63,10 +63,11 @@ pub struct VertexPattern {
 }
 
 impl VertexPattern {
-    /// Whether the pattern accepts the vertex of `symbols`.
+    /// Whether the pattern accepts the vertex of `symbols`. A vertex of fewer than two
+    /// symbols is never accepted (in OSL the event and scattering slots exclude STOP).
     pub fn accepts(&self, symbols: &[Symbol]) -> bool {
         let k = self.symbols.len();
-        symbols.len() >= k
+        symbols.len() >= k.max(2)
             && self.symbols.iter().zip(symbols).all(|(p, s)| p.accepts(s))
             && match &self.eater {
                 None => symbols.len() == k,
@@ -301,6 +302,12 @@ mod tests {
         assert!(exact.accepts(&[lbl("R"), lbl("G")]));
         assert!(!exact.accepts(&[lbl("R"), lbl("G"), lbl("foo")]));
         assert!(!SymbolPattern::Set(vec![]).accepts(&Symbol::None));
+        let short = VertexPattern {
+            symbols: vec![SymbolPattern::Any],
+            eater: Some(vec![]),
+        };
+        assert!(!short.accepts(&[lbl("R")]));
+        assert!(short.accepts(&[lbl("R"), lbl("D")]));
     }
 
     #[test]

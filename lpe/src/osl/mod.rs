@@ -14,6 +14,8 @@
 //! - [`parse`]: the parser, with OSL's error messages ([`Error`]).
 
 pub mod ast;
+mod classes;
+mod compile;
 mod error;
 mod parse;
 #[cfg(test)]
@@ -22,6 +24,8 @@ pub mod path;
 pub mod symbol;
 
 pub use ast::{Expr, Lpe, SymbolPattern, VertexPattern, Warning, WarningKind};
+pub use classes::MAX_VERTEX_STATES;
+pub(crate) use compile::Compiled;
 pub use error::{Error, ErrorKind};
 pub use parse::{parse, parse_with};
 pub use path::{Path, PathError, PathErrorKind, Vertex};
