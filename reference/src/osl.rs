@@ -218,3 +218,92 @@ pub fn is_expr_match(expr: &Expr, path: &Path) -> bool {
     let end = m.stream.len();
     m.ends(root, 0).contains(&end)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use lpe::osl::{parse, Registered};
+
+    fn m_reg(expr: &str, reg: &str, path: &str) -> bool {
+        let reg: Registered = reg.parse().unwrap();
+        let lpe = parse(expr, &reg).unwrap_or_else(|e| panic!("{expr}: {e}"));
+        is_match(&lpe, &path.parse().unwrap())
+    }
+
+    fn m(expr: &str, path: &str) -> bool {
+        m_reg(expr, "-", path)
+    }
+
+    // Expected values are the facts of docs/language.md's OSL chapter, written by hand.
+    #[test]
+    fn vertex_patterns_and_the_eater() {
+        assert!(m("C.L", "C,_ R,D L,_"));
+        assert!(m("C.*L", "C,_ L,_"));
+        assert!(!m("C.+L", "C,_ L,_"));
+        // The eater skips custom labels that are not basic labels.
+        assert!(m("CRL", "C,_ R,D,foo,bar L,_"));
+        assert!(!m("CRL", "C,_ R,D,D L,_"), "a basic label is never eaten");
+        assert!(m("CRL", "C,_ R,D,U L,_"));
+        assert!(!m_reg("CRL", "events=U", "C,_ R,D,U L,_"), "registered: basic");
+        // A vertex of one symbol matches nothing, not even `.`.
+        assert!(!m("C.L", "C,_ R L,_"));
+        // `'foo'` must be the first custom label.
+        assert!(m("C'foo'L", "C,_ R,D,foo,bar L,_"));
+        assert!(!m("C'foo'L", "C,_ R,D,bar,foo L,_"));
+        // The quoted negation needs a custom label, and accepts a basic one.
+        assert!(m("C[^'foo']L", "C,_ R,D,D L,_"));
+        assert!(!m("C[^'foo']L", "C,_ R,D L,_"));
+        assert!(!m("C[^'foo']L", "C,_ R,D,foo L,_"));
+    }
+
+    #[test]
+    fn none_negation_and_slots() {
+        assert!(m("C[^D]L", "C,_ R,~ L,_"));
+        assert!(m("C[^D]L", "C,_ R,G L,_"));
+        assert!(!m("C[^D]L", "C,_ R,D L,_"));
+        assert!(m("<Cx>L", "C,~ L,_"));
+        assert!(!m("<Cx>L", "C,_ L,_"));
+        // No check that a letter sits in its usual slot.
+        assert!(m("C<DR>L", "C,_ D,R L,_"));
+        assert!(!m("C<DR>L", "C,_ R,D L,_"));
+        // A group in a slot is a sequence of symbols, then one more slot.
+        assert!(m("C<(RD)>L", "C,_ R,D,x L,_"));
+        assert!(!m("C<(RD)>L", "C,_ R,D L,_"));
+        // Five custom items: no eater, the vertex has exactly those labels.
+        assert!(m("C<RDabcde>L", "C,_ R,D,a,b,c,d,e L,_"));
+        assert!(!m("C<RDabcde>L", "C,_ R,D,a,b,c,d,e,f L,_"));
+        assert!(m("C<RDabcd>L", "C,_ R,D,a,b,c,d,f L,_"));
+    }
+
+    #[test]
+    fn operators() {
+        // `|` binds tighter than concatenation.
+        assert!(m("CD|GL", "C,_ R,G L,_"));
+        assert!(m("CD*|GL", "C,_ R,D R,D L,_"));
+        assert!(m("C.{0,1}L", "C,_ L,_"));
+        assert!(m("C.{2,3}L", "C,_ T,S T,S T,S L,_"));
+        assert!(!m("C.{2,3}L", "C,_ T,S T,S T,S T,S L,_"));
+        assert!(m("C.{2,}L", "C,_ T,S T,S T,S T,S L,_"));
+        assert!(!m("C.{2,}L", "C,_ T,S L,_"));
+        assert!(!m("C[]L", "C,_ L,_"));
+        assert!(m("C[C*]L", "C,_ C,D C,D L,_"));
+    }
+
+    #[test]
+    fn large_counts_do_not_iterate_one_by_one() {
+        // Over the parser's count limit, so built by hand: C (.*){10^6} L and C .{10^6} L.
+        let none = Registered::none();
+        let vertex = |s: &str| parse(s, &none).unwrap().expr;
+        let count = |body: Expr| {
+            let r = Repetition {
+                min: 1_000_000,
+                max: Some(1_000_000),
+            };
+            Expr::Concat(vec![vertex("C"), Expr::Repeat(Box::new(body), r), vertex("L")])
+        };
+        let path: Path = "C,_ R,D L,_".parse().unwrap();
+        let star = Expr::Repeat(Box::new(vertex(".")), Repetition { min: 0, max: None });
+        assert!(is_expr_match(&count(star), &path));
+        assert!(!is_expr_match(&count(vertex(".")), &path));
+    }
+}

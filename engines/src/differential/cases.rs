@@ -249,7 +249,7 @@ mod tests {
             paths: 4,
             max_failures: 1,
         };
-        let t = run_osl_cases(&args, &[&crate::Reference, &crate::regex::LAZY]);
+        let t = run_osl_cases(&args, &crate::registry::all());
         if let Some((i, c)) = t.failures.first() {
             panic!("case {i}:\n{c}");
         }
