@@ -215,7 +215,8 @@ impl AovSet {
 
     /// Compiles OSL-dialect expressions (parsed with [`osl::parse`] under `registered`)
     /// into a set stepped exactly like a RenderMan one, on OSL vertex classes
-    /// ([`AovSet::classify_osl`]).
+    /// ([`AovSet::classify_osl`]). The eager DFA is attempted within the smaller of
+    /// [`Options::dfa_budget`] and [`osl::DFA_ATTEMPT_BUDGET`].
     ///
     /// ```
     /// use lpe::osl::{self, Registered};
@@ -243,7 +244,14 @@ impl AovSet {
         let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
         let (compiled, nfa, warnings) = osl::Compiled::build(aovs, &names, registered, opts)?;
         let nfa_positions = nfa.positions;
-        let engine = Self::engine(nfa, compiled.class_count(), opts)?;
+        // OSL sets have several times RenderMan's classes, so a blow-up reaches a large
+        // budget slowly (OSL's own ReDoS expression: a second for 16 MiB): attempt the
+        // eager DFA within a smaller budget, and step the NFA past it.
+        let attempt = Options {
+            dfa_budget: opts.dfa_budget.min(osl::DFA_ATTEMPT_BUDGET),
+            ..opts.clone()
+        };
+        let engine = Self::engine(nfa, compiled.class_count(), &attempt)?;
         Ok(AovSet {
             names,
             lpes: Vec::new(),

@@ -25,6 +25,11 @@ pub mod symbol;
 
 pub use ast::{Expr, Lpe, SymbolPattern, VertexPattern, Warning, WarningKind};
 pub use classes::MAX_VERTEX_STATES;
+
+/// Most bytes an OSL set's eager DFA may take (see [`crate::AovSet::compile_osl`]): about
+/// 3 000 states at OSL's typical 33-64 classes, far above what real AOV sets need (the
+/// OSL basic set: 16 states), while a blow-up gives up within milliseconds.
+pub const DFA_ATTEMPT_BUDGET: usize = 1 << 20;
 pub(crate) use compile::Compiled;
 pub use error::{Error, ErrorKind};
 pub use parse::{parse, parse_with};
