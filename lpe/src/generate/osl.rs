@@ -176,14 +176,27 @@ fn expr_sized(c: &mut impl Choices, reg: &Registered, depth: usize, budget: usiz
             .map(|_| expr_sized(c, reg, depth - 1, budget / n))
             .collect();
         if c.chance(60) {
-            Expr::Concat(parts)
+            Expr::Concat(flatten(parts, |e| matches!(e, Expr::Concat(_))))
         } else {
-            Expr::Alt(parts)
+            Expr::Alt(flatten(parts, |e| matches!(e, Expr::Alt(_))))
         }
     } else {
         let body = expr_sized(c, reg, depth - 1, budget - 1);
         Expr::Repeat(Box::new(body), repetition(c))
     }
+}
+
+/// `parts` with every part of the same kind (`same`) replaced by its own parts, as the
+/// parser builds them (`(a|b)|c` is one alternation of three).
+fn flatten(parts: Vec<Expr>, same: impl Fn(&Expr) -> bool) -> Vec<Expr> {
+    let mut out = Vec::new();
+    for p in parts {
+        match p {
+            Expr::Concat(inner) | Expr::Alt(inner) if same(&p) => out.extend(inner),
+            p => out.push(p),
+        }
+    }
+    out
 }
 
 /// A random expression.

@@ -195,7 +195,15 @@ impl fmt::Display for SymbolPattern {
                 match x {
                     // Inside a set every character is a label: NONE has no spelling.
                     Symbol::None => f.write_str("x")?,
-                    Symbol::Label(l) if l.chars().count() == 1 && !"'[]^".contains(l) => {
+                    // A negation's bare names must be built-in labels (`<R[^Q]>` is
+                    // an error): quote every other one.
+                    Symbol::Label(l)
+                        if l.chars().count() == 1
+                            && !"'[]^".contains(l)
+                            && (open == "["
+                                || super::symbol::EVENT_LABELS.contains(&l.as_str())
+                                || super::symbol::SCATTERING_LABELS.contains(&l.as_str())) =>
+                    {
                         f.write_str(l)?
                     }
                     Symbol::Label(l) => write!(f, "'{l}'")?,

@@ -1,0 +1,143 @@
+//! The OSL dialect on every registered engine (and the eager form of `oracle`): OSL's
+//! own accum test (130 verdicts) and the hand-written `extra.tsv` rows, one set of all
+//! accum rules compiled at once, and the differential property on generated OSL cases.
+
+use engines::differential::{self, Outcome};
+use engines::Engine;
+use lpe::osl::{self, Registered};
+use lpe::rng::SplitMix64;
+use lpe_tests::cases;
+use lpe_tests::osl_rows::{load_osl_rows, OslRow};
+use proptest::prelude::*;
+
+/// The registry plus the eager (dense DFA) oracle.
+fn engines() -> Vec<&'static dyn Engine> {
+    let mut all = engines::all();
+    all.push(&engines::regex::EAGER);
+    all
+}
+
+/// Each engine's wrong answers on `rows`, as `file:line engine: ...` lines, and the
+/// number of answers checked.
+fn failures(file: &str, rows: &[OslRow]) -> (Vec<String>, usize) {
+    let mut out = Vec::new();
+    let mut checked = 0;
+    for e in engines() {
+        for r in rows {
+            let lpe = osl::parse(&r.expr, &r.registered)
+                .unwrap_or_else(|err| panic!("{file}:{} `{}`: {err}", r.line, r.expr));
+            let m = e
+                .compile_osl(std::slice::from_ref(&lpe), &r.registered)
+                .unwrap_or_else(|err| panic!("{file}:{} {}: {err}", r.line, e.name()));
+            let got = m.which(&r.path);
+            checked += 1;
+            if got != [r.matches] {
+                out.push(format!(
+                    "{file}:{} {}: `{}` [{}] on `{}`: got {got:?}, OSL says {}",
+                    r.line,
+                    e.name(),
+                    r.expr,
+                    r.registered,
+                    r.path,
+                    r.matches
+                ));
+            }
+        }
+    }
+    (out, checked)
+}
+
+#[test]
+fn accum_test_answers_130_of_130_on_every_engine() {
+    let rows = load_osl_rows("accum_test.tsv").unwrap();
+    assert_eq!(rows.len(), 130);
+    let (fails, checked) = failures("accum_test.tsv", &rows);
+    assert!(fails.is_empty(), "{}", fails.join("\n"));
+    assert_eq!(checked, 130 * engines().len());
+    // Both verdicts occur, so an engine answering a constant could not pass.
+    assert!(rows.iter().any(|r| r.matches) && rows.iter().any(|r| !r.matches));
+}
+
+#[test]
+fn extra_rows_on_every_engine() {
+    let rows = load_osl_rows("extra.tsv").unwrap();
+    let (fails, _) = failures("extra.tsv", &rows);
+    assert!(fails.is_empty(), "{}", fails.join("\n"));
+}
+
+#[test]
+fn all_accum_rules_as_one_set_on_every_engine() {
+    let rows = load_osl_rows("accum_test.tsv").unwrap();
+    let reg: Registered = "events=U;scatters=Y".parse().unwrap();
+    let mut rules: Vec<String> = Vec::new();
+    for r in &rows {
+        assert_eq!(r.registered, reg);
+        if !rules.contains(&r.expr) {
+            rules.push(r.expr.clone());
+        }
+    }
+    let lpes: Vec<osl::Lpe> = rules.iter().map(|e| osl::parse(e, &reg).unwrap()).collect();
+    for e in engines() {
+        let m = e.compile_osl(&lpes, &reg).unwrap();
+        for r in &rows {
+            let i = rules.iter().position(|x| *x == r.expr).unwrap();
+            let got = m.which(&r.path);
+            assert_eq!(got.len(), rules.len());
+            assert_eq!(got[i], r.matches, "{} line {}: {}", e.name(), r.line, r.expr);
+        }
+    }
+}
+
+#[test]
+fn the_redos_expression_builds_and_matches_on_every_engine() {
+    // OSL's subset construction takes minutes on this one (90 192 DFA states).
+    let src = "C(R('a'+|G[^S]{2}[^OC]){2,}|(L|T*[sBO]{2,})+)";
+    let reg = Registered::none();
+    let lpe = osl::parse(src, &reg).unwrap();
+    // `|` ORs its two neighbouring items only: C R ((…){2,} | ((L|T*) [sBO]{2,})+), so
+    // C R L followed by two of B, O or a straight scattering matches, and C R L L does not.
+    let yes: osl::Path = "C,_ R,D L,_ B,_ O,_".parse().unwrap();
+    let no: osl::Path = "C,_ R,D L,_ L,_".parse().unwrap();
+    for e in engines() {
+        let m = e.compile_osl(std::slice::from_ref(&lpe), &reg).unwrap();
+        assert_eq!(m.which(&yes), [true], "{}", e.name());
+        assert_eq!(m.which(&no), [false], "{}", e.name());
+    }
+}
+
+fn assert_agree(seed: u64) -> Result<(), TestCaseError> {
+    let cfg = lpe::generate::osl::Config::default();
+    let case = differential::generate_osl_case(seed, 0, &cfg, 6);
+    match differential::check_in(&case.lang, &engines(), &case.exprs, &case.paths) {
+        Outcome::Agree(a) => {
+            prop_assert!(a.skipped.is_empty(), "skipped: {:?}", a.skipped);
+            prop_assert_eq!(a.engines, engines().len());
+            Ok(())
+        }
+        Outcome::Disagree(c) => Err(TestCaseError::fail(c.to_string())),
+    }
+}
+
+proptest! {
+    #![proptest_config(cases(256))]
+
+    /// Every engine agrees on generated OSL cases (a registration, one expression or a
+    /// set, paths aimed at them).
+    #[test]
+    fn osl_engines_agree(seed in any::<u64>()) {
+        assert_agree(seed)?;
+    }
+
+    /// A generated expression prints to text that parses back to the same tree.
+    #[test]
+    fn generated_osl_expressions_print_and_parse_back(seed in any::<u64>()) {
+        let mut rng = SplitMix64::new(seed);
+        let reg = lpe::generate::osl::registered(&mut rng);
+        let cfg = lpe::generate::osl::Config::default();
+        let e = lpe::generate::osl::lpe(&mut rng, &reg, &cfg);
+        let text = e.to_string();
+        let back = osl::parse(&text, &reg)
+            .map_err(|err| TestCaseError::fail(format!("`{text}` [{reg}]: {err}")))?;
+        prop_assert_eq!(back.expr, e.expr, "{}", text);
+    }
+}
