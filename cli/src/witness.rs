@@ -5,16 +5,39 @@
 //! user's expressions. So every witness goes through [`recheck`] first, and a failure is
 //! reported as an internal disagreement (exit code 3), not as the answer.
 
+use std::fmt::Display;
 use std::process::ExitCode;
 
-use lpe::{Lpe, Path};
+use lpe::{osl, Lpe, Path};
+
+/// An expression of either dialect, as the reference matcher of its dialect reads it.
+pub trait Checked: Display {
+    /// The dialect's path.
+    type Path: Display;
+    /// The reference matcher's answer on `path`.
+    fn reference_match(&self, path: &Self::Path) -> bool;
+}
+
+impl Checked for Lpe {
+    type Path = Path;
+    fn reference_match(&self, path: &Path) -> bool {
+        reference::is_match(self, path)
+    }
+}
+
+impl Checked for osl::Lpe {
+    type Path = osl::Path;
+    fn reference_match(&self, path: &osl::Path) -> bool {
+        reference::osl::is_match(self, path)
+    }
+}
 
 /// What one expression must answer on a witness.
-pub struct Expect<'a> {
+pub struct Expect<'a, E = Lpe> {
     /// Display name of the expression.
     pub name: &'a str,
     /// The expression.
-    pub lpe: &'a Lpe,
+    pub lpe: &'a E,
     /// Whether it must match.
     pub matches: bool,
 }
@@ -30,8 +53,8 @@ pub struct Expect<'a> {
 pub struct Disagreement {
     /// Display name of the expression.
     pub name: String,
-    /// The witness.
-    pub path: Path,
+    /// The witness, as text.
+    pub path: String,
     /// Whether the analysis claimed the expression matches the witness (the reference
     /// says the opposite).
     pub claimed: bool,
@@ -39,13 +62,13 @@ pub struct Disagreement {
 
 /// `Ok` if the reference agrees with every expectation on `path`, else the first
 /// expression it disagrees on.
-pub fn recheck(path: &Path, expects: &[Expect<'_>]) -> Result<(), Disagreement> {
+pub fn recheck<E: Checked>(path: &E::Path, expects: &[Expect<'_, E>]) -> Result<(), Disagreement> {
     for e in expects {
-        let got = reference::is_match(e.lpe, path);
+        let got = e.lpe.reference_match(path);
         if got != e.matches {
             return Err(Disagreement {
                 name: e.name.to_string(),
-                path: path.clone(),
+                path: path.to_string(),
                 claimed: e.matches,
             });
         }

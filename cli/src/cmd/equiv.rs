@@ -4,14 +4,16 @@
 //! one and not the other, for each direction that has one, and which inclusion holds
 //! (exit 1). Every witness is re-checked with the reference matcher first
 //! ([`crate::witness`]); a failed re-check exits 3. Errors exit 2.
+//!
+//! `--dialect osl [--register …]` compares two OSL expressions; witnesses are OSL paths.
 
 use std::process::ExitCode;
 
 use lpe::analysis::{self, Comparison};
-use lpe::Lpe;
+use lpe::{osl, Dialect};
 
-use crate::input::{bad_input, load_parser};
-use crate::witness::{self, Disagreement, Expect};
+use crate::input::{bad_input, load_parser, osl_error};
+use crate::witness::{self, Checked, Disagreement, Expect};
 
 /// Arguments of `lpe-check equiv`.
 #[derive(clap::Args, Debug)]
@@ -23,10 +25,22 @@ pub struct Args {
     pub a: String,
     /// The second expression.
     pub b: String,
+    /// The expression language: `renderman` or `osl`.
+    #[arg(long, default_value_t = Dialect::RenderMan)]
+    pub dialect: Dialect,
+    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
+    #[arg(long)]
+    pub register: Option<String>,
 }
 
 /// Runs `lpe-check equiv`.
 pub fn run(args: Args) -> ExitCode {
+    if args.dialect == Dialect::Osl {
+        return run_osl(&args);
+    }
+    if args.register.is_some() {
+        return bad_input("error: --register is for --dialect osl");
+    }
     let parser = match load_parser(args.ini.as_deref()) {
         Ok(p) => p,
         Err(e) => return bad_input(format!("error: {e}")),
@@ -46,10 +60,35 @@ pub fn run(args: Args) -> ExitCode {
     witness::exit_with(report(&a, &b, &c), c.equivalent())
 }
 
+/// `equiv --dialect osl`.
+fn run_osl(args: &Args) -> ExitCode {
+    if args.ini.is_some() {
+        return bad_input("error: --ini holds RenderMan macros; it does not apply to --dialect osl");
+    }
+    let registered: osl::Registered = match args.register.as_deref().unwrap_or("-").parse() {
+        Ok(r) => r,
+        Err(e) => return bad_input(format!("error: --register: {e}")),
+    };
+    let parse = |s: &str| osl::parse(s, &registered).map_err(|e| osl_error(s, &e));
+    let (a, b) = match (parse(&args.a), parse(&args.b)) {
+        (Ok(a), Ok(b)) => (a, b),
+        (Err(e), _) | (_, Err(e)) => return bad_input(e),
+    };
+    let c = match analysis::compare_osl(&a, &b, &registered) {
+        Ok(c) => c,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    witness::exit_with(report(&a, &b, &c), c.equivalent())
+}
+
 /// The text printed for a comparison, after re-checking its witnesses.
-pub fn report(a: &Lpe, b: &Lpe, c: &Comparison) -> Result<String, Disagreement> {
+pub fn report<E: Checked>(
+    a: &E,
+    b: &E,
+    c: &Comparison<E::Path>,
+) -> Result<String, Disagreement> {
     let (sa, sb) = (a.to_string(), b.to_string());
-    let check = |path: &lpe::Path, in_a: bool| {
+    let check = |path: &E::Path, in_a: bool| {
         witness::recheck(
             path,
             &[
@@ -89,6 +128,7 @@ pub fn report(a: &Lpe, b: &Lpe, c: &Comparison) -> Result<String, Disagreement> 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use lpe::Lpe;
 
     fn lpe(s: &str) -> Lpe {
         lpe::parse(s).unwrap()

@@ -7,21 +7,30 @@
 //! matches outside the universe the shortest such path; `clean partition` if there is
 //! none of these (exit 0), else exit 1. Witnesses are re-checked with the reference
 //! matcher before printing ([`crate::witness`]); a failed re-check exits 3; errors exit 2.
+//!
+//! `--dialect osl [--register …]` checks OSL AOVs (default universe
+//! `C<[RT][DGS]>*[LO]`, which is also the domain every OSL search runs over).
 
 use std::process::ExitCode;
 
 use lpe::analysis::{self, Partition};
-use lpe::{AovSet, Lpe};
+use lpe::{osl, AovSet, Dialect, Lpe, Options};
 
-use crate::input::{bad_input, load_parser, InputError};
-use crate::witness::{self, Disagreement, Expect};
+use crate::input::{bad_input, load_parser, osl_error, InputError};
+use crate::witness::{self, Checked, Disagreement, Expect};
 
 /// Arguments of `lpe-check partition`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The universe to partition.
-    #[arg(long, default_value = analysis::DEFAULT_UNIVERSE)]
-    pub universe: String,
+    /// The universe to partition (default `C.*[<L.>O]`, OSL: `C<[RT][DGS]>*[LO]`).
+    #[arg(long)]
+    pub universe: Option<String>,
+    /// The expression language: `renderman` or `osl`.
+    #[arg(long, default_value_t = Dialect::RenderMan)]
+    pub dialect: Dialect,
+    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
+    #[arg(long)]
+    pub register: Option<String>,
     /// A rendermn.ini-style file with user macros and lobe mappings.
     #[arg(long)]
     pub ini: Option<std::path::PathBuf>,
@@ -32,6 +41,12 @@ pub struct Args {
 
 /// Runs `lpe-check partition`.
 pub fn run(args: Args) -> ExitCode {
+    if args.dialect == Dialect::Osl {
+        return run_osl(&args);
+    }
+    if args.register.is_some() {
+        return bad_input("error: --register is for --dialect osl");
+    }
     match prepare(&args) {
         Ok((aovs, universe)) => {
             let warnings = AovSet::compile(&aovs)
@@ -50,15 +65,53 @@ pub fn run(args: Args) -> ExitCode {
     }
 }
 
+/// `partition --dialect osl`.
+fn run_osl(args: &Args) -> ExitCode {
+    if args.ini.is_some() {
+        return bad_input("error: --ini holds RenderMan macros; it does not apply to --dialect osl");
+    }
+    let registered: osl::Registered = match args.register.as_deref().unwrap_or("-").parse() {
+        Ok(r) => r,
+        Err(e) => return bad_input(format!("error: --register: {e}")),
+    };
+    let parse = |s: &str| osl::parse(s, &registered).map_err(|e| osl_error(s, &e));
+    let universe_text = args
+        .universe
+        .as_deref()
+        .unwrap_or(analysis::DEFAULT_OSL_UNIVERSE);
+    let prepared = parse(universe_text)
+        .and_then(|u| Ok((named(&args.aovs, |e| parse(e))?, u)));
+    let (aovs, universe) = match prepared {
+        Ok(p) => p,
+        Err(e) => return bad_input(e),
+    };
+    if let Ok(set) = AovSet::compile_osl(&aovs, &registered, &Options::default()) {
+        for w in set.warnings() {
+            println!("warning: {w}");
+        }
+    }
+    let p = match analysis::partition_osl(&aovs, &universe, &registered) {
+        Ok(p) => p,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    witness::exit_with(report(&aovs, &universe, &p), p.is_clean())
+}
+
 type Named = Vec<(String, Lpe)>;
 
 fn prepare(args: &Args) -> Result<(Named, Lpe), InputError> {
     let parser = load_parser(args.ini.as_deref())?;
     let parse = |s: &str| parser.parse(s).map_err(InputError::from);
-    let universe = parse(&args.universe)?;
-    let aovs = args
-        .aovs
-        .iter()
+    let universe = parse(args.universe.as_deref().unwrap_or(analysis::DEFAULT_UNIVERSE))?;
+    Ok((named(&args.aovs, parse)?, universe))
+}
+
+/// The AOV arguments, each `name=expression` or an expression named by its text.
+fn named<E, X>(
+    aovs: &[String],
+    parse: impl Fn(&str) -> Result<E, X>,
+) -> Result<Vec<(String, E)>, X> {
+    aovs.iter()
         .map(|a| {
             // `name=expr` only when the part before `=` is a plain name: `=` never
             // occurs in expressions, but keep odd input an expression error.
@@ -71,15 +124,14 @@ fn prepare(args: &Args) -> Result<(Named, Lpe), InputError> {
                 _ => Ok((a.clone(), parse(a)?)),
             }
         })
-        .collect::<Result<Vec<_>, InputError>>()?;
-    Ok((aovs, universe))
+        .collect()
 }
 
 /// The text printed for a partition check, after re-checking every witness.
-pub fn report(
-    aovs: &[(String, Lpe)],
-    universe: &Lpe,
-    p: &Partition,
+pub fn report<E: Checked>(
+    aovs: &[(String, E)],
+    universe: &E,
+    p: &Partition<E::Path>,
 ) -> Result<String, Disagreement> {
     let uname = format!("universe {universe}");
     let mut out = format!("partition of {universe} by {} AOVs\n", aovs.len());
