@@ -11,14 +11,17 @@
 //! | `path_text` | any bytes: the path parser never panics; a parsed path prints and re-parses to itself |
 //! | `differential` | a structured expression and paths aimed at it: every engine agrees |
 //! | `aov_set` | 2-6 structured expressions compiled as one set, paths aimed at them: every engine agrees |
+//! | `osl_parse` | any bytes (a first line that parses as a registration applies): the OSL parser never panics; a parsed expression prints to text that parses back to the same tree |
+//! | `osl_differential` | a structured registration, 1-4 OSL expressions (a set) and paths aimed at them: every engine agrees |
 
 use arbitrary::Unstructured;
 use lpe::generate::{self, Choices, Config};
-use lpe::{Lpe, Path};
+use lpe::{osl, Lpe, Path};
 
 use crate::adapters::Reference;
-use crate::differential::{self, Outcome};
+use crate::differential::{self, Agreement, Osl, Outcome};
 use crate::engine::Engine;
+use crate::registry;
 
 /// `parse`: never panics; parse -> print -> parse is the identity on the AST.
 pub fn parse(data: &[u8]) {
@@ -75,19 +78,77 @@ fn agree(exprs: &[Lpe], paths: &[Path]) -> bool {
             Err(err) => panic!("generated `{text}` does not parse: {err}"),
         }
     }
-    match differential::check_set(exprs, paths) {
+    compared(differential::check_set(exprs, paths))
+}
+
+/// Whether an outcome compared the reference with at least one other engine; panics on
+/// a disagreement, or if the reference refused.
+fn compared<L: differential::Language>(outcome: Outcome<L>) -> bool {
+    match outcome {
         Outcome::Disagree(c) => panic!("{c}"),
-        Outcome::Agree(a) => {
+        Outcome::Agree(Agreement {
+            skipped, engines, ..
+        }) => {
             // The reference has no size limit; without it nothing says who is right.
             let reference = Reference.name();
             assert!(
-                a.skipped.iter().all(|(name, _)| *name != reference),
-                "the reference refused: {:?}",
-                a.skipped
+                skipped.iter().all(|(name, _)| *name != reference),
+                "the reference refused: {skipped:?}"
             );
-            a.engines >= 2
+            engines >= 2
         }
     }
+}
+
+/// `osl_parse`: never panics; parse -> print -> parse gives the same tree. A first line
+/// that parses as a registration (`events=U;scatters=Y`) applies to the rest.
+pub fn osl_parse(data: &[u8]) {
+    let text = String::from_utf8_lossy(data);
+    let (registered, src) = match text.split_once('\n') {
+        Some((first, rest)) => match first.parse::<osl::Registered>() {
+            Ok(r) => (r, rest),
+            Err(_) => (osl::Registered::none(), &*text),
+        },
+        None => (osl::Registered::none(), &*text),
+    };
+    let Ok(lpe) = osl::parse(src, &registered) else {
+        return;
+    };
+    let printed = lpe.to_string();
+    let again = osl::parse(&printed, &registered).unwrap_or_else(|e| {
+        panic!("`{src}` [{registered}] printed as `{printed}`, which does not parse: {e}")
+    });
+    assert_eq!(
+        again.expr, lpe.expr,
+        "`{src}` [{registered}] printed as `{printed}` parses differently"
+    );
+    assert_eq!(again.to_string(), printed, "printing is not stable");
+}
+
+/// `osl_differential`: a registration, a set of 1-4 OSL expressions and paths aimed at
+/// them; every engine agrees.
+pub fn osl_differential(data: &[u8]) {
+    osl_differential_compared(data);
+}
+
+/// [`osl_differential`], returning whether at least two engines (the reference and
+/// another) were compared.
+pub fn osl_differential_compared(data: &[u8]) -> bool {
+    let mut u = Unstructured::new(data);
+    let cfg = generate::osl::Config::default();
+    let registered = generate::osl::registered(&mut u);
+    let n = 1 + u.below(4);
+    let exprs: Vec<osl::Lpe> = (0..n)
+        .map(|_| generate::osl::lpe(&mut u, &registered, &cfg))
+        .collect();
+    let paths: Vec<osl::Path> = (0..1 + u.below(8))
+        .map(|_| {
+            let target = &exprs[u.below(exprs.len())].expr;
+            generate::osl::biased_path(target, &mut u, &registered, &cfg)
+        })
+        .collect();
+    let lang = Osl { registered };
+    compared(differential::check_in(&lang, &registry::all(), &exprs, &paths))
 }
 
 /// `differential`: one structured expression, paths aimed at it, every engine agrees.
@@ -128,6 +189,7 @@ pub fn compared_target(name: &str) -> Option<fn(&[u8]) -> bool> {
     Some(match name {
         "differential" => differential_compared,
         "aov_set" => aov_set_compared,
+        "osl_differential" => osl_differential_compared,
         _ => return None,
     })
 }
@@ -139,6 +201,8 @@ pub fn target(name: &str) -> Option<fn(&[u8])> {
         "path_text" => path_text,
         "differential" => differential,
         "aov_set" => aov_set,
+        "osl_parse" => osl_parse,
+        "osl_differential" => osl_differential,
         _ => return None,
     })
 }

@@ -50,7 +50,7 @@ fn regression_files_pass() {
 #[test]
 fn differential_corpus_files_compare_engines() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../fuzz/corpus");
-    for name in ["differential", "aov_set"] {
+    for name in ["differential", "aov_set", "osl_differential"] {
         let compared = engines::fuzzing::compared_target(name).unwrap();
         let (mut n, mut uncompared) = (0usize, 0usize);
         for file in std::fs::read_dir(root.join(name)).unwrap().flatten() {

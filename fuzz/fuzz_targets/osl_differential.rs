@@ -1,0 +1,5 @@
+//! Fuzz target `osl_differential`: the property is `engines::fuzzing::osl_differential` (see its docs), which
+//! `cargo test` also runs on every committed corpus and regression file.
+#![no_main]
+
+libfuzzer_sys::fuzz_target!(|data: &[u8]| engines::fuzzing::osl_differential(data));
