@@ -8,8 +8,13 @@
 //! regex-automata DFAs step their own two-byte encoding, computed beforehand; the
 //! reference matcher runs per whole path on a prefix of the paths. Before timing, every
 //! engine's answers are compared with the reference's on those paths.
+//!
+//! The OSL rows ([`osl`]) run the OSL basic set on the same paths written as OSL paths,
+//! timed round-robin with the RenderMan basic set, so their ratio is a same-run
+//! comparison.
 
 pub mod baseline;
+pub mod osl;
 pub mod sample;
 pub mod workload;
 
@@ -34,7 +39,7 @@ pub struct Flat<T> {
 }
 
 impl<T> Flat<T> {
-    fn build(paths: &[Path], mut f: impl FnMut(&Path, &mut Vec<T>)) -> Flat<T> {
+    fn build<P>(paths: &[P], mut f: impl FnMut(&P, &mut Vec<T>)) -> Flat<T> {
         let mut items = Vec::new();
         let mut ends = Vec::with_capacity(paths.len());
         for p in paths {
@@ -72,7 +77,7 @@ pub fn encode(enc: &baseline::Encoding, paths: &[Path]) -> Flat<u8> {
 const CHUNK_PATHS: usize = 4096;
 
 /// `f` applied to each chunk of paths.
-fn chunked<T>(paths: &[Path], f: impl Fn(&[Path]) -> Flat<T>) -> Vec<Flat<T>> {
+fn chunked<P, T>(paths: &[P], f: impl Fn(&[P]) -> Flat<T>) -> Vec<Flat<T>> {
     paths.chunks(CHUNK_PATHS).map(f).collect()
 }
 
@@ -468,6 +473,12 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
             };
         }
         rows.extend(wrows);
+    }
+    if cfg.workloads.is_empty() || cfg.workloads.iter().any(|n| n == osl::WORKLOAD) {
+        let checked = cfg.reference_paths.min(paths.len());
+        let (osl_rows, bad) = osl::run(cfg.reps, &paths, checked)?;
+        rows.extend(osl_rows);
+        disagreements.extend(bad);
     }
     if disagreements.is_empty() {
         Ok(rows)

@@ -21,14 +21,16 @@ pub struct Args {
     /// Path sampler seed.
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
-    /// Run only these workloads (basic, per-lobe, groups, nested, blowup12, blowup20).
+    /// Run only these workloads (basic, per-lobe, groups, nested, blowup12, blowup20,
+    /// osl-basic).
     #[arg(long)]
     pub workload: Vec<String>,
 }
 
 /// Runs `lpe-check bench`.
 pub fn run(args: Args) -> ExitCode {
-    let names: Vec<&str> = bench::workload::all().iter().map(|w| w.name).collect();
+    let mut names: Vec<&str> = bench::workload::all().iter().map(|w| w.name).collect();
+    names.push(bench::osl::WORKLOAD);
     if let Some(bad) = args.workload.iter().find(|w| !names.contains(&w.as_str())) {
         eprintln!(
             "error: unknown workload `{bad}`: workloads are {}",

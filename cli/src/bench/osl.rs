@@ -1,0 +1,203 @@
+//! The OSL rows of the benchmark: the OSL basic set on the sampled paths written as OSL
+//! paths, stepped on classes like the RenderMan basic set, and timed round-robin with
+//! it so that the ratio between the two is measured under the same load.
+//!
+//! A RenderMan vertex becomes the OSL vertex a renderer would feed: event (`C`, `R`,
+//! `T`, `L`, `O`), scattering (diffuse lobes `D`, rough specular lobes `G`, the glass
+//! and mirror lobes `S`, user lobes `U`, `_` on camera and emitters), then its
+//! lpegroup or light group as a custom label.
+
+use std::time::Duration;
+
+use lpe::osl::{self, Registered, Symbol};
+use lpe::{AovMask, AovSet, Class, EventKind, Options, Path, VertexType};
+
+use super::{best_times, chunked, row, run_classes, BenchError, Disagreement, Flat, Job, Row};
+
+/// The workload name, as given to `--workload`.
+pub const WORKLOAD: &str = "osl-basic";
+
+/// The OSL basic set: the partition of every path into direct and indirect
+/// diffuse, glossy/specular, transmission and emission.
+pub const BASIC: [(&str, &str); 7] = [
+    ("directDiffuse", "C<RD>[LO]"),
+    ("indirectDiffuse", "C<RD>.+[LO]"),
+    ("transmissionDiffuse", "C<TD>.*[LO]"),
+    ("directSpecular", "C<R[GS]>[LO]"),
+    ("indirectSpecular", "C<R[GS]>.+[LO]"),
+    ("transmissionSpecular", "C<T[GS]>.*[LO]"),
+    ("emission", "C[LO]"),
+];
+
+/// The OSL vertex a renderer feeds for `v`.
+pub fn vertex(v: &lpe::Vertex) -> osl::Vertex {
+    let event = match v.ty() {
+        VertexType::C => "C",
+        VertexType::R => "R",
+        VertexType::T => "T",
+        VertexType::L => "L",
+        VertexType::O => "O",
+    };
+    let scattering = match v.event() {
+        None => "_",
+        Some(e) => match (e.kind(), e.lobe()) {
+            (EventKind::D, _) => "D",
+            (EventKind::S, 7 | 8) => "S",
+            (EventKind::S, _) => "G",
+            (EventKind::U, _) => "U",
+        },
+    };
+    let mut symbols = vec![Symbol::label(event), Symbol::label(scattering)];
+    symbols.extend(v.label().map(Symbol::label));
+    osl::Vertex::new(symbols)
+}
+
+/// `p` as an OSL path.
+pub fn path(p: &Path) -> osl::Path {
+    osl::Path::new(p.vertices().iter().map(vertex).collect())
+}
+
+fn classify(set: &AovSet, paths: &[osl::Path]) -> Flat<Class> {
+    Flat::build(paths, |p, out| {
+        out.extend(p.vertices.iter().map(|v| set.classify_osl(v)))
+    })
+}
+
+/// The OSL reference's answers, one AOV at a time.
+fn reference_mask(aovs: &[(String, osl::Lpe)], p: &osl::Path) -> AovMask {
+    let mut m = AovMask::EMPTY;
+    for (i, (_, l)) in aovs.iter().enumerate() {
+        if reference::osl::is_match(l, p) {
+            m.insert(i);
+        }
+    }
+    m
+}
+
+/// The OSL rows, and the engines that disagree with the OSL reference on the first
+/// `checked` paths.
+pub fn run(
+    reps: usize,
+    paths: &[Path],
+    checked: usize,
+) -> Result<(Vec<Row>, Vec<Disagreement>), BenchError> {
+    let reg = Registered::none();
+    let aovs: Vec<(String, osl::Lpe)> = BASIC
+        .iter()
+        .map(|(n, s)| {
+            let l = osl::parse(s, &reg).unwrap_or_else(|e| panic!("OSL basic AOV `{s}`: {e}"));
+            (n.to_string(), l)
+        })
+        .collect();
+    let osl_paths: Vec<osl::Path> = paths.iter().map(path).collect();
+    let vertices: usize = paths.iter().map(Path::len).sum();
+    let compile = |opts: &Options| {
+        AovSet::compile_osl(&aovs, &reg, opts).map_err(|error| BenchError::Compile {
+            workload: WORKLOAD,
+            error,
+        })
+    };
+    let fast = compile(&Options::default())?;
+    let nfa = compile(&Options {
+        dfa_budget: 0,
+        ..Options::default()
+    })?;
+    let rm_aovs = super::workload::all()
+        .into_iter()
+        .find(|w| w.name == "basic")
+        .expect("the RenderMan basic workload")
+        .aovs;
+    let rm = AovSet::compile(&rm_aovs).map_err(|error| BenchError::Compile {
+        workload: "basic",
+        error,
+    })?;
+
+    let mut bad = Vec::new();
+    for (name, set) in [("fast", &fast), ("nfa", &nfa)] {
+        let wrong = osl_paths[..checked]
+            .iter()
+            .filter(|p| set.match_osl_path(p) != reference_mask(&aovs, p))
+            .count();
+        if wrong > 0 {
+            bad.push(Disagreement {
+                workload: WORKLOAD,
+                engine: name.to_string(),
+                paths: wrong,
+            });
+        }
+    }
+
+    let fast_classes = chunked(&osl_paths, |c| classify(&fast, c));
+    let nfa_classes = chunked(&osl_paths, |c| classify(&nfa, c));
+    let rm_classes = chunked(paths, |c| super::classify(&rm, c));
+    let mut jobs: Vec<Job<'_>> = vec![
+        Box::new(|c| run_classes(&rm, &rm_classes[c])),
+        Box::new(|c| run_classes(&fast, &fast_classes[c])),
+        Box::new(|c| run_classes(&nfa, &nfa_classes[c])),
+    ];
+    let times = best_times(reps, fast_classes.len(), &mut jobs);
+    drop(jobs);
+    let ns = |d: Duration| d.as_secs_f64() * 1e9 / vertices as f64;
+    let rm_ns = ns(times[0]);
+
+    let mut rows = Vec::new();
+    let mut r = row(WORKLOAD, "RenderMan basic, fast, on classes");
+    r.ns_per_vertex = Some(rm_ns);
+    r.note = "the peer of the OSL rows, timed round-robin with them".into();
+    rows.push(r);
+    for (engine, set, t) in [
+        ("fast, on classes", &fast, times[1]),
+        ("bitset NFA, on classes", &nfa, times[2]),
+    ] {
+        let mut r = row(WORKLOAD, engine);
+        r.ns_per_vertex = Some(ns(t));
+        r.memory = Some(set.memory_bytes());
+        let shape = match set.dfa_states() {
+            Some(n) => format!("DFA, {n} states, {} classes", set.class_count()),
+            None => format!("NFA, {} positions", set.nfa_positions()),
+        };
+        r.note = format!(
+            "{shape}; {:.2}x the RenderMan basic set",
+            ns(t) / rm_ns
+        );
+        rows.push(r);
+    }
+    Ok((rows, bad))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn vertices_become_what_a_renderer_feeds() {
+        let p: Path = "C RD2'floor' RS3 TS8'glass' RU2 L'key'".parse().unwrap();
+        assert_eq!(
+            path(&p).to_string(),
+            "C,_ R,D,floor R,G T,S,glass R,U L,_,key"
+        );
+    }
+
+    #[test]
+    fn the_osl_basic_set_routes_like_the_renderman_basic_set() {
+        // Both basic sets split every sampled path the same way (AOV i of one is AOV i
+        // of the other), so the two rows time the same routing work.
+        let reg = Registered::none();
+        let osl_aovs: Vec<(String, osl::Lpe)> = BASIC
+            .iter()
+            .map(|(n, s)| (n.to_string(), osl::parse(s, &reg).unwrap()))
+            .collect();
+        let osl_set = AovSet::compile_osl(&osl_aovs, &reg, &Options::default()).unwrap();
+        let rm_aovs: Vec<(String, lpe::Lpe)> = lpe::macros::BASIC
+            .iter()
+            .map(|(n, s)| (n.to_string(), lpe::parse(s).unwrap()))
+            .collect();
+        let rm_set = AovSet::compile(&rm_aovs).unwrap();
+        for p in super::super::sample::paths(20_000, 3) {
+            if p.vertices().iter().any(|v| v.event().is_some_and(|e| e.kind() == EventKind::U)) {
+                continue; // user lobes: RenderMan's `.` excludes them, OSL's does not
+            }
+            assert_eq!(osl_set.match_osl_path(&path(&p)), rm_set.match_path(&p), "{p}");
+        }
+    }
+}
