@@ -171,7 +171,11 @@ fn osl_batch_answers_accum_test_and_checks_its_fourth_column() {
     let (code, out, err) = lpe_check(&["match", "--dialect", "osl", "--batch"], &text);
     assert_eq!(code, 0, "{err}");
     let lines: Vec<&str> = out.lines().collect();
-    assert_eq!(lines.len(), text.lines().count(), "one output line per input line");
+    assert_eq!(
+        lines.len(),
+        text.lines().count(),
+        "one output line per input line"
+    );
     let mut answered = 0;
     for (input, got) in text.lines().zip(&lines) {
         if input.starts_with('#') || input.trim().is_empty() {
@@ -203,7 +207,10 @@ fn osl_batch_answers_accum_test_and_checks_its_fourth_column() {
         .collect();
     let (code, out, _) = lpe_check(&["match", "--dialect", "osl", "--batch"], &three);
     assert_eq!(code, 0);
-    assert_eq!(out.lines().filter(|l| *l == "match").count(), rows_with(&text, "\tMATCH"));
+    assert_eq!(
+        out.lines().filter(|l| *l == "match").count(),
+        rows_with(&text, "\tMATCH")
+    );
 }
 
 fn rows_with(text: &str, end: &str) -> usize {
@@ -228,7 +235,11 @@ fn osl_batch_reports_bad_lines_in_place() {
         "error: expression: Reached end of line looking for > to end a group at char 4"
     );
     assert!(lines[1].starts_with("error: registered: "), "{}", lines[1]);
-    assert!(lines[2].starts_with("error: path: at byte 6"), "{}", lines[2]);
+    assert!(
+        lines[2].starts_with("error: path: at byte 6"),
+        "{}",
+        lines[2]
+    );
     assert!(lines[3].contains("found 2 column(s)"), "{}", lines[3]);
     assert!(lines[4].contains("MAYBE"), "{}", lines[4]);
     // Registering U makes it basic: the eater no longer skips it.
@@ -267,7 +278,13 @@ fn osl_match_parse_equiv_and_partition_with_arguments() {
     assert_eq!(code, 2);
     assert!(err.contains("at char 1"), "{err}");
 
-    let (code, out, _) = osl(&["equiv", "--dialect", "osl", "C<RD>[LO]", "(C<RD>L)|(C<RD>O)"]);
+    let (code, out, _) = osl(&[
+        "equiv",
+        "--dialect",
+        "osl",
+        "C<RD>[LO]",
+        "(C<RD>L)|(C<RD>O)",
+    ]);
     assert_eq!((code, out.as_str()), (0, "equivalent\n"));
     let (code, out, _) = osl(&["equiv", "--dialect", "osl", "C.+L", "C.*L"]);
     assert_eq!(code, 1);
@@ -300,7 +317,10 @@ fn osl_diff_agrees_and_is_deterministic() {
     let args = ["diff", "--dialect", "osl", "--cases", "300", "--seed", "5"];
     let (code, out, err) = lpe_check(&args, "");
     assert_eq!(code, 0, "{out}{err}");
-    assert!(out.starts_with("osl dialect, engines: reference, oracle, fast, nfa"), "{out}");
+    assert!(
+        out.starts_with("osl dialect, engines: reference, oracle, fast, nfa"),
+        "{out}"
+    );
     assert!(out.contains("300 cases"), "{out}");
     assert!(out.contains("skips: none"), "{out}");
     assert!(out.contains("all engines agree"), "{out}");

@@ -148,7 +148,12 @@ pub fn osl_differential_compared(data: &[u8]) -> bool {
         })
         .collect();
     let lang = Osl { registered };
-    compared(differential::check_in(&lang, &registry::all(), &exprs, &paths))
+    compared(differential::check_in(
+        &lang,
+        &registry::all(),
+        &exprs,
+        &paths,
+    ))
 }
 
 /// `differential`: one structured expression, paths aimed at it, every engine agrees.

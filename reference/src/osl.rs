@@ -244,7 +244,10 @@ mod tests {
         assert!(m("CRL", "C,_ R,D,foo,bar L,_"));
         assert!(!m("CRL", "C,_ R,D,D L,_"), "a basic label is never eaten");
         assert!(m("CRL", "C,_ R,D,U L,_"));
-        assert!(!m_reg("CRL", "events=U", "C,_ R,D,U L,_"), "registered: basic");
+        assert!(
+            !m_reg("CRL", "events=U", "C,_ R,D,U L,_"),
+            "registered: basic"
+        );
         // A vertex of one symbol matches nothing, not even `.`.
         assert!(!m("C.L", "C,_ R L,_"));
         // `'foo'` must be the first custom label.
@@ -299,7 +302,11 @@ mod tests {
                 min: 1_000_000,
                 max: Some(1_000_000),
             };
-            Expr::Concat(vec![vertex("C"), Expr::Repeat(Box::new(body), r), vertex("L")])
+            Expr::Concat(vec![
+                vertex("C"),
+                Expr::Repeat(Box::new(body), r),
+                vertex("L"),
+            ])
         };
         let path: Path = "C,_ R,D L,_".parse().unwrap();
         let star = Expr::Repeat(Box::new(vertex(".")), Repetition { min: 0, max: None });

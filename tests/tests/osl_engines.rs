@@ -83,7 +83,14 @@ fn all_accum_rules_as_one_set_on_every_engine() {
             let i = rules.iter().position(|x| *x == r.expr).unwrap();
             let got = m.which(&r.path);
             assert_eq!(got.len(), rules.len());
-            assert_eq!(got[i], r.matches, "{} line {}: {}", e.name(), r.line, r.expr);
+            assert_eq!(
+                got[i],
+                r.matches,
+                "{} line {}: {}",
+                e.name(),
+                r.line,
+                r.expr
+            );
         }
     }
 }

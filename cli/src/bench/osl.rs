@@ -156,10 +156,7 @@ pub fn run(
             Some(n) => format!("DFA, {n} states, {} classes", set.class_count()),
             None => format!("NFA, {} positions", set.nfa_positions()),
         };
-        r.note = format!(
-            "{shape}; {:.2}x the RenderMan basic set",
-            ns(t) / rm_ns
-        );
+        r.note = format!("{shape}; {:.2}x the RenderMan basic set", ns(t) / rm_ns);
         rows.push(r);
     }
     Ok((rows, bad))
@@ -194,10 +191,17 @@ mod tests {
             .collect();
         let rm_set = AovSet::compile(&rm_aovs).unwrap();
         for p in super::super::sample::paths(20_000, 3) {
-            if p.vertices().iter().any(|v| v.event().is_some_and(|e| e.kind() == EventKind::U)) {
+            if p.vertices()
+                .iter()
+                .any(|v| v.event().is_some_and(|e| e.kind() == EventKind::U))
+            {
                 continue; // user lobes: RenderMan's `.` excludes them, OSL's does not
             }
-            assert_eq!(osl_set.match_osl_path(&path(&p)), rm_set.match_path(&p), "{p}");
+            assert_eq!(
+                osl_set.match_osl_path(&path(&p)),
+                rm_set.match_path(&p),
+                "{p}"
+            );
         }
     }
 }

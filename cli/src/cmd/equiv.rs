@@ -63,7 +63,9 @@ pub fn run(args: Args) -> ExitCode {
 /// `equiv --dialect osl`.
 fn run_osl(args: &Args) -> ExitCode {
     if args.ini.is_some() {
-        return bad_input("error: --ini holds RenderMan macros; it does not apply to --dialect osl");
+        return bad_input(
+            "error: --ini holds RenderMan macros; it does not apply to --dialect osl",
+        );
     }
     let registered: osl::Registered = match args.register.as_deref().unwrap_or("-").parse() {
         Ok(r) => r,
@@ -82,11 +84,7 @@ fn run_osl(args: &Args) -> ExitCode {
 }
 
 /// The text printed for a comparison, after re-checking its witnesses.
-pub fn report<E: Checked>(
-    a: &E,
-    b: &E,
-    c: &Comparison<E::Path>,
-) -> Result<String, Disagreement> {
+pub fn report<E: Checked>(a: &E, b: &E, c: &Comparison<E::Path>) -> Result<String, Disagreement> {
     let (sa, sb) = (a.to_string(), b.to_string());
     let check = |path: &E::Path, in_a: bool| {
         witness::recheck(

@@ -22,7 +22,9 @@ use crate::input::{bad_input, osl_error};
 /// Runs `lpe-check match --dialect osl`.
 pub fn run(args: &Args, engines: &[&'static dyn Engine]) -> ExitCode {
     if args.ini.is_some() {
-        return bad_input("error: --ini holds RenderMan macros; it does not apply to --dialect osl");
+        return bad_input(
+            "error: --ini holds RenderMan macros; it does not apply to --dialect osl",
+        );
     }
     if args.batch {
         return batch(|line| batch_line(engines, line));
@@ -64,9 +66,7 @@ pub fn batch_line(engines: &[&dyn Engine], line: &str) -> LineOutcome {
         Some("MATCH") => Some(true),
         Some("NOMATCH") => Some(false),
         Some(other) => {
-            return LineOutcome::Error(format!(
-                "expected answer `{other}`: write MATCH or NOMATCH"
-            ))
+            return LineOutcome::Error(format!("expected answer `{other}`: write MATCH or NOMATCH"))
         }
     };
     let registered: Registered = match reg.parse() {

@@ -54,7 +54,9 @@ pub fn run(args: Args) -> ExitCode {
 /// `parse --dialect osl`.
 fn run_osl(args: &Args) -> ExitCode {
     if args.ini.is_some() {
-        return bad_input("error: --ini holds RenderMan macros; it does not apply to --dialect osl");
+        return bad_input(
+            "error: --ini holds RenderMan macros; it does not apply to --dialect osl",
+        );
     }
     let registered: osl::Registered = match args.register.as_deref().unwrap_or("-").parse() {
         Ok(r) => r,

@@ -68,7 +68,9 @@ pub fn run(args: Args) -> ExitCode {
 /// `partition --dialect osl`.
 fn run_osl(args: &Args) -> ExitCode {
     if args.ini.is_some() {
-        return bad_input("error: --ini holds RenderMan macros; it does not apply to --dialect osl");
+        return bad_input(
+            "error: --ini holds RenderMan macros; it does not apply to --dialect osl",
+        );
     }
     let registered: osl::Registered = match args.register.as_deref().unwrap_or("-").parse() {
         Ok(r) => r,
@@ -79,8 +81,7 @@ fn run_osl(args: &Args) -> ExitCode {
         .universe
         .as_deref()
         .unwrap_or(analysis::DEFAULT_OSL_UNIVERSE);
-    let prepared = parse(universe_text)
-        .and_then(|u| Ok((named(&args.aovs, |e| parse(e))?, u)));
+    let prepared = parse(universe_text).and_then(|u| Ok((named(&args.aovs, |e| parse(e))?, u)));
     let (aovs, universe) = match prepared {
         Ok(p) => p,
         Err(e) => return bad_input(e),
@@ -102,7 +103,11 @@ type Named = Vec<(String, Lpe)>;
 fn prepare(args: &Args) -> Result<(Named, Lpe), InputError> {
     let parser = load_parser(args.ini.as_deref())?;
     let parse = |s: &str| parser.parse(s).map_err(InputError::from);
-    let universe = parse(args.universe.as_deref().unwrap_or(analysis::DEFAULT_UNIVERSE))?;
+    let universe = parse(
+        args.universe
+            .as_deref()
+            .unwrap_or(analysis::DEFAULT_UNIVERSE),
+    )?;
     Ok((named(&args.aovs, parse)?, universe))
 }
 

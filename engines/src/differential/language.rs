@@ -78,7 +78,6 @@ impl Language for RenderMan {
     fn shrink_path(&self, p: &Path) -> Vec<Path> {
         shrink::shrink_path(p)
     }
-
 }
 
 /// The OSL dialect, with the user labels registered before the expressions were parsed.

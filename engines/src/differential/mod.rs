@@ -24,8 +24,12 @@ pub mod counterexample;
 pub mod language;
 pub mod shrink;
 
-pub use cases::{case_rng, generate_case, generate_osl_case, run_cases, run_osl_cases, Case, Run, Totals};
-pub use check::{answers_in, answers_of, check, check_in, check_set, check_with, Agreement, Outcome};
+pub use cases::{
+    case_rng, generate_case, generate_osl_case, run_cases, run_osl_cases, Case, Run, Totals,
+};
+pub use check::{
+    answers_in, answers_of, check, check_in, check_set, check_with, Agreement, Outcome,
+};
 pub use counterexample::Counterexample;
 pub use language::{Language, Osl, RenderMan};
 pub use shrink::{minimize, minimize_in, shrink_expr, shrink_path};

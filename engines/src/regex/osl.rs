@@ -186,3 +186,75 @@ pub fn translate(exprs: &[Lpe]) -> Result<(Symbols, Vec<Hir>), BuildError> {
         .collect();
     Ok((symbols, hirs))
 }
+
+#[cfg(test)]
+mod tests {
+    use lpe::osl::{parse, Registered};
+
+    use super::*;
+    use crate::engine::{Engine, EngineError};
+    use crate::regex::LAZY;
+
+    fn lpe(s: &str) -> Lpe {
+        parse(s, &Registered::none()).unwrap()
+    }
+
+    #[test]
+    fn the_stream_is_symbols_then_stop_per_vertex() {
+        let (symbols, _) = translate(&[lpe("C'foo'L")]).unwrap();
+        let p: Path = "C,_ R,~,foo,bar L".parse().unwrap();
+        let b = |l: &str| symbols.byte(&Symbol::label(l));
+        // `_` and `bar` are named by no expression: both OTHER.
+        assert_eq!(
+            symbols.encode_path(&p),
+            [
+                b("C"),
+                OTHER,
+                STOP,
+                b("R"),
+                NONE,
+                b("foo"),
+                OTHER,
+                STOP,
+                b("L"),
+                STOP
+            ]
+        );
+        assert_ne!(b("foo"), OTHER);
+    }
+
+    #[test]
+    fn unmentioned_labels_share_other_and_stay_distinct_from_named_ones() {
+        let m = LAZY
+            .compile_osl(&[lpe("C<R.[^'a']>L"), lpe("C'a'L")], &Registered::none())
+            .unwrap();
+        let which = |p: &str| m.which(&p.parse().unwrap());
+        assert_eq!(which("C,_ R,D,zz L,_"), [true, false]);
+        assert_eq!(which("C,_ R,D,a L,_"), [false, true]);
+        // The eater skips OTHER labels but no basic one.
+        assert_eq!(which("C,_ R,D,zz,a L,_"), [true, false]);
+        assert_eq!(which("C,_ R,D,a,zz L,_"), [false, true]);
+        assert_eq!(which("C,_ R,D,a,D L,_"), [false, false]);
+    }
+
+    #[test]
+    fn too_many_labels_is_a_typed_refusal() {
+        let set = |n: usize| {
+            let labels: String = (0..n).map(|i| format!("'l{i}'")).collect();
+            lpe(&format!("C<R.[{labels}]>L"))
+        };
+        let fits = MAX_SYMBOLS - BASIC.len();
+        let r = LAZY.compile_osl(&[set(fits + 1)], &Registered::none());
+        assert!(matches!(
+            r,
+            Err(EngineError::Regex(BuildError::TooManyLabels { labels, max }))
+                if labels == MAX_SYMBOLS + 1 && max == MAX_SYMBOLS
+        ));
+        // One fewer fits (the last byte, 0xff, in use), and a label still matches only
+        // itself.
+        let m = LAZY.compile_osl(&[set(fits)], &Registered::none()).unwrap();
+        let last = format!("C,_ R,D,l{} L,_", fits - 1);
+        assert_eq!(m.which(&last.parse().unwrap()), [true]);
+        assert_eq!(m.which(&"C,_ R,D,zz L,_".parse().unwrap()), [false]);
+    }
+}

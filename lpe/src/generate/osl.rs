@@ -58,9 +58,18 @@ pub fn registered(c: &mut impl Choices) -> Registered {
     if c.chance(50) {
         return r;
     }
-    for (l, percent, scatter) in [("U", 70, false), ("1", 20, false), ("Y", 70, true), ("a", 20, true)] {
+    for (l, percent, scatter) in [
+        ("U", 70, false),
+        ("1", 20, false),
+        ("Y", 70, true),
+        ("a", 20, true),
+    ] {
         if c.chance(percent) {
-            let list = if scatter { &mut r.scatters } else { &mut r.events };
+            let list = if scatter {
+                &mut r.scatters
+            } else {
+                &mut r.events
+            };
             list.push(l.to_string());
         }
     }

@@ -136,3 +136,102 @@ fn shrink_vertex(v: &VertexPattern, basic: &[Symbol]) -> Vec<VertexPattern> {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    use lpe::osl::{self, Expr, Registered};
+
+    use super::*;
+    use crate::adapters::{OslReferenceMatcher, Reference};
+    use crate::differential::{check_in, Osl, Outcome};
+    use crate::engine::{Engine, EngineError, Matcher};
+
+    /// A deliberately wrong engine: its eaters skip every symbol, basic labels included
+    /// (OSL's comment says "everything but STOP"; its code excludes the basic set).
+    struct EaterBlind;
+
+    fn blind(e: &mut Expr) {
+        match e {
+            Expr::Vertex(v) => {
+                if let Some(ex) = &mut v.eater {
+                    ex.clear();
+                }
+            }
+            Expr::Concat(es) | Expr::Alt(es) => es.iter_mut().for_each(blind),
+            Expr::Repeat(b, _) => blind(b),
+            Expr::Empty | Expr::Nothing => {}
+        }
+    }
+
+    impl Engine for EaterBlind {
+        fn name(&self) -> &'static str {
+            "eater-blind"
+        }
+        fn compile(&self, _: &[lpe::Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
+            Err(EngineError::Unsupported(lpe::Dialect::RenderMan))
+        }
+        fn compile_osl(
+            &self,
+            exprs: &[osl::Lpe],
+            _: &Registered,
+        ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
+            let mut exprs = exprs.to_vec();
+            exprs.iter_mut().for_each(|e| blind(&mut e.expr));
+            Ok(Box::new(OslReferenceMatcher(exprs)))
+        }
+    }
+
+    #[test]
+    fn a_planted_osl_bug_is_found_and_minimized() {
+        let engines: Vec<&dyn Engine> = vec![&Reference, &EaterBlind];
+        let reg: Registered = "events=U".parse().unwrap();
+        let exprs: Vec<osl::Lpe> = ["C<RD>[LO]", "C(<.[GS]>|'foo')*<TD'key'>.*[LO]"]
+            .iter()
+            .map(|s| osl::parse(s, &reg).unwrap())
+            .collect();
+        let path: Path = "C,_ R,G T,S,foo T,D,key,U,x L,_,key".parse().unwrap();
+        let lang = Osl { registered: reg };
+        let Outcome::Disagree(c) = check_in(&lang, &engines, &exprs, &[path]) else {
+            panic!("the planted bug went unnoticed");
+        };
+        // Down to one vertex pattern and one vertex whose only extra label is the
+        // registered U: the reference's eater refuses it, the planted bug's eats it.
+        assert_eq!(c.exprs.len(), 1);
+        assert_eq!(c.path.to_string(), "T,D,U", "{c}");
+        assert_eq!(c.exprs[0].to_string(), "<..>");
+        let text = c.to_string();
+        assert!(text.contains("registered: events=U"), "{text}");
+        assert!(text.contains("reference: no-match"), "{text}");
+        assert!(text.contains("eater-blind: match"), "{text}");
+    }
+
+    #[test]
+    fn shrinking_keeps_the_eater_rule_and_terminates() {
+        let reg = Registered::none();
+        let basic = reg.basic_labels();
+        let e = osl::parse("C(<R[DG]'a'>|<T[^S]abcde>{2,3})*[^'b']L", &reg)
+            .unwrap()
+            .expr;
+        let mut frontier = vec![e];
+        let mut seen = 0;
+        while let Some(x) = frontier.pop() {
+            seen += 1;
+            assert!(seen < 200_000, "shrinking does not terminate");
+            for y in shrink_expr(&x, &basic) {
+                // What the parser makes of the printed candidate is the candidate.
+                let text = y.to_string();
+                if !text.is_empty() {
+                    if let Ok(back) = osl::parse(&text, &reg) {
+                        assert_eq!(back.expr, y, "{text}");
+                    }
+                }
+                y.for_each_vertex(&mut |v| {
+                    assert_eq!(v.eater.is_some(), v.symbols.len() < 7, "{text}");
+                });
+                if seen < 500 {
+                    frontier.push(y);
+                }
+            }
+        }
+    }
+}
