@@ -46,7 +46,7 @@ use crate::automata::alphabet::Alphabet;
 use crate::automata::dfa::Dfa;
 use crate::automata::emptiness::{self, Warning};
 use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
-use crate::automata::nfa::{Builder, Nfa, Parts};
+use crate::automata::nfa::{Builder, Nfa};
 use crate::osl;
 use crate::path::{Path, Vertex};
 use crate::{Dialect, Lpe};
@@ -306,15 +306,8 @@ impl AovSet {
             n.saturating_add(l.expr.positions_with(opts.max_path_len))
         });
         Self::check_nfa_budget(positions, opts)?;
-        let mut builder = Builder::new(opts.max_path_len);
-        let mut parts = Parts {
-            aov_first: Vec::new(),
-            aov_last: Vec::new(),
-            aov_nullable: Vec::new(),
-        };
-        for (_, l) in aovs {
-            builder.add(&l.expr, &mut parts);
-        }
+        let (builder, parts) =
+            Builder::of_all(aovs.iter().map(|(_, l)| &l.expr), opts.max_path_len);
         // Duplicates across AOVs are fine: the alphabet's label table deduplicates.
         let labels: Vec<String> = aovs.iter().flat_map(|(_, l)| l.expr.labels()).collect();
         let alphabet = Alphabet::new(&builder.atoms, labels);

@@ -171,20 +171,15 @@ mod tests {
             .collect()
     }
 
-    const OSL_BASIC: [&str; 7] = [
-        "C<RD>[LO]",
-        "C<RD>.+[LO]",
-        "C<TD>.*[LO]",
-        "C<R[GS]>[LO]",
-        "C<R[GS]>.+[LO]",
-        "C<T[GS]>.*[LO]",
-        "C[LO]",
-    ];
-
     #[test]
     fn osl_basic_set_partitions_the_osl_universe() {
         let reg = osl::Registered::none();
-        let p = partition_osl(&osl_set(&OSL_BASIC), &default_osl_universe(&reg), &reg).unwrap();
+        let p = partition_osl(
+            &osl_set(&osl::BASIC.map(|(_, src)| src)),
+            &default_osl_universe(&reg),
+            &reg,
+        )
+        .unwrap();
         assert!(p.is_clean(), "{p:?}");
     }
 
@@ -192,7 +187,7 @@ mod tests {
     fn osl_partition_witnesses() {
         let reg = osl::Registered::none();
         // Without `C[LO]` the direct paths are a gap; doubling `C<RD>[LO]` overlaps.
-        let mut aovs = osl_set(&OSL_BASIC[..6]);
+        let mut aovs = osl_set(&osl::BASIC.map(|(_, src)| src)[..6]);
         aovs.push(("again".into(), osl::parse("C<RD>L", &reg).unwrap()));
         let p = partition_osl(&aovs, &default_osl_universe(&reg), &reg).unwrap();
         assert_eq!(p.gap.unwrap().to_string(), "C,~ L,~");
@@ -205,7 +200,7 @@ mod tests {
         assert!(p.outside.is_empty());
         // A universe without glossy: glossy AOVs match outside it.
         let u = osl::parse("C<[RT]D>*[LO]", &reg).unwrap();
-        let p = partition_osl(&osl_set(&OSL_BASIC), &u, &reg).unwrap();
+        let p = partition_osl(&osl_set(&osl::BASIC.map(|(_, src)| src)), &u, &reg).unwrap();
         let out: Vec<(usize, String)> =
             p.outside.iter().map(|(i, w)| (*i, w.to_string())).collect();
         // Each a shortest one: the glossy bounce comes first, or right after the

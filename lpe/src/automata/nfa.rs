@@ -229,6 +229,23 @@ pub(crate) struct Parts {
 }
 
 impl<'a, A: Eq + Hash> Builder<'a, A> {
+    /// The construction of `exprs`, one AOV each, in order.
+    pub(crate) fn of_all<E: Regex<Atom = A> + 'a>(
+        exprs: impl IntoIterator<Item = &'a E>,
+        max_path_len: Option<u32>,
+    ) -> (Builder<'a, A>, Parts) {
+        let mut builder = Builder::new(max_path_len);
+        let mut parts = Parts {
+            aov_first: Vec::new(),
+            aov_last: Vec::new(),
+            aov_nullable: Vec::new(),
+        };
+        for e in exprs {
+            builder.add(e, &mut parts);
+        }
+        (builder, parts)
+    }
+
     /// Adds one AOV's expression.
     pub(crate) fn add<E: Regex<Atom = A>>(&mut self, e: &'a E, parts: &mut Parts) {
         let f = self.build(e);
@@ -493,15 +510,7 @@ mod tests {
     /// The NFA of `srcs` with the given table budget, and its class count.
     fn nfa(srcs: &[&str], table_budget: usize) -> (Nfa, usize) {
         let lpes: Vec<_> = srcs.iter().map(|s| parse(s).unwrap()).collect();
-        let mut builder = Builder::new(None);
-        let mut parts = Parts {
-            aov_first: Vec::new(),
-            aov_last: Vec::new(),
-            aov_nullable: Vec::new(),
-        };
-        for l in &lpes {
-            builder.add(&l.expr, &mut parts);
-        }
+        let (builder, parts) = Builder::of_all(lpes.iter().map(|l| &l.expr), None);
         let labels = lpes.iter().flat_map(|l| l.expr.labels()).collect();
         let alphabet = Alphabet::new(&builder.atoms, labels);
         let classes = alphabet.class_count();

@@ -13,7 +13,7 @@
 use std::fmt;
 
 use super::symbol::Symbol;
-use crate::ast::Repetition;
+use crate::ast::{write_parts, Repetition};
 
 /// What one slot of a vertex pattern accepts. No slot accepts STOP.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -232,31 +232,18 @@ impl fmt::Display for VertexPattern {
 
 impl fmt::Display for Expr {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        fn child(f: &mut fmt::Formatter<'_>, e: &Expr, paren: bool) -> fmt::Result {
-            if paren {
-                write!(f, "({e})")
-            } else {
-                write!(f, "{e}")
-            }
-        }
         match self {
             Expr::Vertex(v) => write!(f, "{v}"),
-            Expr::Concat(es) => es
-                .iter()
-                .try_for_each(|e| child(f, e, matches!(e, Expr::Concat(_)))),
+            Expr::Concat(es) => write_parts(f, es, "", |e| matches!(e, Expr::Concat(_))),
             // `|` binds tighter than concatenation and takes one item on each side.
-            Expr::Alt(es) => es.iter().enumerate().try_for_each(|(i, e)| {
-                if i > 0 {
-                    f.write_str("|")?;
-                }
-                child(f, e, matches!(e, Expr::Concat(_) | Expr::Alt(_)))
-            }),
+            Expr::Alt(es) => {
+                write_parts(f, es, "|", |e| matches!(e, Expr::Concat(_) | Expr::Alt(_)))
+            }
             Expr::Repeat(e, r) => {
-                child(
-                    f,
-                    e,
-                    matches!(**e, Expr::Concat(_) | Expr::Alt(_) | Expr::Repeat(..)),
-                )?;
+                write_parts(f, std::slice::from_ref(&**e), "", |e| {
+                    matches!(e, Expr::Concat(_) | Expr::Alt(_) | Expr::Repeat(..))
+                })?;
+                // OSL has no `?`: `{0,1}` is spelled out.
                 match (r.min, r.max) {
                     (0, None) => f.write_str("*"),
                     (1, None) => f.write_str("+"),

@@ -32,6 +32,9 @@ const NONE_ID: u32 = 0;
 pub(crate) struct VertexClasses {
     /// Mentioned labels to their symbol ids.
     label_ids: FxMap<Box<str>, u32>,
+    /// The symbol id of every one-byte ASCII label, without hashing: most symbols a
+    /// renderer feeds are built-in one-letter labels.
+    ascii_ids: [u32; 128],
     /// NONE, the labels by id, then OTHER's stand-in label.
     symbols: Vec<Symbol>,
     /// `trans[state * symbols.len() + symbol id]`: the vertex-reading automaton.
@@ -72,6 +75,15 @@ impl VertexClasses {
             .enumerate()
             .map(|(i, l)| (Box::from(*l), i as u32 + 1))
             .collect();
+        let other_id = labels.len() as u32 + 1;
+        let mut ascii_ids = [other_id; 128];
+        for (l, &id) in &label_ids {
+            if let [b] = l.as_bytes() {
+                if b.is_ascii() {
+                    ascii_ids[*b as usize] = id;
+                }
+            }
+        }
         let mut symbols = vec![Symbol::None];
         symbols.extend(labels.iter().map(|l| Symbol::label(*l)));
         // OTHER: any label no pattern mentions; a fresh name stands for it in witnesses.
@@ -192,6 +204,7 @@ impl VertexClasses {
         class_of[0] = class_of[1];
         Ok(VertexClasses {
             label_ids,
+            ascii_ids,
             symbols,
             trans,
             class_of,
@@ -201,9 +214,13 @@ impl VertexClasses {
         })
     }
 
+    #[inline]
     fn symbol_id(&self, s: &Symbol) -> usize {
         match s {
             Symbol::None => NONE_ID as usize,
+            Symbol::Label(l) if l.len() == 1 && l.as_bytes()[0].is_ascii() => {
+                self.ascii_ids[l.as_bytes()[0] as usize] as usize
+            }
             Symbol::Label(l) => self
                 .label_ids
                 .get(l.as_str())
@@ -212,6 +229,7 @@ impl VertexClasses {
     }
 
     /// The class of a whole vertex.
+    #[inline]
     pub(crate) fn classify(&self, v: &Vertex) -> Class {
         let n = self.symbols.len();
         let end = v.symbols.iter().fold(0usize, |s, sym| {

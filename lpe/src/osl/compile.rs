@@ -10,7 +10,7 @@ use crate::aov::{CompileError, Options};
 use crate::automata::alphabet::AcceptTable;
 use crate::automata::emptiness::{nonempty_under, Warning};
 use crate::automata::mask::Class;
-use crate::automata::nfa::{Builder, Nfa, Node, Parts, Regex};
+use crate::automata::nfa::{Builder, Nfa, Node, Regex};
 use crate::automata::shape::ANY;
 
 impl Regex for Expr {
@@ -43,15 +43,8 @@ impl Compiled {
         registered: &Registered,
         opts: &Options,
     ) -> Result<(Compiled, Nfa, Vec<Warning>), CompileError> {
-        let mut builder = Builder::new(opts.max_path_len);
-        let mut parts = Parts {
-            aov_first: Vec::new(),
-            aov_last: Vec::new(),
-            aov_nullable: Vec::new(),
-        };
-        for (_, l) in aovs {
-            builder.add(&l.expr, &mut parts);
-        }
+        let (builder, parts) =
+            Builder::of_all(aovs.iter().map(|(_, l)| &l.expr), opts.max_path_len);
         let classes = VertexClasses::new(&builder.atoms).map_err(|TooManyVertexStates| {
             CompileError::TooManyVertexStates {
                 max: MAX_VERTEX_STATES,
@@ -155,13 +148,6 @@ mod tests {
         AovSet::compile_osl(&aovs, reg, opts).unwrap()
     }
 
-    fn nfa_only() -> Options {
-        Options {
-            dfa_budget: 0,
-            ..Options::default()
-        }
-    }
-
     #[test]
     fn redos_expression_steps_the_nfa_and_answers_right() {
         // C R ( (('a'+|G) [^S]{2} [^OC]){2,} | ((L|T*) [sBO]{2,})+ )
@@ -187,17 +173,16 @@ mod tests {
     #[test]
     fn basic_set_gets_a_dfa_and_both_modes_agree() {
         let reg = Registered::none();
-        let srcs = [
-            "C<RD>[LO]",
-            "C<RD>.+[LO]",
-            "C<TD>.*[LO]",
-            "C<R[GS]>[LO]",
-            "C<R[GS]>.+[LO]",
-            "C<T[GS]>.*[LO]",
-            "C[LO]",
-        ];
+        let srcs = crate::osl::BASIC.map(|(_, src)| src);
         let dfa = set(&srcs, &reg, &Options::default());
-        let nfa = set(&srcs, &reg, &nfa_only());
+        let nfa = set(
+            &srcs,
+            &reg,
+            &Options {
+                dfa_budget: 0,
+                ..Options::default()
+            },
+        );
         assert!(dfa.uses_dfa() && !nfa.uses_dfa());
         let cases = [
             ("C,_ R,D L,_", 0),

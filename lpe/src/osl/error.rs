@@ -8,7 +8,7 @@ use std::fmt;
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum ErrorKind {
     /// An unknown single character outside `<>` (empty for `x`, for an unclosed quote and
-    /// at the end of the text): "Unrecognized basic label: <sym>".
+    /// at the end of the text): "Unrecognized basic label: `sym`".
     UnrecognizedBasicLabel(String),
     /// An unquoted unknown label, `x` or `.` inside `[^...]`.
     UnrecognizedLabel,

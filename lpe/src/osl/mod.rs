@@ -26,6 +26,19 @@ pub mod symbol;
 pub use ast::{Expr, Lpe, SymbolPattern, VertexPattern, Warning, WarningKind};
 pub use classes::MAX_VERTEX_STATES;
 
+/// The OSL basic set: the counterpart of [`crate::macros::BASIC`] under the same names,
+/// partitioning [`crate::analysis::DEFAULT_OSL_UNIVERSE`] (glossy and singular lobes go
+/// where RenderMan's specular ones do).
+pub const BASIC: [(&str, &str); 7] = [
+    ("directDiffuse", "C<RD>[LO]"),
+    ("indirectDiffuse", "C<RD>.+[LO]"),
+    ("subsurface", "C<TD>.*[LO]"),
+    ("directSpecular", "C<R[GS]>[LO]"),
+    ("indirectSpecular", "C<R[GS]>.+[LO]"),
+    ("transmissive", "C<T[GS]>.*[LO]"),
+    ("emissive", "C[LO]"),
+];
+
 /// Most bytes an OSL set's eager DFA may take (see [`crate::AovSet::compile_osl`]): about
 /// 3 000 states at OSL's typical 33-64 classes, far above what real AOV sets need (the
 /// OSL basic set: 16 states), while a blow-up gives up within milliseconds.

@@ -15,6 +15,7 @@ use std::fmt;
 use std::str::FromStr;
 
 use super::symbol::Symbol;
+use crate::ast::write_parts;
 
 /// One vertex: event symbol, scattering symbol, then custom labels, in order. It has at
 /// least one symbol; one with fewer than two matches nothing, exactly as in OSL (every
@@ -116,25 +117,13 @@ impl fmt::Display for Symbol {
 
 impl fmt::Display for Vertex {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, s) in self.symbols.iter().enumerate() {
-            if i > 0 {
-                f.write_str(",")?;
-            }
-            write!(f, "{s}")?;
-        }
-        Ok(())
+        write_parts(f, &self.symbols, ",", |_| false)
     }
 }
 
 impl fmt::Display for Path {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, v) in self.vertices.iter().enumerate() {
-            if i > 0 {
-                f.write_str(" ")?;
-            }
-            write!(f, "{v}")?;
-        }
-        Ok(())
+        write_parts(f, &self.vertices, " ", |_| false)
     }
 }
 
