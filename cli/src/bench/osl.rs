@@ -17,18 +17,6 @@ use super::{best_times, chunked, row, run_classes, BenchError, Disagreement, Fla
 /// The workload name, as given to `--workload`.
 pub const WORKLOAD: &str = "osl-basic";
 
-/// The OSL basic set: the partition of every path into direct and indirect
-/// diffuse, glossy/specular, transmission and emission.
-pub const BASIC: [(&str, &str); 7] = [
-    ("directDiffuse", "C<RD>[LO]"),
-    ("indirectDiffuse", "C<RD>.+[LO]"),
-    ("transmissionDiffuse", "C<TD>.*[LO]"),
-    ("directSpecular", "C<R[GS]>[LO]"),
-    ("indirectSpecular", "C<R[GS]>.+[LO]"),
-    ("transmissionSpecular", "C<T[GS]>.*[LO]"),
-    ("emission", "C[LO]"),
-];
-
 /// The OSL vertex a renderer feeds for `v`.
 pub fn vertex(v: &lpe::Vertex) -> osl::Vertex {
     let event = match v.ty() {
@@ -82,7 +70,7 @@ pub fn run(
     checked: usize,
 ) -> Result<(Vec<Row>, Vec<Disagreement>), BenchError> {
     let reg = Registered::none();
-    let aovs: Vec<(String, osl::Lpe)> = BASIC
+    let aovs: Vec<(String, osl::Lpe)> = osl::BASIC
         .iter()
         .map(|(n, s)| {
             let l = osl::parse(s, &reg).unwrap_or_else(|e| panic!("OSL basic AOV `{s}`: {e}"));
@@ -180,7 +168,7 @@ mod tests {
         // Both basic sets split every sampled path the same way (AOV i of one is AOV i
         // of the other), so the two rows time the same routing work.
         let reg = Registered::none();
-        let osl_aovs: Vec<(String, osl::Lpe)> = BASIC
+        let osl_aovs: Vec<(String, osl::Lpe)> = osl::BASIC
             .iter()
             .map(|(n, s)| (n.to_string(), osl::parse(s, &reg).unwrap()))
             .collect();
