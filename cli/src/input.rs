@@ -34,6 +34,52 @@ pub enum InputError {
     /// An expression does not parse (the error shows the byte position with a caret).
     #[error("{0}")]
     Expr(lpe::Error),
+    /// `--ini` with `--dialect osl`: its macros and lobe mappings are RenderMan's.
+    #[error("--ini holds RenderMan macros; it does not apply to --dialect osl")]
+    IniWithOsl,
+    /// `--register` without `--dialect osl`.
+    #[error("--register is for --dialect osl")]
+    RegisterWithoutOsl,
+    /// `--register` does not parse (the error gives the byte position).
+    #[error("--register: {0}")]
+    Register(lpe::osl::RegisteredError),
+}
+
+/// `--dialect` and OSL's `--register`, shared by the subcommands that read expressions.
+#[derive(clap::Args, Debug, Clone)]
+pub struct DialectArgs {
+    /// The expression language: `renderman` or `osl`.
+    #[arg(long, default_value_t = lpe::Dialect::RenderMan)]
+    pub dialect: lpe::Dialect,
+    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
+    #[arg(long)]
+    pub register: Option<String>,
+}
+
+impl DialectArgs {
+    /// Whether the OSL dialect is asked for; with RenderMan, `--register` is an error.
+    pub fn is_osl(&self) -> Result<bool, InputError> {
+        match (self.dialect, &self.register) {
+            (lpe::Dialect::Osl, _) => Ok(true),
+            (_, Some(_)) => Err(InputError::RegisterWithoutOsl),
+            (_, None) => Ok(false),
+        }
+    }
+
+    /// The OSL registration (`-` when not given); `--ini` is an error with OSL.
+    pub fn registered(
+        &self,
+        ini: Option<&std::path::Path>,
+    ) -> Result<lpe::osl::Registered, InputError> {
+        if ini.is_some() {
+            return Err(InputError::IniWithOsl);
+        }
+        self.register
+            .as_deref()
+            .unwrap_or("-")
+            .parse()
+            .map_err(InputError::Register)
+    }
 }
 
 impl From<lpe::Error> for InputError {

@@ -139,14 +139,13 @@ fn diff_reports_rate_and_agreement_and_is_deterministic() {
         assert!(!out.contains(&format!("skips: {engine} ")), "{out}");
     }
     // Same seed, same cases: the counts line (minus timing) repeats exactly.
-    let counts = |o: &str| {
-        o.lines()
-            .find(|l| l.starts_with("match rate"))
-            .unwrap()
-            .to_string()
-    };
     let (_, again, _) = lpe_check(&args, "");
-    assert_eq!(counts(&out), counts(&again));
+    assert_eq!(match_rate(&out), match_rate(&again));
+}
+
+/// The `match rate` line of a `diff` report (the counts, without timing).
+fn match_rate(out: &str) -> &str {
+    out.lines().find(|l| l.starts_with("match rate")).unwrap()
 }
 
 #[test]
@@ -324,12 +323,6 @@ fn osl_diff_agrees_and_is_deterministic() {
     assert!(out.contains("300 cases"), "{out}");
     assert!(out.contains("skips: none"), "{out}");
     assert!(out.contains("all engines agree"), "{out}");
-    let counts = |o: &str| {
-        o.lines()
-            .find(|l| l.starts_with("match rate"))
-            .unwrap()
-            .to_string()
-    };
     let (_, again, _) = lpe_check(&args, "");
-    assert_eq!(counts(&out), counts(&again));
+    assert_eq!(match_rate(&out), match_rate(&again));
 }

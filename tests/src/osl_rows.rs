@@ -69,6 +69,18 @@ pub fn parse_osl_rows(text: &str) -> Result<Vec<OslRow>, RowError> {
     Ok(rows)
 }
 
+/// The distinct expressions of `rows`, in first-seen order (a file's rule set, as OSL
+/// compiles it into one automaton).
+pub fn distinct_rules(rows: &[OslRow]) -> Vec<String> {
+    let mut rules: Vec<String> = Vec::new();
+    for r in rows {
+        if !rules.contains(&r.expr) {
+            rules.push(r.expr.clone());
+        }
+    }
+    rules
+}
+
 /// The rows of `testdata/osl/<name>`.
 pub fn load_osl_rows(name: &str) -> Result<Vec<OslRow>, RowError> {
     let file = concat!(env!("CARGO_MANIFEST_DIR"), "/testdata/osl/").to_string() + name;

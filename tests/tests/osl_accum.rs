@@ -4,7 +4,7 @@
 
 use lpe::osl::{self, Registered};
 use lpe::{AovSet, Options};
-use lpe_tests::osl_rows::{load_osl_rows, OslRow};
+use lpe_tests::osl_rows::{distinct_rules, load_osl_rows, OslRow};
 
 fn modes() -> [(&'static str, Options); 2] {
     [
@@ -68,13 +68,8 @@ fn one_set_of_all_accum_rules_answers_each_rule() {
     // still gives that rule's verdict.
     let rows = load_osl_rows("accum_test.tsv").unwrap();
     let reg: Registered = "events=U;scatters=Y".parse().unwrap();
-    let mut rules: Vec<String> = Vec::new();
-    for r in &rows {
-        assert_eq!(r.registered, reg);
-        if !rules.contains(&r.expr) {
-            rules.push(r.expr.clone());
-        }
-    }
+    assert!(rows.iter().all(|r| r.registered == reg));
+    let rules = distinct_rules(&rows);
     let aovs: Vec<(String, osl::Lpe)> = rules
         .iter()
         .map(|e| (e.clone(), osl::parse(e, &reg).unwrap()))

@@ -7,7 +7,7 @@ use engines::Engine;
 use lpe::osl::{self, Registered};
 use lpe::rng::SplitMix64;
 use lpe_tests::cases;
-use lpe_tests::osl_rows::{load_osl_rows, OslRow};
+use lpe_tests::osl_rows::{distinct_rules, load_osl_rows, OslRow};
 use proptest::prelude::*;
 
 /// The registry plus the eager (dense DFA) oracle.
@@ -69,13 +69,8 @@ fn extra_rows_on_every_engine() {
 fn all_accum_rules_as_one_set_on_every_engine() {
     let rows = load_osl_rows("accum_test.tsv").unwrap();
     let reg: Registered = "events=U;scatters=Y".parse().unwrap();
-    let mut rules: Vec<String> = Vec::new();
-    for r in &rows {
-        assert_eq!(r.registered, reg);
-        if !rules.contains(&r.expr) {
-            rules.push(r.expr.clone());
-        }
-    }
+    assert!(rows.iter().all(|r| r.registered == reg));
+    let rules = distinct_rules(&rows);
     let lpes: Vec<osl::Lpe> = rules.iter().map(|e| osl::parse(e, &reg).unwrap()).collect();
     for e in engines() {
         let m = e.compile_osl(&lpes, &reg).unwrap();

@@ -10,9 +10,9 @@
 use std::process::ExitCode;
 
 use lpe::analysis::{self, Comparison};
-use lpe::{osl, Dialect};
+use lpe::osl;
 
-use crate::input::{bad_input, load_parser, osl_error};
+use crate::input::{bad_input, load_parser, osl_error, DialectArgs};
 use crate::witness::{self, Checked, Disagreement, Expect};
 
 /// Arguments of `lpe-check equiv`.
@@ -25,21 +25,17 @@ pub struct Args {
     pub a: String,
     /// The second expression.
     pub b: String,
-    /// The expression language: `renderman` or `osl`.
-    #[arg(long, default_value_t = Dialect::RenderMan)]
-    pub dialect: Dialect,
-    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
-    #[arg(long)]
-    pub register: Option<String>,
+    /// `--dialect` and `--register`.
+    #[command(flatten)]
+    pub lang: DialectArgs,
 }
 
 /// Runs `lpe-check equiv`.
 pub fn run(args: Args) -> ExitCode {
-    if args.dialect == Dialect::Osl {
-        return run_osl(&args);
-    }
-    if args.register.is_some() {
-        return bad_input("error: --register is for --dialect osl");
+    match args.lang.is_osl() {
+        Ok(true) => return run_osl(&args),
+        Ok(false) => {}
+        Err(e) => return bad_input(format!("error: {e}")),
     }
     let parser = match load_parser(args.ini.as_deref()) {
         Ok(p) => p,
@@ -62,14 +58,9 @@ pub fn run(args: Args) -> ExitCode {
 
 /// `equiv --dialect osl`.
 fn run_osl(args: &Args) -> ExitCode {
-    if args.ini.is_some() {
-        return bad_input(
-            "error: --ini holds RenderMan macros; it does not apply to --dialect osl",
-        );
-    }
-    let registered: osl::Registered = match args.register.as_deref().unwrap_or("-").parse() {
+    let registered = match args.lang.registered(args.ini.as_deref()) {
         Ok(r) => r,
-        Err(e) => return bad_input(format!("error: --register: {e}")),
+        Err(e) => return bad_input(format!("error: {e}")),
     };
     let parse = |s: &str| osl::parse(s, &registered).map_err(|e| osl_error(s, &e));
     let (a, b) = match (parse(&args.a), parse(&args.b)) {

@@ -21,18 +21,18 @@ use crate::input::{bad_input, osl_error};
 
 /// Runs `lpe-check match --dialect osl`.
 pub fn run(args: &Args, engines: &[&'static dyn Engine]) -> ExitCode {
-    if args.ini.is_some() {
-        return bad_input(
-            "error: --ini holds RenderMan macros; it does not apply to --dialect osl",
-        );
-    }
+    let registered = match args.lang.registered(args.ini.as_deref()) {
+        Ok(r) => r,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
     if args.batch {
+        if args.lang.register.is_some() {
+            return bad_input(
+                "error: --batch reads the registration from each line's second column",
+            );
+        }
         return batch(|line| batch_line(engines, line));
     }
-    let registered: Registered = match args.register.as_deref().unwrap_or("-").parse() {
-        Ok(r) => r,
-        Err(e) => return bad_input(format!("error: --register: {e}")),
-    };
     let expr = args.expr.as_deref().unwrap_or_default();
     let lpe = match osl::parse(expr, &registered) {
         Ok(l) => l,

@@ -11,12 +11,12 @@
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
 
-use lpe::{Dialect, Lpe, Parser, Path};
+use lpe::{Lpe, Parser, Path};
 
 use engines::differential::{Language, RenderMan};
 use engines::Engine;
 
-use crate::input::{bad_input, load_parser, select_engines};
+use crate::input::{bad_input, load_parser, select_engines, DialectArgs};
 
 /// Arguments of `lpe-check match`.
 #[derive(clap::Args, Debug)]
@@ -27,12 +27,9 @@ pub struct Args {
     /// Engine to run: a name or `all`.
     #[arg(long, default_value = "all")]
     pub engine: String,
-    /// The expression language: `renderman` or `osl`.
-    #[arg(long, default_value_t = Dialect::RenderMan)]
-    pub dialect: Dialect,
-    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
-    #[arg(long, conflicts_with = "batch")]
-    pub register: Option<String>,
+    /// `--dialect` and `--register`.
+    #[command(flatten)]
+    pub lang: DialectArgs,
     /// A rendermn.ini-style file with user macros and lobe mappings.
     #[arg(long)]
     pub ini: Option<std::path::PathBuf>,
@@ -148,11 +145,10 @@ pub fn run(args: Args) -> ExitCode {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    if args.dialect == Dialect::Osl {
-        return super::match_osl::run(&args, &engines);
-    }
-    if args.register.is_some() {
-        return bad_input("error: --register is for --dialect osl");
+    match args.lang.is_osl() {
+        Ok(true) => return super::match_osl::run(&args, &engines),
+        Ok(false) => {}
+        Err(e) => return bad_input(format!("error: {e}")),
     }
     let parser = match load_parser(args.ini.as_deref()) {
         Ok(p) => p,

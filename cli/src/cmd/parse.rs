@@ -7,9 +7,8 @@
 use std::process::ExitCode;
 
 use lpe::osl;
-use lpe::Dialect;
 
-use crate::input::{bad_input, load_parser, osl_error};
+use crate::input::{bad_input, load_parser, osl_error, DialectArgs};
 
 /// Arguments of `lpe-check parse`.
 #[derive(clap::Args, Debug)]
@@ -19,21 +18,17 @@ pub struct Args {
     /// A rendermn.ini-style file with user macros and lobe mappings.
     #[arg(long)]
     pub ini: Option<std::path::PathBuf>,
-    /// The expression language: `renderman` or `osl`.
-    #[arg(long, default_value_t = Dialect::RenderMan)]
-    pub dialect: Dialect,
-    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
-    #[arg(long)]
-    pub register: Option<String>,
+    /// `--dialect` and `--register`.
+    #[command(flatten)]
+    pub lang: DialectArgs,
 }
 
 /// Prints the canonical form of the expression.
 pub fn run(args: Args) -> ExitCode {
-    if args.dialect == Dialect::Osl {
-        return run_osl(&args);
-    }
-    if args.register.is_some() {
-        return bad_input("error: --register is for --dialect osl");
+    match args.lang.is_osl() {
+        Ok(true) => return run_osl(&args),
+        Ok(false) => {}
+        Err(e) => return bad_input(format!("error: {e}")),
     }
     let parser = match load_parser(args.ini.as_deref()) {
         Ok(p) => p,
@@ -53,14 +48,9 @@ pub fn run(args: Args) -> ExitCode {
 
 /// `parse --dialect osl`.
 fn run_osl(args: &Args) -> ExitCode {
-    if args.ini.is_some() {
-        return bad_input(
-            "error: --ini holds RenderMan macros; it does not apply to --dialect osl",
-        );
-    }
-    let registered: osl::Registered = match args.register.as_deref().unwrap_or("-").parse() {
+    let registered = match args.lang.registered(args.ini.as_deref()) {
         Ok(r) => r,
-        Err(e) => return bad_input(format!("error: --register: {e}")),
+        Err(e) => return bad_input(format!("error: {e}")),
     };
     match osl::parse(&args.expr, &registered) {
         Ok(lpe) => {

@@ -14,9 +14,9 @@
 use std::process::ExitCode;
 
 use lpe::analysis::{self, Partition};
-use lpe::{osl, AovSet, Dialect, Lpe, Options};
+use lpe::{osl, AovSet, Lpe, Options};
 
-use crate::input::{bad_input, load_parser, osl_error, InputError};
+use crate::input::{bad_input, load_parser, osl_error, DialectArgs, InputError};
 use crate::witness::{self, Checked, Disagreement, Expect};
 
 /// Arguments of `lpe-check partition`.
@@ -25,12 +25,9 @@ pub struct Args {
     /// The universe to partition (default `C.*[<L.>O]`, OSL: `C<[RT][DGS]>*[LO]`).
     #[arg(long)]
     pub universe: Option<String>,
-    /// The expression language: `renderman` or `osl`.
-    #[arg(long, default_value_t = Dialect::RenderMan)]
-    pub dialect: Dialect,
-    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
-    #[arg(long)]
-    pub register: Option<String>,
+    /// `--dialect` and `--register`.
+    #[command(flatten)]
+    pub lang: DialectArgs,
     /// A rendermn.ini-style file with user macros and lobe mappings.
     #[arg(long)]
     pub ini: Option<std::path::PathBuf>,
@@ -41,11 +38,10 @@ pub struct Args {
 
 /// Runs `lpe-check partition`.
 pub fn run(args: Args) -> ExitCode {
-    if args.dialect == Dialect::Osl {
-        return run_osl(&args);
-    }
-    if args.register.is_some() {
-        return bad_input("error: --register is for --dialect osl");
+    match args.lang.is_osl() {
+        Ok(true) => return run_osl(&args),
+        Ok(false) => {}
+        Err(e) => return bad_input(format!("error: {e}")),
     }
     match prepare(&args) {
         Ok((aovs, universe)) => {
@@ -67,14 +63,9 @@ pub fn run(args: Args) -> ExitCode {
 
 /// `partition --dialect osl`.
 fn run_osl(args: &Args) -> ExitCode {
-    if args.ini.is_some() {
-        return bad_input(
-            "error: --ini holds RenderMan macros; it does not apply to --dialect osl",
-        );
-    }
-    let registered: osl::Registered = match args.register.as_deref().unwrap_or("-").parse() {
+    let registered = match args.lang.registered(args.ini.as_deref()) {
         Ok(r) => r,
-        Err(e) => return bad_input(format!("error: --register: {e}")),
+        Err(e) => return bad_input(format!("error: {e}")),
     };
     let parse = |s: &str| osl::parse(s, &registered).map_err(|e| osl_error(s, &e));
     let universe_text = args

@@ -23,10 +23,11 @@
 
 use std::collections::BTreeSet;
 
+use lpe::ast::Repetition;
 use lpe::osl::{Expr, Lpe, Path, Symbol, SymbolPattern};
-use regex_syntax::hir::{Hir, Look, Repetition};
+use regex_syntax::hir::{Hir, Look};
 
-use super::translate::byte_class;
+use super::translate::{byte_class, repeat};
 use super::BuildError;
 
 /// The STOP byte.
@@ -112,24 +113,14 @@ impl Symbols {
             Expr::Vertex(v) => {
                 let mut seq: Vec<Hir> = v.symbols.iter().map(|p| self.pattern(p)).collect();
                 if let Some(excluded) = &v.eater {
-                    seq.push(Hir::repetition(Repetition {
-                        min: 0,
-                        max: None,
-                        greedy: true,
-                        sub: Box::new(self.all_but(excluded)),
-                    }));
+                    seq.push(repeat(self.all_but(excluded), Repetition::STAR));
                 }
                 seq.push(byte_class([STOP]));
                 Hir::concat(seq)
             }
             Expr::Concat(es) => Hir::concat(es.iter().map(|e| self.expr(e)).collect()),
             Expr::Alt(es) => Hir::alternation(es.iter().map(|e| self.expr(e)).collect()),
-            Expr::Repeat(body, r) => Hir::repetition(Repetition {
-                min: r.min,
-                max: r.max,
-                greedy: true,
-                sub: Box::new(self.expr(body)),
-            }),
+            Expr::Repeat(body, r) => repeat(self.expr(body), *r),
             Expr::Empty => Hir::empty(),
             Expr::Nothing => Hir::fail(),
         }

@@ -153,14 +153,19 @@ impl<'a> Translator<'a> {
             Expr::Atom(a) => set_to_hir(&self.atom_set(a)),
             Expr::Concat(es) => Hir::concat(es.iter().map(|e| self.expr(e)).collect()),
             Expr::Alt(es) => Hir::alternation(es.iter().map(|e| self.expr(e)).collect()),
-            Expr::Repeat(body, r) => Hir::repetition(Repetition {
-                min: r.min,
-                max: r.max,
-                greedy: true,
-                sub: Box::new(self.expr(body)),
-            }),
+            Expr::Repeat(body, r) => repeat(self.expr(body), *r),
         }
     }
+}
+
+/// `sub{min,max}` with the expression's raw bounds (either dialect).
+pub(crate) fn repeat(sub: Hir, r: lpe::ast::Repetition) -> Hir {
+    Hir::repetition(Repetition {
+        min: r.min,
+        max: r.max,
+        greedy: true,
+        sub: Box::new(sub),
+    })
 }
 
 /// The class of exactly these bytes (empty: never matches).

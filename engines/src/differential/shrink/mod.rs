@@ -140,31 +140,58 @@ pub fn shrink_expr(e: &Expr) -> Vec<Expr> {
                 Expr::Concat(_) => Expr::concat(parts),
                 _ => Expr::alt(parts),
             };
-            out.extend(es.iter().cloned());
-            for i in 0..es.len() {
-                let mut fewer = es.clone();
-                fewer.remove(i);
-                out.push(rebuild(fewer));
-            }
-            for i in 0..es.len() {
-                for smaller in shrink_expr(&es[i]) {
-                    let mut parts = es.clone();
-                    parts[i] = smaller;
-                    out.push(rebuild(parts));
-                }
-            }
+            shrink_parts(es, rebuild, shrink_expr, &mut out);
         }
-        Expr::Repeat(body, r) => {
-            out.push((**body).clone());
-            for r2 in shrink_repetition(*r) {
-                out.push(Expr::Repeat(body.clone(), r2));
-            }
-            for smaller in shrink_expr(body) {
-                out.push(Expr::Repeat(Box::new(smaller), *r));
-            }
-        }
+        Expr::Repeat(body, r) => shrink_repeat(
+            &**body,
+            *r,
+            |b, r| Expr::Repeat(Box::new(b), r),
+            shrink_expr,
+            &mut out,
+        ),
     }
     out
+}
+
+/// Simpler forms of a sequence or alternation of `parts` (either dialect): each part
+/// alone, the node with one part dropped, the node with one part shrunk.
+pub(crate) fn shrink_parts<E: Clone>(
+    parts: &[E],
+    rebuild: impl Fn(Vec<E>) -> E,
+    shrink: impl Fn(&E) -> Vec<E>,
+    out: &mut Vec<E>,
+) {
+    out.extend(parts.iter().cloned());
+    for i in 0..parts.len() {
+        let mut fewer = parts.to_vec();
+        fewer.remove(i);
+        out.push(rebuild(fewer));
+    }
+    for i in 0..parts.len() {
+        for smaller in shrink(&parts[i]) {
+            let mut changed = parts.to_vec();
+            changed[i] = smaller;
+            out.push(rebuild(changed));
+        }
+    }
+}
+
+/// Simpler forms of `body{r}` (either dialect): the body alone, smaller counts, a
+/// shrunk body.
+pub(crate) fn shrink_repeat<E: Clone>(
+    body: &E,
+    r: Repetition,
+    repeat: impl Fn(E, Repetition) -> E,
+    shrink: impl Fn(&E) -> Vec<E>,
+    out: &mut Vec<E>,
+) {
+    out.push(body.clone());
+    for r2 in shrink_repetition(r) {
+        out.push(repeat(body.clone(), r2));
+    }
+    for smaller in shrink(body) {
+        out.push(repeat(smaller, r));
+    }
 }
 
 fn shrink_repetition(r: Repetition) -> Vec<Repetition> {

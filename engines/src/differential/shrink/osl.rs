@@ -4,8 +4,9 @@
 //! basic labels, exactly when it has fewer than five custom items), so every candidate
 //! is something the parser could have produced and its printed text means the same.
 
-use lpe::ast::Repetition;
 use lpe::osl::{Expr, Path, Symbol, SymbolPattern, VertexPattern};
+
+use super::{shrink_parts, shrink_repeat};
 
 /// Custom items from which a vertex pattern has no eater (OSL's rule).
 const NO_EATER_FROM: usize = 5;
@@ -44,52 +45,17 @@ pub fn shrink_expr(e: &Expr, basic: &[Symbol]) -> Vec<Expr> {
                 (_, Expr::Concat(_)) => Expr::Concat(parts),
                 _ => Expr::Alt(parts),
             };
-            out.extend(es.iter().cloned());
-            for i in 0..es.len() {
-                let mut fewer = es.clone();
-                fewer.remove(i);
-                out.push(rebuild(fewer));
-            }
-            for i in 0..es.len() {
-                for smaller in shrink_expr(&es[i], basic) {
-                    let mut parts = es.clone();
-                    parts[i] = smaller;
-                    out.push(rebuild(parts));
-                }
-            }
+            shrink_parts(es, rebuild, |x| shrink_expr(x, basic), &mut out);
         }
-        Expr::Repeat(body, r) => {
-            out.push((**body).clone());
-            for r2 in shrink_repetition(*r) {
-                out.push(Expr::Repeat(body.clone(), r2));
-            }
-            for smaller in shrink_expr(body, basic) {
-                out.push(Expr::Repeat(Box::new(smaller), *r));
-            }
-        }
+        Expr::Repeat(body, r) => shrink_repeat(
+            &**body,
+            *r,
+            |b, r| Expr::Repeat(Box::new(b), r),
+            |x| shrink_expr(x, basic),
+            &mut out,
+        ),
         Expr::Empty | Expr::Nothing => {}
     }
-    out
-}
-
-fn shrink_repetition(r: Repetition) -> Vec<Repetition> {
-    let mut out = Vec::new();
-    if r.min > 0 {
-        out.push(Repetition { min: 0, max: r.max });
-        out.push(Repetition {
-            min: r.min - 1,
-            max: r.max,
-        });
-    }
-    if let Some(m) = r.max {
-        if m > r.min {
-            out.push(Repetition {
-                min: r.min,
-                max: Some(r.min),
-            });
-        }
-    }
-    out.retain(|x| *x != r && x.max != Some(0));
     out
 }
 
