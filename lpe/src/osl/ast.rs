@@ -189,20 +189,15 @@ fn write_symbol(f: &mut fmt::Formatter<'_>, s: &Symbol) -> fmt::Result {
 
 impl fmt::Display for SymbolPattern {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let list = |f: &mut fmt::Formatter<'_>, open: &str, xs: &[Symbol]| {
+        // In a set every unquoted character is a label; in a negation only known labels
+        // may go unquoted, so its labels are all quoted. NONE has no spelling in either.
+        let list = |f: &mut fmt::Formatter<'_>, open: &str, xs: &[Symbol], bare: bool| {
             f.write_str(open)?;
             for x in xs {
                 match x {
-                    // Inside a set every character is a label: NONE has no spelling.
                     Symbol::None => f.write_str("x")?,
-                    // A negation's bare names must be built-in labels (`<R[^Q]>` is
-                    // an error): quote every other one.
                     Symbol::Label(l)
-                        if l.chars().count() == 1
-                            && !"'[]^".contains(l)
-                            && (open == "["
-                                || super::symbol::EVENT_LABELS.contains(&l.as_str())
-                                || super::symbol::SCATTERING_LABELS.contains(&l.as_str())) =>
+                        if bare && l.chars().count() == 1 && !"'[]^".contains(l.as_str()) =>
                     {
                         f.write_str(l)?
                     }
@@ -214,8 +209,8 @@ impl fmt::Display for SymbolPattern {
         match self {
             SymbolPattern::Any => f.write_str("."),
             SymbolPattern::One(s) => write_symbol(f, s),
-            SymbolPattern::Set(xs) => list(f, "[", xs),
-            SymbolPattern::NotIn(xs) => list(f, "[^", xs),
+            SymbolPattern::Set(xs) => list(f, "[", xs, true),
+            SymbolPattern::NotIn(xs) => list(f, "[^", xs, false),
         }
     }
 }

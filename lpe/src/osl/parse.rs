@@ -76,6 +76,15 @@ pub fn parse_with(
     })
 }
 
+/// Adds an alternative, flattening nested alternations (`(a|b)|c`, `[[ab]c]`): the
+/// same language, and one tree per language for printing to reproduce.
+fn push_alt(alts: &mut Vec<Expr>, e: Expr) {
+    match e {
+        Expr::Alt(es) => alts.extend(es),
+        e => alts.push(e),
+    }
+}
+
 struct Parser<'a> {
     src: &'a str,
     pos: usize,
@@ -156,14 +165,10 @@ impl<'a> Parser<'a> {
                             return Err(self.err(ErrorKind::ZeroRepeat, at));
                         }
                     }
-                    let alt = match prev {
-                        Expr::Alt(mut es) => {
-                            es.push(next);
-                            Expr::Alt(es)
-                        }
-                        prev => Expr::Alt(vec![prev, next]),
-                    };
-                    items.push((alt, prev_start));
+                    let mut alts = Vec::new();
+                    push_alt(&mut alts, prev);
+                    push_alt(&mut alts, next);
+                    items.push((Expr::Alt(alts), prev_start));
                 }
                 Some(_) => {
                     let e = self.item()?;
@@ -358,7 +363,7 @@ impl<'a> Parser<'a> {
                     if e == Expr::Empty {
                         return Err(self.err(ErrorKind::ZeroRepeat, at));
                     }
-                    alts.push(e);
+                    push_alt(&mut alts, e);
                 }
             }
         }

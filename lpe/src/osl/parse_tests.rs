@@ -223,6 +223,10 @@ fn or_lists_alternate_whole_items() {
     assert_eq!(p("[(RD)]"), Expr::Concat(vec![ev("R"), sc("D")]));
     assert_eq!(p("[C*]"), rep(ev("C"), 0, None));
     assert_eq!(p("[]"), Expr::Nothing);
+    // Nested alternations flatten: one tree per language.
+    assert_eq!(p("[[CL]R]"), Expr::Alt(vec![ev("C"), ev("L"), ev("R")]));
+    assert_eq!(p("C|(L|R)"), Expr::Alt(vec![ev("C"), ev("L"), ev("R")]));
+    assert_eq!(p("(C|L)|R"), Expr::Alt(vec![ev("C"), ev("L"), ev("R")]));
     assert_eq!(
         p("C[]L"),
         Expr::Concat(vec![ev("C"), Expr::Nothing, ev("L")])
