@@ -242,7 +242,13 @@ impl AovSet {
             .fold(1u64, |n, (_, l)| n.saturating_add(l.expr.positions()));
         Self::check_nfa_budget(positions, opts)?;
         let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
-        let (compiled, nfa, warnings) = osl::Compiled::build(aovs, &names, registered, opts)?;
+        let (compiled, nfa, warnings) =
+            osl::Compiled::build(aovs, &names, registered, opts.max_path_len, opts.nfa_budget)
+                .map_err(
+                    |osl::TooManyVertexStates| CompileError::TooManyVertexStates {
+                        max: osl::MAX_VERTEX_STATES,
+                    },
+                )?;
         let nfa_positions = nfa.positions;
         // OSL sets have several times RenderMan's classes, so a blow-up reaches a large
         // budget slowly (OSL's own ReDoS expression: a second for 16 MiB): attempt the
@@ -328,7 +334,8 @@ impl AovSet {
     }
 
     /// The class of a vertex: compute it once per material lobe and step with
-    /// [`AovSet::step_class`].
+    /// [`AovSet::step_class`]. On an OSL set the answer is unspecified: use
+    /// [`AovSet::classify_osl`].
     #[inline]
     pub fn classify(&self, v: &Vertex) -> Class {
         self.alphabet.classify(v)
@@ -379,12 +386,12 @@ impl AovSet {
 
     /// The class of a whole OSL vertex, read once (one table load per symbol): compute
     /// it once per material lobe and step with [`AovSet::step_class`]. On a RenderMan set
-    /// every vertex gets one class that no AOV accepts.
+    /// every vertex gets a class one past the set's last, which steps to the dead state.
     #[inline]
     pub fn classify_osl(&self, v: &osl::Vertex) -> Class {
         match &self.osl {
             Some(o) => o.classify(v),
-            None => Class(0),
+            None => Class(self.alphabet.class_count() as u32),
         }
     }
 

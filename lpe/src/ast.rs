@@ -34,6 +34,7 @@ use std::fmt;
 
 use crate::path::{EventKind, VertexType};
 use crate::prefix::Prefixes;
+use crate::print::write_parts;
 
 /// A parsed light path expression: prefixes plus the expression proper.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -332,28 +333,6 @@ impl fmt::Display for Expr {
             }
         }
     }
-}
-
-/// Writes the parts of a sequence (`sep` empty) or an alternation (`sep` `|`), each in
-/// parentheses where `paren` says so. Both dialects' printers use it: they share the
-/// precedence (`|` binds tighter than concatenation, a quantifier tighter than `|`).
-pub(crate) fn write_parts<E: fmt::Display>(
-    f: &mut fmt::Formatter<'_>,
-    parts: &[E],
-    sep: &str,
-    paren: impl Fn(&E) -> bool,
-) -> fmt::Result {
-    for (i, e) in parts.iter().enumerate() {
-        if i > 0 {
-            f.write_str(sep)?;
-        }
-        if paren(e) {
-            write!(f, "({e})")?;
-        } else {
-            write!(f, "{e}")?;
-        }
-    }
-    Ok(())
 }
 
 impl fmt::Display for Atom {

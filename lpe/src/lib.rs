@@ -116,6 +116,7 @@ pub mod matcher;
 pub mod osl;
 pub mod path;
 pub mod prefix;
+mod print;
 pub mod rng;
 pub mod syntax;
 

@@ -346,7 +346,7 @@ impl Path {
 
 impl fmt::Display for Path {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        crate::ast::write_parts(f, &self.vertices, " ", |_| false)
+        crate::print::write_parts(f, &self.vertices, " ", |_| false)
     }
 }
 

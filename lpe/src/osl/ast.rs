@@ -13,7 +13,8 @@
 use std::fmt;
 
 use super::symbol::Symbol;
-use crate::ast::{write_parts, Repetition};
+use crate::ast::Repetition;
+use crate::print::write_parts;
 
 /// What one slot of a vertex pattern accepts. No slot accepts STOP.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]

@@ -24,6 +24,7 @@ pub mod path;
 pub mod symbol;
 
 pub use ast::{Expr, Lpe, SymbolPattern, VertexPattern, Warning, WarningKind};
+pub(crate) use classes::TooManyVertexStates;
 pub use classes::MAX_VERTEX_STATES;
 
 /// The OSL basic set: the counterpart of [`crate::macros::BASIC`] under the same names,

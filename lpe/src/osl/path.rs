@@ -15,7 +15,7 @@ use std::fmt;
 use std::str::FromStr;
 
 use super::symbol::Symbol;
-use crate::ast::write_parts;
+use crate::print::write_parts;
 
 /// One vertex: event symbol, scattering symbol, then custom labels, in order. It has at
 /// least one symbol; one with fewer than two matches nothing, exactly as in OSL (every
