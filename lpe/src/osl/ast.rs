@@ -218,9 +218,18 @@ impl fmt::Display for SymbolPattern {
 
 impl fmt::Display for VertexPattern {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // Five or more custom symbols with an eater came from a `( … )` group (one custom
+        // item): print them as one group, or the text would lose the eater.
+        let grouped = self.eater.is_some() && self.symbols.len() >= 7;
         f.write_str("<")?;
-        for p in &self.symbols {
+        for (i, p) in self.symbols.iter().enumerate() {
+            if grouped && i == 2 {
+                f.write_str("(")?;
+            }
             write!(f, "{p}")?;
+        }
+        if grouped {
+            f.write_str(")")?;
         }
         f.write_str(">")
     }
