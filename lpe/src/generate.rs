@@ -365,7 +365,7 @@ pub fn lpe(c: &mut impl Choices, cfg: &Config) -> Lpe {
     } else {
         expr(c, cfg)
     };
-    Lpe { prefixes, expr }
+    Lpe::new(prefixes, expr)
 }
 
 fn transport_event(c: &mut impl Choices) -> Event {

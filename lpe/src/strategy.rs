@@ -115,10 +115,7 @@ pub fn lpe() -> impl Strategy<Value = Lpe> {
         prop::collection::vec(prop::sample::select(&Prefix::ALL[..]), 0..3),
         expr(),
     )
-        .prop_map(|(ps, expr)| Lpe {
-            prefixes: ps.into_iter().collect::<Prefixes>(),
-            expr,
-        })
+        .prop_map(|(ps, expr)| Lpe::new(ps.into_iter().collect::<Prefixes>(), expr))
 }
 
 /// A vertex of type R/T with any event, optionally labelled.

@@ -43,10 +43,7 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
                 }
                 tries += 1;
                 let mut candidate = exprs.clone();
-                candidate[i] = Lpe {
-                    prefixes: lpe::Prefixes::NONE,
-                    expr: smaller,
-                };
+                candidate[i] = Lpe::new(lpe::Prefixes::NONE, smaller);
                 if disagrees(engines, &candidate, &path) {
                     exprs = candidate;
                     continue 'outer;
