@@ -167,7 +167,10 @@ fn set_algebra_matches_on_every_engine_and_remainders_round_trip() {
         .find_map(|l| l.strip_prefix("remainder: "))
         .unwrap_or_else(|| panic!("{out}"));
     let rest = format!("rest={rest}");
-    let (code, out, err) = lpe_check(&["partition", "directDiffuse", "indirectDiffuse", &rest], "");
+    let (code, out, err) = lpe_check(
+        &["partition", "directDiffuse", "indirectDiffuse", &rest],
+        "",
+    );
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.ends_with("clean partition\n"), "{out}");
 }

@@ -227,5 +227,4 @@ mod tests {
         let c = analysis::compare(&lpe::parse(line).unwrap(), &lpe::parse(union).unwrap());
         assert!(c.unwrap().equivalent(), "{line}");
     }
-
 }

@@ -175,15 +175,22 @@ mod tests {
             .collect();
         // About one expression in twelve: low weight, but every run of a few hundred
         // cases has dozens.
-        assert!((16..=80).contains(&with_algebra.len()), "{}", with_algebra.len());
+        assert!(
+            (16..=80).contains(&with_algebra.len()),
+            "{}",
+            with_algebra.len()
+        );
         // Paths aimed at operands: some algebra expression matches some of its paths
         // (by the reference), so the algebra is not only ever checked on non-matches.
         let hits = with_algebra
             .iter()
-            .flat_map(|c| c.exprs.iter().flat_map(|e| c.paths.iter().map(move |p| (e, p))))
+            .flat_map(|c| {
+                c.exprs
+                    .iter()
+                    .flat_map(|e| c.paths.iter().map(move |p| (e, p)))
+            })
             .filter(|(e, p)| e.algebra.is_some() && reference::is_match(e, p))
             .count();
         assert!(hits >= 10, "{hits}");
     }
-
 }

@@ -2,9 +2,9 @@
 //! that cover it, and if not, shortest witnesses of each overlap, gap and stray path.
 
 use super::search::{analysis_options, explore, AnalysisError};
+use crate::algebra::Algebra;
 use crate::aov::AovSet;
 use crate::path::Path;
-use crate::algebra::Algebra;
 use crate::{parse, Expr, Lpe, Prefixes};
 
 /// The default universe of a partition check: every light-transport path.
@@ -165,5 +165,4 @@ mod tests {
             assert!(c.equivalent(), "{name}: {text}: {c:?}");
         }
     }
-
 }
