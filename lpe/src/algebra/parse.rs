@@ -53,9 +53,10 @@ pub enum AlgebraError {
 }
 
 /// Most operands one expression may have: each is a hidden AOV of the set it compiles
-/// into, which holds at most [`crate::MAX_AOVS`], so a larger expression could never
-/// compile. Also bounds the depth of the tree (with the nesting limit).
-pub const MAX_OPERANDS: usize = crate::automata::mask::MAX_AOVS;
+/// into, which holds at most [`crate::MAX_AOVS`] (the same number; written out because
+/// the automata sit above this layer), so a larger expression could never compile. Also
+/// bounds the depth of the tree (with the nesting limit).
+pub const MAX_OPERANDS: usize = 256;
 
 impl AlgebraError {
     /// The byte span the error points at.
