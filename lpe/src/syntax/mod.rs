@@ -17,8 +17,9 @@
 //! the dialect-independent [`crate::algebra`] layer after the prefixes; each operand is
 //! then a body as above (a macro operand may itself hold set algebra).
 //!
-//! The front end is the only dialect-specific part: another dialect (OSL's, with `G`, `V`,
-//! `B`) would be another module producing the same AST.
+//! The front end is the only dialect-specific part: OSL's dialect ([`crate::osl`], with
+//! `G`, `V`, `B` and an open alphabet) is another module, whose own tree compiles into the
+//! same automata.
 
 mod error;
 mod lexer;
