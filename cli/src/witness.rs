@@ -16,6 +16,11 @@ pub trait Checked: Display {
     type Path: Display;
     /// The reference matcher's answer on `path`.
     fn reference_match(&self, path: &Self::Path) -> bool;
+    /// The expression that closes a partition's gap (the universe minus every AOV), in
+    /// dialects with set algebra.
+    fn remainder(aovs: &[(String, Self)], universe: &Self) -> Option<Self>
+    where
+        Self: Sized;
 }
 
 impl Checked for Lpe {
@@ -23,12 +28,18 @@ impl Checked for Lpe {
     fn reference_match(&self, path: &Path) -> bool {
         reference::is_match(self, path)
     }
+    fn remainder(aovs: &[(String, Lpe)], universe: &Lpe) -> Option<Lpe> {
+        Some(lpe::analysis::remainder(aovs, universe))
+    }
 }
 
 impl Checked for osl::Lpe {
     type Path = osl::Path;
     fn reference_match(&self, path: &osl::Path) -> bool {
         reference::osl::is_match(self, path)
+    }
+    fn remainder(_: &[(String, osl::Lpe)], _: &osl::Lpe) -> Option<osl::Lpe> {
+        None
     }
 }
 

@@ -32,17 +32,94 @@
 
 use std::fmt;
 
+use crate::algebra::Algebra;
 use crate::path::{EventKind, VertexType};
 use crate::prefix::Prefixes;
 use crate::print::write_parts;
 
-/// A parsed light path expression: prefixes plus the expression proper.
+/// A parsed light path expression: prefixes plus the expression proper, which may be
+/// set algebra over several expressions ([`crate::algebra`]).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Lpe {
     /// What the renderer accumulates (does not affect matching).
     pub prefixes: Prefixes,
-    /// The expression matched against whole paths.
+    /// The expression matched against whole paths; for set algebra, its first operand
+    /// only (match through [`Lpe::operands`] and [`Lpe::eval`], which see every one).
     pub expr: Expr,
+    /// Set algebra (`A - B`, `A & B`, `^A`) over the operands, or `None` for a plain
+    /// expression.
+    pub algebra: Option<Algebra<Expr>>,
+}
+
+impl Lpe {
+    /// A plain expression.
+    pub fn new(prefixes: Prefixes, expr: Expr) -> Lpe {
+        Lpe {
+            prefixes,
+            expr,
+            algebra: None,
+        }
+    }
+
+    /// Set algebra; a lone leaf is a plain expression.
+    pub fn from_algebra(prefixes: Prefixes, algebra: Algebra<Expr>) -> Lpe {
+        match algebra {
+            Algebra::Leaf(expr) => Lpe::new(prefixes, expr),
+            tree => Lpe {
+                prefixes,
+                expr: tree.leaves()[0].clone(),
+                algebra: Some(tree),
+            },
+        }
+    }
+
+    /// The whole expression as a tree (a plain expression is one leaf).
+    pub fn tree(&self) -> Algebra<Expr> {
+        self.algebra
+            .clone()
+            .unwrap_or_else(|| Algebra::Leaf(self.expr.clone()))
+    }
+
+    /// The expressions a matcher must match, left to right: `expr` alone, or every
+    /// operand of the set algebra.
+    pub fn operands(&self) -> Vec<&Expr> {
+        match &self.algebra {
+            Some(t) => t.leaves(),
+            None => vec![&self.expr],
+        }
+    }
+
+    /// Rewrites every operand (and `expr` with it).
+    pub fn operands_mut(&mut self, f: &mut impl FnMut(&mut Expr)) {
+        f(&mut self.expr);
+        if let Some(t) = &mut self.algebra {
+            t.leaves_mut().into_iter().for_each(&mut *f);
+            self.expr = t.leaves()[0].clone();
+        }
+    }
+
+    /// Per expression, its set algebra over operand numbers, the operands of all of
+    /// them numbered in one sequence in [`Lpe::operands`] order (a plain expression is
+    /// one operand): how a set of expressions maps onto per-operand answers.
+    pub fn formulas<'a>(lpes: impl IntoIterator<Item = &'a Lpe>) -> Vec<Algebra<usize>> {
+        let mut next = 0;
+        lpes.into_iter()
+            .map(|l| {
+                let f = l.tree().numbered(next);
+                next += l.operands().len();
+                f
+            })
+            .collect()
+    }
+
+    /// Whether a path is matched, given whether it matches each operand (asked once
+    /// each, in [`Lpe::operands`] order).
+    pub fn eval(&self, operand: &mut impl FnMut(&Expr) -> bool) -> bool {
+        match &self.algebra {
+            Some(t) => t.eval(operand),
+            None => operand(&self.expr),
+        }
+    }
 }
 
 /// An expression over vertex sequences.
@@ -311,7 +388,24 @@ impl fmt::Display for Lpe {
         for p in self.prefixes.iter() {
             write!(f, "{p};")?;
         }
-        write!(f, "{}", self.expr)
+        match &self.algebra {
+            // An alternation operand in parentheses: `A - (b|c)` reads as it parses,
+            // where `A - b|c` would suggest `(A - b)|c`.
+            Some(t) => write!(f, "{}", t.map(&mut |e| Operand(e))),
+            None => write!(f, "{}", self.expr),
+        }
+    }
+}
+
+/// A set-algebra operand as printed inside [`Lpe`]'s text.
+struct Operand<'a>(&'a Expr);
+
+impl fmt::Display for Operand<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0 {
+            Expr::Alt(_) => write!(f, "({})", self.0),
+            e => write!(f, "{e}"),
+        }
     }
 }
 

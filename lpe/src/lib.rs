@@ -11,7 +11,9 @@
 //!   RenderMan-dialect front end ([`syntax`]: lexer, parser, errors with spans) with
 //!   prefixes ([`prefix`]), macros ([`macros`]), lobe mappings ([`lobes`]) and
 //!   `rendermn.ini` loading ([`ini`]); the OSL-dialect front end ([`osl`]: its path
-//!   model, expanded tree and parser), and [`Dialect`] naming the two.
+//!   model, expanded tree and parser), and [`Dialect`] naming the two; set algebra over
+//!   whole expressions (`A & B`, `A - B`, `^A`: [`algebra`], a dialect-independent layer
+//!   above the front ends).
 //! - The automata ([`automata`]): the shared ids in the leaf [`automata::mask`]
 //!   ([`AovMask`], [`Class`], [`State`], [`MAX_AOVS`]), then the compressed alphabet,
 //!   the bitset Glushkov NFA and the minimized DFA (crate-private).
@@ -102,6 +104,7 @@
 
 #![warn(missing_docs)]
 
+pub mod algebra;
 pub mod analysis;
 pub mod aov;
 pub mod ast;

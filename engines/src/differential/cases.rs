@@ -49,7 +49,9 @@ pub fn generate_case(seed: u64, index: u64, cfg: &Config, paths: usize) -> Case 
     let exprs: Vec<Lpe> = (0..n).map(|_| generate::lpe(&mut rng, cfg)).collect();
     let paths = (0..paths)
         .map(|_| {
-            let target = &rng.pick(&exprs).expr;
+            // Aim at one operand: for set algebra, paths near each side of `A - B`.
+            let operands = rng.pick(&exprs).operands();
+            let target = *rng.pick(&operands);
             generate::biased_path(target, &mut rng, cfg)
         })
         .collect();
@@ -269,5 +271,34 @@ mod tests {
             .map(|i| generate_osl_case(5, i, &cfg, 1).lang.registered.to_string())
             .collect();
         assert!(regs.contains("-") && regs.len() > 3, "{regs:?}");
+    }
+
+    #[test]
+    fn some_cases_hold_set_algebra_and_their_paths_aim_at_operands() {
+        let cfg = Config::default();
+        let cases: Vec<Case> = (0..400).map(|i| generate_case(3, i, &cfg, 4)).collect();
+        let with_algebra: Vec<&Case> = cases
+            .iter()
+            .filter(|c| c.exprs.iter().any(|e| e.algebra.is_some()))
+            .collect();
+        // About one expression in twelve: low weight, but every run of a few hundred
+        // cases has dozens.
+        assert!(
+            (16..=80).contains(&with_algebra.len()),
+            "{}",
+            with_algebra.len()
+        );
+        // Paths aimed at operands: some algebra expression matches some of its paths
+        // (by the reference), so the algebra is not only ever checked on non-matches.
+        let hits = with_algebra
+            .iter()
+            .flat_map(|c| {
+                c.exprs
+                    .iter()
+                    .flat_map(|e| c.paths.iter().map(move |p| (e, p)))
+            })
+            .filter(|(e, p)| e.algebra.is_some() && reference::is_match(e, p))
+            .count();
+        assert!(hits >= 10, "{hits}");
     }
 }

@@ -56,21 +56,15 @@ impl Language for RenderMan {
         engine.compile(exprs)
     }
 
-    /// The expression's shrinks without prefixes, then the same expression without
-    /// them (prefixes never affect matching; dropping them helps reading).
+    /// The expression's shrinks without prefixes ([`shrink::shrink_lpe`]), then the same
+    /// expression without them (prefixes never affect matching; dropping them helps
+    /// reading).
     fn shrink_expr(&self, e: &Lpe) -> Vec<Lpe> {
-        let mut out: Vec<Lpe> = shrink::shrink_expr(&e.expr)
-            .into_iter()
-            .map(|expr| Lpe {
-                prefixes: lpe::Prefixes::NONE,
-                expr,
-            })
-            .collect();
+        let mut out = shrink::shrink_lpe(e);
         if !e.prefixes.is_empty() {
-            out.push(Lpe {
-                prefixes: lpe::Prefixes::NONE,
-                expr: e.expr.clone(),
-            });
+            let mut bare = e.clone();
+            bare.prefixes = lpe::Prefixes::NONE;
+            out.push(bare);
         }
         out
     }

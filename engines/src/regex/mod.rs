@@ -8,7 +8,8 @@
 //! One compile builds **one** multi-pattern automaton for the whole set of expressions
 //! (`MatchKind::All`, anchored start, `$` at the end of every pattern); one overlapping
 //! search per path fills a `PatternSet` with every expression that matches the whole
-//! path.
+//! path. Set algebra is one pattern per operand, combined per expression after the
+//! search.
 //!
 //! Two forms of the same automaton: a lazy (hybrid) DFA, which determinizes only the
 //! states the searched paths visit, and an eager dense DFA. The registered engine
@@ -27,6 +28,7 @@ pub mod translate;
 
 use std::cell::RefCell;
 
+use lpe::algebra::Algebra;
 use lpe::{Lpe, Path};
 use regex_automata::dfa::{dense, Automaton};
 use regex_automata::hybrid;
@@ -109,11 +111,14 @@ pub static EAGER: RegexEngine = RegexEngine {
     eager: true,
 };
 
-/// The anchored regex of each expression, plus the label interning they share.
+/// The anchored regex of each operand of each expression (one for a plain expression,
+/// one per operand of set algebra, in [`Lpe::operands`] order), plus the label interning
+/// they share.
 pub fn translate(exprs: &[Lpe]) -> Result<(Labels, Vec<Hir>), BuildError> {
+    let operands: Vec<&lpe::Expr> = exprs.iter().flat_map(|e| e.operands()).collect();
     let mut all = Vec::new();
-    for e in exprs {
-        all.extend(e.expr.labels());
+    for e in &operands {
+        all.extend(e.labels());
     }
     all.sort();
     all.dedup();
@@ -122,9 +127,9 @@ pub fn translate(exprs: &[Lpe]) -> Result<(Labels, Vec<Hir>), BuildError> {
         max: encode::MAX_LABELS,
     })?;
     let tr = translate::Translator::new(&labels);
-    let hirs = exprs
+    let hirs = operands
         .iter()
-        .map(|e| Hir::concat(vec![tr.expr(&e.expr), Hir::look(Look::End)]))
+        .map(|e| Hir::concat(vec![tr.expr(e), Hir::look(Look::End)]))
         .collect();
     Ok((labels, hirs))
 }
@@ -167,7 +172,10 @@ impl Program {
 
 struct RegexMatcher {
     labels: Labels,
+    /// One pattern per operand.
     program: Program,
+    /// Per expression, its set algebra over pattern ids (a plain expression is one).
+    formulas: Vec<Algebra<usize>>,
 }
 
 impl RegexEngine {
@@ -176,6 +184,7 @@ impl RegexEngine {
         Ok(RegexMatcher {
             labels,
             program: self.program(&hirs)?,
+            formulas: Lpe::formulas(exprs),
         })
     }
 
@@ -242,7 +251,12 @@ impl Matcher for RegexMatcher {
         for v in path.vertices() {
             encode::encode_vertex(&self.labels, v, &mut bytes);
         }
-        self.program.which(&bytes, path)
+        // Set algebra combines the per-operand answers.
+        let operands = self.program.which(&bytes, path);
+        self.formulas
+            .iter()
+            .map(|f| f.eval(&mut |&i| operands[i]))
+            .collect()
     }
 }
 
@@ -428,5 +442,23 @@ mod tests {
         text.push_str(" L");
         assert_eq!(m.which(&text.parse().unwrap()), [true]);
         assert_eq!(m.which(&text.replace("RD", "RS").parse().unwrap()), [false]);
+    }
+
+    #[test]
+    fn set_algebra_combines_the_operand_patterns() {
+        assert!(m("C.*L - C.*DL", "C RS L"));
+        assert!(!m("C.*L - C.*DL", "C RS RD L"));
+        assert!(m("^C.*L", "C RD O"));
+        assert!(!m("^C.*L", "C RD L"));
+        assert!(m("C.*L & C<RD>.*L", "C RD RS L"));
+        assert!(!m("C.*L & C<RD>.*L", "C RS RD L"));
+        // Two expressions after one with two operands: pattern ids shift by operand.
+        let exprs: Vec<Lpe> = ["C.*L - CL", "CL", "^CL"]
+            .iter()
+            .map(|s| lpe::parse(s).unwrap())
+            .collect();
+        let m = LAZY.compile(&exprs).unwrap();
+        assert_eq!(m.which(&"C L".parse().unwrap()), [false, true, false]);
+        assert_eq!(m.which(&"C RD L".parse().unwrap()), [true, false, true]);
     }
 }

@@ -103,6 +103,25 @@ pub fn minimize_in<L: Language>(
     (exprs, path)
 }
 
+/// Simpler expressions, without prefixes: for set algebra, each operand alone first (a
+/// disagreement that survives without the algebra is easier to read), then each operand
+/// simplified in place; for a plain expression, [`shrink_expr`].
+pub fn shrink_lpe(l: &Lpe) -> Vec<Lpe> {
+    let plain = |e: Expr| Lpe::new(lpe::Prefixes::NONE, e);
+    let Some(tree) = &l.algebra else {
+        return shrink_expr(&l.expr).into_iter().map(plain).collect();
+    };
+    let mut out: Vec<Lpe> = l.operands().into_iter().cloned().map(plain).collect();
+    for (k, operand) in l.operands().into_iter().enumerate() {
+        for smaller in shrink_expr(operand) {
+            let mut t = tree.clone();
+            *t.leaves_mut()[k] = smaller;
+            out.push(Lpe::from_algebra(lpe::Prefixes::NONE, t));
+        }
+    }
+    out
+}
+
 /// Simpler paths: one interior vertex dropped, or one label removed.
 pub fn shrink_path(path: &Path) -> Vec<Path> {
     let v = path.vertices();
