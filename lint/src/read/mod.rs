@@ -93,11 +93,12 @@ fn as_text<'a>(bytes: &'a [u8], path: &Path, base: u64) -> Result<&'a str, ReadE
         path: path.to_path_buf(),
         offset: base + i as u64,
     };
-    let text = std::str::from_utf8(bytes).map_err(|e| not_text(e.valid_up_to()))?;
-    match text.find('\0') {
-        Some(i) => Err(not_text(i)),
-        None => Ok(text),
+    let valid = std::str::from_utf8(bytes).map_or_else(|e| e.valid_up_to(), str::len);
+    // The first bad byte, whichever kind it is.
+    if let Some(i) = bytes[..valid].iter().position(|&b| b == 0) {
+        return Err(not_text(i));
     }
+    std::str::from_utf8(bytes).map_err(|_| not_text(valid))
 }
 
 /// `# lpe:partition a,b,c` (named `beauty`) or `# lpe:partition:NAME a,b,c`: the comment
@@ -146,6 +147,10 @@ mod tests {
         assert!(as_text(b"ok", p, 0).is_ok());
         match as_text(b"ab\0c", p, 10) {
             Err(ReadError::NotText { offset, .. }) => assert_eq!(offset, 12),
+            other => panic!("{other:?}"),
+        }
+        match as_text(b"a\0\xff", p, 0) {
+            Err(ReadError::NotText { offset, .. }) => assert_eq!(offset, 1),
             other => panic!("{other:?}"),
         }
         match as_text(b"abc\xff", p, 0) {
