@@ -56,7 +56,8 @@ fn paths_for(exprs: &[Lpe], u: &mut Unstructured<'_>, cfg: &Config) -> Vec<Path>
     let n = 1 + u.below(8);
     (0..n)
         .map(|_| {
-            let target = &exprs[u.below(exprs.len())].expr;
+            let operands = exprs[u.below(exprs.len())].operands();
+            let target = operands[u.below(operands.len())];
             generate::biased_path(target, u, cfg)
         })
         .collect()

@@ -41,12 +41,13 @@
 
 use std::fmt;
 
-use crate::ast::Atom;
+use crate::ast::{Atom, Expr};
 use crate::automata::alphabet::Alphabet;
 use crate::automata::dfa::Dfa;
 use crate::automata::emptiness::{self, Warning};
 use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
 use crate::automata::nfa::{Builder, Nfa, Parts};
+use crate::automata::visible::Visible;
 use crate::path::{Path, Vertex};
 use crate::Lpe;
 
@@ -85,6 +86,14 @@ impl Default for Options {
 pub enum CompileError {
     /// More than [`MAX_AOVS`] expressions.
     TooManyAovs(usize),
+    /// More than [`MAX_AOVS`] AOVs once every set-algebra operand counts as a hidden
+    /// AOV of its own (a plain AOV is one).
+    TooManyOperands {
+        /// AOVs in the set.
+        aovs: usize,
+        /// Hidden AOVs: operands of set algebra plus plain AOVs.
+        hidden: usize,
+    },
     /// The NFA's follow sets alone (one row per position: `positions^2 / 8` bytes) would
     /// exceed [`Options::nfa_budget`].
     NfaOverBudget {
@@ -116,6 +125,11 @@ impl fmt::Display for CompileError {
                     "{n} AOVs in one set, over the limit of {MAX_AOVS}: split the set"
                 )
             }
+            CompileError::TooManyOperands { aovs, hidden } => write!(
+                f,
+                "{aovs} AOVs in one set compile to {hidden} hidden AOVs (each operand of \
+                 `&`, `-`, `^` is one), over the limit of {MAX_AOVS}: split the set"
+            ),
             CompileError::NfaOverBudget {
                 positions,
                 bytes,
@@ -158,6 +172,12 @@ pub struct AovSet {
     engine: Engine,
     /// NFA positions (the start included), kept for reporting once the NFA is dropped.
     nfa_positions: usize,
+    /// With set algebra: the visible masks as formulas over the operands, which the
+    /// automata hold as hidden AOVs. `None`: every AOV is its own hidden AOV.
+    visible: Option<Visible>,
+    /// A state with no active NFA position is dead (false when a complement then
+    /// matches).
+    empty_is_dead: bool,
     warnings: Vec<Warning>,
 }
 
@@ -181,9 +201,29 @@ impl AovSet {
         if aovs.len() > MAX_AOVS {
             return Err(CompileError::TooManyAovs(aovs.len()));
         }
-        let (alphabet, nfa, atoms) = Self::build_nfa(aovs, opts)?;
+        // Every operand is a hidden AOV; a plain AOV is one operand.
+        let operands: Vec<&Expr> = aovs.iter().flat_map(|(_, l)| l.operands()).collect();
+        if operands.len() > MAX_AOVS {
+            return Err(CompileError::TooManyOperands {
+                aovs: aovs.len(),
+                hidden: operands.len(),
+            });
+        }
+        let visible = aovs.iter().any(|(_, l)| l.algebra.is_some()).then(|| {
+            let mut next = 0;
+            Visible::new(
+                aovs.iter()
+                    .map(|(_, l)| {
+                        let f = l.tree().numbered(next);
+                        next += l.operands().len();
+                        f
+                    })
+                    .collect(),
+            )
+        });
+        let (alphabet, nfa, atoms) = Self::build_nfa(&operands, opts)?;
         let dfa = if opts.dfa_budget > 0 {
-            Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget)
+            Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget, visible.as_ref())
         } else {
             None
         };
@@ -196,26 +236,46 @@ impl AovSet {
         }
         let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
         let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
-        let warnings = emptiness::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
+        // Emptiness on the NFA alone covers the plain AOVs; an AOV with set algebra needs
+        // a search of the set's states (`analysis::warnings`).
+        let mut warnings = Vec::new();
+        let mut first = 0;
+        let hidden_names: Vec<String> = aovs
+            .iter()
+            .flat_map(|(n, l)| std::iter::repeat_n(n.clone(), l.operands().len()))
+            .collect();
+        let slot_warnings =
+            emptiness::empty_aovs(&nfa, &alphabet, &atoms, &hidden_names, &operands);
+        for (i, (_, l)) in aovs.iter().enumerate() {
+            if l.algebra.is_none() {
+                if let Some(w) = slot_warnings.iter().find(|w| w.aov == first) {
+                    warnings.push(Warning { aov: i, ..w.clone() });
+                }
+            }
+            first += l.operands().len();
+        }
         let nfa_positions = nfa.positions;
+        let empty_is_dead = visible.as_ref().is_none_or(|v| v.none().is_empty());
         Ok(AovSet {
             names,
             lpes,
             alphabet,
             engine: dfa.map_or(Engine::Nfa(nfa), Engine::Dfa),
             nfa_positions,
+            visible,
+            empty_is_dead,
             warnings,
         })
     }
 
-    /// The alphabet and NFA of `aovs`, and their distinct atoms (the NFA's atom indices
-    /// refer to them).
+    /// The alphabet and NFA of the hidden AOVs `exprs`, and their distinct atoms (the
+    /// NFA's atom indices refer to them).
     fn build_nfa<'a>(
-        aovs: &'a [(String, Lpe)],
+        exprs: &[&'a Expr],
         opts: &Options,
     ) -> Result<(Alphabet, Nfa, Vec<&'a Atom>), CompileError> {
-        let positions = aovs.iter().fold(1u64, |n, (_, l)| {
-            n.saturating_add(l.expr.positions_with(opts.max_path_len))
+        let positions = exprs.iter().fold(1u64, |n, e| {
+            n.saturating_add(e.positions_with(opts.max_path_len))
         });
         // One follow row per position is the least the NFA needs: `positions^2 / 8`.
         let rows = positions
@@ -234,11 +294,11 @@ impl AovSet {
             aov_last: Vec::new(),
             aov_nullable: Vec::new(),
         };
-        for (_, l) in aovs {
-            builder.add(&l.expr, &mut parts);
+        for e in exprs {
+            builder.add(e, &mut parts);
         }
         // Duplicates across AOVs are fine: the alphabet's label table deduplicates.
-        let labels: Vec<String> = aovs.iter().flat_map(|(_, l)| l.expr.labels()).collect();
+        let labels: Vec<String> = exprs.iter().flat_map(|e| e.labels()).collect();
         let alphabet = Alphabet::new(&builder.atoms, labels);
         // Borrowed from `aovs`: the analysis outlives the builder, which the NFA consumes.
         let atoms = builder.atoms.clone();
@@ -293,16 +353,22 @@ impl AovSet {
     pub fn matches(&self, s: State) -> AovMask {
         match &self.engine {
             Engine::Dfa(d) => d.matches(s.0[0] as u32),
-            Engine::Nfa(n) => n.matches(&s.0),
+            Engine::Nfa(n) => match &self.visible {
+                None => n.matches(&s.0),
+                Some(v) => v.mask(n.matches(&s.0)),
+            },
         }
     }
 
-    /// No continuation of the path can match any AOV.
+    /// No continuation of the path can match any AOV. Exact on the DFA; on the NFA
+    /// (over the DFA budget) it is the state with no active position, unless a
+    /// complement (`^A`) matches from there on, and a state whose operands can still
+    /// match but whose set algebra never will (`A & B` after `B` died) is not flagged.
     #[inline]
     pub fn is_dead(&self, s: State) -> bool {
         match &self.engine {
             Engine::Dfa(_) => s.0[0] == 0,
-            Engine::Nfa(_) => s.0 == [0; NFA_STATE_WORDS],
+            Engine::Nfa(_) => self.empty_is_dead && s.0 == [0; NFA_STATE_WORDS],
         }
     }
 
@@ -336,7 +402,9 @@ impl AovSet {
         &self.lpes
     }
 
-    /// AOVs that can match no path, with the reason, found at compile time.
+    /// AOVs that can match no path, with the reason, found at compile time on the NFA
+    /// alone. Set-algebra AOVs need a search of the set's states:
+    /// [`crate::analysis::warnings`] covers every AOV.
     pub fn warnings(&self) -> &[Warning] {
         &self.warnings
     }
@@ -512,8 +580,8 @@ mod tests {
         assert!(s.uses_dfa());
         // The set keeps only its DFA: ask the construction it came from.
         let nfa_of = |opts: &Options| {
-            let aovs = [("a".to_string(), parse("C(.{100}){3}L").unwrap())];
-            AovSet::build_nfa(&aovs, opts).unwrap().1
+            let e = parse("C(.{100}){3}L").unwrap().expr;
+            AovSet::build_nfa(&[&e], opts).unwrap().1
         };
         assert!(!nfa_of(&opts).has_step_tables());
         assert!(nfa_of(&Options::default()).has_step_tables());
@@ -554,4 +622,60 @@ mod tests {
             CompileError::TooManyAovs(MAX_AOVS + 1)
         );
     }
+
+    #[test]
+    fn set_algebra_combines_operands_in_both_modes() {
+        let srcs = ["C.*L - C.*DL", "^C<RD>L", "C.*L & C.+<L.'key'>", "CL"];
+        for opts in [Options::default(), nfa_only()] {
+            let s = set(&srcs, &opts);
+            let hits = |p: &str| s.match_path(&p.parse().unwrap()).iter().collect::<Vec<_>>();
+            assert_eq!(hits("C RS L"), [0, 1]);
+            assert_eq!(hits("C RS RD L"), [1]);
+            assert_eq!(hits("C RD L"), Vec::<usize>::new());
+            assert_eq!(hits("C RD L'key'"), [2]);
+            assert_eq!(hits("C L"), [0, 1, 3]);
+            assert_eq!(hits("C RD O"), [1]);
+        }
+    }
+
+    #[test]
+    fn a_complement_keeps_states_alive_after_its_operand_died() {
+        for opts in [Options::default(), nfa_only()] {
+            let s = set(&["^C<RD>L"], &opts);
+            let p: Path = "C RS RS L".parse().unwrap();
+            let mut st = s.start();
+            for v in p.vertices() {
+                st = s.step(st, v);
+                // The operand died at `RS`: from then on every continuation matches.
+                assert!(!s.is_dead(st));
+            }
+            assert!(s.matches(st).contains(0));
+            // Minus a plain AOV that died: dead as before.
+            let s = set(&["C<RD>L - C<RD>L'x'", "C<RS>L"], &opts);
+            let st = s.step(s.step(s.start(), &Vertex::camera()), &Vertex::light(None));
+            assert!(s.is_dead(st), "{opts:?}");
+        }
+        // A DFA without any dead state still answers `is_dead` with false.
+        let s = set(&["^CL"], &Options::default());
+        assert!(s.uses_dfa());
+        assert!(!s.is_dead(s.start()));
+    }
+
+    #[test]
+    fn operands_count_toward_the_aov_limit() {
+        let one = parse("C.*L - C.*DL - C.*SL").unwrap();
+        let aovs: Vec<(String, Lpe)> = (0..MAX_AOVS / 3 + 1)
+            .map(|i| (i.to_string(), one.clone()))
+            .collect();
+        let err = AovSet::compile(&aovs).unwrap_err();
+        assert_eq!(
+            err,
+            CompileError::TooManyOperands {
+                aovs: MAX_AOVS / 3 + 1,
+                hidden: 3 * (MAX_AOVS / 3 + 1)
+            }
+        );
+        assert!(err.to_string().contains("hidden AOVs"), "{err}");
+    }
+
 }

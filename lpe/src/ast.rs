@@ -32,16 +32,79 @@
 
 use std::fmt;
 
+use crate::algebra::Algebra;
 use crate::path::{EventKind, VertexType};
 use crate::prefix::Prefixes;
 
-/// A parsed light path expression: prefixes plus the expression proper.
+/// A parsed light path expression: prefixes plus the expression proper, which may be
+/// set algebra over several expressions ([`crate::algebra`]).
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Lpe {
     /// What the renderer accumulates (does not affect matching).
     pub prefixes: Prefixes,
-    /// The expression matched against whole paths.
+    /// The expression matched against whole paths; for set algebra, its first operand
+    /// only (match through [`Lpe::operands`] and [`Lpe::eval`], which see every one).
     pub expr: Expr,
+    /// Set algebra (`A - B`, `A & B`, `^A`) over the operands, or `None` for a plain
+    /// expression.
+    pub algebra: Option<Algebra<Expr>>,
+}
+
+impl Lpe {
+    /// A plain expression.
+    pub fn new(prefixes: Prefixes, expr: Expr) -> Lpe {
+        Lpe {
+            prefixes,
+            expr,
+            algebra: None,
+        }
+    }
+
+    /// Set algebra; a lone leaf is a plain expression.
+    pub fn from_algebra(prefixes: Prefixes, algebra: Algebra<Expr>) -> Lpe {
+        match algebra {
+            Algebra::Leaf(expr) => Lpe::new(prefixes, expr),
+            tree => Lpe {
+                prefixes,
+                expr: tree.leaves()[0].clone(),
+                algebra: Some(tree),
+            },
+        }
+    }
+
+    /// The whole expression as a tree (a plain expression is one leaf).
+    pub fn tree(&self) -> Algebra<Expr> {
+        self.algebra
+            .clone()
+            .unwrap_or_else(|| Algebra::Leaf(self.expr.clone()))
+    }
+
+    /// The expressions a matcher must match, left to right: `expr` alone, or every
+    /// operand of the set algebra.
+    pub fn operands(&self) -> Vec<&Expr> {
+        match &self.algebra {
+            Some(t) => t.leaves(),
+            None => vec![&self.expr],
+        }
+    }
+
+    /// Rewrites every operand (and `expr` with it).
+    pub fn operands_mut(&mut self, f: &mut impl FnMut(&mut Expr)) {
+        f(&mut self.expr);
+        if let Some(t) = &mut self.algebra {
+            t.leaves_mut().into_iter().for_each(&mut *f);
+            self.expr = t.leaves()[0].clone();
+        }
+    }
+
+    /// Whether a path is matched, given whether it matches each operand (asked once
+    /// each, in [`Lpe::operands`] order).
+    pub fn eval(&self, operand: &mut impl FnMut(&Expr) -> bool) -> bool {
+        match &self.algebra {
+            Some(t) => t.eval(operand),
+            None => operand(&self.expr),
+        }
+    }
 }
 
 /// An expression over vertex sequences.
@@ -310,7 +373,10 @@ impl fmt::Display for Lpe {
         for p in self.prefixes.iter() {
             write!(f, "{p};")?;
         }
-        write!(f, "{}", self.expr)
+        match &self.algebra {
+            Some(t) => write!(f, "{t}"),
+            None => write!(f, "{}", self.expr),
+        }
     }
 }
 

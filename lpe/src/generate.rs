@@ -39,6 +39,7 @@
 //! `arbitrary::Arbitrary` (use them as `fuzz_target!` inputs); with feature `proptest`,
 //! [`crate::strategy`] has strategies for the same shapes.
 
+use crate::algebra::Algebra;
 use crate::ast::{
     Atom, EventPattern, EventPos, Expr, Item, LabelPos, Lpe, Repetition, Triple, TypePos,
 };
@@ -357,15 +358,52 @@ pub fn path_shaped_expr(c: &mut impl Choices, cfg: &Config) -> Expr {
     Expr::concat(vec![start, expr(c, &inner), end])
 }
 
-/// Random prefixes plus [`path_shaped_expr`] (or, one time in ten, [`expr`]).
+/// Random prefixes plus [`path_shaped_expr`] (or, one time in ten, [`expr`]); one
+/// time in twelve, [`algebra`] instead.
 pub fn lpe(c: &mut impl Choices, cfg: &Config) -> Lpe {
     let prefixes: Prefixes = (0..c.below(3)).map(|_| *c.pick(&Prefix::ALL)).collect();
+    if c.chance(8) {
+        return Lpe::from_algebra(prefixes, algebra(c, cfg));
+    }
     let expr = if c.chance(90) {
         path_shaped_expr(c, cfg)
     } else {
         expr(c, cfg)
     };
-    Lpe { prefixes, expr }
+    Lpe::new(prefixes, expr)
+}
+
+/// Set algebra over two to four [`path_shaped_expr`] operands: `A - B`, `A & B - C`,
+/// `A - (B & C)`, `^A & B`, `^(A - B)`.
+pub fn algebra(c: &mut impl Choices, cfg: &Config) -> Algebra<Expr> {
+    fn leaf(c: &mut impl Choices, cfg: &Config) -> Algebra<Expr> {
+        let e = Algebra::Leaf(path_shaped_expr(c, cfg));
+        if c.chance(20) {
+            Algebra::not(e)
+        } else {
+            e
+        }
+    }
+    fn binary(c: &mut impl Choices, a: Algebra<Expr>, b: Algebra<Expr>) -> Algebra<Expr> {
+        if c.chance(50) {
+            Algebra::and(a, b)
+        } else {
+            Algebra::minus(a, b)
+        }
+    }
+    let mut t = leaf(c, cfg);
+    for _ in 0..1 + c.below(2) {
+        let mut rhs = leaf(c, cfg);
+        if c.chance(15) {
+            let more = leaf(c, cfg);
+            rhs = binary(c, rhs, more);
+        }
+        t = binary(c, t, rhs);
+    }
+    if c.chance(10) {
+        t = Algebra::not(t);
+    }
+    t
 }
 
 fn transport_event(c: &mut impl Choices) -> Event {

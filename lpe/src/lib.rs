@@ -102,6 +102,7 @@
 #![warn(missing_docs)]
 
 pub mod analysis;
+pub mod algebra;
 pub mod aov;
 pub mod ast;
 pub mod automata;

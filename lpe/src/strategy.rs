@@ -9,6 +9,7 @@
 
 use proptest::prelude::*;
 
+use crate::algebra::Algebra;
 use crate::ast::{
     Atom, EventPattern, EventPos, Expr, Item, LabelPos, Lpe, Repetition, Triple, TypePos,
 };
@@ -109,16 +110,33 @@ pub fn expr() -> impl Strategy<Value = Expr> {
         })
 }
 
-/// A full expression with random prefixes.
+/// A full expression with random prefixes; one in eleven is [`algebra`].
 pub fn lpe() -> impl Strategy<Value = Lpe> {
+    let body = prop_oneof![
+        10 => expr().prop_map(Algebra::Leaf),
+        1 => algebra(),
+    ];
     (
         prop::collection::vec(prop::sample::select(&Prefix::ALL[..]), 0..3),
-        expr(),
+        body,
     )
-        .prop_map(|(ps, expr)| Lpe {
-            prefixes: ps.into_iter().collect::<Prefixes>(),
-            expr,
-        })
+        .prop_map(|(ps, t)| Lpe::from_algebra(ps.into_iter().collect::<Prefixes>(), t))
+}
+
+/// Set algebra (`&`, `-`, `^`) over two to four [`expr`] operands.
+pub fn algebra() -> impl Strategy<Value = Algebra<Expr>> {
+    let leaf = expr().prop_map(Algebra::Leaf).boxed();
+    let op = (leaf.clone(), leaf.clone(), any::<bool>())
+        .prop_map(|(a, b, and)| if and { Algebra::and(a, b) } else { Algebra::minus(a, b) })
+        .boxed();
+    prop_oneof![
+        op.clone(),
+        (op.clone(), leaf.clone(), any::<bool>())
+            .prop_map(|(a, b, and)| if and { Algebra::and(a, b) } else { Algebra::minus(a, b) }),
+        (leaf.clone(), op.clone()).prop_map(|(a, b)| Algebra::minus(a, b)),
+        (leaf.clone(), leaf).prop_map(|(a, b)| Algebra::and(Algebra::not(a), b)),
+        op.prop_map(Algebra::not),
+    ]
 }
 
 /// A vertex of type R/T with any event, optionally labelled.

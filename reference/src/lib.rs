@@ -21,6 +21,8 @@
 //! | `[^…]`: matched by `.` and by no item | [`atom_matches`] |
 //! | negation inside a triple: the position's `.` minus the items; `[^'foo']` matches no label | [`triple_matches`] |
 //!
+//! | set algebra `A & B`, `A - B`, `^A` over whole expressions | [`is_match`] |
+//!
 //! Prefixes do not affect matching and are ignored here.
 //!
 //! Recursion depth grows with the path length (a few frames per vertex) and the
@@ -32,9 +34,10 @@ use std::collections::HashSet;
 use lpe::ast::{Atom, EventPattern, EventPos, Expr, Item, LabelPos, Repetition, Triple, TypePos};
 use lpe::{Lpe, Path, Vertex, VertexType};
 
-/// Whether `lpe` matches the whole of `path`.
+/// Whether `lpe` matches the whole of `path`. Set algebra by its definition: each
+/// operand matched on its own, the answers combined (`&` and, `-` and not, `^` not).
 pub fn is_match(lpe: &Lpe, path: &Path) -> bool {
-    is_expr_match(&lpe.expr, path)
+    lpe.eval(&mut |e| is_expr_match(e, path))
 }
 
 /// Whether `expr` matches the whole of `path`.

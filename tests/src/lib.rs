@@ -54,7 +54,7 @@ pub fn framed(e: Expr) -> Expr {
 pub fn expr_set(sizes: std::ops::RangeInclusive<usize>) -> impl Strategy<Value = Vec<Lpe>> {
     let one = (strategy::lpe(), any::<bool>()).prop_map(|(mut l, frame)| {
         if frame {
-            l.expr = framed(l.expr);
+            l.operands_mut(&mut |e| *e = framed(e.clone()));
         }
         l
     });

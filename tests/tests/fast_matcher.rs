@@ -238,10 +238,7 @@ fn long_bounded_repeats_are_exact_within_max_path_len() {
                     max: Some(max),
                 },
             ));
-            let l = Lpe {
-                prefixes: Default::default(),
-                expr,
-            };
+            let l = Lpe::new(Default::default(), expr);
             let Ok(set) = AovSet::compile_with(&[("x".into(), l.clone())], &opts) else {
                 // Over the documented size limits: counted, never silently passed.
                 skipped.set(skipped.get() + 1);

@@ -271,10 +271,7 @@ fn random_sets_agree_up_to_the_bound() {
             });
             let lpes: Vec<Lpe> = exprs
                 .into_iter()
-                .map(|expr| Lpe {
-                    prefixes: Default::default(),
-                    expr,
-                })
+                .map(|expr| Lpe::new(Default::default(), expr))
                 .collect();
             match compare_at_boundary(&lpes, l) {
                 Ok(_) => Ok(()),

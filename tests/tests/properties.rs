@@ -28,10 +28,7 @@ fn engines() -> Vec<&'static dyn Engine> {
 }
 
 fn lpe_of(expr: Expr) -> Lpe {
-    Lpe {
-        prefixes: Prefixes::NONE,
-        expr,
-    }
+    Lpe::new(Prefixes::NONE, expr)
 }
 
 fn assert_agree(exprs: &[Lpe], paths: &[Path]) -> Result<(), TestCaseError> {

@@ -37,7 +37,9 @@ pub fn generate_case(seed: u64, index: u64, cfg: &Config, paths: usize) -> Case 
     let exprs: Vec<Lpe> = (0..n).map(|_| generate::lpe(&mut rng, cfg)).collect();
     let paths = (0..paths)
         .map(|_| {
-            let target = &rng.pick(&exprs).expr;
+            // Aim at one operand: for set algebra, paths near each side of `A - B`.
+            let operands = rng.pick(&exprs).operands();
+            let target = *rng.pick(&operands);
             generate::biased_path(target, &mut rng, cfg)
         })
         .collect();

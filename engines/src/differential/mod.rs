@@ -45,10 +45,12 @@ pub(crate) mod tests {
         fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
             let mut blind = exprs.to_vec();
             for e in &mut blind {
-                e.expr.for_each_atom_mut(&mut |a| {
-                    if matches!(a, Atom::Item(Item::Label(_))) {
-                        *a = Atom::Item(Item::Any);
-                    }
+                e.operands_mut(&mut |x| {
+                    x.for_each_atom_mut(&mut |a| {
+                        if matches!(a, Atom::Item(Item::Label(_))) {
+                            *a = Atom::Item(Item::Any);
+                        }
+                    })
                 });
             }
             Ok(Box::new(ReferenceMatcher(blind)))

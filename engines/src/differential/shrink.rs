@@ -37,16 +37,13 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
             }
         }
         for i in 0..exprs.len() {
-            for smaller in shrink_expr(&exprs[i].expr) {
+            for smaller in shrink_lpe(&exprs[i]) {
                 if tries >= MAX_SHRINK_TRIES {
                     break 'outer;
                 }
                 tries += 1;
                 let mut candidate = exprs.clone();
-                candidate[i] = Lpe {
-                    prefixes: lpe::Prefixes::NONE,
-                    expr: smaller,
-                };
+                candidate[i] = smaller;
                 if disagrees(engines, &candidate, &path) {
                     exprs = candidate;
                     continue 'outer;
@@ -76,14 +73,14 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
         // Joint steps: dropping an atom often needs the vertex it matched dropped too
         // (`C.'a'L` on `C RD RD'b' L` -> `C'a'L` on `C RD'b' L`).
         for i in 0..exprs.len() {
-            for smaller in shrink_expr(&exprs[i].expr) {
+            for smaller in shrink_lpe(&exprs[i]) {
                 for smaller_path in &smaller_paths {
                     if tries >= MAX_SHRINK_TRIES {
                         break 'outer;
                     }
                     tries += 1;
                     let mut candidate = exprs.clone();
-                    candidate[i].expr = smaller.clone();
+                    candidate[i] = smaller.clone();
                     if disagrees(engines, &candidate, smaller_path) {
                         exprs = candidate;
                         path = smaller_path.clone();
@@ -95,6 +92,25 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
         break;
     }
     (exprs, path)
+}
+
+/// Simpler expressions, without prefixes: for set algebra, each operand alone first (a
+/// disagreement that survives without the algebra is easier to read), then each operand
+/// simplified in place; for a plain expression, [`shrink_expr`].
+fn shrink_lpe(l: &Lpe) -> Vec<Lpe> {
+    let plain = |e: Expr| Lpe::new(lpe::Prefixes::NONE, e);
+    let Some(tree) = &l.algebra else {
+        return shrink_expr(&l.expr).into_iter().map(plain).collect();
+    };
+    let mut out: Vec<Lpe> = l.operands().into_iter().cloned().map(plain).collect();
+    for (k, operand) in l.operands().into_iter().enumerate() {
+        for smaller in shrink_expr(operand) {
+            let mut t = tree.clone();
+            *t.leaves_mut()[k] = smaller;
+            out.push(Lpe::from_algebra(lpe::Prefixes::NONE, t));
+        }
+    }
+    out
 }
 
 /// Simpler paths: one interior vertex dropped, or one label removed.

@@ -5,7 +5,8 @@
 //! One compile builds **one** multi-pattern automaton for the whole set of expressions
 //! (`MatchKind::All`, anchored start, `$` at the end of every pattern); one overlapping
 //! search per path fills a `PatternSet` with every expression that matches the whole
-//! path.
+//! path. Set algebra is one pattern per operand, combined per expression after the
+//! search.
 //!
 //! Two forms of the same automaton: a lazy (hybrid) DFA, which determinizes only the
 //! states the searched paths visit, and an eager dense DFA. The registered engine
@@ -23,6 +24,7 @@ pub mod translate;
 
 use std::cell::RefCell;
 
+use lpe::algebra::Algebra;
 use lpe::{Lpe, Path};
 use regex_automata::dfa::{dense, Automaton};
 use regex_automata::hybrid;
@@ -104,11 +106,14 @@ pub static EAGER: RegexEngine = RegexEngine {
     eager: true,
 };
 
-/// The anchored regex of each expression, plus the label interning they share.
+/// The anchored regex of each operand of each expression (one for a plain expression,
+/// one per operand of set algebra, in [`Lpe::operands`] order), plus the label interning
+/// they share.
 pub fn translate(exprs: &[Lpe]) -> Result<(Labels, Vec<Hir>), BuildError> {
+    let operands: Vec<&lpe::Expr> = exprs.iter().flat_map(|e| e.operands()).collect();
     let mut all = Vec::new();
-    for e in exprs {
-        all.extend(e.expr.labels());
+    for e in &operands {
+        all.extend(e.labels());
     }
     all.sort();
     all.dedup();
@@ -117,9 +122,9 @@ pub fn translate(exprs: &[Lpe]) -> Result<(Labels, Vec<Hir>), BuildError> {
         max: encode::MAX_LABELS,
     })?;
     let tr = translate::Translator::new(&labels);
-    let hirs = exprs
+    let hirs = operands
         .iter()
-        .map(|e| Hir::concat(vec![tr.expr(&e.expr), Hir::look(Look::End)]))
+        .map(|e| Hir::concat(vec![tr.expr(e), Hir::look(Look::End)]))
         .collect();
     Ok((labels, hirs))
 }
@@ -132,7 +137,10 @@ enum Searcher {
 
 struct RegexMatcher {
     labels: Labels,
+    /// One pattern per operand.
     patterns: usize,
+    /// Per expression, its set algebra over pattern ids (a plain expression is one).
+    formulas: Vec<Algebra<usize>>,
     dfa: Searcher,
 }
 
@@ -168,9 +176,19 @@ impl RegexEngine {
             Err(e) if e.is_size_limit_exceeded() => self.lazy(nfa)?,
             Err(e) => return Err(BuildError::Dfa(Box::new(e))),
         };
+        let mut next = 0;
+        let formulas = exprs
+            .iter()
+            .map(|e| {
+                let f = e.tree().numbered(next);
+                next += e.operands().len();
+                f
+            })
+            .collect();
         Ok(RegexMatcher {
             labels,
-            patterns: exprs.len(),
+            patterns: hirs.len(),
+            formulas,
             dfa,
         })
     }
@@ -214,8 +232,10 @@ impl Matcher for RegexMatcher {
         if let Err(e) = searched {
             panic!("regex-automata search failed on `{path}`: {e}");
         }
-        (0..self.patterns)
-            .map(|i| set.contains(regex_automata::PatternID::new_unchecked(i)))
+        // Set algebra combines the per-operand answers.
+        self.formulas
+            .iter()
+            .map(|f| f.eval(&mut |&i| set.contains(regex_automata::PatternID::new_unchecked(i))))
             .collect()
     }
 }
@@ -371,4 +391,23 @@ mod tests {
         assert_eq!(m.which(&text.parse().unwrap()), [true]);
         assert_eq!(m.which(&text.replace("RD", "RS").parse().unwrap()), [false]);
     }
+
+    #[test]
+    fn set_algebra_combines_the_operand_patterns() {
+        assert!(m("C.*L - C.*DL", "C RS L"));
+        assert!(!m("C.*L - C.*DL", "C RS RD L"));
+        assert!(m("^C.*L", "C RD O"));
+        assert!(!m("^C.*L", "C RD L"));
+        assert!(m("C.*L & C<RD>.*L", "C RD RS L"));
+        assert!(!m("C.*L & C<RD>.*L", "C RS RD L"));
+        // Two expressions after one with two operands: pattern ids shift by operand.
+        let exprs: Vec<Lpe> = ["C.*L - CL", "CL", "^CL"]
+            .iter()
+            .map(|s| lpe::parse(s).unwrap())
+            .collect();
+        let m = LAZY.compile(&exprs).unwrap();
+        assert_eq!(m.which(&"C L".parse().unwrap()), [false, true, false]);
+        assert_eq!(m.which(&"C RD L".parse().unwrap()), [true, false, true]);
+    }
+
 }

@@ -47,6 +47,15 @@ impl From<CompileError> for AnalysisError {
 /// masks are never empty.
 pub(super) fn explore(
     set: &AovSet,
+    visit: impl FnMut(AovMask, &dyn Fn() -> Path) -> bool,
+) -> Result<(), AnalysisError> {
+    explore_within(set, MAX_SEARCH_STATES, visit)
+}
+
+/// [`explore`], giving up past `cap` states.
+pub(super) fn explore_within(
+    set: &AovSet,
+    cap: usize,
     mut visit: impl FnMut(AovMask, &dyn Fn() -> Path) -> bool,
 ) -> Result<(), AnalysisError> {
     let alphabet = set.alphabet();
@@ -75,8 +84,8 @@ pub(super) fn explore(
             if set.is_dead(next) || !seen.insert((next, t)) {
                 continue;
             }
-            if nodes.len() >= MAX_SEARCH_STATES {
-                return Err(AnalysisError::TooLarge(MAX_SEARCH_STATES));
+            if nodes.len() >= cap {
+                return Err(AnalysisError::TooLarge(cap));
             }
             nodes.push((next, t, head, l));
             if PATH.accept[t as usize] {

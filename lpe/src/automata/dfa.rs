@@ -16,9 +16,41 @@ use crate::fxhash::FxMap;
 
 use crate::automata::mask::AovMask;
 use crate::automata::nfa::Nfa;
+use crate::automata::visible::Visible;
 
 /// Hashing work (state x class visits) minimization may spend before giving up.
 const MAX_MINIMIZE_WORK: usize = 20_000_000;
+
+/// Which states reach a non-empty mask, by a backward search over `trans` (`classes`
+/// entries per state).
+fn live_states(trans: &[u32], masks: &[AovMask], classes: usize) -> Vec<bool> {
+    let n = masks.len();
+    // Predecessor lists in one array: `start[t]..start[t + 1]` are the states with an
+    // edge into `t`.
+    let mut start = vec![0u32; n + 1];
+    for &t in trans {
+        start[t as usize + 1] += 1;
+    }
+    for i in 0..n {
+        start[i + 1] += start[i];
+    }
+    let mut fill = start.clone();
+    let mut preds = vec![0u32; trans.len()];
+    for (e, &t) in trans.iter().enumerate() {
+        preds[fill[t as usize] as usize] = (e / classes) as u32;
+        fill[t as usize] += 1;
+    }
+    let mut live: Vec<bool> = masks.iter().map(|m| !m.is_empty()).collect();
+    let mut stack: Vec<usize> = (0..n).filter(|&s| live[s]).collect();
+    while let Some(t) = stack.pop() {
+        for &p in &preds[start[t] as usize..start[t + 1] as usize] {
+            if !std::mem::replace(&mut live[p as usize], true) {
+                stack.push(p as usize);
+            }
+        }
+    }
+    live
+}
 
 /// A dense, minimized DFA.
 #[derive(Clone, Debug)]
@@ -39,8 +71,14 @@ impl Dfa {
     }
 
     /// Determinizes `nfa` over `classes` classes, or `None` if the DFA would exceed
-    /// `budget` bytes.
-    pub(crate) fn build(nfa: &Nfa, classes: usize, budget: usize) -> Option<Dfa> {
+    /// `budget` bytes. With set algebra, `visible` turns the NFA's hidden masks into the
+    /// states' visible masks, once per state.
+    pub(crate) fn build(
+        nfa: &Nfa,
+        classes: usize,
+        budget: usize,
+        visible: Option<&Visible>,
+    ) -> Option<Dfa> {
         let stride = classes.next_power_of_two();
         let cost = Self::state_cost(stride, nfa.words());
         // Premultiplied ids must fit a `u32`.
@@ -81,7 +119,10 @@ impl Dfa {
             }
             i += 1;
         }
-        let masks: Vec<AovMask> = sets.iter().map(|s| nfa.matches(s)).collect();
+        let masks: Vec<AovMask> = sets
+            .iter()
+            .map(|s| visible.map_or(nfa.matches(s), |v| v.mask(nfa.matches(s))))
+            .collect();
         drop(ids);
         Some(Self::minimize(&trans, &masks, classes, stride))
     }
@@ -143,8 +184,22 @@ impl Dfa {
             }
             count = refined_count;
         }
-        // Renumber: the dead state's block first.
-        let dead = block[0];
+        // The dead block goes first. Without set algebra the empty subset (index 0) is
+        // dead; with a complement `^A` it matches, and a set may have no dead state at
+        // all (then an unreachable one is added so that id 0 still means dead). Dead
+        // states are those that reach no non-empty mask; Moore's algorithm already put
+        // them in one block, except in the unminimized fallback.
+        let live = live_states(trans, masks, classes);
+        let dead = match live.iter().position(|&l| !l) {
+            Some(s) => block[s],
+            None => {
+                count += 1;
+                count - 1
+            }
+        };
+        for (b, _) in block.iter_mut().zip(&live).filter(|(_, &l)| !l) {
+            *b = dead;
+        }
         let mut order = vec![u32::MAX; count as usize];
         order[dead as usize] = 0;
         let mut next_id = 1;
@@ -155,6 +210,7 @@ impl Dfa {
             }
         }
         let shift = stride.trailing_zeros();
+        let count = next_id;
         let mut table = vec![0u32; count as usize * stride];
         let mut out_masks = vec![AovMask::EMPTY; count as usize];
         for s in 0..n {

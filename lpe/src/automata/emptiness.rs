@@ -9,7 +9,6 @@ use crate::ast::{Atom, Expr};
 use crate::automata::alphabet::{Alphabet, Group};
 use crate::automata::nfa::Nfa;
 use crate::bits;
-use crate::Lpe;
 
 /// A compile-time warning: an AOV that can match no path.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -63,7 +62,7 @@ pub(crate) fn empty_aovs(
     alphabet: &Alphabet,
     atoms: &[&Atom],
     names: &[String],
-    lpes: &[Lpe],
+    exprs: &[&Expr],
 ) -> Vec<Warning> {
     // Per distinct atom: the groups (bit per `Group`) of the vertices it accepts.
     let groups: Vec<u8> = (0..atoms.len())
@@ -93,7 +92,7 @@ pub(crate) fn empty_aovs(
         .filter(|&i| !on_paths[i])
         .map(|i| {
             let message = if !any[i] {
-                let dead = dead_atom(&lpes[i].expr, atoms, &groups);
+                let dead = dead_atom(exprs[i], atoms, &groups);
                 match dead {
                     Some(a) => format!(
                         "it matches no sequence of vertices at all (`{a}` matches no vertex)"

@@ -4,6 +4,8 @@
 //! - `alphabet`: vertices folded into the classes the compiled atoms can tell apart;
 //! - `nfa`: the bitset Glushkov NFA of all AOVs at once;
 //! - `dfa`: the minimized dense DFA built from it, when it fits its budget;
+//! - `visible`: the visible AOV masks of a set with set algebra, as formulas over the
+//!   hidden operand AOVs the NFA holds;
 //! - `shape`: small DFAs over vertex groups (camera, scatter, emitter) that searches run in
 //!   product with, so they visit only sequences of a path's shape;
 //! - `emptiness`: which AOVs can match no path, a search on the NFA alone (no DFA, no
@@ -17,3 +19,4 @@ pub(crate) mod emptiness;
 pub mod mask;
 pub(crate) mod nfa;
 pub(crate) mod shape;
+pub(crate) mod visible;

@@ -74,9 +74,11 @@ pub(crate) struct Token {
     pub span: Range<usize>,
 }
 
-/// Tokenizes `source[start..]`; spans are byte offsets into `source`.
-pub(crate) fn tokenize(source: &str, start: usize) -> Result<Vec<Token>, Error> {
-    let bytes = source.as_bytes();
+/// Tokenizes `source[range]` (one set-algebra operand, or the whole body); spans are
+/// byte offsets into `source`.
+pub(crate) fn tokenize(source: &str, range: Range<usize>) -> Result<Vec<Token>, Error> {
+    let bytes = &source.as_bytes()[..range.end];
+    let start = range.start;
     let mut out = Vec::new();
     let mut i = start;
     while i < bytes.len() {
@@ -113,10 +115,10 @@ pub(crate) fn tokenize(source: &str, start: usize) -> Result<Vec<Token>, Error> 
             continue;
         }
         if b == b'\'' {
-            let Some(close) = source[i + 1..].find('\'') else {
+            let Some(close) = source[i + 1..bytes.len()].find('\'') else {
                 return Err(Error::new(
                     ErrorKind::Syntax,
-                    begin..source.len(),
+                    begin..bytes.len(),
                     "unterminated label: missing closing `'`",
                     source,
                 ));

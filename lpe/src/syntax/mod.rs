@@ -13,6 +13,10 @@
 //! nearest names; one made of event letters and digits (`CDL`, `C2L`, `CD5L`) is taken
 //! as the expression it looks like and gets that expression's error, if any.
 //!
+//! Set algebra over whole bodies (`A - B`, `A & B`, `^A`, docs/language.md) is found by
+//! the dialect-independent [`crate::algebra`] layer after the prefixes; each operand is
+//! then a body as above (a macro operand may itself hold set algebra).
+//!
 //! The front end is the only dialect-specific part: another dialect (OSL's, with `G`, `V`,
 //! `B`) would be another module producing the same AST.
 
@@ -23,6 +27,7 @@ mod parser;
 pub(crate) use error::nearest;
 pub use error::{Error, ErrorKind};
 
+use crate::algebra::{self, AlgebraError, ParseError};
 use crate::ast::{Atom, EventPos, Item, LabelPos, Lpe, Triple, TypePos};
 use crate::macros::MacroTable;
 use crate::path::VertexType;
@@ -157,18 +162,65 @@ impl Parser {
                 source,
             ));
         }
+        if algebra::has_algebra(source, i..body_end) {
+            return self.parse_algebra(source, i..body_end, prefixes, depth);
+        }
+        let lpe = self.parse_operand(source, i..body_end, depth)?;
+        Ok(Lpe::from_algebra(
+            prefixes.union(lpe.prefixes),
+            lpe.tree(),
+        ))
+    }
+
+    /// A body with set algebra: prefixes brought in by macro operands apply to the whole
+    /// expression, like the ones written before it.
+    fn parse_algebra(
+        &self,
+        source: &str,
+        body: std::ops::Range<usize>,
+        mut prefixes: Prefixes,
+        depth: usize,
+    ) -> Result<Lpe, Error> {
+        let tree = algebra::parse(source, body, &mut |span| {
+            if span.is_empty() {
+                return Err(Error::new(ErrorKind::Empty, span, "empty expression", source));
+            }
+            let lpe = self.parse_operand(source, span, depth)?;
+            prefixes = prefixes.union(lpe.prefixes);
+            Ok(lpe.tree())
+        })
+        .map_err(|e| match e {
+            ParseError::Operand(e) => e,
+            ParseError::Algebra(e) => {
+                let kind = match e {
+                    AlgebraError::MissingOperand { .. } => ErrorKind::Empty,
+                    _ => ErrorKind::Syntax,
+                };
+                Error::new(kind, e.span(), e.to_string(), source).with_help(e.help())
+            }
+        })?;
+        Ok(Lpe::from_algebra(prefixes, tree))
+    }
+
+    /// One operand, `source[span]`: a macro (whose definition may itself hold set
+    /// algebra and prefixes) or an expression.
+    fn parse_operand(
+        &self,
+        source: &str,
+        span: std::ops::Range<usize>,
+        depth: usize,
+    ) -> Result<Lpe, Error> {
+        let (i, body_end) = (span.start, span.end);
+        let body = &source[span];
         if is_ident(body) {
             if let Some(lpe) = self.expand_macro(source, i..body_end, depth)? {
-                return Ok(Lpe {
-                    prefixes: prefixes.union(lpe.prefixes),
-                    expr: lpe.expr,
-                });
+                return Ok(lpe);
             }
         }
         // An identifier-like body that does not even tokenize (`directDifuse`, `CDL_key`)
         // was meant as a macro name; one that tokenizes (`C2L`, `CD5L`) was meant as an
         // expression and gets the expression's error.
-        let tokens = match lexer::tokenize(source, i) {
+        let tokens = match lexer::tokenize(source, i..body_end) {
             Ok(t) => t,
             Err(e) if is_ident(body) && e.kind() == ErrorKind::Syntax => {
                 let near = nearest(body, self.macros.names(), 3);
@@ -188,7 +240,7 @@ impl Parser {
             Err(e) => return Err(e),
         };
         let expr = parser::ExprParser::new(source, tokens, &self.limits).parse(i..body_end)?;
-        Ok(Lpe { prefixes, expr })
+        Ok(Lpe::new(Prefixes::NONE, expr))
     }
 
     /// `NAME` or `NAME_group`, if the body names a macro.
@@ -269,9 +321,11 @@ pub fn set_light_group(lpe: &mut Lpe, group: &str) {
             *label = LabelPos::One(group.to_string());
         }
     };
-    lpe.expr.for_each_atom_mut(&mut |a| match a {
-        Atom::Item(i) => rewrite(i),
-        Atom::Class { items, .. } => items.iter_mut().for_each(rewrite),
+    lpe.operands_mut(&mut |e| {
+        e.for_each_atom_mut(&mut |a| match a {
+            Atom::Item(i) => rewrite(i),
+            Atom::Class { items, .. } => items.iter_mut().for_each(rewrite),
+        })
     });
 }
 

@@ -20,6 +20,8 @@ pub(crate) struct ExprParser<'a> {
     pos: usize,
     limits: &'a Limits,
     depth: usize,
+    /// End of the body being parsed: where "unexpected end" errors point.
+    end: usize,
 }
 
 type Result<T> = std::result::Result<T, Error>;
@@ -32,11 +34,13 @@ impl<'a> ExprParser<'a> {
             pos: 0,
             limits,
             depth: 0,
+            end: source.len(),
         }
     }
 
     /// Parses the whole token stream as one expression.
     pub(crate) fn parse(mut self, body: Range<usize>) -> Result<Expr> {
+        self.end = body.end;
         if self.tokens.is_empty() {
             return Err(self.err(ErrorKind::Empty, body, "empty expression"));
         }
@@ -75,7 +79,7 @@ impl<'a> ExprParser<'a> {
     /// Span of the current token, or an empty span at the end of the source.
     fn here(&self) -> Range<usize> {
         self.peek_token()
-            .map_or(self.source.len()..self.source.len(), |t| t.span.clone())
+            .map_or(self.end..self.end, |t| t.span.clone())
     }
 
     fn expect(&mut self, want: Tok, what: &str) -> Result<Token> {

@@ -426,3 +426,59 @@ fn printing_is_canonical_and_reparses() {
         assert_eq!(parse(want).unwrap(), l, "{src}");
     }
 }
+
+#[test]
+fn set_algebra_over_whole_bodies() {
+    let l = parse("lpe:shadows;C.*L - (directDiffuse - C<RS>L) & ^C<RD>.*L").unwrap();
+    assert!(l.prefixes.contains(Prefix::Shadows));
+    let t = l.algebra.as_ref().expect("algebra");
+    assert_eq!(l.operands().len(), 4);
+    assert_eq!(l.expr, p("C.*L"), "expr holds the first operand");
+    // Left-associative: ((A - (B - C)) & ^D).
+    assert!(matches!(t, crate::algebra::Algebra::And(a, d)
+        if matches!(**a, crate::algebra::Algebra::Minus(..))
+        && matches!(**d, crate::algebra::Algebra::Not(_))));
+    // The canonical text parses back to the same value.
+    assert_eq!(parse(&l.to_string()).unwrap(), l);
+    assert_eq!(
+        l.to_string(),
+        "shadows;C.*L - (C<RD>[<L.>O] - C<RS>L) & ^C<RD>.*L"
+    );
+}
+
+#[test]
+fn set_algebra_operands_are_macros_with_groups_and_prefixes() {
+    // A macro operand with a light group, and a macro whose body is itself algebra.
+    let config = crate::ini::Config::from_ini(
+        "/prman/lpe/macro/rest unoccluded;C.*[<L.>O] - directDiffuse\n",
+    )
+    .unwrap();
+    let parser = config.parser();
+    let l = parser.parse("rest_key & C<RD>.*L").unwrap();
+    assert!(l.prefixes.contains(Prefix::Unoccluded));
+    assert_eq!(
+        l.to_string(),
+        "unoccluded;C.*[<L.'key'>O] - C<RD>[<L.'key'>O] & C<RD>.*L"
+    );
+    let plain = parse("directDiffuse_key").unwrap();
+    assert!(plain.algebra.is_none());
+}
+
+#[test]
+fn set_algebra_errors_point_into_the_whole_text() {
+    let cases = [
+        ("C.*L - ", ErrorKind::Empty, 6),
+        ("C.*L - C<L'k'>", ErrorKind::TriplePosition, 10),
+        ("C.*L & directDifuse", ErrorKind::UnknownMacro, 7),
+        ("C(.* - D)L", ErrorKind::Syntax, 5),
+        ("^", ErrorKind::Empty, 0),
+        ("C.*L - C{3L", ErrorKind::Quantifier, 10),
+    ];
+    for (src, kind, at) in cases {
+        let e = parse(src).unwrap_err();
+        assert_eq!((e.kind(), e.span().start), (kind, at), "{src}: {e}");
+        assert_eq!(e.source_text(), src);
+    }
+    // `-` and `^` where the dialect gives them a meaning are not algebra.
+    assert!(parse("C[^D]'a-b'L").unwrap().algebra.is_none());
+}

@@ -1,0 +1,369 @@
+//! The dialect-independent top layer: finds the set-algebra operators of a source text
+//! and hands every operand's text to the dialect's parser.
+//!
+//! ```text
+//! algebra := unary (('&' | '-') unary)*      left-associative, both the same precedence
+//! unary   := '^' unary | '(' algebra ')' | operand
+//! ```
+//!
+//! The scanner never looks inside what a dialect treats as one unit: a quoted label
+//! (`'a-b'`), a triple or vertex `<...>` (OSL's `<R-D>` has a literal `-` label), a class
+//! `[...]` (RenderMan's `[^...]` negation) are skipped whole. Outside them neither
+//! dialect gives `&`, `-` or `^` a meaning, so an operator there is always set algebra.
+//! A parenthesized group is an algebra group when an operator stands at its top level,
+//! else it is part of an operand (`(C|D)` is a dialect group). An operator inside a
+//! group that is only part of an operand (`C(A - B)L`) is an error: operands are whole
+//! expressions.
+
+use std::fmt;
+use std::ops::Range;
+
+use super::tree::Algebra;
+
+/// What is wrong with the set algebra itself (not with an operand).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum AlgebraError {
+    /// An operator with no operand on one side: `A -`, `& B`, `^`, `A & & B`, `()`.
+    MissingOperand {
+        /// The operator, or the empty group.
+        at: Range<usize>,
+    },
+    /// A `(` of an algebra group without its `)`, or a `)` without its `(`.
+    Unbalanced {
+        /// The parenthesis.
+        at: Range<usize>,
+    },
+    /// An operator inside a group that is only part of an operand: `C(A - B)L`.
+    InsideOperand {
+        /// The operator.
+        at: Range<usize>,
+    },
+}
+
+impl AlgebraError {
+    /// The byte span the error points at.
+    pub fn span(&self) -> Range<usize> {
+        match self {
+            AlgebraError::MissingOperand { at }
+            | AlgebraError::Unbalanced { at }
+            | AlgebraError::InsideOperand { at } => at.clone(),
+        }
+    }
+
+    /// How to fix it.
+    pub fn help(&self) -> &'static str {
+        match self {
+            AlgebraError::MissingOperand { .. } => {
+                "`&`, `-` take an expression on each side, `^` one after it: `A - B`, `^A`"
+            }
+            AlgebraError::Unbalanced { .. } => "close every `(` of the set algebra with `)`",
+            AlgebraError::InsideOperand { .. } => {
+                "set algebra combines whole expressions: write `C.*L - C.*DL`, not `C(.* - .*D)L`"
+            }
+        }
+    }
+}
+
+impl fmt::Display for AlgebraError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            AlgebraError::MissingOperand { .. } => f.write_str("set algebra operand missing"),
+            AlgebraError::Unbalanced { .. } => {
+                f.write_str("unbalanced parenthesis in set algebra")
+            }
+            AlgebraError::InsideOperand { .. } => {
+                f.write_str("set-algebra operator inside an expression")
+            }
+        }
+    }
+}
+
+impl std::error::Error for AlgebraError {}
+
+/// Why [`parse`] failed: the algebra, or the dialect's parse of an operand.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ParseError<X> {
+    /// The operators and groups.
+    Algebra(AlgebraError),
+    /// The dialect's error for one operand, as its callback returned it.
+    Operand(X),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Tok {
+    And,
+    Minus,
+    Not,
+    Open,
+    Close,
+    /// Operand text (quotes, `<...>`, `[...]` and other characters).
+    Text,
+}
+
+/// The scanner's tokens with byte spans. `^` is an operator only where an operand may
+/// start (after the start, an operator or `(`); elsewhere it is operand text for the
+/// dialect to judge.
+fn scan(src: &str, range: Range<usize>) -> Vec<(Tok, Range<usize>)> {
+    let b = src.as_bytes();
+    let mut out: Vec<(Tok, Range<usize>)> = Vec::new();
+    let mut i = range.start;
+    let end = range.end;
+    // From an `open` byte at `i`: past its `close` (nested pairs counted, quotes
+    // skipped whole), or to `end`.
+    let skip = |mut i: usize, open: u8, close: u8| -> usize {
+        let mut depth = 0usize;
+        while i < end {
+            match b[i] {
+                b'\'' => {
+                    i = src[i + 1..end].find('\'').map_or(end, |k| i + 1 + k + 1);
+                    continue;
+                }
+                c if c == open => depth += 1,
+                c if c == close => {
+                    if depth <= 1 {
+                        return i + 1;
+                    }
+                    depth -= 1;
+                }
+                _ => {}
+            }
+            i += 1;
+        }
+        end
+    };
+    while i < end {
+        let start = i;
+        let tok = match b[i] {
+            c if c.is_ascii_whitespace() => {
+                i += 1;
+                continue;
+            }
+            b'&' => Tok::And,
+            b'-' => Tok::Minus,
+            b'^' if matches!(
+                out.last(),
+                None | Some((Tok::And | Tok::Minus | Tok::Not | Tok::Open, _))
+            ) =>
+            {
+                Tok::Not
+            }
+            b'(' => Tok::Open,
+            b')' => Tok::Close,
+            b'\'' => {
+                i = src[start + 1..end].find('\'').map_or(end, |k| start + 1 + k + 1);
+                Tok::Text
+            }
+            b'<' => {
+                i = skip(i, b'<', b'>');
+                Tok::Text
+            }
+            b'[' => {
+                i = skip(i, b'[', b']');
+                Tok::Text
+            }
+            _ => {
+                i += src[i..].chars().next().map_or(1, char::len_utf8);
+                Tok::Text
+            }
+        };
+        if tok != Tok::Text || i == start {
+            i = start + 1;
+        }
+        out.push((tok, start..i));
+    }
+    out
+}
+
+/// Whether `src[range]` uses set algebra at all: a front end parses plain expressions
+/// exactly as before.
+pub fn has_algebra(src: &str, range: Range<usize>) -> bool {
+    scan(src, range)
+        .iter()
+        .any(|(t, _)| matches!(t, Tok::And | Tok::Minus | Tok::Not))
+}
+
+/// Parses `src[range]` as set algebra. `operand(span)` parses one operand (its span
+/// trimmed, in bytes of `src`, so errors point into the whole text) and returns its
+/// tree: a leaf, or a whole subtree when the operand is a macro holding algebra.
+pub fn parse<E, X>(
+    src: &str,
+    range: Range<usize>,
+    operand: &mut impl FnMut(Range<usize>) -> Result<Algebra<E>, X>,
+) -> Result<Algebra<E>, ParseError<X>> {
+    let toks = scan(src, range.clone());
+    let mut p = Parser {
+        toks: &toks,
+        pos: 0,
+        end: range.end,
+    };
+    let t = p.algebra(operand)?;
+    match p.toks.get(p.pos) {
+        Some((_, at)) => Err(ParseError::Algebra(AlgebraError::Unbalanced { at: at.clone() })),
+        None => Ok(t),
+    }
+}
+
+struct Parser<'t> {
+    toks: &'t [(Tok, Range<usize>)],
+    pos: usize,
+    end: usize,
+}
+
+impl Parser<'_> {
+    fn peek(&self) -> Option<Tok> {
+        self.toks.get(self.pos).map(|t| t.0)
+    }
+
+    /// Where a missing operand would be: the next token, or the end.
+    fn here(&self) -> Range<usize> {
+        self.toks
+            .get(self.pos)
+            .map_or(self.end..self.end, |t| t.1.clone())
+    }
+
+    fn algebra<E, X>(
+        &mut self,
+        operand: &mut impl FnMut(Range<usize>) -> Result<Algebra<E>, X>,
+    ) -> Result<Algebra<E>, ParseError<X>> {
+        let mut left = self.unary(operand)?;
+        while let Some(op @ (Tok::And | Tok::Minus)) = self.peek() {
+            self.pos += 1;
+            let right = self.unary(operand)?;
+            left = if op == Tok::And {
+                Algebra::and(left, right)
+            } else {
+                Algebra::minus(left, right)
+            };
+        }
+        Ok(left)
+    }
+
+    fn unary<E, X>(
+        &mut self,
+        operand: &mut impl FnMut(Range<usize>) -> Result<Algebra<E>, X>,
+    ) -> Result<Algebra<E>, ParseError<X>> {
+        let missing = |at| Err(ParseError::Algebra(AlgebraError::MissingOperand { at }));
+        match self.peek() {
+            Some(Tok::Not) => {
+                let at = self.here();
+                self.pos += 1;
+                if matches!(self.peek(), None | Some(Tok::And | Tok::Minus | Tok::Close)) {
+                    return missing(at);
+                }
+                Ok(Algebra::not(self.unary(operand)?))
+            }
+            None | Some(Tok::And | Tok::Minus | Tok::Close) => missing(self.here()),
+            Some(Tok::Open) if self.is_algebra_group() => {
+                let open = self.here();
+                self.pos += 1;
+                let t = self.algebra(operand)?;
+                if self.peek() != Some(Tok::Close) {
+                    return Err(ParseError::Algebra(AlgebraError::Unbalanced { at: open }));
+                }
+                self.pos += 1;
+                Ok(t)
+            }
+            Some(_) => self.operand(operand),
+        }
+    }
+
+    /// The group opening here has an operator at its own top level, and nothing but
+    /// an operator, a `)` or the end follows its `)`.
+    fn is_algebra_group(&self) -> bool {
+        let mut depth = 0usize;
+        let mut has_op = false;
+        for (k, (t, _)) in self.toks[self.pos..].iter().enumerate() {
+            match t {
+                Tok::Open => depth += 1,
+                Tok::Close => {
+                    depth -= 1;
+                    if depth == 0 {
+                        let after = self.toks.get(self.pos + k + 1).map(|t| t.0);
+                        return has_op
+                            && matches!(after, None | Some(Tok::And | Tok::Minus | Tok::Close));
+                    }
+                }
+                Tok::And | Tok::Minus | Tok::Not if depth == 1 => has_op = true,
+                _ => {}
+            }
+        }
+        false
+    }
+
+    /// One operand: tokens up to an operator or `)` at this level. An operator nested in
+    /// one of its groups is an error.
+    fn operand<E, X>(
+        &mut self,
+        operand: &mut impl FnMut(Range<usize>) -> Result<Algebra<E>, X>,
+    ) -> Result<Algebra<E>, ParseError<X>> {
+        let start = self.here().start;
+        let mut end = start;
+        let mut depth = 0usize;
+        while let Some((t, span)) = self.toks.get(self.pos) {
+            match t {
+                Tok::And | Tok::Minus | Tok::Not if depth > 0 => {
+                    return Err(ParseError::Algebra(AlgebraError::InsideOperand {
+                        at: span.clone(),
+                    }))
+                }
+                Tok::And | Tok::Minus => break,
+                Tok::Close if depth == 0 => break,
+                Tok::Open => depth += 1,
+                Tok::Close => depth -= 1,
+                _ => {}
+            }
+            end = span.end;
+            self.pos += 1;
+        }
+        operand(start..end).map_err(ParseError::Operand)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Leaves are the operand texts.
+    fn tree(src: &str) -> Result<String, AlgebraError> {
+        let t = parse(src, 0..src.len(), &mut |r: Range<usize>| {
+            Ok::<_, ()>(Algebra::Leaf(format!("[{}]", &src[r])))
+        });
+        match t {
+            Ok(t) => Ok(t.to_string()),
+            Err(ParseError::Algebra(e)) => Err(e),
+            Err(ParseError::Operand(())) => unreachable!(),
+        }
+    }
+
+    #[test]
+    fn precedence_and_associativity() {
+        assert_eq!(tree("A - B - C").unwrap(), "[A] - [B] - [C]");
+        assert_eq!(tree("A - (B - C)").unwrap(), "[A] - ([B] - [C])");
+        assert_eq!(tree("^A & B").unwrap(), "^[A] & [B]");
+        assert_eq!(tree("^(A & B)").unwrap(), "^([A] & [B])");
+        assert_eq!(tree("A & B - C").unwrap(), "[A] & [B] - [C]");
+        assert_eq!(tree("(A - B) & ^(C|D)").unwrap(), "[A] - [B] & ^[(C|D)]");
+        assert_eq!(tree("^^A").unwrap(), "^^[A]");
+        assert_eq!(tree("((A))").unwrap(), "[((A))]");
+    }
+
+    #[test]
+    fn units_of_the_dialects_are_skipped_whole() {
+        assert!(!has_algebra("C<R-D>'a-b'[^'x']L", 0..18));
+        assert_eq!(tree("C<R-D>L - C['a&b' ^]L").unwrap(), "[C<R-D>L] - [C['a&b' ^]L]");
+        assert_eq!(tree("C[<L.[^'a']>O] - C.*L").unwrap(), "[C[<L.[^'a']>O]] - [C.*L]");
+        // `^` where no operand can start is operand text for the dialect.
+        assert!(!has_algebra("C^L", 0..3));
+        assert!(has_algebra("^CL", 0..3));
+    }
+
+    #[test]
+    fn errors_point_at_the_operator() {
+        assert_eq!(tree("A -"), Err(AlgebraError::MissingOperand { at: 3..3 }));
+        assert_eq!(tree("& B"), Err(AlgebraError::MissingOperand { at: 0..1 }));
+        assert_eq!(tree("A & ^"), Err(AlgebraError::MissingOperand { at: 4..5 }));
+        assert_eq!(tree("C(A - B)L"), Err(AlgebraError::InsideOperand { at: 4..5 }));
+        assert_eq!(tree("(A - B"), Err(AlgebraError::InsideOperand { at: 3..4 }));
+        assert_eq!(tree("A - B)"), Err(AlgebraError::Unbalanced { at: 5..6 }));
+    }
+}
