@@ -116,6 +116,24 @@ fn arnold_partition_fixture() {
     assert_eq!(f[0]["witness"], "C RD1 L");
     assert_eq!(f[1]["witness"], "C L");
     assert_eq!(f[2]["witness"], "C L");
+    // The remainders parse and close the gaps, by the partition command.
+    assert_eq!(f[1]["remainder"], "C.*[<L.>O] - C[DS]L - C[DS]+[<L.>O] - CO");
+    assert_eq!(
+        f[2]["remainder"],
+        "C.*[<L.>O] - C.*<L.'key'> - C.*<L.'env'> - C.*O"
+    );
+    for (finding, members) in [
+        (&f[1], ["C[DS]L", "C[DS]+[<L.>O]", "CO"]),
+        (&f[2], ["C.*<L.'key'>", "C.*<L.'env'>", "C.*O"]),
+    ] {
+        let rest = format!("rest={}", finding["remainder"].as_str().unwrap());
+        let mut args = vec!["partition", rest.as_str()];
+        args.extend(members);
+        let (_, out, err) = lpe_check(&args);
+        assert!(out.starts_with("partition of C.*[<L.>O] by 4 AOVs\n"), "{out}{err}");
+        assert!(!out.contains("gap:"), "{out}");
+        assert!(!out.contains("& rest"), "the remainder overlaps nothing: {out}");
+    }
     let parts = v["partitions"].as_array().unwrap();
     assert_eq!(parts.len(), 2);
     assert!(parts.iter().all(|p| p["checked"] == true && p["clean"] == false));
@@ -151,6 +169,10 @@ fn rib_without_and_with_its_ini() {
     assert_eq!(
         findings(&v),
         triples(&[("parse_error", "broken", "13:55"), ("gap", "beauty", "3:1")])
+    );
+    assert_eq!(
+        v["findings"][1]["remainder"],
+        "C.*[<L.>O] - C<.D>.*[<L.>O] - C<.S>.*[<L.>O] - CO"
     );
     let (_, v2) = json(&["--ini", "tests/testdata/lint/rendermn.ini", rib]);
     assert_eq!(findings(&v2), findings(&v));

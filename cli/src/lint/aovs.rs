@@ -96,7 +96,7 @@ fn empty_aovs(linted: &[Linted]) -> Vec<(usize, String)> {
 }
 
 fn group_findings(doc: &Document, l: &Linted, lpe: &Lpe, findings: &mut Vec<Finding>) {
-    for (carrier, label) in labels::labels(&lpe.expr) {
+    for (carrier, label) in labels::labels(lpe) {
         let (known, kind, who) = match carrier {
             Carrier::Light => (&doc.light_groups, Kind::UnknownLightGroup, "light"),
             Carrier::Object => (&doc.object_groups, Kind::UnknownObjectGroup, "object"),
@@ -126,7 +126,7 @@ fn group_findings(doc: &Document, l: &Linted, lpe: &Lpe, findings: &mut Vec<Find
 }
 
 fn lobe_findings(l: &Linted, lpe: &Lpe, lobes: &LobeMap, findings: &mut Vec<Finding>) {
-    for (category, lobe) in labels::lobes(&lpe.expr) {
+    for (category, lobe) in labels::lobes(lpe) {
         if lobes.is_fed(category, lobe) {
             continue;
         }

@@ -1,9 +1,10 @@
 //! What an expression asks of the scene: the group labels it names, by the vertex kind
 //! that must carry them, and the numbered lobes it names. Negated classes are skipped:
-//! a label or lobe named only to be excluded makes no AOV black.
+//! a label or lobe named only to be excluded makes no AOV black. Every operand of set
+//! algebra counts (a typo in `A - B` is a typo too).
 
 use lpe::ast::{Atom, EventPos, Item, LabelPos, TypePos};
-use lpe::{EventKind, Expr, LobeCategory, VertexType};
+use lpe::{EventKind, LobeCategory, Lpe, VertexType};
 
 /// Who must carry a label for the AOV to see it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -17,14 +18,19 @@ pub enum Carrier {
 
 /// `(carrier, label)` for every label named in a non-negated position, deduplicated,
 /// in first-mention order.
-pub fn labels(expr: &Expr) -> Vec<(Carrier, String)> {
+pub fn labels(lpe: &Lpe) -> Vec<(Carrier, String)> {
     let mut out: Vec<(Carrier, String)> = Vec::new();
     let mut add = |c: Carrier, l: &str| {
         if !out.iter().any(|(c2, l2)| *c2 == c && l2 == l) {
             out.push((c, l.to_string()));
         }
     };
-    expr.for_each_atom(&mut |atom| {
+    let mut each_atom = |f: &mut dyn FnMut(&Atom)| {
+        for e in lpe.operands() {
+            e.for_each_atom(&mut |a| f(a));
+        }
+    };
+    each_atom(&mut |atom| {
         for item in positive_items(atom) {
             match item {
                 Item::Label(l) => add(Carrier::Object, l),
@@ -65,7 +71,7 @@ pub fn labels(expr: &Expr) -> Vec<(Carrier, String)> {
 }
 
 /// `(category, lobe)` for every numbered lobe named in a non-negated position.
-pub fn lobes(expr: &Expr) -> Vec<(LobeCategory, u8)> {
+pub fn lobes(lpe: &Lpe) -> Vec<(LobeCategory, u8)> {
     let mut out = Vec::new();
     let mut add = |kind: EventKind, lobe: Option<u8>| {
         let category = match kind {
@@ -79,7 +85,12 @@ pub fn lobes(expr: &Expr) -> Vec<(LobeCategory, u8)> {
             }
         }
     };
-    expr.for_each_atom(&mut |atom| {
+    let mut each_atom = |f: &mut dyn FnMut(&Atom)| {
+        for e in lpe.operands() {
+            e.for_each_atom(&mut |a| f(a));
+        }
+    };
+    each_atom(&mut |atom| {
         for item in positive_items(atom) {
             match item {
                 Item::Event(e) => add(e.kind, e.lobe),
@@ -113,8 +124,8 @@ fn positive_items(atom: &Atom) -> &[Item] {
 mod tests {
     use super::*;
 
-    fn expr(s: &str) -> Expr {
-        lpe::parse(s).unwrap().expr
+    fn expr(s: &str) -> Lpe {
+        lpe::parse(s).unwrap()
     }
 
     #[test]
@@ -139,6 +150,11 @@ mod tests {
         assert_eq!(labels(&expr("C.*<L.[^'key']>")), []);
         assert_eq!(labels(&expr("C[^'floor']L")), []);
         assert_eq!(labels(&expr("C<R.'x'>.*O")), [(Carrier::Object, "x".into())]);
+        // Every operand of set algebra.
+        assert_eq!(
+            labels(&expr("C.*<L.'a'> - C.*<L.'b'>")),
+            [(Carrier::Light, "a".into()), (Carrier::Light, "b".into())]
+        );
     }
 
     #[test]

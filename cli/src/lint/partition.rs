@@ -73,8 +73,8 @@ pub fn check(
         f.remainder = remainder(&named, universe, parser);
         if f.remainder.is_none() {
             f.help = Some(
-                "add an AOV that matches the witness path; this build has no set algebra \
-                 to write the exact remainder"
+                "add an AOV that matches the witness path (no remainder expression \
+                 could be written and confirmed)"
                     .into(),
             );
         }
@@ -92,14 +92,23 @@ pub fn check(
     Ok(out)
 }
 
-/// `UNIVERSE - ((a)|(b)|...)`, the AOV that would close the gap, when the parser has set
-/// algebra and the partition check confirms that adding it leaves no gap; else `None`.
+/// `UNIVERSE - (a) - (b) - ...` in canonical form, the AOV that would close the gap,
+/// when the parser has set algebra and the partition check confirms that adding the
+/// printed text leaves no gap; else `None`.
 pub fn remainder(members: &[(String, Lpe)], universe: &Lpe, parser: &Parser) -> Option<String> {
-    let union: Vec<String> = members.iter().map(|(_, l)| format!("({})", l.expr)).collect();
-    let text = format!("{} - ({})", universe.expr, union.join("|"));
-    let lpe = parser.parse(&text).ok()?;
+    // Prefixes change what an AOV accumulates, not what it matches.
+    let bare = |l: &Lpe| {
+        let mut l = l.clone();
+        l.prefixes = Default::default();
+        l.to_string()
+    };
+    let mut text = bare(universe);
+    for (_, l) in members {
+        text.push_str(&format!(" - ({})", bare(l)));
+    }
+    let printed = parser.parse(&text).ok()?.to_string();
     let mut closed = members.to_vec();
-    closed.push(("remainder".into(), lpe));
+    closed.push(("remainder".into(), parser.parse(&printed).ok()?));
     let p = analysis::partition(&closed, universe).ok()?;
-    p.gap.is_none().then_some(text)
+    p.gap.is_none().then_some(printed)
 }
