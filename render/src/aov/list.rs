@@ -344,6 +344,43 @@ pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels,
     })
 }
 
+/// The AOVs of a USD stage: its LPE RenderVars, in the order of the first
+/// RenderProduct's `orderedVars` when it has them (vars it leaves out are skipped, names
+/// that are no LPE RenderVar are warned about: beauty is always written), else in stage
+/// order.
+pub fn usd_render_vars(stage: &lpe_lint::Document) -> DisplayChannels {
+    let lpe_var = |name: &str| stage.aovs.iter().find(|a| a.name == name);
+    let mut out = DisplayChannels::default();
+    match &stage.ordered_vars {
+        Some(order) => {
+            for name in order {
+                match lpe_var(name) {
+                    Some(a) => out.channels.push((a.name.clone(), a.source.clone())),
+                    None => out.warnings.push(format!(
+                        "orderedVars names `{name}`, not an LPE RenderVar: skipped"
+                    )),
+                }
+            }
+            for a in &stage.aovs {
+                if !order.contains(&a.name) {
+                    out.warnings.push(format!(
+                        "RenderVar `{}` is not in the product's orderedVars: skipped",
+                        a.name
+                    ));
+                }
+            }
+        }
+        None => {
+            out.channels = stage
+                .aovs
+                .iter()
+                .map(|a| (a.name.clone(), a.source.clone()))
+                .collect();
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use lpe_render::aov::{parse_display_channels, split_aov_arg, AovList};
+use lpe_render::aov::{parse_display_channels, split_aov_arg, usd_render_vars, AovList};
 use lpe_render::integrator::{self, Settings};
 use lpe_render::output::{self, Report};
 use lpe_render::scene::Scene;
@@ -60,11 +60,25 @@ pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
                 })?;
         }
     }
+    if let Some(path) = &args.usd {
+        let stage = lpe_lint::read::usd::read(path, &lpe_lint::read::Limits::default())?;
+        let read = usd_render_vars(&stage);
+        for w in read.warnings {
+            eprintln!("warning: {}: {w}", path.display());
+        }
+        for (name, source) in read.channels {
+            aovs.push(&name, &source, &parser)
+                .map_err(|source| InputError::DisplayAov {
+                    path: path.clone(),
+                    source,
+                })?;
+        }
+    }
     for arg in &args.aovs {
         let (name, source) = split_aov_arg(arg)?;
         aovs.push(name, source, &parser)?;
     }
-    if args.display.is_none() && args.aovs.is_empty() {
+    if args.display.is_none() && args.usd.is_none() && args.aovs.is_empty() {
         aovs = AovList::for_render(&scene, &parser)?;
     }
     for (lobe, names) in config.lobes.user_collisions(&integrator::USER_SIGNALS) {
