@@ -145,7 +145,7 @@ fn clean_fixture_exits_zero() {
     assert_eq!((code, err.as_str()), (0, ""));
     assert_eq!(
         out,
-        "clean: 7 AOVs in 1 files, 1 partitions checked (1 clean)\n"
+        "clean: 7 AOVs, 1 file, 1 partition checked (1 clean)\n"
     );
 }
 
@@ -188,7 +188,7 @@ fn text_report_points_at_the_expression() {
   = help: write `<L.'key'>`
 ";
     assert!(out.contains(want), "{out}");
-    assert!(out.ends_with("4 findings: 6 AOVs in 1 files, 1 partitions checked (0 clean)\n"));
+    assert!(out.ends_with("4 findings: 6 AOVs, 1 file, 1 partition checked (0 clean)\n"));
 }
 
 #[test]
@@ -247,7 +247,7 @@ fn a_fifty_megabyte_rib_streams_in_bounded_memory() {
     assert!(std::fs::metadata(&big).unwrap().len() >= 49 << 20);
     let (code, out, err) = lpe_check(&["lint", big.to_str().unwrap()]);
     assert_eq!((code, err.as_str()), (0, ""), "{out}");
-    assert!(out.starts_with("clean: 1 AOVs"), "{out}");
+    assert!(out.starts_with("clean: 1 AOV, 1 file"), "{out}");
     // One line over the 1 MiB line limit: a clear error with the line, no slurping.
     let long = dir.join("long.rib");
     let mut text = "Option \"a\"\n".to_string();

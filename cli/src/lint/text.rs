@@ -15,16 +15,21 @@ pub fn render(out: &Outcome) -> String {
     let checked = out.partitions.iter().filter(|p| p.checked).count();
     let clean = out.partitions.iter().filter(|p| p.clean).count();
     let counts = format!(
-        "{} AOVs in {} files, {checked} partitions checked ({clean} clean)",
-        out.aovs.len(),
-        files.len()
+        "{}, {}, {} checked ({clean} clean)",
+        count(out.aovs.len(), "AOV"),
+        count(files.len(), "file"),
+        count(checked, "partition"),
     );
     if out.findings.is_empty() {
         s.push_str(&format!("clean: {counts}\n"));
     } else {
-        s.push_str(&format!("{} findings: {counts}\n", out.findings.len()));
+        s.push_str(&format!("{}: {counts}\n", count(out.findings.len(), "finding")));
     }
     s
+}
+
+fn count(n: usize, noun: &str) -> String {
+    format!("{n} {noun}{}", if n == 1 { "" } else { "s" })
 }
 
 /// One finding: `FILE:WHERE: KIND: `SUBJECT`: MESSAGE`, then the expression with a caret
