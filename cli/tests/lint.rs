@@ -85,7 +85,11 @@ fn hdprman_fixture() {
         findings(&v),
         triples(&[
             ("parse_error", "rimLight", "/Render/vars/rimLight"),
-            ("empty", "lightBehindCamera", "/Render/vars/lightBehindCamera"),
+            (
+                "empty",
+                "lightBehindCamera",
+                "/Render/vars/lightBehindCamera"
+            ),
             ("equivalent", "diffuseAgain", "/Render/vars/diffuseAgain"),
             ("unfed_lobe", "wetness", "/Render/vars/wetness"),
         ])
@@ -117,7 +121,10 @@ fn arnold_partition_fixture() {
     assert_eq!(f[1]["witness"], "C L");
     assert_eq!(f[2]["witness"], "C L");
     // The remainders parse and close the gaps, by the partition command.
-    assert_eq!(f[1]["remainder"], "C.*[<L.>O] - C[DS]L - C[DS]+[<L.>O] - CO");
+    assert_eq!(
+        f[1]["remainder"],
+        "C.*[<L.>O] - C[DS]L - C[DS]+[<L.>O] - CO"
+    );
     assert_eq!(
         f[2]["remainder"],
         "C.*[<L.>O] - C.*<L.'key'> - C.*<L.'env'> - C.*O"
@@ -130,13 +137,21 @@ fn arnold_partition_fixture() {
         let mut args = vec!["partition", rest.as_str()];
         args.extend(members);
         let (_, out, err) = lpe_check(&args);
-        assert!(out.starts_with("partition of C.*[<L.>O] by 4 AOVs\n"), "{out}{err}");
+        assert!(
+            out.starts_with("partition of C.*[<L.>O] by 4 AOVs\n"),
+            "{out}{err}"
+        );
         assert!(!out.contains("gap:"), "{out}");
-        assert!(!out.contains("& rest"), "the remainder overlaps nothing: {out}");
+        assert!(
+            !out.contains("& rest"),
+            "the remainder overlaps nothing: {out}"
+        );
     }
     let parts = v["partitions"].as_array().unwrap();
     assert_eq!(parts.len(), 2);
-    assert!(parts.iter().all(|p| p["checked"] == true && p["clean"] == false));
+    assert!(parts
+        .iter()
+        .all(|p| p["checked"] == true && p["clean"] == false));
 }
 
 #[test]
@@ -202,7 +217,11 @@ fn partition_from_the_command_line() {
     ]);
     assert_eq!(code, 1);
     let got = findings(&v);
-    assert!(got.contains(&("unknown_member".into(), "--partition #2".into(), "0:0".into())));
+    assert!(got.contains(&(
+        "unknown_member".into(),
+        "--partition #2".into(),
+        "0:0".into()
+    )));
     assert!(got.contains(&("gap".into(), "--partition #1".into(), "0:0".into())));
 }
 
@@ -238,7 +257,11 @@ fn a_fifty_megabyte_rib_streams_in_bounded_memory() {
     {
         use std::io::Write;
         let mut f = std::io::BufWriter::new(std::fs::File::create(&big).unwrap());
-        writeln!(f, "DisplayChannel \"color d\" \"string source\" [\"color lpe:C<RD>L\"]").unwrap();
+        writeln!(
+            f,
+            "DisplayChannel \"color d\" \"string source\" [\"color lpe:C<RD>L\"]"
+        )
+        .unwrap();
         let line = format!("Polygon \"P\" [{}]\n", "0 1 2 ".repeat(20));
         for _ in 0..(50 << 20) / line.len() {
             f.write_all(line.as_bytes()).unwrap();
@@ -255,7 +278,10 @@ fn a_fifty_megabyte_rib_streams_in_bounded_memory() {
     std::fs::write(&long, text).unwrap();
     let (code, _, err) = lpe_check(&["lint", long.to_str().unwrap()]);
     assert_eq!(code, 2);
-    assert!(err.contains("long.rib:2: line longer than 1048576 bytes"), "{err}");
+    assert!(
+        err.contains("long.rib:2: line longer than 1048576 bytes"),
+        "{err}"
+    );
     std::fs::remove_file(&big).unwrap();
 }
 

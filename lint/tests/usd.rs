@@ -67,9 +67,21 @@ fn solaris_uniform_token_and_string() {
         d.ordered_vars.as_deref(),
         Some(&["C", "diffuse_key", "diffuse_fill", "specular_key"].map(String::from)[..])
     );
-    let lights: Vec<&str> = d.light_groups.as_ref().unwrap().iter().map(String::as_str).collect();
+    let lights: Vec<&str> = d
+        .light_groups
+        .as_ref()
+        .unwrap()
+        .iter()
+        .map(String::as_str)
+        .collect();
     assert_eq!(lights, ["fill", "key"]);
-    let objects: Vec<&str> = d.object_groups.as_ref().unwrap().iter().map(String::as_str).collect();
+    let objects: Vec<&str> = d
+        .object_groups
+        .as_ref()
+        .unwrap()
+        .iter()
+        .map(String::as_str)
+        .collect();
     assert_eq!(objects, ["floor"]);
     assert!(d.partitions.is_empty());
 }
@@ -109,7 +121,12 @@ fn arnold_string_source_type_and_partitions() {
     let parts: Vec<(&str, Vec<&str>)> = d
         .partitions
         .iter()
-        .map(|p| (p.name.as_str(), p.members.iter().map(String::as_str).collect()))
+        .map(|p| {
+            (
+                p.name.as_str(),
+                p.members.iter().map(String::as_str).collect(),
+            )
+        })
         .collect();
     assert_eq!(
         parts,

@@ -223,7 +223,12 @@ impl AovSet {
         });
         let (alphabet, nfa, atoms) = Self::build_nfa(&operands, opts)?;
         let dfa = if opts.dfa_budget > 0 {
-            Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget, visible.as_ref())
+            Dfa::build(
+                &nfa,
+                alphabet.class_count(),
+                opts.dfa_budget,
+                visible.as_ref(),
+            )
         } else {
             None
         };
@@ -249,7 +254,10 @@ impl AovSet {
         for (i, (_, l)) in aovs.iter().enumerate() {
             if l.algebra.is_none() {
                 if let Some(w) = slot_warnings.iter().find(|w| w.aov == first) {
-                    warnings.push(Warning { aov: i, ..w.clone() });
+                    warnings.push(Warning {
+                        aov: i,
+                        ..w.clone()
+                    });
                 }
             }
             first += l.operands().len();
@@ -677,5 +685,4 @@ mod tests {
         );
         assert!(err.to_string().contains("hidden AOVs"), "{err}");
     }
-
 }

@@ -101,8 +101,8 @@
 
 #![warn(missing_docs)]
 
-pub mod analysis;
 pub mod algebra;
+pub mod analysis;
 pub mod aov;
 pub mod ast;
 pub mod automata;

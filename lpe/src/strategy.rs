@@ -127,12 +127,21 @@ pub fn lpe() -> impl Strategy<Value = Lpe> {
 pub fn algebra() -> impl Strategy<Value = Algebra<Expr>> {
     let leaf = expr().prop_map(Algebra::Leaf).boxed();
     let op = (leaf.clone(), leaf.clone(), any::<bool>())
-        .prop_map(|(a, b, and)| if and { Algebra::and(a, b) } else { Algebra::minus(a, b) })
+        .prop_map(|(a, b, and)| {
+            if and {
+                Algebra::and(a, b)
+            } else {
+                Algebra::minus(a, b)
+            }
+        })
         .boxed();
     prop_oneof![
         op.clone(),
-        (op.clone(), leaf.clone(), any::<bool>())
-            .prop_map(|(a, b, and)| if and { Algebra::and(a, b) } else { Algebra::minus(a, b) }),
+        (op.clone(), leaf.clone(), any::<bool>()).prop_map(|(a, b, and)| if and {
+            Algebra::and(a, b)
+        } else {
+            Algebra::minus(a, b)
+        }),
         (leaf.clone(), op.clone()).prop_map(|(a, b)| Algebra::minus(a, b)),
         (leaf.clone(), leaf).prop_map(|(a, b)| Algebra::and(Algebra::not(a), b)),
         op.prop_map(Algebra::not),

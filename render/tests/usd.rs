@@ -30,8 +30,7 @@ fn render(stage: &str, tag: &str) -> (i32, String, Vec<String>, Vec<String>) {
         return (code, stderr, Vec::new(), Vec::new());
     }
     let report: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap())
-            .unwrap();
+        serde_json::from_str(&std::fs::read_to_string(out.join("report.json")).unwrap()).unwrap();
     let names = report["aovs"]
         .as_array()
         .unwrap()
@@ -70,7 +69,14 @@ fn without_a_product_every_lpe_var_in_stage_order() {
     assert_eq!(code, 0, "{stderr}");
     assert_eq!(
         names,
-        ["direct", "indirect", "emission", "lg_key", "lg_env", "lg_emission"]
+        [
+            "direct",
+            "indirect",
+            "emission",
+            "lg_key",
+            "lg_env",
+            "lg_emission"
+        ]
     );
 }
 
@@ -80,6 +86,9 @@ fn a_broken_stage_is_a_clear_error() {
     std::fs::write(&bad, "#usda 1.0\ndef RenderVar \"x\" {\n").unwrap();
     let (code, stderr, _, _) = render(bad.to_str().unwrap(), "bad");
     assert_eq!(code, 2);
-    assert!(stderr.contains(&format!("error: {}: USD: ", bad.display())), "{stderr}");
+    assert!(
+        stderr.contains(&format!("error: {}: USD: ", bad.display())),
+        "{stderr}"
+    );
     let _ = std::fs::remove_file(&bad);
 }

@@ -289,7 +289,11 @@ fn dead_states_of_set_algebra_are_sound_and_dfa_dead_states_complete() {
         })
         .unwrap();
     report(&stats, &skipped, cases);
-    assert!(complement_sets.get() * 4 >= cases, "{}", complement_sets.get());
+    assert!(
+        complement_sets.get() * 4 >= cases,
+        "{}",
+        complement_sets.get()
+    );
 }
 
 /// Prints the statistics and checks that the exact checks ran on most sets rather than

@@ -172,8 +172,7 @@ pub fn explain(aovs: &[(String, Lpe)], path: &Path) -> Result<Explanation, lpe::
                 .position(|&n| n == longest)
                 .expect("the maximum is in the list");
             let how = if longest == path.len() {
-                "still reachable after the last vertex: the path ends too early for it"
-                    .to_string()
+                "still reachable after the last vertex: the path ends too early for it".to_string()
             } else {
                 format!("dead at vertex {}", longest + 1)
             };
@@ -203,7 +202,11 @@ mod tests {
 
     #[test]
     fn a_landing_path_names_its_aovs() {
-        let a = aovs(&[("direct", "C<RD>L"), ("indirect", "C<RD>.+L"), ("any", "C.*L")]);
+        let a = aovs(&[
+            ("direct", "C<RD>L"),
+            ("indirect", "C<RD>.+L"),
+            ("any", "C.*L"),
+        ]);
         let e = explain(&a, &"C RD RS L".parse().unwrap()).unwrap();
         assert_eq!(e.landed, [1, 2]);
         assert!(e.text.ends_with("lands in: indirect, any\n"), "{}", e.text);

@@ -75,7 +75,12 @@ pub fn run(args: Args) -> ExitCode {
         record(path, read, &mut statuses, &mut docs);
     }
     for path in others {
-        record(path, read::read_file(path, &limits), &mut statuses, &mut docs);
+        record(
+            path,
+            read::read_file(path, &limits),
+            &mut statuses,
+            &mut docs,
+        );
     }
     let parser = config.parser();
     let universe = match parser.parse(&args.universe) {

@@ -29,7 +29,11 @@ pub fn check(
     }
     let empty = empty_aovs(linted);
     for (i, reason) in &empty {
-        findings.push(finding(&linted[*i], Kind::Empty, format!("can match no path: {reason}")));
+        findings.push(finding(
+            &linted[*i],
+            Kind::Empty,
+            format!("can match no path: {reason}"),
+        ));
     }
     let live: Vec<usize> = (0..linted.len())
         .filter(|i| linted[*i].lpe.is_some() && !empty.iter().any(|(e, _)| e == i))
@@ -38,8 +42,7 @@ pub fn check(
         let b = linted[j].lpe.as_ref().expect("live AOVs parsed");
         let twin = live[..x].iter().copied().find(|&i| {
             let a = linted[i].lpe.as_ref().expect("live AOVs parsed");
-            a.prefixes == b.prefixes
-                && analysis::compare(a, b).is_ok_and(|c| c.equivalent())
+            a.prefixes == b.prefixes && analysis::compare(a, b).is_ok_and(|c| c.equivalent())
         });
         if let Some(i) = twin {
             let mut f = finding(
@@ -111,7 +114,11 @@ fn group_findings(doc: &Document, l: &Linted, lpe: &Lpe, findings: &mut Vec<Find
         } else {
             format!(
                 "they carry {}",
-                known.iter().map(|g| format!("'{g}'")).collect::<Vec<_>>().join(", ")
+                known
+                    .iter()
+                    .map(|g| format!("'{g}'"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
             )
         };
         let mut f = finding(
@@ -142,7 +149,9 @@ fn lobe_findings(l: &Linted, lpe: &Lpe, lobes: &LobeMap, findings: &mut Vec<Find
             format!("no {what} maps to lobe {letter}{lobe}: this part renders black"),
         )
         .with_caret_on(&l.decl.source, &format!("{letter}{lobe}"));
-        f.help = Some(format!("map names to it in rendermn.ini: /prman/lpe/{key}{lobe} NAME,..."));
+        f.help = Some(format!(
+            "map names to it in rendermn.ini: /prman/lpe/{key}{lobe} NAME,..."
+        ));
         findings.push(f);
     }
 }
@@ -176,7 +185,9 @@ fn edit_distance(a: &str, b: &str) -> usize {
         let mut diag = row[0];
         row[0] = i + 1;
         for (j, cb) in b.iter().enumerate() {
-            let next = (row[j + 1] + 1).min(row[j] + 1).min(diag + usize::from(ca != *cb));
+            let next = (row[j + 1] + 1)
+                .min(row[j] + 1)
+                .min(diag + usize::from(ca != *cb));
             diag = row[j + 1];
             row[j + 1] = next;
         }
@@ -194,7 +205,9 @@ mod tests {
         assert_eq!(edit_distance("kye", "key"), 2);
         assert_eq!(edit_distance("", "abc"), 3);
         assert_eq!(edit_distance("rim", "rim"), 0);
-        let known = ["fill".to_string(), "key".to_string()].into_iter().collect();
+        let known = ["fill".to_string(), "key".to_string()]
+            .into_iter()
+            .collect();
         assert_eq!(closest("fil", &known), Some("fill"));
         assert_eq!(closest("zzzzz", &known), None);
     }

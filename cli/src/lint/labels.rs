@@ -149,7 +149,10 @@ mod tests {
         // Excluded labels ask nothing of the scene.
         assert_eq!(labels(&expr("C.*<L.[^'key']>")), []);
         assert_eq!(labels(&expr("C[^'floor']L")), []);
-        assert_eq!(labels(&expr("C<R.'x'>.*O")), [(Carrier::Object, "x".into())]);
+        assert_eq!(
+            labels(&expr("C<R.'x'>.*O")),
+            [(Carrier::Object, "x".into())]
+        );
         // Every operand of set algebra.
         assert_eq!(
             labels(&expr("C.*<L.'a'> - C.*<L.'b'>")),
@@ -164,6 +167,9 @@ mod tests {
             [(LobeCategory::User, 9), (LobeCategory::Diffuse, 4)]
         );
         assert_eq!(lobes(&expr("C<RD>.*[^S3]L")), []);
-        assert_eq!(lobes(&expr("CD2S8L")), [(LobeCategory::Diffuse, 2), (LobeCategory::Specular, 8)]);
+        assert_eq!(
+            lobes(&expr("CD2S8L")),
+            [(LobeCategory::Diffuse, 2), (LobeCategory::Specular, 8)]
+        );
     }
 }

@@ -74,7 +74,13 @@ pub fn lint(
             decl: decl.clone(),
             lpe: None,
         }));
-        aovs::check(doc, &mut out.aovs[first..], parser, lobes, &mut out.findings);
+        aovs::check(
+            doc,
+            &mut out.aovs[first..],
+            parser,
+            lobes,
+            &mut out.findings,
+        );
         for p in &doc.partitions {
             let checked = partition::check(
                 &file,

@@ -23,7 +23,10 @@ pub fn render(out: &Outcome) -> String {
     if out.findings.is_empty() {
         s.push_str(&format!("clean: {counts}\n"));
     } else {
-        s.push_str(&format!("{}: {counts}\n", count(out.findings.len(), "finding")));
+        s.push_str(&format!(
+            "{}: {counts}\n",
+            count(out.findings.len(), "finding")
+        ));
     }
     s
 }
@@ -54,7 +57,11 @@ pub fn block(f: &Finding) -> String {
             .collect();
         let pad = source[..span.start].chars().count();
         let width = source[span.clone()].chars().count().max(1);
-        s.push_str(&format!("  | {shown}\n  | {}{}\n", " ".repeat(pad), "^".repeat(width)));
+        s.push_str(&format!(
+            "  | {shown}\n  | {}{}\n",
+            " ".repeat(pad),
+            "^".repeat(width)
+        ));
     }
     for (label, value) in [
         ("witness", &f.witness),

@@ -409,5 +409,4 @@ mod tests {
         assert_eq!(m.which(&"C L".parse().unwrap()), [false, true, false]);
         assert_eq!(m.which(&"C RD L".parse().unwrap()), [true, false, true]);
     }
-
 }

@@ -106,7 +106,11 @@ fn display_channel(line: &str) -> Result<Option<Option<(String, String, usize)>>
     let Some((_, decl)) = quoted.first() else {
         return Err(RibProblem::NoDeclaration);
     };
-    let name = decl.split_whitespace().last().unwrap_or_default().to_string();
+    let name = decl
+        .split_whitespace()
+        .last()
+        .unwrap_or_default()
+        .to_string();
     let Some(pos) = quoted
         .iter()
         .position(|(_, q)| q.split_whitespace().eq(["string", "source"]))
@@ -171,8 +175,11 @@ mod tests {
     fn bad_lines_name_their_line() {
         let e = read_str("\nDisplayChannel \"color x", &Limits::default()).unwrap_err();
         assert_eq!(e.to_string(), "t.rib:2: unterminated string");
-        let e = read_str("DisplayChannel \"color x\" \"string source\"", &Limits::default())
-            .unwrap_err();
+        let e = read_str(
+            "DisplayChannel \"color x\" \"string source\"",
+            &Limits::default(),
+        )
+        .unwrap_err();
         assert_eq!(
             e.to_string(),
             "t.rib:1: channel `x`: \"string source\" needs a value"
@@ -204,8 +211,12 @@ mod tests {
 
     #[test]
     fn binary_bytes_are_refused_with_their_offset() {
-        let e = read_from(&b"Option\n\x00\x01"[..], Path::new("b.rib"), &Limits::default())
-            .unwrap_err();
+        let e = read_from(
+            &b"Option\n\x00\x01"[..],
+            Path::new("b.rib"),
+            &Limits::default(),
+        )
+        .unwrap_err();
         assert_eq!(
             e.to_string(),
             "b.rib: byte 7: not text (binary data or a truncated download?)"

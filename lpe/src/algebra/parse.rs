@@ -68,9 +68,7 @@ impl fmt::Display for AlgebraError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             AlgebraError::MissingOperand { .. } => f.write_str("set algebra operand missing"),
-            AlgebraError::Unbalanced { .. } => {
-                f.write_str("unbalanced parenthesis in set algebra")
-            }
+            AlgebraError::Unbalanced { .. } => f.write_str("unbalanced parenthesis in set algebra"),
             AlgebraError::InsideOperand { .. } => {
                 f.write_str("set-algebra operator inside an expression")
             }
@@ -150,7 +148,9 @@ fn scan(src: &str, range: Range<usize>) -> Vec<(Tok, Range<usize>)> {
             b'(' => Tok::Open,
             b')' => Tok::Close,
             b'\'' => {
-                i = src[start + 1..end].find('\'').map_or(end, |k| start + 1 + k + 1);
+                i = src[start + 1..end]
+                    .find('\'')
+                    .map_or(end, |k| start + 1 + k + 1);
                 Tok::Text
             }
             b'<' => {
@@ -198,7 +198,9 @@ pub fn parse<E, X>(
     };
     let t = p.algebra(operand)?;
     match p.toks.get(p.pos) {
-        Some((_, at)) => Err(ParseError::Algebra(AlgebraError::Unbalanced { at: at.clone() })),
+        Some((_, at)) => Err(ParseError::Algebra(AlgebraError::Unbalanced {
+            at: at.clone(),
+        })),
         None => Ok(t),
     }
 }
@@ -350,8 +352,14 @@ mod tests {
     #[test]
     fn units_of_the_dialects_are_skipped_whole() {
         assert!(!has_algebra("C<R-D>'a-b'[^'x']L", 0..18));
-        assert_eq!(tree("C<R-D>L - C['a&b' ^]L").unwrap(), "[C<R-D>L] - [C['a&b' ^]L]");
-        assert_eq!(tree("C[<L.[^'a']>O] - C.*L").unwrap(), "[C[<L.[^'a']>O]] - [C.*L]");
+        assert_eq!(
+            tree("C<R-D>L - C['a&b' ^]L").unwrap(),
+            "[C<R-D>L] - [C['a&b' ^]L]"
+        );
+        assert_eq!(
+            tree("C[<L.[^'a']>O] - C.*L").unwrap(),
+            "[C[<L.[^'a']>O]] - [C.*L]"
+        );
         // `^` where no operand can start is operand text for the dialect.
         assert!(!has_algebra("C^L", 0..3));
         assert!(has_algebra("^CL", 0..3));
@@ -361,9 +369,18 @@ mod tests {
     fn errors_point_at_the_operator() {
         assert_eq!(tree("A -"), Err(AlgebraError::MissingOperand { at: 3..3 }));
         assert_eq!(tree("& B"), Err(AlgebraError::MissingOperand { at: 0..1 }));
-        assert_eq!(tree("A & ^"), Err(AlgebraError::MissingOperand { at: 4..5 }));
-        assert_eq!(tree("C(A - B)L"), Err(AlgebraError::InsideOperand { at: 4..5 }));
-        assert_eq!(tree("(A - B"), Err(AlgebraError::InsideOperand { at: 3..4 }));
+        assert_eq!(
+            tree("A & ^"),
+            Err(AlgebraError::MissingOperand { at: 4..5 })
+        );
+        assert_eq!(
+            tree("C(A - B)L"),
+            Err(AlgebraError::InsideOperand { at: 4..5 })
+        );
+        assert_eq!(
+            tree("(A - B"),
+            Err(AlgebraError::InsideOperand { at: 3..4 })
+        );
         assert_eq!(tree("A - B)"), Err(AlgebraError::Unbalanced { at: 5..6 }));
     }
 }

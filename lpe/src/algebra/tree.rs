@@ -70,7 +70,10 @@ impl<E> Algebra<E> {
 
     /// The same tree with every leaf replaced by a whole subtree (a macro operand that is
     /// itself an algebra expression grafts in here), or the first error.
-    pub fn try_graft<F, X>(self, f: &mut impl FnMut(E) -> Result<Algebra<F>, X>) -> Result<Algebra<F>, X> {
+    pub fn try_graft<F, X>(
+        self,
+        f: &mut impl FnMut(E) -> Result<Algebra<F>, X>,
+    ) -> Result<Algebra<F>, X> {
         Ok(match self {
             Algebra::Leaf(e) => f(e)?,
             Algebra::And(a, b) => Algebra::and(a.try_graft(f)?, b.try_graft(f)?),
@@ -135,7 +138,11 @@ impl<E: fmt::Display> fmt::Display for Algebra<E> {
         match self {
             Algebra::Leaf(e) => write!(f, "{e}"),
             Algebra::And(a, b) | Algebra::Minus(a, b) => {
-                let op = if matches!(self, Algebra::And(..)) { "&" } else { "-" };
+                let op = if matches!(self, Algebra::And(..)) {
+                    "&"
+                } else {
+                    "-"
+                };
                 operand(f, a, false)?;
                 write!(f, " {op} ")?;
                 operand(f, b, true)
@@ -162,14 +169,20 @@ mod tests {
         assert_eq!(t.to_string(), "A - B - C");
         let t = Algebra::minus(leaf("A"), Algebra::minus(leaf("B"), leaf("C")));
         assert_eq!(t.to_string(), "A - (B - C)");
-        let t = Algebra::and(Algebra::not(leaf("A")), Algebra::not(Algebra::and(leaf("B"), leaf("C"))));
+        let t = Algebra::and(
+            Algebra::not(leaf("A")),
+            Algebra::not(Algebra::and(leaf("B"), leaf("C"))),
+        );
         assert_eq!(t.to_string(), "^A & ^(B & C)");
     }
 
     #[test]
     fn eval_combines_and_asks_each_leaf_once_in_order() {
         // (A - B) & ^C
-        let t = Algebra::and(Algebra::minus(leaf("A"), leaf("B")), Algebra::not(leaf("C")));
+        let t = Algebra::and(
+            Algebra::minus(leaf("A"), leaf("B")),
+            Algebra::not(leaf("C")),
+        );
         let table = [
             ([true, false, false], true),
             ([true, true, false], false),

@@ -55,7 +55,11 @@ mod tests {
             Algebra::minus(leaf(1), leaf(2)),
             Algebra::and(Algebra::not(leaf(3)), leaf(1)),
         ]);
-        let m = |hs: &[usize]| v.mask(hs.iter().copied().collect()).iter().collect::<Vec<_>>();
+        let m = |hs: &[usize]| {
+            v.mask(hs.iter().copied().collect())
+                .iter()
+                .collect::<Vec<_>>()
+        };
         assert_eq!(m(&[]), Vec::<usize>::new());
         assert_eq!(m(&[0, 1]), [0, 1, 2]);
         assert_eq!(m(&[1, 2]), [2]);

@@ -166,10 +166,7 @@ impl Parser {
             return self.parse_algebra(source, i..body_end, prefixes, depth);
         }
         let lpe = self.parse_operand(source, i..body_end, depth)?;
-        Ok(Lpe::from_algebra(
-            prefixes.union(lpe.prefixes),
-            lpe.tree(),
-        ))
+        Ok(Lpe::from_algebra(prefixes.union(lpe.prefixes), lpe.tree()))
     }
 
     /// A body with set algebra: prefixes brought in by macro operands apply to the whole
@@ -183,7 +180,12 @@ impl Parser {
     ) -> Result<Lpe, Error> {
         let tree = algebra::parse(source, body, &mut |span| {
             if span.is_empty() {
-                return Err(Error::new(ErrorKind::Empty, span, "empty expression", source));
+                return Err(Error::new(
+                    ErrorKind::Empty,
+                    span,
+                    "empty expression",
+                    source,
+                ));
             }
             let lpe = self.parse_operand(source, span, depth)?;
             prefixes = prefixes.union(lpe.prefixes);
