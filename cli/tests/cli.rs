@@ -155,3 +155,22 @@ fn diff_needs_two_engines() {
     assert_eq!(code, 2);
     assert!(err.contains("at least two engines"), "{err}");
 }
+
+#[test]
+fn set_algebra_matches_on_every_engine_and_remainders_round_trip() {
+    let (code, out, err) = lpe_check(&["match", "C.*L - C.*DL", "C RS L", "C RD L"], "");
+    assert_eq!((code, out.as_str()), (0, "match\nno-match\n"), "{err}");
+    let (code, out, _) = lpe_check(&["partition", "directDiffuse", "indirectDiffuse"], "");
+    assert_eq!(code, 1, "{out}");
+    let rest = out
+        .lines()
+        .find_map(|l| l.strip_prefix("remainder: "))
+        .unwrap_or_else(|| panic!("{out}"));
+    let rest = format!("rest={rest}");
+    let (code, out, err) = lpe_check(
+        &["partition", "directDiffuse", "indirectDiffuse", &rest],
+        "",
+    );
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.ends_with("clean partition\n"), "{out}");
+}

@@ -374,8 +374,22 @@ impl fmt::Display for Lpe {
             write!(f, "{p};")?;
         }
         match &self.algebra {
-            Some(t) => write!(f, "{t}"),
+            // An alternation operand in parentheses: `A - (b|c)` reads as it parses,
+            // where `A - b|c` would suggest `(A - b)|c`.
+            Some(t) => write!(f, "{}", t.map(&mut |e| Operand(e))),
             None => write!(f, "{}", self.expr),
+        }
+    }
+}
+
+/// A set-algebra operand as printed inside [`Lpe`]'s text.
+struct Operand<'a>(&'a Expr);
+
+impl fmt::Display for Operand<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.0 {
+            Expr::Alt(_) => write!(f, "({})", self.0),
+            e => write!(f, "{e}"),
         }
     }
 }

@@ -10,7 +10,9 @@
 //! - The language: the path model ([`path`]), the expression syntax tree ([`ast`]), the
 //!   RenderMan-dialect front end ([`syntax`]: lexer, parser, errors with spans) with
 //!   prefixes ([`prefix`]), macros ([`macros`]), lobe mappings ([`lobes`]) and
-//!   `rendermn.ini` loading ([`ini`]).
+//!   `rendermn.ini` loading ([`ini`]), and set algebra over whole expressions
+//!   (`A & B`, `A - B`, `^A`: [`algebra`], a dialect-independent layer above the front
+//!   end).
 //! - The automata ([`automata`]): the shared ids in the leaf [`automata::mask`]
 //!   ([`AovMask`], [`Class`], [`State`], [`MAX_AOVS`]), then the compressed alphabet,
 //!   the bitset Glushkov NFA and the minimized DFA (crate-private).

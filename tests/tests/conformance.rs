@@ -71,6 +71,7 @@ fn the_suite_is_loaded_whole_and_runs_on_every_registered_engine() {
         "errors",
         "limits",
         "aov-sets",
+        "algebra",
     ] {
         let file = format!("{topic}.toml");
         assert!(

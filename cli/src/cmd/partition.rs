@@ -5,7 +5,9 @@
 //! text). Prints the emptiness warnings, then every overlapping pair with the shortest
 //! path both match, the shortest universe path no AOV matches, and for each AOV that
 //! matches outside the universe the shortest such path; `clean partition` if there is
-//! none of these (exit 0), else exit 1. Witnesses are re-checked with the reference
+//! none of these (exit 0), else exit 1. A gap comes with the remainder AOV that closes
+//! it, the universe minus every AOV in set algebra (`C.*[<L.>O] - (a|b|c)`), which
+//! parses as printed. Witnesses are re-checked with the reference
 //! matcher before printing ([`crate::witness`]); a failed re-check exits 3; errors exit 2.
 
 use std::process::ExitCode;
@@ -35,7 +37,7 @@ pub fn run(args: Args) -> ExitCode {
     match prepare(&args) {
         Ok((aovs, universe)) => {
             let warnings = AovSet::compile(&aovs)
-                .map(|s| s.warnings().to_vec())
+                .map(|s| analysis::warnings(&s))
                 .unwrap_or_default();
             for w in warnings {
                 println!("warning: {w}");
@@ -120,6 +122,16 @@ pub fn report(
         }));
         witness::recheck(path, &expects)?;
         out.push_str(&format!("gap: {path}\n"));
+        let rest = analysis::remainder(aovs, universe);
+        witness::recheck(
+            path,
+            &[Expect {
+                name: "remainder",
+                lpe: &rest,
+                matches: true,
+            }],
+        )?;
+        out.push_str(&format!("remainder: {rest}\n"));
     }
     for (i, path) in &p.outside {
         let a = &aovs[*i];
@@ -192,5 +204,27 @@ mod tests {
         };
         let err = report(&aovs, &u, &forged).unwrap_err().to_string();
         assert!(err.contains("directDiffuse"), "{err}");
+    }
+
+    #[test]
+    fn a_gap_comes_with_a_remainder_that_parses_and_closes_it() {
+        let mut aovs = basic();
+        aovs.retain(|(n, _)| n != "subsurface" && n != "emissive");
+        let u = analysis::default_universe();
+        let p = analysis::partition(&aovs, &u).unwrap();
+        let text = report(&aovs, &u, &p).unwrap();
+        let line = text
+            .lines()
+            .find_map(|l| l.strip_prefix("remainder: "))
+            .unwrap_or_else(|| panic!("{text}"));
+        assert!(line.starts_with("C.*[<L.>O] - ((C<RD>[<L.>O])|"), "{line}");
+        // Added as an AOV, the printed text closes the gap (and overlaps nothing).
+        aovs.push(("rest".into(), lpe::parse(line).unwrap()));
+        let closed = analysis::partition(&aovs, &u).unwrap();
+        assert!(closed.is_clean(), "{closed:?}");
+        // It covers exactly the two AOVs left out (their union, within the universe).
+        let union = "C.*[<L.>O] - (C.*[<L.>O] - subsurface - emissive)";
+        let c = analysis::compare(&lpe::parse(line).unwrap(), &lpe::parse(union).unwrap());
+        assert!(c.unwrap().equivalent(), "{line}");
     }
 }

@@ -164,4 +164,33 @@ mod tests {
         let rate = t.matched as f64 / t.pairs as f64;
         assert!((0.2..=0.8).contains(&rate), "match rate {rate}");
     }
+
+    #[test]
+    fn some_cases_hold_set_algebra_and_their_paths_aim_at_operands() {
+        let cfg = Config::default();
+        let cases: Vec<Case> = (0..400).map(|i| generate_case(3, i, &cfg, 4)).collect();
+        let with_algebra: Vec<&Case> = cases
+            .iter()
+            .filter(|c| c.exprs.iter().any(|e| e.algebra.is_some()))
+            .collect();
+        // About one expression in twelve: low weight, but every run of a few hundred
+        // cases has dozens.
+        assert!(
+            (16..=80).contains(&with_algebra.len()),
+            "{}",
+            with_algebra.len()
+        );
+        // Paths aimed at operands: some algebra expression matches some of its paths
+        // (by the reference), so the algebra is not only ever checked on non-matches.
+        let hits = with_algebra
+            .iter()
+            .flat_map(|c| {
+                c.exprs
+                    .iter()
+                    .flat_map(|e| c.paths.iter().map(move |p| (e, p)))
+            })
+            .filter(|(e, p)| e.algebra.is_some() && reference::is_match(e, p))
+            .count();
+        assert!(hits >= 10, "{hits}");
+    }
 }

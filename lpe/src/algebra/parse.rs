@@ -300,18 +300,31 @@ impl Parser<'_> {
     ) -> Result<Algebra<E>, ParseError<X>> {
         let start = self.here().start;
         let mut end = start;
-        let mut depth = 0usize;
+        // Open groups of the operand, innermost last.
+        let mut open: Vec<Range<usize>> = Vec::new();
         while let Some((t, span)) = self.toks.get(self.pos) {
             match t {
-                Tok::And | Tok::Minus | Tok::Not if depth > 0 => {
-                    return Err(ParseError::Algebra(AlgebraError::InsideOperand {
-                        at: span.clone(),
-                    }))
+                Tok::And | Tok::Minus | Tok::Not if !open.is_empty() => {
+                    // `(A - B` never closes: say so rather than blame the operator.
+                    let closes = self.toks[self.pos..]
+                        .iter()
+                        .filter(|t| t.0 == Tok::Close)
+                        .count();
+                    let e = if closes < open.len() {
+                        AlgebraError::Unbalanced {
+                            at: open[0].clone(),
+                        }
+                    } else {
+                        AlgebraError::InsideOperand { at: span.clone() }
+                    };
+                    return Err(ParseError::Algebra(e));
                 }
                 Tok::And | Tok::Minus => break,
-                Tok::Close if depth == 0 => break,
-                Tok::Open => depth += 1,
-                Tok::Close => depth -= 1,
+                Tok::Close if open.is_empty() => break,
+                Tok::Open => open.push(span.clone()),
+                Tok::Close => {
+                    open.pop();
+                }
                 _ => {}
             }
             end = span.end;
@@ -377,9 +390,10 @@ mod tests {
             tree("C(A - B)L"),
             Err(AlgebraError::InsideOperand { at: 4..5 })
         );
+        assert_eq!(tree("(A - B"), Err(AlgebraError::Unbalanced { at: 0..1 }));
         assert_eq!(
-            tree("(A - B"),
-            Err(AlgebraError::InsideOperand { at: 3..4 })
+            tree("C((A) - B"),
+            Err(AlgebraError::Unbalanced { at: 1..2 })
         );
         assert_eq!(tree("A - B)"), Err(AlgebraError::Unbalanced { at: 5..6 }));
     }

@@ -83,7 +83,7 @@ impl<E> Algebra<E> {
     }
 
     /// The same tree with every leaf mapped.
-    pub fn map<F>(&self, f: &mut impl FnMut(&E) -> F) -> Algebra<F> {
+    pub fn map<'a, F>(&'a self, f: &mut impl FnMut(&'a E) -> F) -> Algebra<F> {
         match self {
             Algebra::Leaf(e) => Algebra::Leaf(f(e)),
             Algebra::And(a, b) => Algebra::and(a.map(f), b.map(f)),

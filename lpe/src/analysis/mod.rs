@@ -22,6 +22,6 @@ mod unmatched;
 
 pub use crate::automata::emptiness::Warning;
 pub use compare::{compare, Comparison};
-pub use partition::{default_universe, partition, Partition, DEFAULT_UNIVERSE};
+pub use partition::{default_universe, partition, remainder, Partition, DEFAULT_UNIVERSE};
 pub use search::{AnalysisError, MAX_SEARCH_STATES};
 pub use unmatched::warnings;

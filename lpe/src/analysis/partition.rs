@@ -2,9 +2,10 @@
 //! that cover it, and if not, shortest witnesses of each overlap, gap and stray path.
 
 use super::search::{analysis_options, explore, AnalysisError};
+use crate::algebra::Algebra;
 use crate::aov::AovSet;
 use crate::path::Path;
-use crate::{parse, Lpe};
+use crate::{parse, Expr, Lpe, Prefixes};
 
 /// The default universe of a partition check: every light-transport path.
 pub const DEFAULT_UNIVERSE: &str = "C.*[<L.>O]";
@@ -66,6 +67,27 @@ pub fn partition(aovs: &[(String, Lpe)], universe: &Lpe) -> Result<Partition, An
     Ok(out)
 }
 
+/// The AOV that closes every gap of a partition: the universe minus every AOV, as set
+/// algebra that prints as text the parser reads back (`C.*[<L.>O] - (a|b|c)`). Plain
+/// AOVs are subtracted as one alternation, set-algebra AOVs one by one; prefixes are
+/// dropped (they never change what matches). Overlaps are not its business: it only
+/// covers what no AOV covers.
+pub fn remainder(aovs: &[(String, Lpe)], universe: &Lpe) -> Lpe {
+    let plain: Vec<Expr> = aovs
+        .iter()
+        .filter(|(_, l)| l.algebra.is_none())
+        .map(|(_, l)| l.expr.clone())
+        .collect();
+    let mut t = universe.tree();
+    if !plain.is_empty() {
+        t = Algebra::minus(t, Algebra::Leaf(Expr::alt(plain)));
+    }
+    for (_, l) in aovs.iter().filter(|(_, l)| l.algebra.is_some()) {
+        t = Algebra::minus(t, l.tree());
+    }
+    Lpe::from_algebra(Prefixes::NONE, t)
+}
+
 /// The default universe, parsed.
 pub fn default_universe() -> Lpe {
     parse(DEFAULT_UNIVERSE).expect("the default universe parses")
@@ -110,5 +132,37 @@ mod tests {
                 ("subsurface", "caustics", 4)
             ]
         );
+    }
+
+    #[test]
+    fn the_remainder_parses_back_and_closes_the_gap() {
+        use crate::analysis::compare;
+        let all = basic();
+        for missing in 0..all.len() {
+            let mut aovs = all.clone();
+            let (name, dropped) = aovs.remove(missing);
+            // One set-algebra AOV among the rest: subtracted on its own.
+            let (n, first) = aovs.remove(0);
+            let split = lpe(&format!("{first} - C<RS>.*[<L.>O]"));
+            aovs.insert(0, (n, split));
+            let p = partition(&aovs, &default_universe()).unwrap();
+            assert!(p.gap.is_some(), "{name}");
+            let r = remainder(&aovs, &default_universe());
+            let text = r.to_string();
+            assert!(text.starts_with("C.*[<L.>O] - ("), "{text}");
+            assert_eq!(parse(&text).unwrap(), r, "{text}");
+            let mut closed = aovs.clone();
+            closed.push(("rest".into(), r.clone()));
+            let q = partition(&closed, &default_universe()).unwrap();
+            assert_eq!(q.gap, None, "{name}: {text}");
+            assert!(q.outside.is_empty(), "{name}: {text}");
+            // What it covers is exactly what the dropped AOV covered and the split-off
+            // first AOV no longer does, both within the universe.
+            let want = lpe(&format!(
+                "C.*[<L.>O] & ^(^{dropped} & ^({first} & C<RS>.*[<L.>O]))"
+            ));
+            let c = compare(&r, &want).unwrap();
+            assert!(c.equivalent(), "{name}: {text}: {c:?}");
+        }
     }
 }
