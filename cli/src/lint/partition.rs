@@ -92,21 +92,11 @@ pub fn check(
     Ok(out)
 }
 
-/// `UNIVERSE - (a) - (b) - ...` in canonical form, the AOV that would close the gap,
-/// when the parser has set algebra and the partition check confirms that adding the
-/// printed text leaves no gap; else `None`.
+/// The remainder AOV of `lpe::analysis` (`UNIVERSE - (a|b|c)`) as printed, when the
+/// printed text parses and the partition check confirms that adding it as one more member
+/// leaves no gap; else `None`.
 pub fn remainder(members: &[(String, Lpe)], universe: &Lpe, parser: &Parser) -> Option<String> {
-    // Prefixes change what an AOV accumulates, not what it matches.
-    let bare = |l: &Lpe| {
-        let mut l = l.clone();
-        l.prefixes = Default::default();
-        l.to_string()
-    };
-    let mut text = bare(universe);
-    for (_, l) in members {
-        text.push_str(&format!(" - ({})", bare(l)));
-    }
-    let printed = parser.parse(&text).ok()?.to_string();
+    let printed = analysis::remainder(members, universe).to_string();
     let mut closed = members.to_vec();
     closed.push(("remainder".into(), parser.parse(&printed).ok()?));
     let p = analysis::partition(&closed, universe).ok()?;
