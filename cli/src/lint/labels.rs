@@ -25,47 +25,38 @@ pub fn labels(lpe: &Lpe) -> Vec<(Carrier, String)> {
             out.push((c, l.to_string()));
         }
     };
-    let mut each_atom = |f: &mut dyn FnMut(&Atom)| {
-        for e in lpe.operands() {
-            e.for_each_atom(&mut |a| f(a));
-        }
-    };
-    each_atom(&mut |atom| {
-        for item in positive_items(atom) {
-            match item {
-                Item::Label(l) => add(Carrier::Object, l),
-                Item::Triple(t) => {
-                    let named: Vec<&String> = match &t.label {
-                        LabelPos::One(l) => vec![l],
-                        LabelPos::Class {
-                            negated: false,
-                            labels,
-                        } => labels.iter().collect(),
-                        _ => Vec::new(),
-                    };
-                    let types: Vec<VertexType> = match &t.ty {
-                        TypePos::Any => vec![VertexType::R],
-                        TypePos::One(ty) => vec![*ty],
-                        TypePos::Class {
-                            negated: false,
-                            types,
-                        } => types.clone(),
-                        TypePos::Class { negated: true, .. } => vec![VertexType::R],
-                    };
-                    for ty in types {
-                        let carrier = match ty {
-                            VertexType::L => Carrier::Light,
-                            VertexType::C => continue,
-                            _ => Carrier::Object,
-                        };
-                        for l in &named {
-                            add(carrier, l);
-                        }
-                    }
+    for_each_positive_item(lpe, &mut |item| match item {
+        Item::Label(l) => add(Carrier::Object, l),
+        Item::Triple(t) => {
+            let named: Vec<&String> = match &t.label {
+                LabelPos::One(l) => vec![l],
+                LabelPos::Class {
+                    negated: false,
+                    labels,
+                } => labels.iter().collect(),
+                _ => Vec::new(),
+            };
+            let types: Vec<VertexType> = match &t.ty {
+                TypePos::Any => vec![VertexType::R],
+                TypePos::One(ty) => vec![*ty],
+                TypePos::Class {
+                    negated: false,
+                    types,
+                } => types.clone(),
+                TypePos::Class { negated: true, .. } => vec![VertexType::R],
+            };
+            for ty in types {
+                let carrier = match ty {
+                    VertexType::L => Carrier::Light,
+                    VertexType::C => continue,
+                    _ => Carrier::Object,
+                };
+                for l in &named {
+                    add(carrier, l);
                 }
-                _ => {}
             }
         }
+        _ => {}
     });
     out
 }
@@ -85,38 +76,35 @@ pub fn lobes(lpe: &Lpe) -> Vec<(LobeCategory, u8)> {
             }
         }
     };
-    let mut each_atom = |f: &mut dyn FnMut(&Atom)| {
-        for e in lpe.operands() {
-            e.for_each_atom(&mut |a| f(a));
-        }
-    };
-    each_atom(&mut |atom| {
-        for item in positive_items(atom) {
-            match item {
-                Item::Event(e) => add(e.kind, e.lobe),
-                Item::Triple(t) => match &t.event {
-                    EventPos::One(e) => add(e.kind, e.lobe),
-                    EventPos::Class {
-                        negated: false,
-                        events,
-                    } => events.iter().for_each(|e| add(e.kind, e.lobe)),
-                    _ => {}
-                },
-                _ => {}
-            }
-        }
+    for_each_positive_item(lpe, &mut |item| match item {
+        Item::Event(e) => add(e.kind, e.lobe),
+        Item::Triple(t) => match &t.event {
+            EventPos::One(e) => add(e.kind, e.lobe),
+            EventPos::Class {
+                negated: false,
+                events,
+            } => events.iter().for_each(|e| add(e.kind, e.lobe)),
+            _ => {}
+        },
+        _ => {}
     });
     out
 }
 
-fn positive_items(atom: &Atom) -> &[Item] {
-    match atom {
-        Atom::Item(i) => std::slice::from_ref(i),
-        Atom::Class {
-            negated: false,
-            items,
-        } => items,
-        Atom::Class { negated: true, .. } => &[],
+/// Every item of every operand, outside negated classes.
+fn for_each_positive_item(lpe: &Lpe, f: &mut impl FnMut(&Item)) {
+    for e in lpe.operands() {
+        e.for_each_atom(&mut |atom| {
+            let items: &[Item] = match atom {
+                Atom::Item(i) => std::slice::from_ref(i),
+                Atom::Class {
+                    negated: false,
+                    items,
+                } => items,
+                Atom::Class { negated: true, .. } => &[],
+            };
+            items.iter().for_each(&mut *f);
+        });
     }
 }
 
