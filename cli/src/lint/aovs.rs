@@ -165,7 +165,7 @@ fn closest<'a>(label: &str, known: &'a std::collections::BTreeSet<String>) -> Op
     let mut best: Option<(usize, &str)> = None;
     let mut tie = false;
     for g in known {
-        let d = edit_distance(label, g);
+        let d = lpe::syntax::edit_distance(label, g);
         match best {
             Some((b, _)) if d > b => {}
             Some((b, _)) if d == b => tie = true,
@@ -178,37 +178,20 @@ fn closest<'a>(label: &str, known: &'a std::collections::BTreeSet<String>) -> Op
     best.filter(|(d, _)| *d <= 2 && !tie).map(|(_, g)| g)
 }
 
-fn edit_distance(a: &str, b: &str) -> usize {
-    let b: Vec<char> = b.chars().collect();
-    let mut row: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.chars().enumerate() {
-        let mut diag = row[0];
-        row[0] = i + 1;
-        for (j, cb) in b.iter().enumerate() {
-            let next = (row[j + 1] + 1)
-                .min(row[j] + 1)
-                .min(diag + usize::from(ca != *cb));
-            diag = row[j + 1];
-            row[j + 1] = next;
-        }
-    }
-    row[b.len()]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     #[test]
-    fn edit_distances() {
-        assert_eq!(edit_distance("fil", "fill"), 1);
-        assert_eq!(edit_distance("kye", "key"), 2);
-        assert_eq!(edit_distance("", "abc"), 3);
-        assert_eq!(edit_distance("rim", "rim"), 0);
+    fn closest_group() {
         let known = ["fill".to_string(), "key".to_string()]
             .into_iter()
             .collect();
         assert_eq!(closest("fil", &known), Some("fill"));
+        assert_eq!(closest("kye", &known), Some("key"));
         assert_eq!(closest("zzzzz", &known), None);
+        // A tie suggests nothing.
+        let tied = ["ab".to_string(), "ba".to_string()].into_iter().collect();
+        assert_eq!(closest("aa", &tied), None);
     }
 }

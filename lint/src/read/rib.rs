@@ -70,7 +70,12 @@ pub fn read_from(
                 limit: limits.channels,
             }));
         }
-        if let Some((name, source, column)) = decl {
+        if let Channel::Lpe {
+            name,
+            source,
+            column,
+        } = decl
+        {
             doc.aovs.push(AovDecl {
                 name,
                 source,
@@ -82,11 +87,34 @@ pub fn read_from(
     Ok(doc)
 }
 
-/// `None`: not a `DisplayChannel` line. `Some(None)`: a channel without an `lpe:`
-/// source (beauty, AOVs from shaders). `Some(Some((name, source, column)))`: an LPE
-/// channel, `column` 1-based where the source starts.
-#[allow(clippy::type_complexity)]
-fn display_channel(line: &str) -> Result<Option<Option<(String, String, usize)>>, RibProblem> {
+/// One `DisplayChannel` line, read.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Channel {
+    /// An LPE channel.
+    Lpe {
+        /// The channel name (last word of the declaration).
+        name: String,
+        /// The source after its type, `lpe:` included.
+        source: String,
+        /// 1-based byte column of the source in the line.
+        column: usize,
+    },
+    /// No `"string source"`: beauty, or a shader output.
+    NoSource {
+        /// The channel name.
+        name: String,
+    },
+    /// A source that is not an LPE (`Ci`, a primvar).
+    Other {
+        /// The channel name.
+        name: String,
+        /// The source after its type.
+        source: String,
+    },
+}
+
+/// Reads one RIB line: `None` when it is not a `DisplayChannel` line.
+pub fn display_channel(line: &str) -> Result<Option<Channel>, RibProblem> {
     let lead = line.len() - line.trim_start().len();
     let Some(rest) = line[lead..].strip_prefix("DisplayChannel") else {
         return Ok(None);
@@ -115,7 +143,7 @@ fn display_channel(line: &str) -> Result<Option<Option<(String, String, usize)>>
         .iter()
         .position(|(_, q)| q.split_whitespace().eq(["string", "source"]))
     else {
-        return Ok(Some(None));
+        return Ok(Some(Channel::NoSource { name }));
     };
     let Some(&(start, value)) = quoted.get(pos + 1) else {
         return Err(RibProblem::SourceWithoutValue { name });
@@ -126,11 +154,17 @@ fn display_channel(line: &str) -> Result<Option<Option<(String, String, usize)>>
         .find(char::is_whitespace)
         .map_or(0, |i| value.len() - value.trim_start().len() + i);
     let source = value[after_type..].trim_start();
-    if !source.starts_with("lpe:") {
-        return Ok(Some(None));
-    }
     let column = start + (value.len() - source.len()) + 1;
-    Ok(Some(Some((name, source.trim_end().to_string(), column))))
+    let source = source.trim_end().to_string();
+    Ok(Some(if source.starts_with("lpe:") {
+        Channel::Lpe {
+            name,
+            source,
+            column,
+        }
+    } else {
+        Channel::Other { name, source }
+    }))
 }
 
 #[cfg(test)]

@@ -4,6 +4,8 @@
 
 use lpe::macros::{BASIC, OTHER, PER_LOBE};
 use lpe::{EventKind, Lpe, Parser, Prefix};
+use lpe_lint::read::rib::{display_channel, Channel};
+use lpe_lint::RibProblem;
 
 use crate::scene::Scene;
 
@@ -29,19 +31,8 @@ pub enum AovError {
     DisplayChannel {
         file: String,
         line: usize,
-        problem: DisplayProblem,
+        problem: RibProblem,
     },
-}
-
-/// What is wrong with a `DisplayChannel` line.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-pub enum DisplayProblem {
-    #[error("unterminated string")]
-    UnterminatedString,
-    #[error("expected `DisplayChannel \"color NAME\" ...`")]
-    NoDeclaration,
-    #[error("channel `{name}`: \"string source\" needs a value")]
-    SourceWithoutValue { name: String },
 }
 
 /// How an AOV accumulates: its prefixes, decoded (docs/language.md §7; the integrator
@@ -287,56 +278,21 @@ pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels,
     let mut warnings = Vec::new();
     for (n, line) in text.lines().enumerate() {
         let at = |m: String| format!("{file}:{}: {m}", n + 1);
-        let fail = |problem| AovError::DisplayChannel {
+        let channel = display_channel(line).map_err(|problem| AovError::DisplayChannel {
             file: file.into(),
             line: n + 1,
             problem,
-        };
-        let t = line.trim();
-        if !t.starts_with("DisplayChannel") {
-            continue;
-        }
-        let mut quoted = Vec::new();
-        let mut rest = &t["DisplayChannel".len()..];
-        while let Some(start) = rest.find('"') {
-            let Some(len) = rest[start + 1..].find('"') else {
-                return Err(fail(DisplayProblem::UnterminatedString));
-            };
-            quoted.push(&rest[start + 1..start + 1 + len]);
-            rest = &rest[start + 2 + len..];
-        }
-        let Some(decl) = quoted.first() else {
-            return Err(fail(DisplayProblem::NoDeclaration));
-        };
-        let name = decl
-            .split_whitespace()
-            .last()
-            .unwrap_or_default()
-            .to_string();
-        let Some(pos) = quoted
-            .iter()
-            .position(|q| q.split_whitespace().collect::<Vec<_>>() == ["string", "source"])
-        else {
-            warnings.push(at(format!(
+        })?;
+        match channel {
+            None => {}
+            Some(Channel::Lpe { name, source, .. }) => out.push((name, source)),
+            Some(Channel::NoSource { name }) => warnings.push(at(format!(
                 "channel `{name}` has no \"string source\": skipped"
-            )));
-            continue;
-        };
-        let Some(src) = quoted.get(pos + 1) else {
-            return Err(fail(DisplayProblem::SourceWithoutValue { name }));
-        };
-        // The value is "TYPE SOURCE", e.g. "color lpe:C<RD>[<L.>O]".
-        let source = src
-            .trim()
-            .split_once(char::is_whitespace)
-            .map_or(src.trim(), |(_, s)| s.trim());
-        if !source.starts_with("lpe:") {
-            warnings.push(at(format!(
+            ))),
+            Some(Channel::Other { name, source }) => warnings.push(at(format!(
                 "channel `{name}` has source `{source}`, not an LPE: skipped (beauty is always written)"
-            )));
-            continue;
+            ))),
         }
-        out.push((name, source.to_string()));
     }
     Ok(DisplayChannels {
         channels: out,

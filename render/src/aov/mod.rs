@@ -7,5 +7,5 @@ pub mod plan;
 
 pub use list::{
     parse_display_channels, split_aov_arg, usd_render_vars, Aov, AovError, AovFlags, AovList,
-    DisplayChannels, DisplayProblem, Partition,
+    DisplayChannels, Partition,
 };
