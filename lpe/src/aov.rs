@@ -209,18 +209,10 @@ impl AovSet {
                 hidden: operands.len(),
             });
         }
-        let visible = aovs.iter().any(|(_, l)| l.algebra.is_some()).then(|| {
-            let mut next = 0;
-            Visible::new(
-                aovs.iter()
-                    .map(|(_, l)| {
-                        let f = l.tree().numbered(next);
-                        next += l.operands().len();
-                        f
-                    })
-                    .collect(),
-            )
-        });
+        let visible = aovs
+            .iter()
+            .any(|(_, l)| l.algebra.is_some())
+            .then(|| Visible::new(Lpe::formulas(aovs.iter().map(|(_, l)| l))));
         let (alphabet, nfa, atoms) = Self::build_nfa(&operands, opts)?;
         let dfa = if opts.dfa_budget > 0 {
             Dfa::build(

@@ -97,6 +97,20 @@ impl Lpe {
         }
     }
 
+    /// Per expression, its set algebra over operand numbers, the operands of all of
+    /// them numbered in one sequence in [`Lpe::operands`] order (a plain expression is
+    /// one operand): how a set of expressions maps onto per-operand answers.
+    pub fn formulas<'a>(lpes: impl IntoIterator<Item = &'a Lpe>) -> Vec<Algebra<usize>> {
+        let mut next = 0;
+        lpes.into_iter()
+            .map(|l| {
+                let f = l.tree().numbered(next);
+                next += l.operands().len();
+                f
+            })
+            .collect()
+    }
+
     /// Whether a path is matched, given whether it matches each operand (asked once
     /// each, in [`Lpe::operands`] order).
     pub fn eval(&self, operand: &mut impl FnMut(&Expr) -> bool) -> bool {

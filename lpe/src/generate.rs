@@ -379,7 +379,7 @@ pub fn algebra(c: &mut impl Choices, cfg: &Config) -> Algebra<Expr> {
     fn leaf(c: &mut impl Choices, cfg: &Config) -> Algebra<Expr> {
         let e = Algebra::Leaf(path_shaped_expr(c, cfg));
         if c.chance(20) {
-            Algebra::not(e)
+            Algebra::complement(e)
         } else {
             e
         }
@@ -401,7 +401,7 @@ pub fn algebra(c: &mut impl Choices, cfg: &Config) -> Algebra<Expr> {
         t = binary(c, t, rhs);
     }
     if c.chance(10) {
-        t = Algebra::not(t);
+        t = Algebra::complement(t);
     }
     t
 }

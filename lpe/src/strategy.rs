@@ -143,8 +143,8 @@ pub fn algebra() -> impl Strategy<Value = Algebra<Expr>> {
             Algebra::minus(a, b)
         }),
         (leaf.clone(), op.clone()).prop_map(|(a, b)| Algebra::minus(a, b)),
-        (leaf.clone(), leaf).prop_map(|(a, b)| Algebra::and(Algebra::not(a), b)),
-        op.prop_map(Algebra::not),
+        (leaf.clone(), leaf).prop_map(|(a, b)| Algebra::and(Algebra::complement(a), b)),
+        op.prop_map(Algebra::complement),
     ]
 }
 

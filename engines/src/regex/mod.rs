@@ -176,15 +176,7 @@ impl RegexEngine {
             Err(e) if e.is_size_limit_exceeded() => self.lazy(nfa)?,
             Err(e) => return Err(BuildError::Dfa(Box::new(e))),
         };
-        let mut next = 0;
-        let formulas = exprs
-            .iter()
-            .map(|e| {
-                let f = e.tree().numbered(next);
-                next += e.operands().len();
-                f
-            })
-            .collect();
+        let formulas = Lpe::formulas(exprs);
         Ok(RegexMatcher {
             labels,
             patterns: hirs.len(),

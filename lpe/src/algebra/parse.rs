@@ -252,7 +252,7 @@ impl Parser<'_> {
                 if matches!(self.peek(), None | Some(Tok::And | Tok::Minus | Tok::Close)) {
                     return missing(at);
                 }
-                Ok(Algebra::not(self.unary(operand)?))
+                Ok(Algebra::complement(self.unary(operand)?))
             }
             None | Some(Tok::And | Tok::Minus | Tok::Close) => missing(self.here()),
             Some(Tok::Open) if self.is_algebra_group() => {

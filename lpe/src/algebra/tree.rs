@@ -29,7 +29,7 @@ impl<E> Algebra<E> {
     }
 
     /// `^a`.
-    pub fn not(a: Algebra<E>) -> Algebra<E> {
+    pub fn complement(a: Algebra<E>) -> Algebra<E> {
         Algebra::Not(Box::new(a))
     }
 
@@ -78,7 +78,7 @@ impl<E> Algebra<E> {
             Algebra::Leaf(e) => f(e)?,
             Algebra::And(a, b) => Algebra::and(a.try_graft(f)?, b.try_graft(f)?),
             Algebra::Minus(a, b) => Algebra::minus(a.try_graft(f)?, b.try_graft(f)?),
-            Algebra::Not(a) => Algebra::not(a.try_graft(f)?),
+            Algebra::Not(a) => Algebra::complement(a.try_graft(f)?),
         })
     }
 
@@ -88,7 +88,7 @@ impl<E> Algebra<E> {
             Algebra::Leaf(e) => Algebra::Leaf(f(e)),
             Algebra::And(a, b) => Algebra::and(a.map(f), b.map(f)),
             Algebra::Minus(a, b) => Algebra::minus(a.map(f), b.map(f)),
-            Algebra::Not(a) => Algebra::not(a.map(f)),
+            Algebra::Not(a) => Algebra::complement(a.map(f)),
         }
     }
 
@@ -170,8 +170,8 @@ mod tests {
         let t = Algebra::minus(leaf("A"), Algebra::minus(leaf("B"), leaf("C")));
         assert_eq!(t.to_string(), "A - (B - C)");
         let t = Algebra::and(
-            Algebra::not(leaf("A")),
-            Algebra::not(Algebra::and(leaf("B"), leaf("C"))),
+            Algebra::complement(leaf("A")),
+            Algebra::complement(Algebra::and(leaf("B"), leaf("C"))),
         );
         assert_eq!(t.to_string(), "^A & ^(B & C)");
     }
@@ -181,7 +181,7 @@ mod tests {
         // (A - B) & ^C
         let t = Algebra::and(
             Algebra::minus(leaf("A"), leaf("B")),
-            Algebra::not(leaf("C")),
+            Algebra::complement(leaf("C")),
         );
         let table = [
             ([true, false, false], true),

@@ -66,4 +66,19 @@ mod tests {
         assert_eq!(c.first_only, None);
         assert_eq!(c.second_only.unwrap().to_string(), "C L");
     }
+
+    #[test]
+    fn set_algebra_compares_by_its_paths() {
+        let c = compare(&lpe("C.*L - C.*DL"), &lpe("C.*L & ^C.*DL")).unwrap();
+        assert!(c.equivalent());
+        // The universe of `^` is every path of the model: the complement of the
+        // light-transport paths is the paths with a user-lobe vertex (`.` never matches
+        // one), however many.
+        let c = compare(&lpe("^C.*[<L.>O]"), &lpe("C(.|U)*U(.|U)*[<L.>O]")).unwrap();
+        assert!(c.equivalent(), "{c:?}");
+        let c = compare(&lpe("C.*L - C<RD>L"), &lpe("C.*L")).unwrap();
+        assert_eq!(c.first_only, None);
+        assert_eq!(c.second_only.unwrap().to_string(), "C RD1 L");
+    }
+
 }

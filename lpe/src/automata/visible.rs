@@ -53,7 +53,7 @@ mod tests {
         let v = Visible::new(vec![
             leaf(0),
             Algebra::minus(leaf(1), leaf(2)),
-            Algebra::and(Algebra::not(leaf(3)), leaf(1)),
+            Algebra::and(Algebra::complement(leaf(3)), leaf(1)),
         ]);
         let m = |hs: &[usize]| {
             v.mask(hs.iter().copied().collect())
@@ -64,7 +64,7 @@ mod tests {
         assert_eq!(m(&[0, 1]), [0, 1, 2]);
         assert_eq!(m(&[1, 2]), [2]);
         assert_eq!(m(&[1, 3]), [1]);
-        let only_not = Visible::new(vec![Algebra::not(leaf(0))]);
+        let only_not = Visible::new(vec![Algebra::complement(leaf(0))]);
         assert_eq!(only_not.none().iter().collect::<Vec<_>>(), [0]);
     }
 }
