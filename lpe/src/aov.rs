@@ -663,6 +663,8 @@ mod tests {
 
     #[test]
     fn operands_count_toward_the_aov_limit() {
+        // The parser's operand limit is the set's: one expression always fits a set.
+        assert_eq!(crate::algebra::MAX_OPERANDS, MAX_AOVS);
         let one = parse("C.*L - C.*DL - C.*SL").unwrap();
         let aovs: Vec<(String, Lpe)> = (0..MAX_AOVS / 3 + 1)
             .map(|i| (i.to_string(), one.clone()))

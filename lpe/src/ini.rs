@@ -217,4 +217,45 @@ mod tests {
             assert!(e.to_string().contains(needle), "{text}: {e}");
         }
     }
+    #[test]
+    fn set_algebra_operands_are_macros_with_groups_and_prefixes() {
+        // A macro operand with a light group, and a macro whose body is itself algebra.
+        let config =
+            Config::from_ini("/prman/lpe/macro/rest unoccluded;C.*[<L.>O] - directDiffuse\n")
+                .unwrap();
+        let parser = config.parser();
+        let l = parser.parse("rest_key & C<RD>.*L").unwrap();
+        assert!(l.prefixes.contains(crate::Prefix::Unoccluded));
+        assert_eq!(
+            l.to_string(),
+            "unoccluded;C.*[<L.'key'>O] - C<RD>[<L.'key'>O] & C<RD>.*L"
+        );
+        let plain = crate::parse("directDiffuse_key").unwrap();
+        assert!(plain.algebra.is_none());
+    }
+
+    #[test]
+    fn set_algebra_macros_expand_and_stop_at_the_operand_limit() {
+        // Macros that multiply operands hit the operand limit, not the memory: `m4` has
+        // 2 * 3^4 = 162 operands, `m4 & m4` 324, and a macro `m5` fails when loaded.
+        let mut ini = String::from("/prman/lpe/macro/m0 CL - CL\n");
+        for i in 1..5 {
+            ini.push_str(&format!(
+                "/prman/lpe/macro/m{i} m{p} - m{p} - m{p}\n",
+                p = i - 1
+            ));
+        }
+        let config = Config::from_ini(&ini).unwrap();
+        assert_eq!(config.parser().parse("m4").unwrap().operands().len(), 162);
+        let e = config.parser().parse("m4 & m4").unwrap_err();
+        assert_eq!(
+            (e.kind(), e.span().start),
+            (crate::ErrorKind::Limit, 5),
+            "{e}"
+        );
+        assert!(e.message().contains("operands"), "{e}");
+        ini.push_str("/prman/lpe/macro/m5 m4 - m4 - m4\n");
+        let e = Config::from_ini(&ini).unwrap_err();
+        assert_eq!(e.line, 6, "{e:?}");
+    }
 }

@@ -12,5 +12,5 @@
 mod parse;
 mod tree;
 
-pub use parse::{has_algebra, parse, AlgebraError, ParseError};
+pub use parse::{has_algebra, parse, AlgebraError, ParseError, MAX_OPERANDS};
 pub use tree::Algebra;

@@ -38,7 +38,25 @@ pub enum AlgebraError {
         /// The operator.
         at: Range<usize>,
     },
+    /// Algebra groups and `^` nested deeper than the dialect's nesting limit.
+    TooDeep {
+        /// The group or `^` past the limit.
+        at: Range<usize>,
+        /// The limit.
+        max: usize,
+    },
+    /// More than [`MAX_OPERANDS`] operands.
+    TooManyOperands {
+        /// The first operand past the limit.
+        at: Range<usize>,
+    },
 }
+
+/// Most operands one expression may have: each is a hidden AOV of the set it compiles
+/// into, which holds at most [`crate::MAX_AOVS`] (the same number; written out because
+/// the automata sit above this layer), so a larger expression could never compile. Also
+/// bounds the depth of the tree (with the nesting limit).
+pub const MAX_OPERANDS: usize = 256;
 
 impl AlgebraError {
     /// The byte span the error points at.
@@ -46,7 +64,9 @@ impl AlgebraError {
         match self {
             AlgebraError::MissingOperand { at }
             | AlgebraError::Unbalanced { at }
-            | AlgebraError::InsideOperand { at } => at.clone(),
+            | AlgebraError::InsideOperand { at }
+            | AlgebraError::TooDeep { at, .. }
+            | AlgebraError::TooManyOperands { at } => at.clone(),
         }
     }
 
@@ -60,6 +80,8 @@ impl AlgebraError {
             AlgebraError::InsideOperand { .. } => {
                 "set algebra combines whole expressions: write `C.*L - C.*DL`, not `C(.* - .*D)L`"
             }
+            AlgebraError::TooDeep { .. } => "remove redundant parentheses or `^^`",
+            AlgebraError::TooManyOperands { .. } => "split the expression into several AOVs",
         }
     }
 }
@@ -72,6 +94,13 @@ impl fmt::Display for AlgebraError {
             AlgebraError::InsideOperand { .. } => {
                 f.write_str("set-algebra operator inside an expression")
             }
+            AlgebraError::TooDeep { max, .. } => {
+                write!(f, "set algebra nests deeper than the limit of {max}")
+            }
+            AlgebraError::TooManyOperands { .. } => write!(
+                f,
+                "more than {MAX_OPERANDS} set-algebra operands (each is a hidden AOV)"
+            ),
         }
     }
 }
@@ -182,12 +211,15 @@ pub fn has_algebra(src: &str, range: Range<usize>) -> bool {
         .any(|(t, _)| matches!(t, Tok::And | Tok::Minus | Tok::Not))
 }
 
-/// Parses `src[range]` as set algebra. `operand(span)` parses one operand (its span
-/// trimmed, in bytes of `src`, so errors point into the whole text) and returns its
-/// tree: a leaf, or a whole subtree when the operand is a macro holding algebra.
+/// Parses `src[range]` as set algebra, with algebra groups and `^` nested at most
+/// `max_depth` deep and at most [`MAX_OPERANDS`] operands. `operand(span)` parses one
+/// operand (its span trimmed, in bytes of `src`, so errors point into the whole text)
+/// and returns its tree: a leaf, or a whole subtree when the operand is a macro holding
+/// algebra.
 pub fn parse<E, X>(
     src: &str,
     range: Range<usize>,
+    max_depth: usize,
     operand: &mut impl FnMut(Range<usize>) -> Result<Algebra<E>, X>,
 ) -> Result<Algebra<E>, ParseError<X>> {
     let toks = scan(src, range.clone());
@@ -195,6 +227,9 @@ pub fn parse<E, X>(
         toks: &toks,
         pos: 0,
         end: range.end,
+        depth: 0,
+        max_depth,
+        operands: 0,
     };
     let t = p.algebra(operand)?;
     match p.toks.get(p.pos) {
@@ -209,6 +244,10 @@ struct Parser<'t> {
     toks: &'t [(Tok, Range<usize>)],
     pos: usize,
     end: usize,
+    /// Algebra groups and `^` open around the current token.
+    depth: usize,
+    max_depth: usize,
+    operands: usize,
 }
 
 impl Parser<'_> {
@@ -245,6 +284,12 @@ impl Parser<'_> {
         operand: &mut impl FnMut(Range<usize>) -> Result<Algebra<E>, X>,
     ) -> Result<Algebra<E>, ParseError<X>> {
         let missing = |at| Err(ParseError::Algebra(AlgebraError::MissingOperand { at }));
+        if matches!(self.peek(), Some(Tok::Not | Tok::Open)) && self.depth >= self.max_depth {
+            return Err(ParseError::Algebra(AlgebraError::TooDeep {
+                at: self.here(),
+                max: self.max_depth,
+            }));
+        }
         match self.peek() {
             Some(Tok::Not) => {
                 let at = self.here();
@@ -252,13 +297,18 @@ impl Parser<'_> {
                 if matches!(self.peek(), None | Some(Tok::And | Tok::Minus | Tok::Close)) {
                     return missing(at);
                 }
-                Ok(Algebra::complement(self.unary(operand)?))
+                self.depth += 1;
+                let t = self.unary(operand)?;
+                self.depth -= 1;
+                Ok(Algebra::complement(t))
             }
             None | Some(Tok::And | Tok::Minus | Tok::Close) => missing(self.here()),
             Some(Tok::Open) if self.is_algebra_group() => {
                 let open = self.here();
                 self.pos += 1;
+                self.depth += 1;
                 let t = self.algebra(operand)?;
+                self.depth -= 1;
                 if self.peek() != Some(Tok::Close) {
                     return Err(ParseError::Algebra(AlgebraError::Unbalanced { at: open }));
                 }
@@ -269,27 +319,52 @@ impl Parser<'_> {
         }
     }
 
-    /// The group opening here has an operator at its own top level, and nothing but
-    /// an operator, a `)` or the end follows its `)`.
+    /// The group opening here is an algebra group: an operator stands at its own top
+    /// level, or it only wraps another algebra group (`((A - B))`); and nothing but an
+    /// operator, a `)` or the end follows its `)`.
     fn is_algebra_group(&self) -> bool {
+        let Some(close) = self.matching_close(self.pos) else {
+            return false;
+        };
+        let after = self.toks.get(close + 1).map(|t| t.0);
+        matches!(after, None | Some(Tok::And | Tok::Minus | Tok::Close))
+            && self.holds_algebra(self.pos, close)
+    }
+
+    /// Whether the group `toks[open..=close]` holds algebra at its top level, or is
+    /// nothing but a group that does.
+    fn holds_algebra(&self, open: usize, close: usize) -> bool {
         let mut depth = 0usize;
-        let mut has_op = false;
-        for (k, (t, _)) in self.toks[self.pos..].iter().enumerate() {
+        for (t, _) in &self.toks[open..close] {
+            match t {
+                Tok::Open => depth += 1,
+                Tok::Close => depth -= 1,
+                Tok::And | Tok::Minus | Tok::Not if depth == 1 => return true,
+                _ => {}
+            }
+        }
+        let inner = open + 1;
+        self.toks.get(inner).is_some_and(|t| t.0 == Tok::Open)
+            && self.matching_close(inner) == Some(close - 1)
+            && self.holds_algebra(inner, close - 1)
+    }
+
+    /// The `)` closing the `(` at `open`.
+    fn matching_close(&self, open: usize) -> Option<usize> {
+        let mut depth = 0usize;
+        for (k, (t, _)) in self.toks[open..].iter().enumerate() {
             match t {
                 Tok::Open => depth += 1,
                 Tok::Close => {
                     depth -= 1;
                     if depth == 0 {
-                        let after = self.toks.get(self.pos + k + 1).map(|t| t.0);
-                        return has_op
-                            && matches!(after, None | Some(Tok::And | Tok::Minus | Tok::Close));
+                        return Some(open + k);
                     }
                 }
-                Tok::And | Tok::Minus | Tok::Not if depth == 1 => has_op = true,
                 _ => {}
             }
         }
-        false
+        None
     }
 
     /// One operand: tokens up to an operator or `)` at this level. An operator nested in
@@ -330,6 +405,12 @@ impl Parser<'_> {
             end = span.end;
             self.pos += 1;
         }
+        self.operands += 1;
+        if self.operands > MAX_OPERANDS {
+            return Err(ParseError::Algebra(AlgebraError::TooManyOperands {
+                at: start..end,
+            }));
+        }
         operand(start..end).map_err(ParseError::Operand)
     }
 }
@@ -340,7 +421,7 @@ mod tests {
 
     /// Leaves are the operand texts.
     fn tree(src: &str) -> Result<String, AlgebraError> {
-        let t = parse(src, 0..src.len(), &mut |r: Range<usize>| {
+        let t = parse(src, 0..src.len(), 4, &mut |r: Range<usize>| {
             Ok::<_, ()>(Algebra::Leaf(format!("[{}]", &src[r])))
         });
         match t {
@@ -396,5 +477,23 @@ mod tests {
             Err(AlgebraError::Unbalanced { at: 1..2 })
         );
         assert_eq!(tree("A - B)"), Err(AlgebraError::Unbalanced { at: 5..6 }));
+        // Nesting and size are bounded: a hostile text gives an error, not a deep tree.
+        assert_eq!(tree("^^^^A"), Ok("^^^^[A]".into()));
+        assert_eq!(
+            tree("^^^^^A"),
+            Err(AlgebraError::TooDeep { at: 4..5, max: 4 })
+        );
+        assert_eq!(tree("((((A - B))))"), Ok("[A] - [B]".into()));
+        assert_eq!(
+            tree("(((((A - B)))))"),
+            Err(AlgebraError::TooDeep { at: 4..5, max: 4 })
+        );
+        let many = vec!["A"; MAX_OPERANDS + 1].join(" - ");
+        let last = many.len() - 1;
+        assert_eq!(
+            tree(&many),
+            Err(AlgebraError::TooManyOperands { at: last..last + 1 })
+        );
+        assert!(tree(&many[..last - 3]).is_ok());
     }
 }

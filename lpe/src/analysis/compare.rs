@@ -80,5 +80,4 @@ mod tests {
         assert_eq!(c.first_only, None);
         assert_eq!(c.second_only.unwrap().to_string(), "C RD1 L");
     }
-
 }

@@ -178,7 +178,8 @@ impl Parser {
         mut prefixes: Prefixes,
         depth: usize,
     ) -> Result<Lpe, Error> {
-        let tree = algebra::parse(source, body, &mut |span| {
+        let mut operands = 0;
+        let tree = algebra::parse(source, body, self.limits.max_depth, &mut |span| {
             if span.is_empty() {
                 return Err(Error::new(
                     ErrorKind::Empty,
@@ -187,8 +188,23 @@ impl Parser {
                     source,
                 ));
             }
-            let lpe = self.parse_operand(source, span, depth)?;
+            let lpe = self.parse_operand(source, span.clone(), depth)?;
             prefixes = prefixes.union(lpe.prefixes);
+            // Macro operands graft whole trees: count their operands too, so nested
+            // macros cannot multiply an expression past the limit.
+            operands += lpe.operands().len();
+            if operands > algebra::MAX_OPERANDS {
+                return Err(Error::new(
+                    ErrorKind::Limit,
+                    span,
+                    format!(
+                        "more than {} set-algebra operands once macros are expanded (each \
+                         is a hidden AOV)",
+                        algebra::MAX_OPERANDS
+                    ),
+                    source,
+                ));
+            }
             Ok(lpe.tree())
         })
         .map_err(|e| match e {
@@ -196,6 +212,9 @@ impl Parser {
             ParseError::Algebra(e) => {
                 let kind = match e {
                     AlgebraError::MissingOperand { .. } => ErrorKind::Empty,
+                    AlgebraError::TooDeep { .. } | AlgebraError::TooManyOperands { .. } => {
+                        ErrorKind::Limit
+                    }
                     _ => ErrorKind::Syntax,
                 };
                 Error::new(kind, e.span(), e.to_string(), source).with_help(e.help())

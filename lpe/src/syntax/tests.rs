@@ -447,24 +447,6 @@ fn set_algebra_over_whole_bodies() {
 }
 
 #[test]
-fn set_algebra_operands_are_macros_with_groups_and_prefixes() {
-    // A macro operand with a light group, and a macro whose body is itself algebra.
-    let config = crate::ini::Config::from_ini(
-        "/prman/lpe/macro/rest unoccluded;C.*[<L.>O] - directDiffuse\n",
-    )
-    .unwrap();
-    let parser = config.parser();
-    let l = parser.parse("rest_key & C<RD>.*L").unwrap();
-    assert!(l.prefixes.contains(Prefix::Unoccluded));
-    assert_eq!(
-        l.to_string(),
-        "unoccluded;C.*[<L.'key'>O] - C<RD>[<L.'key'>O] & C<RD>.*L"
-    );
-    let plain = parse("directDiffuse_key").unwrap();
-    assert!(plain.algebra.is_none());
-}
-
-#[test]
 fn set_algebra_errors_point_into_the_whole_text() {
     let cases = [
         ("C.*L - ", ErrorKind::Empty, 6),
@@ -479,6 +461,8 @@ fn set_algebra_errors_point_into_the_whole_text() {
         assert_eq!((e.kind(), e.span().start), (kind, at), "{src}: {e}");
         assert_eq!(e.source_text(), src);
     }
+    let deep = format!("{}C.*L - CL{}", "(".repeat(200), ")".repeat(200));
+    assert_eq!(parse(&deep).unwrap_err().kind(), ErrorKind::Limit);
     // `-` and `^` where the dialect gives them a meaning are not algebra.
     assert!(parse("C[^D]'a-b'L").unwrap().algebra.is_none());
 }
