@@ -14,4 +14,5 @@
 pub mod bench;
 pub mod cmd;
 pub mod input;
+pub mod lint;
 pub mod witness;

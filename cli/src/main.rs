@@ -31,6 +31,10 @@ enum Command {
     Bench(cmd::bench::Args),
     /// Run every engine on generated cases; print minimized disagreements (exit 3).
     Diff(cmd::diff::Args),
+    /// Check the LPE AOVs of USD stages, RIB files and rendermn.ini (exit 1 on findings).
+    Lint(cmd::lint::Args),
+    /// Which AOVs a path lands in, vertex by vertex, and the closest miss.
+    Explain(cmd::explain::Args),
 }
 
 fn main() -> ExitCode {
@@ -46,6 +50,8 @@ fn main() -> ExitCode {
             Command::Partition(a) => cmd::partition::run(a),
             Command::Bench(a) => cmd::bench::run(a),
             Command::Diff(a) => cmd::diff::run(a),
+            Command::Lint(a) => cmd::lint::run(a),
+            Command::Explain(a) => cmd::explain::run(a),
         });
     match worker.map(|w| w.join()) {
         Ok(Ok(code)) => code,

@@ -119,6 +119,13 @@ impl LobeMap {
         Event::new(category.kind(), lobe).expect("map holds only in-range lobes")
     }
 
+    /// Whether any material lobe lands in `lobe` of `category`: lobe 1 takes every
+    /// unmapped name, any other lobe only the names mapped to it. An AOV asking for a lobe
+    /// nothing lands in renders black.
+    pub fn is_fed(&self, category: LobeCategory, lobe: u8) -> bool {
+        lobe == 1 || self.maps[category as usize].values().any(|&l| l == lobe)
+    }
+
     /// Maps `names` to lobe `lobe` of `category` (like `/prman/lpe/diffuse2 A,B`). Each
     /// name moves from wherever it was. Errors if the lobe is out of range.
     pub fn assign<'a>(
@@ -193,6 +200,24 @@ mod tests {
 
     fn ev(kind: EventKind, lobe: u8) -> Event {
         Event::new(kind, lobe).unwrap()
+    }
+
+    #[test]
+    fn fed_lobes_follow_the_mappings() {
+        let mut m = LobeMap::default();
+        // docs/language.md §2.4: D4, U5 and U7..U12 are free by default; lobe 1 takes
+        // every unmapped name.
+        assert!(m.is_fed(LobeCategory::Diffuse, 1));
+        assert!(m.is_fed(LobeCategory::Diffuse, 3));
+        assert!(!m.is_fed(LobeCategory::Diffuse, 4));
+        assert!(m.is_fed(LobeCategory::User, 2));
+        assert!(!m.is_fed(LobeCategory::User, 5));
+        assert!(m.is_fed(LobeCategory::Specular, 5));
+        m.assign(LobeCategory::User, 5, ["Wetness"]).unwrap();
+        assert!(m.is_fed(LobeCategory::User, 5));
+        // Moving the only name of U3 away leaves U3 unfed.
+        m.assign(LobeCategory::User, 5, ["Position"]).unwrap();
+        assert!(!m.is_fed(LobeCategory::User, 3));
     }
 
     #[test]

@@ -26,7 +26,7 @@ mod lexer;
 mod parser;
 
 pub(crate) use error::nearest;
-pub use error::{Error, ErrorKind};
+pub use error::{edit_distance, Error, ErrorKind};
 
 use crate::algebra::{self, AlgebraError, ParseError};
 use crate::ast::{Atom, EventPos, Item, LabelPos, Lpe, Triple, TypePos};

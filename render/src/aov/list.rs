@@ -4,6 +4,8 @@
 
 use lpe::macros::{BASIC, OTHER, PER_LOBE};
 use lpe::{EventKind, Lpe, Parser, Prefix};
+use lpe_lint::read::rib::{display_channel, Channel};
+use lpe_lint::RibProblem;
 
 use crate::scene::Scene;
 
@@ -29,19 +31,8 @@ pub enum AovError {
     DisplayChannel {
         file: String,
         line: usize,
-        problem: DisplayProblem,
+        problem: RibProblem,
     },
-}
-
-/// What is wrong with a `DisplayChannel` line.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-pub enum DisplayProblem {
-    #[error("unterminated string")]
-    UnterminatedString,
-    #[error("expected `DisplayChannel \"color NAME\" ...`")]
-    NoDeclaration,
-    #[error("channel `{name}`: \"string source\" needs a value")]
-    SourceWithoutValue { name: String },
 }
 
 /// How an AOV accumulates: its prefixes, decoded (docs/language.md §7; the integrator
@@ -287,61 +278,63 @@ pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels,
     let mut warnings = Vec::new();
     for (n, line) in text.lines().enumerate() {
         let at = |m: String| format!("{file}:{}: {m}", n + 1);
-        let fail = |problem| AovError::DisplayChannel {
+        let channel = display_channel(line).map_err(|problem| AovError::DisplayChannel {
             file: file.into(),
             line: n + 1,
             problem,
-        };
-        let t = line.trim();
-        if !t.starts_with("DisplayChannel") {
-            continue;
-        }
-        let mut quoted = Vec::new();
-        let mut rest = &t["DisplayChannel".len()..];
-        while let Some(start) = rest.find('"') {
-            let Some(len) = rest[start + 1..].find('"') else {
-                return Err(fail(DisplayProblem::UnterminatedString));
-            };
-            quoted.push(&rest[start + 1..start + 1 + len]);
-            rest = &rest[start + 2 + len..];
-        }
-        let Some(decl) = quoted.first() else {
-            return Err(fail(DisplayProblem::NoDeclaration));
-        };
-        let name = decl
-            .split_whitespace()
-            .last()
-            .unwrap_or_default()
-            .to_string();
-        let Some(pos) = quoted
-            .iter()
-            .position(|q| q.split_whitespace().collect::<Vec<_>>() == ["string", "source"])
-        else {
-            warnings.push(at(format!(
+        })?;
+        match channel {
+            None => {}
+            Some(Channel::Lpe { name, source, .. }) => out.push((name, source)),
+            Some(Channel::NoSource { name }) => warnings.push(at(format!(
                 "channel `{name}` has no \"string source\": skipped"
-            )));
-            continue;
-        };
-        let Some(src) = quoted.get(pos + 1) else {
-            return Err(fail(DisplayProblem::SourceWithoutValue { name }));
-        };
-        // The value is "TYPE SOURCE", e.g. "color lpe:C<RD>[<L.>O]".
-        let source = src
-            .trim()
-            .split_once(char::is_whitespace)
-            .map_or(src.trim(), |(_, s)| s.trim());
-        if !source.starts_with("lpe:") {
-            warnings.push(at(format!(
+            ))),
+            Some(Channel::Other { name, source }) => warnings.push(at(format!(
                 "channel `{name}` has source `{source}`, not an LPE: skipped (beauty is always written)"
-            )));
-            continue;
+            ))),
         }
-        out.push((name, source.to_string()));
     }
     Ok(DisplayChannels {
         channels: out,
         warnings,
     })
+}
+
+/// The AOVs of a USD stage: its LPE RenderVars, in the order of the first
+/// RenderProduct's `orderedVars` when it has them (vars it leaves out are skipped, names
+/// that are no LPE RenderVar are warned about: beauty is always written), else in stage
+/// order.
+pub fn usd_render_vars(stage: &lpe_lint::Document) -> DisplayChannels {
+    let lpe_var = |name: &str| stage.aovs.iter().find(|a| a.name == name);
+    let mut out = DisplayChannels::default();
+    match &stage.ordered_vars {
+        Some(order) => {
+            for name in order {
+                match lpe_var(name) {
+                    Some(a) => out.channels.push((a.name.clone(), a.source.clone())),
+                    None => out.warnings.push(format!(
+                        "orderedVars names `{name}`, not an LPE RenderVar: skipped"
+                    )),
+                }
+            }
+            for a in &stage.aovs {
+                if !order.contains(&a.name) {
+                    out.warnings.push(format!(
+                        "RenderVar `{}` is not in the product's orderedVars: skipped",
+                        a.name
+                    ));
+                }
+            }
+        }
+        None => {
+            out.channels = stage
+                .aovs
+                .iter()
+                .map(|a| (a.name.clone(), a.source.clone()))
+                .collect();
+        }
+    }
+    out
 }
 
 #[cfg(test)]

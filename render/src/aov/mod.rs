@@ -6,6 +6,6 @@ pub mod matcher;
 pub mod plan;
 
 pub use list::{
-    parse_display_channels, split_aov_arg, Aov, AovError, AovFlags, AovList, DisplayChannels,
-    DisplayProblem, Partition,
+    parse_display_channels, split_aov_arg, usd_render_vars, Aov, AovError, AovFlags, AovList,
+    DisplayChannels, Partition,
 };

@@ -33,6 +33,8 @@ pub enum InputError {
     },
     #[error("{}: {source}", path.display())]
     DisplayAov { path: PathBuf, source: AovError },
+    #[error(transparent)]
+    Usd(#[from] lpe_lint::ReadError),
     #[error("{width}x{height} with {aovs} AOVs needs {:.1} GiB of film; at most 8 GiB", *bytes as f64 / (1u64 << 30) as f64)]
     FilmTooLarge {
         width: usize,

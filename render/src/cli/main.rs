@@ -94,6 +94,11 @@ pub struct RenderArgs {
     /// RenderMan DisplayChannel lines to read AOVs from.
     #[arg(long, value_name = "FILE")]
     pub display: Option<PathBuf>,
+    /// A USD stage (.usda/.usdc/.usdz) to take AOVs from: its RenderVars with
+    /// `sourceType = "lpe"`, picked and ordered by the first RenderProduct's `orderedVars`
+    /// when it has them; each becomes an EXR layer named after the RenderVar prim.
+    #[arg(long, value_name = "FILE")]
+    pub usd: Option<PathBuf>,
     /// rendermn.ini with user macros and lobe mappings.
     #[arg(long, value_name = "FILE")]
     pub ini: Option<PathBuf>,

@@ -1,9 +1,11 @@
 //! `lpe-render [OPTIONS]`: render a scene into beauty + AOVs and write the outputs.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use lpe_render::aov::{parse_display_channels, split_aov_arg, AovList};
+use lpe_render::aov::{
+    parse_display_channels, split_aov_arg, usd_render_vars, AovList, DisplayChannels,
+};
 use lpe_render::integrator::{self, Settings};
 use lpe_render::output::{self, Report};
 use lpe_render::scene::Scene;
@@ -24,6 +26,26 @@ fn load_config(ini: Option<&PathBuf>) -> Result<lpe::Config, InputError> {
         path: path.clone(),
         source,
     })
+}
+
+/// Prints the warnings of channels read from `path` and appends its AOVs.
+fn push_channels(
+    aovs: &mut AovList,
+    read: DisplayChannels,
+    path: &Path,
+    parser: &lpe::Parser,
+) -> Result<(), InputError> {
+    for w in read.warnings {
+        eprintln!("warning: {w}");
+    }
+    for (name, source) in read.channels {
+        aovs.push(&name, &source, parser)
+            .map_err(|source| InputError::DisplayAov {
+                path: path.to_path_buf(),
+                source,
+            })?;
+    }
+    Ok(())
 }
 
 pub fn print_invariants(list: &[Invariant]) -> bool {
@@ -49,22 +71,21 @@ pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
             source,
         })?;
         let read = parse_display_channels(&text, &path.display().to_string())?;
-        for w in read.warnings {
-            eprintln!("warning: {w}");
+        push_channels(&mut aovs, read, path, &parser)?;
+    }
+    if let Some(path) = &args.usd {
+        let stage = lpe_lint::read::usd::read(path, &lpe_lint::read::Limits::default())?;
+        let mut read = usd_render_vars(&stage);
+        for w in &mut read.warnings {
+            *w = format!("{}: {w}", path.display());
         }
-        for (name, source) in read.channels {
-            aovs.push(&name, &source, &parser)
-                .map_err(|source| InputError::DisplayAov {
-                    path: path.clone(),
-                    source,
-                })?;
-        }
+        push_channels(&mut aovs, read, path, &parser)?;
     }
     for arg in &args.aovs {
         let (name, source) = split_aov_arg(arg)?;
         aovs.push(name, source, &parser)?;
     }
-    if args.display.is_none() && args.aovs.is_empty() {
+    if args.display.is_none() && args.usd.is_none() && args.aovs.is_empty() {
         aovs = AovList::for_render(&scene, &parser)?;
     }
     for (lobe, names) in config.lobes.user_collisions(&integrator::USER_SIGNALS) {

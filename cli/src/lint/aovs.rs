@@ -1,0 +1,197 @@
+//! Per-AOV checks of one file: parse errors, emptiness, equivalence, group labels, lobes.
+
+use lpe::analysis;
+use lpe::{AovSet, LobeCategory, LobeMap, Lpe, Parser};
+use lpe_lint::Document;
+
+use super::finding::{Finding, Kind};
+use super::labels::{self, Carrier};
+use super::Linted;
+
+/// Parses the AOVs of `doc` into `linted` and appends the findings on them.
+pub fn check(
+    doc: &Document,
+    linted: &mut [Linted],
+    parser: &Parser,
+    lobes: &LobeMap,
+    findings: &mut Vec<Finding>,
+) {
+    for l in linted.iter_mut() {
+        match parser.parse(&l.decl.source) {
+            Ok(lpe) => l.lpe = Some(lpe),
+            Err(e) => {
+                let mut f = finding(l, Kind::ParseError, e.message().to_string());
+                f.caret = Some((e.source_text().to_string(), e.span()));
+                f.help = e.help().map(str::to_string);
+                findings.push(f);
+            }
+        }
+    }
+    let empty = empty_aovs(linted);
+    for (i, reason) in &empty {
+        findings.push(finding(
+            &linted[*i],
+            Kind::Empty,
+            format!("can match no path: {reason}"),
+        ));
+    }
+    let live: Vec<usize> = (0..linted.len())
+        .filter(|i| linted[*i].lpe.is_some() && !empty.iter().any(|(e, _)| e == i))
+        .collect();
+    for (x, &j) in live.iter().enumerate() {
+        let b = linted[j].lpe.as_ref().expect("live AOVs parsed");
+        let twin = live[..x].iter().copied().find(|&i| {
+            let a = linted[i].lpe.as_ref().expect("live AOVs parsed");
+            a.prefixes == b.prefixes && analysis::compare(a, b).is_ok_and(|c| c.equivalent())
+        });
+        if let Some(i) = twin {
+            let mut f = finding(
+                &linted[j],
+                Kind::Equivalent,
+                format!(
+                    "matches exactly the paths `{}` matches: both render the same image",
+                    linted[i].decl.name
+                ),
+            );
+            f.other = Some(linted[i].decl.name.clone());
+            findings.push(f);
+        }
+    }
+    for l in linted.iter() {
+        if let Some(lpe) = &l.lpe {
+            group_findings(doc, l, lpe, findings);
+            lobe_findings(l, lpe, lobes, findings);
+        }
+    }
+}
+
+/// `(index, reason)` of the parsed AOVs that can match no path.
+fn empty_aovs(linted: &[Linted]) -> Vec<(usize, String)> {
+    let parsed: Vec<(usize, (String, Lpe))> = linted
+        .iter()
+        .enumerate()
+        .filter_map(|(i, l)| l.lpe.clone().map(|lpe| (i, (l.decl.name.clone(), lpe))))
+        .collect();
+    let named: Vec<(String, Lpe)> = parsed.iter().map(|(_, n)| n.clone()).collect();
+    let warnings = match AovSet::compile(&named) {
+        Ok(set) => set.warnings().to_vec(),
+        // Too many or too large together: each alone (its emptiness does not depend on
+        // the others).
+        Err(_) => named
+            .iter()
+            .enumerate()
+            .flat_map(|(k, n)| {
+                AovSet::compile(std::slice::from_ref(n))
+                    .map(|s| s.warnings().to_vec())
+                    .unwrap_or_default()
+                    .into_iter()
+                    .map(move |mut w| {
+                        w.aov = k;
+                        w
+                    })
+            })
+            .collect(),
+    };
+    warnings
+        .into_iter()
+        .map(|w| (parsed[w.aov].0, w.message))
+        .collect()
+}
+
+fn group_findings(doc: &Document, l: &Linted, lpe: &Lpe, findings: &mut Vec<Finding>) {
+    for (carrier, label) in labels::labels(lpe) {
+        let (known, kind, who) = match carrier {
+            Carrier::Light => (&doc.light_groups, Kind::UnknownLightGroup, "light"),
+            Carrier::Object => (&doc.object_groups, Kind::UnknownObjectGroup, "object"),
+        };
+        // A stage with no lights (objects) at all is a settings layer: nothing to check.
+        let Some(known) = known else { continue };
+        if known.contains(&label) {
+            continue;
+        }
+        let carried = if known.is_empty() {
+            "none carries a group".to_string()
+        } else {
+            format!(
+                "they carry {}",
+                known
+                    .iter()
+                    .map(|g| format!("'{g}'"))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        };
+        let mut f = finding(
+            l,
+            kind,
+            format!("no {who} in this stage carries group '{label}' ({carried})"),
+        )
+        .with_caret_on(&l.decl.source, &format!("'{label}'"));
+        f.help = closest(&label, known).map(|g| format!("did you mean '{g}'?"));
+        findings.push(f);
+    }
+}
+
+fn lobe_findings(l: &Linted, lpe: &Lpe, lobes: &LobeMap, findings: &mut Vec<Finding>) {
+    for (category, lobe) in labels::lobes(lpe) {
+        if lobes.is_fed(category, lobe) {
+            continue;
+        }
+        let letter = category.kind().letter();
+        let key = category.ini_name();
+        let what = match category {
+            LobeCategory::User => "user signal",
+            _ => "material lobe",
+        };
+        let mut f = finding(
+            l,
+            Kind::UnfedLobe,
+            format!("no {what} maps to lobe {letter}{lobe}: this part renders black"),
+        )
+        .with_caret_on(&l.decl.source, &format!("{letter}{lobe}"));
+        f.help = Some(format!(
+            "map names to it in rendermn.ini: /prman/lpe/{key}{lobe} NAME,..."
+        ));
+        findings.push(f);
+    }
+}
+
+fn finding(l: &Linted, kind: Kind, message: String) -> Finding {
+    Finding::new(kind, &l.file, &l.decl.name, &l.decl.location, message)
+}
+
+/// The known group within edit distance 2 of `label` (a typo), if exactly one is closest.
+fn closest<'a>(label: &str, known: &'a std::collections::BTreeSet<String>) -> Option<&'a str> {
+    let mut best: Option<(usize, &str)> = None;
+    let mut tie = false;
+    for g in known {
+        let d = lpe::syntax::edit_distance(label, g);
+        match best {
+            Some((b, _)) if d > b => {}
+            Some((b, _)) if d == b => tie = true,
+            _ => {
+                best = Some((d, g));
+                tie = false;
+            }
+        }
+    }
+    best.filter(|(d, _)| *d <= 2 && !tie).map(|(_, g)| g)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn closest_group() {
+        let known = ["fill".to_string(), "key".to_string()]
+            .into_iter()
+            .collect();
+        assert_eq!(closest("fil", &known), Some("fill"));
+        assert_eq!(closest("kye", &known), Some("key"));
+        assert_eq!(closest("zzzzz", &known), None);
+        // A tie suggests nothing.
+        let tied = ["ab".to_string(), "ba".to_string()].into_iter().collect();
+        assert_eq!(closest("aa", &tied), None);
+    }
+}

@@ -1,0 +1,108 @@
+//! The checks of `lpe-check lint` on the declarations `lpe-lint` reads, and their text
+//! and JSON reports.
+//!
+//! Per file: parse errors ([`aovs`]), AOVs that can match no path and AOVs equivalent to
+//! an earlier one ([`aovs`]), group labels no light or object of the stage carries and
+//! numbered lobes no mapping feeds ([`labels`], [`aovs`]), and the declared partitions
+//! ([`partition`]), each a [`Finding`]; [`text`] and [`json`] print them.
+
+pub mod aovs;
+pub mod finding;
+pub mod json;
+pub mod labels;
+pub mod partition;
+pub mod text;
+
+pub use finding::{Finding, Kind};
+
+use lpe::{Lpe, Parser};
+use lpe_lint::{AovDecl, Document, PartitionDecl};
+
+use crate::witness::Disagreement;
+
+/// One AOV as linted: its declaration and, when it parsed, its expression.
+#[derive(Clone, Debug)]
+pub struct Linted {
+    /// The file, as given.
+    pub file: String,
+    /// The declaration.
+    pub decl: AovDecl,
+    /// The parsed expression, `None` after a parse error.
+    pub lpe: Option<Lpe>,
+}
+
+/// A partition as checked.
+#[derive(Clone, Debug)]
+pub struct CheckedPartition {
+    /// The file declaring it (`--partition`: `(command line)`).
+    pub file: String,
+    /// The declaration.
+    pub decl: PartitionDecl,
+    /// Whether it could be checked (every member known and parsed).
+    pub checked: bool,
+    /// Checked and clean.
+    pub clean: bool,
+}
+
+/// Everything lint found.
+#[derive(Clone, Debug, Default)]
+pub struct Outcome {
+    /// Every LPE AOV read, in file order.
+    pub aovs: Vec<Linted>,
+    /// Every partition.
+    pub partitions: Vec<CheckedPartition>,
+    /// The findings, per file in check order.
+    pub findings: Vec<Finding>,
+}
+
+/// Lints the documents read (ini documents contribute only partitions), then the
+/// `extra` partitions over the AOVs of every file. Partition witnesses are re-checked
+/// with the reference matcher; a failed re-check is an engine bug, returned as the error.
+pub fn lint(
+    docs: &[Document],
+    parser: &Parser,
+    lobes: &lpe::LobeMap,
+    universe: &Lpe,
+    extra: &[PartitionDecl],
+) -> Result<Outcome, Disagreement> {
+    let mut out = Outcome::default();
+    for doc in docs {
+        let file = doc.file.display().to_string();
+        let first = out.aovs.len();
+        out.aovs.extend(doc.aovs.iter().map(|decl| Linted {
+            file: file.clone(),
+            decl: decl.clone(),
+            lpe: None,
+        }));
+        aovs::check(
+            doc,
+            &mut out.aovs[first..],
+            parser,
+            lobes,
+            &mut out.findings,
+        );
+        for p in &doc.partitions {
+            let checked = partition::check(
+                &file,
+                p,
+                &out.aovs[first..],
+                parser,
+                universe,
+                &mut out.findings,
+            )?;
+            out.partitions.push(checked);
+        }
+    }
+    for p in extra {
+        let checked = partition::check(
+            "(command line)",
+            p,
+            &out.aovs,
+            parser,
+            universe,
+            &mut out.findings,
+        )?;
+        out.partitions.push(checked);
+    }
+    Ok(out)
+}

@@ -1,0 +1,335 @@
+//! `lpe-check lint` and `explain` end to end on the fixtures in tests/testdata/usd and
+//! tests/testdata/lint: every fixture's findings, exactly, and the exit codes.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// Runs lpe-check in the repository root (so file names in reports are relative).
+fn lpe_check(args: &[&str]) -> (i32, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_lpe-check"))
+        .current_dir(root())
+        .args(args)
+        .output()
+        .expect("lpe-check runs");
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+fn json(args: &[&str]) -> (i32, serde_json::Value) {
+    let mut all = vec!["lint", "--format", "json"];
+    all.extend_from_slice(args);
+    let (code, out, err) = lpe_check(&all);
+    let v = serde_json::from_str(&out).unwrap_or_else(|e| panic!("{e}: {out} {err}"));
+    (code, v)
+}
+
+/// `(kind, subject, where)` of every finding, `where` the prim or `line:column`.
+fn findings(v: &serde_json::Value) -> Vec<(String, String, String)> {
+    v["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| {
+            let loc = &f["location"];
+            let at = match loc["prim"].as_str() {
+                Some(p) => p.to_string(),
+                None => format!("{}:{}", loc["line"], loc["column"]),
+            };
+            (
+                f["kind"].as_str().unwrap().to_string(),
+                f["subject"].as_str().unwrap().to_string(),
+                at,
+            )
+        })
+        .collect()
+}
+
+fn triples(list: &[(&str, &str, &str)]) -> Vec<(String, String, String)> {
+    list.iter()
+        .map(|(a, b, c)| (a.to_string(), b.to_string(), c.to_string()))
+        .collect()
+}
+
+#[test]
+fn solaris_karma_fixture() {
+    let (code, v) = json(&["tests/testdata/usd/solaris_karma.usda"]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        findings(&v),
+        triples(&[(
+            "unknown_light_group",
+            "diffuse_fill",
+            "/Render/Products/Vars/diffuse_fill"
+        )])
+    );
+    let f = &v["findings"][0];
+    assert_eq!(f["help"], "did you mean 'fill'?");
+    assert_eq!(f["source"], "C<RD>.*<L.'fil'>");
+    assert_eq!(f["span"], serde_json::json!([10, 15]));
+    // The inactive RenderVar and the raw one are not AOVs of the stage.
+    assert_eq!(v["aovs"].as_array().unwrap().len(), 4);
+}
+
+#[test]
+fn hdprman_fixture() {
+    let (code, v) = json(&["tests/testdata/usd/hdprman.usda"]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        findings(&v),
+        triples(&[
+            ("parse_error", "rimLight", "/Render/vars/rimLight"),
+            (
+                "empty",
+                "lightBehindCamera",
+                "/Render/vars/lightBehindCamera"
+            ),
+            ("equivalent", "diffuseAgain", "/Render/vars/diffuseAgain"),
+            ("unfed_lobe", "wetness", "/Render/vars/wetness"),
+        ])
+    );
+    assert_eq!(v["findings"][0]["help"], "write `<L.'rim'>`");
+    assert_eq!(v["findings"][2]["other"], "directDiffuse");
+    assert_eq!(v["aovs"][3]["name"], "rimLight");
+    assert_eq!(v["aovs"][3]["expression"], serde_json::Value::Null);
+    assert_eq!(v["aovs"][0]["expression"], "C<RD>[<L.>O]");
+}
+
+#[test]
+fn arnold_partition_fixture() {
+    let (code, v) = json(&["tests/testdata/usd/arnold_partition.usda"]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        findings(&v),
+        triples(&[
+            ("overlap", "beauty", "/Render/settings"),
+            ("gap", "beauty", "/Render/settings"),
+            ("gap", "lightgroups", "/Render/settings"),
+        ])
+    );
+    let f = &v["findings"];
+    assert_eq!(f[0]["other"], "direct & indirect");
+    // Witnesses checked by hand: `C RD L` is direct (C[DS]L) and indirect (C[DS]+...);
+    // `C L` (the camera sees a light) is in no member of either partition.
+    assert_eq!(f[0]["witness"], "C RD1 L");
+    assert_eq!(f[1]["witness"], "C L");
+    assert_eq!(f[2]["witness"], "C L");
+    // The remainders parse and close the gaps, by the partition command.
+    assert_eq!(
+        f[1]["remainder"],
+        "C.*[<L.>O] - ((C[DS]L)|(C[DS]+[<L.>O])|(CO))"
+    );
+    assert_eq!(
+        f[2]["remainder"],
+        "C.*[<L.>O] - ((C.*<L.'key'>)|(C.*<L.'env'>)|(C.*O))"
+    );
+    for (finding, members) in [
+        (&f[1], ["C[DS]L", "C[DS]+[<L.>O]", "CO"]),
+        (&f[2], ["C.*<L.'key'>", "C.*<L.'env'>", "C.*O"]),
+    ] {
+        let rest = format!("rest={}", finding["remainder"].as_str().unwrap());
+        let mut args = vec!["partition", rest.as_str()];
+        args.extend(members);
+        let (_, out, err) = lpe_check(&args);
+        assert!(
+            out.starts_with("partition of C.*[<L.>O] by 4 AOVs\n"),
+            "{out}{err}"
+        );
+        assert!(!out.contains("gap:"), "{out}");
+        assert!(
+            !out.contains("& rest"),
+            "the remainder overlaps nothing: {out}"
+        );
+    }
+    let parts = v["partitions"].as_array().unwrap();
+    assert_eq!(parts.len(), 2);
+    assert!(parts
+        .iter()
+        .all(|p| p["checked"] == true && p["clean"] == false));
+}
+
+#[test]
+fn clean_fixture_exits_zero() {
+    let (code, out, err) = lpe_check(&["lint", "tests/testdata/usd/clean_basic.usda"]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    assert_eq!(
+        out,
+        "clean: 7 AOVs, 1 file, 1 partition checked (1 clean)\n"
+    );
+}
+
+#[test]
+fn rib_without_and_with_its_ini() {
+    let rib = "tests/testdata/lint/display.rib";
+    let (code, v) = json(&[rib]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        findings(&v),
+        triples(&[
+            ("parse_error", "keyDiffuse", "12:59"),
+            ("parse_error", "broken", "13:55"),
+            ("unfed_lobe", "wetness", "11:56"),
+            ("gap", "beauty", "3:1"),
+        ])
+    );
+    // The ini defines the keyDiffuse macro and feeds U5.
+    let (code, v) = json(&["tests/testdata/lint/rendermn.ini", rib]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        findings(&v),
+        triples(&[("parse_error", "broken", "13:55"), ("gap", "beauty", "3:1")])
+    );
+    assert_eq!(
+        v["findings"][1]["remainder"],
+        "C.*[<L.>O] - ((C<.D>.*[<L.>O])|(C<.S>.*[<L.>O])|(CO))"
+    );
+    let (_, v2) = json(&["--ini", "tests/testdata/lint/rendermn.ini", rib]);
+    assert_eq!(findings(&v2), findings(&v));
+}
+
+#[test]
+fn text_report_points_at_the_expression() {
+    let (code, out, _) = lpe_check(&["lint", "tests/testdata/lint/display.rib"]);
+    assert_eq!(code, 1);
+    let want = "tests/testdata/lint/display.rib:13:55: parse_error: `broken`: the label belongs in the third position of `<type event label>`
+  | lpe:C<RD>.*<L'key'>
+  |              ^^^^^
+  = help: write `<L.'key'>`
+";
+    assert!(out.contains(want), "{out}");
+    assert!(out.ends_with("4 findings: 6 AOVs, 1 file, 1 partition checked (0 clean)\n"));
+}
+
+#[test]
+fn partition_from_the_command_line() {
+    let (code, v) = json(&[
+        "--partition",
+        "lg_key,lg_env,lg_emission",
+        "--partition",
+        "direct,nosuch",
+        "tests/testdata/usd/arnold_partition.usda",
+    ]);
+    assert_eq!(code, 1);
+    let got = findings(&v);
+    assert!(got.contains(&(
+        "unknown_member".into(),
+        "--partition #2".into(),
+        "0:0".into()
+    )));
+    assert!(got.contains(&("gap".into(), "--partition #1".into(), "0:0".into())));
+}
+
+#[test]
+fn unreadable_files_exit_two_and_the_rest_is_linted() {
+    let dir = std::env::temp_dir().join(format!("lpe-lint-cli-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let garbage = dir.join("garbage.usda");
+    std::fs::write(&garbage, b"#usda 1.0\n\x00\x9f\x92\x96").unwrap();
+    let truncated = dir.join("truncated.usda");
+    let full = std::fs::read(root().join("tests/testdata/usd/hdprman.usda")).unwrap();
+    std::fs::write(&truncated, &full[..full.len() * 2 / 3]).unwrap();
+    let (code, out, err) = lpe_check(&[
+        "lint",
+        garbage.to_str().unwrap(),
+        truncated.to_str().unwrap(),
+        "tests/testdata/usd/clean_basic.usda",
+    ]);
+    assert_eq!(code, 2, "{out}{err}");
+    assert!(err.contains("garbage.usda: byte 10: not text"), "{err}");
+    assert!(err.contains("truncated.usda: USD: "), "{err}");
+    assert!(out.starts_with("clean: 7 AOVs"), "{out}");
+    let (code, _, err) = lpe_check(&["lint", "nothere.rib"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("nothere.rib"), "{err}");
+}
+
+#[test]
+fn a_fifty_megabyte_rib_streams_in_bounded_memory() {
+    let dir = std::env::temp_dir().join(format!("lpe-lint-big-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let big = dir.join("big.rib");
+    {
+        use std::io::Write;
+        let mut f = std::io::BufWriter::new(std::fs::File::create(&big).unwrap());
+        writeln!(
+            f,
+            "DisplayChannel \"color d\" \"string source\" [\"color lpe:C<RD>L\"]"
+        )
+        .unwrap();
+        let line = format!("Polygon \"P\" [{}]\n", "0 1 2 ".repeat(20));
+        for _ in 0..(50 << 20) / line.len() {
+            f.write_all(line.as_bytes()).unwrap();
+        }
+    }
+    assert!(std::fs::metadata(&big).unwrap().len() >= 49 << 20);
+    let (code, out, err) = lpe_check(&["lint", big.to_str().unwrap()]);
+    assert_eq!((code, err.as_str()), (0, ""), "{out}");
+    assert!(out.starts_with("clean: 1 AOV, 1 file"), "{out}");
+    // One line over the 1 MiB line limit: a clear error with the line, no slurping.
+    let long = dir.join("long.rib");
+    let mut text = "Option \"a\"\n".to_string();
+    text.push_str(&"x".repeat((1 << 20) + 1));
+    std::fs::write(&long, text).unwrap();
+    let (code, _, err) = lpe_check(&["lint", long.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("long.rib:2: line longer than 1048576 bytes"),
+        "{err}"
+    );
+    std::fs::remove_file(&big).unwrap();
+}
+
+#[test]
+fn osl_dialect_is_refused_until_it_lands() {
+    let (code, _, err) = lpe_check(&[
+        "lint",
+        "--dialect",
+        "osl",
+        "tests/testdata/usd/clean_basic.usda",
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("osl dialect is not available"), "{err}");
+}
+
+#[test]
+fn explain_from_a_stage() {
+    let (code, out, _) = lpe_check(&[
+        "explain",
+        "--usd",
+        "tests/testdata/usd/solaris_karma.usda",
+        "C RD RS L'key'",
+    ]);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.ends_with("lands in: diffuse_key\n"), "{out}");
+    let (code, out, _) = lpe_check(&[
+        "explain",
+        "--from",
+        "tests/testdata/lint/display.rib",
+        "--ini",
+        "tests/testdata/lint/rendermn.ini",
+        "--aov",
+        "glass=C<TS>+L",
+        "C RS TD L",
+    ]);
+    // `broken` does not parse: bad input.
+    assert_eq!(code, 2, "{out}");
+    let (code, out, _) = lpe_check(&[
+        "explain",
+        "--aov",
+        "glass=C<TS>+L",
+        "--aov",
+        "mirror=C<RS><RS>L",
+        "C RS TD L",
+    ]);
+    assert_eq!(code, 1, "{out}");
+    assert!(
+        out.ends_with("lands in no AOV\nlongest live prefix: C RS1 (2 of 4 vertices)\nclosest AOV: mirror (dead at vertex 3)\n"),
+        "{out}"
+    );
+}

@@ -1,0 +1,174 @@
+//! USD stages, through the `openusd` crate: `RenderVar`s with `sourceType = "lpe"`,
+//! `RenderProduct.orderedVars`, the group attributes of lights and objects, and declared
+//! partitions.
+//!
+//! `sourceType` and `sourceName` are read whether authored `uniform` or not and as
+//! `token` or `string` (the schema says `uniform token` / `uniform string`; Solaris,
+//! hdPrman and hdArnold users write all four spellings). A RenderVar without
+//! `sourceType` is `raw` (the schema fallback) and skipped, as are inactive prims.
+//!
+//! Group attributes (a label in `<L.'key'>` or `<R.'floor'>` must be carried by one):
+//!
+//! | attribute | on | delegate |
+//! |---|---|---|
+//! | `ri:light:lightGroup` (or `inputs:ri:light:lightGroup`) | lights | hdPrman (RenderMan) |
+//! | `primvars:arnold:aov` | lights | hdArnold (Arnold) |
+//! | `inputs:karma:light:lpetag` | lights | Karma (Houdini) |
+//! | `primvars:karma:object:lpetag` | objects | Karma (Houdini) |
+//! | `primvars:ri:attributes:identifier:lpegroup` | objects | hdPrman (RenderMan) |
+//!
+//! A partition is declared as `custom string lpe:partition = "a,b,c"` (named `beauty`)
+//! or `custom string lpe:partition:NAME = "a,b,c"` on any prim, usually the
+//! `RenderSettings`.
+
+use std::collections::BTreeSet;
+use std::path::Path;
+
+use openusd::{sdf, usd};
+
+use crate::decl::{split_members, AovDecl, Document, Format, Location, PartitionDecl};
+use crate::error::ReadError;
+use crate::read::{as_text, read_bounded, Limits};
+
+/// Light attributes holding the light's group, per delegate (see the module docs).
+pub const LIGHT_GROUP_ATTRIBUTES: [&str; 4] = [
+    "ri:light:lightGroup",
+    "inputs:ri:light:lightGroup",
+    "primvars:arnold:aov",
+    "inputs:karma:light:lpetag",
+];
+
+/// Object attributes holding the object's LPE group, per delegate.
+pub const OBJECT_GROUP_ATTRIBUTES: [&str; 2] = [
+    "primvars:karma:object:lpetag",
+    "primvars:ri:attributes:identifier:lpegroup",
+];
+
+/// Prim types that are geometry: a stage holding one can be checked for object groups.
+const GEOMETRY_TYPES: [&str; 13] = [
+    "Mesh",
+    "Sphere",
+    "Cube",
+    "Cylinder",
+    "Cone",
+    "Capsule",
+    "Plane",
+    "Points",
+    "BasisCurves",
+    "NurbsCurves",
+    "NurbsPatch",
+    "PointInstancer",
+    "TetMesh",
+];
+
+/// Reads the declarations of a USD stage.
+pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
+    let usd_err = |message: String| ReadError::Usd {
+        path: path.to_path_buf(),
+        message,
+    };
+    let bytes = read_bounded(path, limits.usd_bytes, "USD")?;
+    // Text layers must be text; usdc (`PXR-USDC`) and usdz (a zip) are binary by design.
+    if !bytes.starts_with(b"PXR-USDC") && !bytes.starts_with(b"PK\x03\x04") {
+        as_text(&bytes, path, 0)?;
+    }
+    let name = path
+        .to_str()
+        .ok_or_else(|| usd_err("the path is not UTF-8".into()))?;
+    let stage = usd::Stage::open(name).map_err(|e| usd_err(format!("{e:#}")))?;
+    let mut prims = Vec::new();
+    stage
+        .traverse(usd::PrimPredicate::DEFAULT, |p| prims.push(p.clone()))
+        .map_err(|e| usd_err(format!("{e:#}")))?;
+
+    let mut doc = Document::new(path, Format::Usd);
+    let mut lights = BTreeSet::new();
+    let mut objects = BTreeSet::new();
+    let (mut has_lights, mut has_objects) = (false, false);
+    for p in &prims {
+        let prim = stage.prim(p.clone());
+        let ty = prim
+            .type_name()
+            .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?
+            .map(|t| t.as_str().to_string())
+            .unwrap_or_default();
+        let text = |attr: &str| -> Result<Option<String>, ReadError> {
+            let value = prim
+                .attribute(attr)
+                .get::<sdf::Value>()
+                .map_err(|e| usd_err(format!("<{p}>.{attr}: {e:#}")))?;
+            Ok(value.and_then(|v| v.as_str().map(str::to_string)))
+        };
+        match ty.as_str() {
+            "RenderVar" => {
+                let source_type = text("sourceType")?.unwrap_or_else(|| "raw".into());
+                if source_type == "lpe" {
+                    doc.aovs.push(AovDecl {
+                        name: p.name().unwrap_or_default().to_string(),
+                        source: text("sourceName")?.unwrap_or_default(),
+                        location: Location::Prim {
+                            prim: p.to_string(),
+                            attribute: "sourceName".into(),
+                        },
+                        source_type: Some(source_type),
+                    });
+                }
+            }
+            "RenderProduct" if doc.ordered_vars.is_none() => {
+                let targets = prim
+                    .relationship("orderedVars")
+                    .targets()
+                    .map_err(|e| usd_err(format!("<{p}>.orderedVars: {e:#}")))?;
+                if !targets.is_empty() {
+                    doc.ordered_vars = Some(
+                        targets
+                            .iter()
+                            .map(|t| t.name().unwrap_or_default().to_string())
+                            .collect(),
+                    );
+                }
+            }
+            _ => {}
+        }
+        has_lights |= ty.ends_with("Light");
+        has_objects |= GEOMETRY_TYPES.contains(&ty.as_str());
+        for attr in LIGHT_GROUP_ATTRIBUTES {
+            if let Some(g) = text(attr)? {
+                has_lights = true;
+                lights.insert(g);
+            }
+        }
+        for attr in OBJECT_GROUP_ATTRIBUTES {
+            if let Some(g) = text(attr)? {
+                has_objects = true;
+                objects.insert(g);
+            }
+        }
+        let names = prim
+            .property_names()
+            .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?;
+        for prop in names {
+            let prop = prop.as_str();
+            let name = match prop.strip_prefix("lpe:partition") {
+                Some("") => "beauty",
+                Some(rest) => match rest.strip_prefix(':') {
+                    Some(n) if !n.is_empty() => n,
+                    _ => continue,
+                },
+                None => continue,
+            };
+            let list = text(prop)?.unwrap_or_default();
+            doc.partitions.push(PartitionDecl {
+                name: name.to_string(),
+                members: split_members(&list),
+                location: Location::Prim {
+                    prim: p.to_string(),
+                    attribute: prop.to_string(),
+                },
+            });
+        }
+    }
+    doc.light_groups = has_lights.then_some(lights);
+    doc.object_groups = has_objects.then_some(objects);
+    Ok(doc)
+}
