@@ -4,8 +4,15 @@
 //! 1. the compressed alphabet (module `automata::alphabet`): vertices grouped into [`Class`]es;
 //! 2. one bitset Glushkov NFA holding every AOV's positions (module `automata::nfa`);
 //! 3. a minimized dense DFA over it (module `automata::dfa`), unless that would exceed
-//!    [`Options::dfa_budget`]; then the set steps the NFA instead. Both give the same
-//!    answers (the `fast` and `nfa` engines of the differential harness check that).
+//!    [`Options::dfa_budget`]; then the set is a lazy DFA (module [`crate::automata::lazy`]):
+//!    determinized on demand into per-thread [`Cache`]s. Both give the same answers (the
+//!    `fast` and `nfa` engines of the differential harness check that).
+//!
+//! A [`State`] is one `u32` either way. Sets over the DFA budget step fastest through a
+//! caller-owned [`Cache`] per thread ([`AovSet::cache`], [`AovSet::step_with`],
+//! [`AovSet::matches_with`]); the plain `State` API uses a per-thread cache of its own.
+//! Labels can be interned once ([`AovSet::label_id`]) so that classifying a vertex is
+//! index arithmetic ([`AovSet::classify_interned`]).
 //!
 //! A renderer compiles once, shares the set across threads (`AovSet` is `Send + Sync`,
 //! immutable, lock-free), and per path calls [`AovSet::start`], then [`AovSet::step`] (or
@@ -45,18 +52,25 @@ use crate::ast::Atom;
 use crate::automata::alphabet::Alphabet;
 use crate::automata::dfa::Dfa;
 use crate::automata::emptiness::{self, Warning};
-use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
+pub use crate::automata::lazy::Cache;
+use crate::automata::lazy::Lazy;
+use crate::automata::mask::{AovMask, Class, LabelId, State, MAX_AOVS, NFA_STATE_WORDS};
+pub use crate::automata::wide::NfaMatcher;
 use crate::automata::nfa::{Builder, Nfa, Parts};
-use crate::path::{Path, Vertex};
+use crate::path::{Event, Path, Vertex, VertexType};
 use crate::Lpe;
 
 /// Compile-time knobs.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Options {
     /// Most bytes the DFA may take (transition table, per-state masks and construction
-    /// scratch). Over it, the set steps the bitset NFA. Default 16 MiB. `0` forces the
-    /// NFA.
+    /// scratch). Over it, the set is a lazy DFA. Default 16 MiB. `0` forces the lazy
+    /// DFA.
     pub dfa_budget: usize,
+    /// Bytes of transition rows one lazy [`Cache`] may hold (per thread; a row is
+    /// `4 * stride + 40` bytes), cleared whole when full. `0` turns caching off: every
+    /// step of a lazy set runs the bitset NFA. Default 2 MiB. Unused by sets with a DFA.
+    pub lazy_cache: usize,
     /// Most bytes the NFA may take. It needs one follow row per position
     /// (`positions^2 / 8` bytes; over the budget, compilation fails: about 11 000
     /// positions at the default), and steps fast with per-byte tables of `16 KiB *
@@ -74,6 +88,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             dfa_budget: 16 << 20,
+            lazy_cache: 2 << 20,
             nfa_budget: 16 << 20,
             max_path_len: None,
         }
@@ -95,8 +110,8 @@ pub enum CompileError {
         /// [`Options::nfa_budget`].
         budget: usize,
     },
-    /// The DFA exceeds [`Options::dfa_budget`], and the NFA has more positions than a
-    /// [`State`] holds, so the set cannot step the NFA instead either.
+    /// The DFA exceeds [`Options::dfa_budget`], and the NFA has more positions than an
+    /// NFA state of the lazy DFA holds, so the set cannot step lazily either.
     TooManyPositions {
         /// NFA positions, the start included.
         positions: usize,
@@ -167,7 +182,7 @@ pub struct AovSet {
 enum Engine {
     Dfa(Dfa),
     /// Over the DFA budget.
-    Nfa(Nfa),
+    Lazy(Lazy),
 }
 
 impl AovSet {
@@ -198,11 +213,15 @@ impl AovSet {
         let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
         let warnings = emptiness::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
         let nfa_positions = nfa.positions;
+        let classes = alphabet.class_count();
         Ok(AovSet {
             names,
             lpes,
             alphabet,
-            engine: dfa.map_or(Engine::Nfa(nfa), Engine::Dfa),
+            engine: match dfa {
+                Some(d) => Engine::Dfa(d),
+                None => Engine::Lazy(Lazy::new(nfa, classes, opts.lazy_cache)),
+            },
             nfa_positions,
             warnings,
         })
@@ -250,17 +269,33 @@ impl AovSet {
     #[inline]
     pub fn start(&self) -> State {
         match &self.engine {
-            Engine::Dfa(d) => State::id(d.start()),
-            // The NFA start: position 0 alone, bit 0 of word 0.
-            Engine::Nfa(_) => State::id(1),
+            Engine::Dfa(d) => State(d.start()),
+            // The registry's id of the NFA start (position 0 alone).
+            Engine::Lazy(_) => State(1),
         }
     }
 
     /// The class of a vertex: compute it once per material lobe and step with
-    /// [`AovSet::step_class`].
+    /// [`AovSet::step_class`]. Hashes the label; [`AovSet::classify_interned`] does not.
     #[inline]
     pub fn classify(&self, v: &Vertex) -> Class {
         self.alphabet.classify(v)
+    }
+
+    /// The id of a vertex label (or of no label) for [`AovSet::classify_interned`]:
+    /// intern each label of a scene once, at load. Labels no expression mentions all
+    /// get one id.
+    pub fn label_id(&self, label: Option<&str>) -> LabelId {
+        self.alphabet.label_id(label)
+    }
+
+    /// The class of a vertex given by its parts and an interned label: index arithmetic
+    /// and table loads, no hashing. Same answer as [`AovSet::classify`] on the vertex. An
+    /// event on `C`, `L` or `O` is ignored; `R`/`T` without an event or a label id of
+    /// another set give some class, never a panic.
+    #[inline]
+    pub fn classify_interned(&self, ty: VertexType, event: Option<Event>, label: LabelId) -> Class {
+        self.alphabet.classify_interned(ty, event, label)
     }
 
     /// One vertex.
@@ -270,39 +305,68 @@ impl AovSet {
     }
 
     /// One vertex, already classified. A class or state from another set gives an
-    /// unspecified state, never a panic.
+    /// unspecified state, never a panic. On a lazy set (no DFA) this goes through a
+    /// per-thread cache; [`AovSet::step_with`] with a [`Cache`] of the caller's is faster.
     #[inline]
     pub fn step_class(&self, s: State, c: Class) -> State {
         match &self.engine {
-            Engine::Dfa(d) => State::id(d.next(s.0[0] as u32, c.0)),
-            Engine::Nfa(n) => Self::step_nfa(n, s, c),
+            Engine::Dfa(d) => State(d.next(s.0, c.0)),
+            Engine::Lazy(l) => l.step_local(s, c),
         }
-    }
-
-    /// Out of line so that the DFA step above stays small enough to inline into the
-    /// caller's loop.
-    #[inline(never)]
-    fn step_nfa(nfa: &Nfa, s: State, c: Class) -> State {
-        let mut next = [0u64; NFA_STATE_WORDS];
-        nfa.step(&s.0, c.index(), &mut next);
-        State(next)
     }
 
     /// The AOVs that match a path ending in state `s`.
     #[inline]
     pub fn matches(&self, s: State) -> AovMask {
         match &self.engine {
-            Engine::Dfa(d) => d.matches(s.0[0] as u32),
-            Engine::Nfa(n) => n.matches(&s.0),
+            Engine::Dfa(d) => d.matches(s.0),
+            Engine::Lazy(l) => l.matches_local(s),
         }
     }
 
-    /// No continuation of the path can match any AOV.
+    /// No continuation of the path can match any AOV: state 0 in every set.
     #[inline]
     pub fn is_dead(&self, s: State) -> bool {
+        s == State::DEAD
+    }
+
+    /// A cache for stepping this set with [`AovSet::step_with`]: one per thread. Sized by
+    /// [`Options::lazy_cache`]; holds nothing for a set with a DFA.
+    pub fn cache(&self) -> Cache {
         match &self.engine {
-            Engine::Dfa(_) => s.0[0] == 0,
-            Engine::Nfa(_) => s.0 == [0; NFA_STATE_WORDS],
+            Engine::Dfa(_) => Cache::empty(),
+            Engine::Lazy(l) => l.cache(),
+        }
+    }
+
+    /// [`AovSet::step_class`] through the caller's cache: on a lazy set, two loads when
+    /// the transition is cached. A cache of another set is reset for this one.
+    #[inline]
+    pub fn step_with(&self, cache: &mut Cache, s: State, c: Class) -> State {
+        match &self.engine {
+            Engine::Dfa(d) => State(d.next(s.0, c.0)),
+            Engine::Lazy(l) => l.step(cache, s, c),
+        }
+    }
+
+    /// [`AovSet::matches`] through the caller's cache.
+    #[inline]
+    pub fn matches_with(&self, cache: &mut Cache, s: State) -> AovMask {
+        match &self.engine {
+            Engine::Dfa(d) => d.matches(s.0),
+            Engine::Lazy(l) => l.matches(cache, s),
+        }
+    }
+
+    /// The bitset NFA of a lazy set, stepped on its wide state without registry or
+    /// cache; `None` for a set with a DFA (which drops its NFA).
+    pub fn nfa(&self) -> Option<NfaMatcher<'_>> {
+        match &self.engine {
+            Engine::Dfa(_) => None,
+            Engine::Lazy(l) => Some(NfaMatcher {
+                nfa: l.nfa(),
+                alphabet: &self.alphabet,
+            }),
         }
     }
 
@@ -346,7 +410,7 @@ impl AovSet {
         self.alphabet.class_count()
     }
 
-    /// Whether the set steps a DFA (else the bitset NFA: over the DFA budget).
+    /// Whether the set steps an eager DFA (else a lazy one: over the DFA budget).
     pub fn uses_dfa(&self) -> bool {
         matches!(self.engine, Engine::Dfa(_))
     }
@@ -355,7 +419,16 @@ impl AovSet {
     pub fn dfa_states(&self) -> Option<usize> {
         match &self.engine {
             Engine::Dfa(d) => Some(d.state_count()),
-            Engine::Nfa(_) => None,
+            Engine::Lazy(_) => None,
+        }
+    }
+
+    /// NFA states a lazy set has determinized so far (dead and start included), across
+    /// all threads; `None` for a set with a DFA.
+    pub fn lazy_states(&self) -> Option<usize> {
+        match &self.engine {
+            Engine::Dfa(_) => None,
+            Engine::Lazy(l) => Some(l.registered()),
         }
     }
 
@@ -369,7 +442,7 @@ impl AovSet {
         self.alphabet.memory_bytes()
             + match &self.engine {
                 Engine::Dfa(d) => d.memory_bytes(),
-                Engine::Nfa(n) => n.memory_bytes(),
+                Engine::Lazy(l) => l.memory_bytes(),
             }
     }
 

@@ -4,6 +4,9 @@
 //! - `alphabet`: vertices folded into the classes the compiled atoms can tell apart;
 //! - `nfa`: the bitset Glushkov NFA of all AOVs at once;
 //! - `dfa`: the minimized dense DFA built from it, when it fits its budget;
+//! - [`lazy`]: the lazy DFA of sets over that budget (a registry of NFA states, per-thread
+//!   transition caches);
+//! - [`wide`]: the bitset NFA stepped on its wide state, behind `PathMatcher`;
 //! - `shape`: small DFAs over vertex groups (camera, scatter, emitter) that searches run in
 //!   product with, so they visit only sequences of a path's shape;
 //! - `emptiness`: which AOVs can match no path, a search on the NFA alone (no DFA, no
@@ -14,6 +17,8 @@
 pub(crate) mod alphabet;
 pub(crate) mod dfa;
 pub(crate) mod emptiness;
+pub mod lazy;
 pub mod mask;
 pub(crate) mod nfa;
 pub(crate) mod shape;
+pub mod wide;
