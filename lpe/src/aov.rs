@@ -170,19 +170,14 @@ pub struct AovSet {
     names: Vec<String>,
     lpes: Vec<Lpe>,
     alphabet: Alphabet,
-    engine: Engine,
+    /// The eager DFA; empty (no states) for a lazy set, so that a step of a lazy set
+    /// misses the table and takes the lazy path: the DFA step has no other branch.
+    dfa: Dfa,
+    /// Over the DFA budget: the lazy DFA.
+    lazy: Option<Lazy>,
     /// NFA positions (the start included), kept for reporting once the NFA is dropped.
     nfa_positions: usize,
     warnings: Vec<Warning>,
-}
-
-/// What a set steps. The NFA only serves to build the DFA, so a set with a DFA drops it
-/// (with its follow tables, often the larger of the two).
-#[derive(Clone, Debug)]
-enum Engine {
-    Dfa(Dfa),
-    /// Over the DFA budget.
-    Lazy(Lazy),
 }
 
 impl AovSet {
@@ -218,10 +213,12 @@ impl AovSet {
             names,
             lpes,
             alphabet,
-            engine: match dfa {
-                Some(d) => Engine::Dfa(d),
-                None => Engine::Lazy(Lazy::new(nfa, classes, opts.lazy_cache)),
-            },
+            // The NFA only serves to build the DFA, so a set with a DFA drops it (with
+            // its follow tables, often the larger of the two).
+            lazy: dfa
+                .is_none()
+                .then(|| Lazy::new(nfa, classes, opts.lazy_cache)),
+            dfa: dfa.unwrap_or_else(Dfa::empty),
             nfa_positions,
             warnings,
         })
@@ -268,10 +265,10 @@ impl AovSet {
     /// The state before any vertex.
     #[inline]
     pub fn start(&self) -> State {
-        match &self.engine {
-            Engine::Dfa(d) => State(d.start()),
+        match &self.lazy {
+            None => State(self.dfa.start()),
             // The registry's id of the NFA start (position 0 alone).
-            Engine::Lazy(_) => State(1),
+            Some(_) => State(1),
         }
     }
 
@@ -309,18 +306,18 @@ impl AovSet {
     /// per-thread cache; [`AovSet::step_with`] with a [`Cache`] of the caller's is faster.
     #[inline]
     pub fn step_class(&self, s: State, c: Class) -> State {
-        match &self.engine {
-            Engine::Dfa(d) => State(d.next(s.0, c.0)),
-            Engine::Lazy(l) => l.step_local(s, c),
+        match self.dfa.next(s.0, c.0) {
+            Some(n) => State(n),
+            None => self.step_miss(s, c),
         }
     }
 
     /// The AOVs that match a path ending in state `s`.
     #[inline]
     pub fn matches(&self, s: State) -> AovMask {
-        match &self.engine {
-            Engine::Dfa(d) => d.matches(s.0),
-            Engine::Lazy(l) => l.matches_local(s),
+        match self.dfa.matches(s.0) {
+            Some(m) => m,
+            None => self.matches_miss(s),
         }
     }
 
@@ -333,9 +330,9 @@ impl AovSet {
     /// A cache for stepping this set with [`AovSet::step_with`]: one per thread. Sized by
     /// [`Options::lazy_cache`]; holds nothing for a set with a DFA.
     pub fn cache(&self) -> Cache {
-        match &self.engine {
-            Engine::Dfa(_) => Cache::empty(),
-            Engine::Lazy(l) => l.cache(),
+        match &self.lazy {
+            None => Cache::empty(),
+            Some(l) => l.cache(),
         }
     }
 
@@ -343,30 +340,47 @@ impl AovSet {
     /// the transition is cached. A cache of another set is reset for this one.
     #[inline]
     pub fn step_with(&self, cache: &mut Cache, s: State, c: Class) -> State {
-        match &self.engine {
-            Engine::Dfa(d) => State(d.next(s.0, c.0)),
-            Engine::Lazy(l) => l.step(cache, s, c),
+        match (self.dfa.next(s.0, c.0), &self.lazy) {
+            (Some(n), _) => State(n),
+            (None, Some(l)) => l.step(cache, s, c),
+            (None, None) => State::DEAD,
         }
     }
 
     /// [`AovSet::matches`] through the caller's cache.
     #[inline]
     pub fn matches_with(&self, cache: &mut Cache, s: State) -> AovMask {
-        match &self.engine {
-            Engine::Dfa(d) => d.matches(s.0),
-            Engine::Lazy(l) => l.matches(cache, s),
+        match (self.dfa.matches(s.0), &self.lazy) {
+            (Some(m), _) => m,
+            (None, Some(l)) => l.matches(cache, s),
+            (None, None) => AovMask::EMPTY,
         }
     }
 
     /// The bitset NFA of a lazy set, stepped on its wide state without registry or
     /// cache; `None` for a set with a DFA (which drops its NFA).
     pub fn nfa(&self) -> Option<NfaMatcher<'_>> {
-        match &self.engine {
-            Engine::Dfa(_) => None,
-            Engine::Lazy(l) => Some(NfaMatcher {
-                nfa: l.nfa(),
-                alphabet: &self.alphabet,
-            }),
+        self.lazy.as_ref().map(|l| NfaMatcher {
+            nfa: l.nfa(),
+            alphabet: &self.alphabet,
+        })
+    }
+
+    /// A state or class out of the DFA's table: the lazy DFA's step, or (a state or
+    /// class of another set) the dead state.
+    #[inline(never)]
+    fn step_miss(&self, s: State, c: Class) -> State {
+        match &self.lazy {
+            Some(l) => l.step_local(s, c),
+            None => State::DEAD,
+        }
+    }
+
+    #[inline(never)]
+    fn matches_miss(&self, s: State) -> AovMask {
+        match &self.lazy {
+            Some(l) => l.matches_local(s),
+            None => AovMask::EMPTY,
         }
     }
 
@@ -412,24 +426,18 @@ impl AovSet {
 
     /// Whether the set steps an eager DFA (else a lazy one: over the DFA budget).
     pub fn uses_dfa(&self) -> bool {
-        matches!(self.engine, Engine::Dfa(_))
+        self.lazy.is_none()
     }
 
     /// DFA states (dead state included), if the set has a DFA.
     pub fn dfa_states(&self) -> Option<usize> {
-        match &self.engine {
-            Engine::Dfa(d) => Some(d.state_count()),
-            Engine::Lazy(_) => None,
-        }
+        self.lazy.is_none().then(|| self.dfa.state_count())
     }
 
     /// NFA states a lazy set has determinized so far (dead and start included), across
     /// all threads; `None` for a set with a DFA.
     pub fn lazy_states(&self) -> Option<usize> {
-        match &self.engine {
-            Engine::Dfa(_) => None,
-            Engine::Lazy(l) => Some(l.registered()),
-        }
+        self.lazy.as_ref().map(Lazy::registered)
     }
 
     /// NFA positions (the start included).
@@ -440,9 +448,10 @@ impl AovSet {
     /// Bytes held by the automaton the set steps and by the alphabet tables.
     pub fn memory_bytes(&self) -> usize {
         self.alphabet.memory_bytes()
-            + match &self.engine {
-                Engine::Dfa(d) => d.memory_bytes(),
-                Engine::Lazy(l) => l.memory_bytes(),
+            + self.dfa.memory_bytes()
+            + match &self.lazy {
+                None => 0,
+                Some(l) => l.memory_bytes(),
             }
     }
 

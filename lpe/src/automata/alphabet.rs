@@ -209,6 +209,8 @@ impl LabelTable {
 #[derive(Clone, Debug)]
 pub(crate) struct Alphabet {
     labels: LabelTable,
+    /// Label symbols per `(type, event)`: none, the interned labels, OTHER.
+    label_syms: usize,
     /// Raw symbol -> class. Index `type_event * label_syms + label`, where label 0 is
     /// none, `1..=k` the interned labels and `k + 1` OTHER.
     raw_to_class: Vec<u32>,
@@ -281,6 +283,7 @@ impl Alphabet {
         }
         Alphabet {
             labels,
+            label_syms,
             raw_to_class,
             class_atoms,
             representatives,
@@ -321,7 +324,7 @@ impl Alphabet {
 
     /// The class of `(type, event, label)` from a label interned beforehand: index
     /// arithmetic and two table loads, no hashing. An event on `C`, `L` or `O` is
-    /// ignored; a label id of another set clamps to OTHER.
+    /// ignored; a label id of another set gives some class, never a panic.
     #[inline]
     pub(crate) fn classify_interned(
         &self,
@@ -329,8 +332,7 @@ impl Alphabet {
         event: Option<Event>,
         label: LabelId,
     ) -> Class {
-        let label_syms = self.labels.len() + 2;
-        let raw = type_event_index(ty, event) * label_syms + (label.0 as usize).min(label_syms - 1);
+        let raw = type_event_index(ty, event) * self.label_syms + label.0 as usize;
         Class(self.raw_to_class.get(raw).copied().unwrap_or(0))
     }
 
