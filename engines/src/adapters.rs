@@ -78,6 +78,7 @@ impl Engine for BitsetNfa {
             exprs,
             &Options {
                 dfa_budget: 0,
+                lazy_cache: 0,
                 ..Options::default()
             },
         )

@@ -50,7 +50,7 @@ use std::fmt;
 
 use crate::ast::Atom;
 use crate::automata::alphabet::Alphabet;
-use crate::automata::dfa::Dfa;
+use crate::automata::dfa::{Dfa, MAX_EAGER_STATES};
 use crate::automata::emptiness::{self, Warning};
 pub use crate::automata::lazy::Cache;
 use crate::automata::lazy::Lazy;
@@ -193,7 +193,15 @@ impl AovSet {
         }
         let (alphabet, nfa, atoms) = Self::build_nfa(aovs, opts)?;
         let dfa = if opts.dfa_budget > 0 {
-            Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget)
+            // Past `MAX_EAGER_STATES`, a set the lazy DFA can step goes lazy rather than
+            // spend its budget's worth of construction first; a wider one has no other
+            // way to step and gets the whole budget.
+            let max_states = if nfa.words() <= NFA_STATE_WORDS {
+                MAX_EAGER_STATES
+            } else {
+                usize::MAX
+            };
+            Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget, max_states)
         } else {
             None
         };

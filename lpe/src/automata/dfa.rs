@@ -18,7 +18,8 @@ use crate::automata::mask::AovMask;
 use crate::automata::nfa::Nfa;
 
 /// Most states the subset construction builds before it gives up and leaves the set to
-/// the lazy DFA, whatever the budget: a DFA this large takes milliseconds to build
+/// the lazy DFA, whatever the budget (when the set can step lazily at all; the caller
+/// passes it to [`Dfa::build`]): a DFA this large takes milliseconds to build
 /// (`C.*D.{12}[LO]`, 8 195 states, fits), and a blow-up set such as `C.*D.{20}[LO]`
 /// (2^21 states) must not spend a budget's worth of construction before going lazy.
 pub(crate) const MAX_EAGER_STATES: usize = 1 << 14;
@@ -45,15 +46,14 @@ impl Dfa {
     }
 
     /// Determinizes `nfa` over `classes` classes, or `None` if the DFA would exceed
-    /// `budget` bytes.
-    pub(crate) fn build(nfa: &Nfa, classes: usize, budget: usize) -> Option<Dfa> {
+    /// `budget` bytes or `max_states` states.
+    pub(crate) fn build(nfa: &Nfa, classes: usize, budget: usize, max_states: usize) -> Option<Dfa> {
         let stride = classes.next_power_of_two();
         let cost = Self::state_cost(stride, nfa.words());
-        // Premultiplied ids must fit a `u32`; past `MAX_EAGER_STATES` the set is
-        // likelier a blow-up than a large DFA, and the lazy DFA serves it without the wait.
+        // Premultiplied ids must fit a `u32`.
         let max_states = (budget / cost)
             .min(u32::MAX as usize / stride)
-            .min(MAX_EAGER_STATES);
+            .min(max_states);
         let w = nfa.words();
         // Subset construction. Index 0 is the empty set: the dead state.
         let mut sets: Vec<Box<[u64]>> = vec![vec![0u64; w].into_boxed_slice()];
