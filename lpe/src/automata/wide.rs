@@ -1,11 +1,11 @@
-//! The bitset NFA behind [`PathMatcher`] with its wide state ([`NfaState`], up to
+//! The bitset NFA stepped on its wide state ([`NfaState`], up to
 //! `64 * NFA_STATE_WORDS` positions): no registry, no cache, no lock, for callers that
 //! want the plain NFA (the benchmark's NFA row, a path record that can afford 32 bytes).
+//! `crate::matcher` puts it behind `PathMatcher`.
 
 use crate::automata::alphabet::Alphabet;
 use crate::automata::mask::{AovMask, Class, NfaState, NFA_STATE_WORDS};
 use crate::automata::nfa::Nfa;
-use crate::matcher::PathMatcher;
 use crate::path::Vertex;
 
 /// A lazily stepped set's bitset NFA, stepped on [`NfaState`]s. Obtained from
@@ -16,37 +16,39 @@ pub struct NfaMatcher<'a> {
     pub(crate) alphabet: &'a Alphabet,
 }
 
-impl PathMatcher for NfaMatcher<'_> {
-    type Class = Class;
-    type State = NfaState;
-
+impl NfaMatcher<'_> {
+    /// The class of a vertex.
     #[inline]
-    fn classify(&self, v: &Vertex) -> Class {
+    pub fn classify(&self, v: &Vertex) -> Class {
         self.alphabet.classify(v)
     }
 
+    /// The state before any vertex: position 0 alone.
     #[inline]
-    fn start(&self) -> NfaState {
+    pub fn start(&self) -> NfaState {
         let mut s = [0u64; NFA_STATE_WORDS];
         s[0] = 1;
         NfaState(s)
     }
 
+    /// The state after one more vertex.
     #[inline]
-    fn step(&self, s: NfaState, c: Class) -> NfaState {
+    pub fn step(&self, s: NfaState, c: Class) -> NfaState {
         let w = self.nfa.words();
         let mut next = [0u64; NFA_STATE_WORDS];
         self.nfa.step(&s.0[..w], c.index(), &mut next[..w]);
         NfaState(next)
     }
 
+    /// The AOVs matching a path ending in `s`.
     #[inline]
-    fn matches(&self, s: NfaState) -> AovMask {
+    pub fn matches(&self, s: NfaState) -> AovMask {
         self.nfa.matches(&s.0[..self.nfa.words()])
     }
 
+    /// No active position: no continuation can match.
     #[inline]
-    fn is_dead(&self, s: NfaState) -> bool {
+    pub fn is_dead(&self, s: NfaState) -> bool {
         s.0 == [0; NFA_STATE_WORDS]
     }
 }
