@@ -55,8 +55,8 @@ use crate::automata::emptiness::{self, Warning};
 pub use crate::automata::lazy::Cache;
 use crate::automata::lazy::Lazy;
 use crate::automata::mask::{AovMask, Class, LabelId, State, MAX_AOVS, NFA_STATE_WORDS};
-pub use crate::automata::wide::NfaMatcher;
 use crate::automata::nfa::{Builder, Nfa, Parts};
+pub use crate::automata::wide::NfaMatcher;
 use crate::path::{Event, Path, Vertex, VertexType};
 use crate::Lpe;
 
@@ -175,6 +175,8 @@ pub struct AovSet {
     dfa: Dfa,
     /// Over the DFA budget: the lazy DFA.
     lazy: Option<Lazy>,
+    /// The DFA's start, or the registry's id of the NFA start (position 0 alone).
+    start: State,
     /// NFA positions (the start included), kept for reporting once the NFA is dropped.
     nfa_positions: usize,
     warnings: Vec<Warning>,
@@ -223,6 +225,7 @@ impl AovSet {
             alphabet,
             // The NFA only serves to build the DFA, so a set with a DFA drops it (with
             // its follow tables, often the larger of the two).
+            start: dfa.as_ref().map_or(State(1), |d| State(d.start())),
             lazy: dfa
                 .is_none()
                 .then(|| Lazy::new(nfa, classes, opts.lazy_cache)),
@@ -273,11 +276,7 @@ impl AovSet {
     /// The state before any vertex.
     #[inline]
     pub fn start(&self) -> State {
-        match &self.lazy {
-            None => State(self.dfa.start()),
-            // The registry's id of the NFA start (position 0 alone).
-            Some(_) => State(1),
-        }
+        self.start
     }
 
     /// The class of a vertex: compute it once per material lobe and step with

@@ -116,7 +116,11 @@ fn a_cache_moved_to_another_set_answers_for_it() {
             let s = p.vertices().iter().fold(set.start(), |s, v| {
                 set.step_with(&mut cache, s, set.classify(v))
             });
-            assert_eq!(set.matches_with(&mut cache, s), reference_mask(exprs, p), "{p}");
+            assert_eq!(
+                set.matches_with(&mut cache, s),
+                reference_mask(exprs, p),
+                "{p}"
+            );
         }
     }
     // A clone has its own registry: the original's cache is reset for it, not misread.

@@ -464,7 +464,7 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
             Some(_) => {
                 r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
                 r.note = format!(
-                    "s = table[s + class], {} rows of {}",
+                    "s = table[s + class], {} rows of {}, mask read at the end",
                     fast.dfa_states().unwrap_or(0),
                     fast.class_count().next_power_of_two()
                 );
@@ -501,10 +501,7 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
                 r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
                 r.compile = Some(nfa_set_time);
                 r.memory = Some(set.memory_bytes());
-                r.note = format!(
-                    "{} NFA states determinized",
-                    set.lazy_states().unwrap_or(0)
-                );
+                r.note = format!("{} NFA states determinized", set.lazy_states().unwrap_or(0));
                 lazy_rows.push(r);
                 if set.nfa().is_some() {
                     r_nfa.ns_per_vertex = times.next().map(|t| ns(t, vertices));

@@ -47,7 +47,12 @@ impl Dfa {
 
     /// Determinizes `nfa` over `classes` classes, or `None` if the DFA would exceed
     /// `budget` bytes or `max_states` states.
-    pub(crate) fn build(nfa: &Nfa, classes: usize, budget: usize, max_states: usize) -> Option<Dfa> {
+    pub(crate) fn build(
+        nfa: &Nfa,
+        classes: usize,
+        budget: usize,
+        max_states: usize,
+    ) -> Option<Dfa> {
         let stride = classes.next_power_of_two();
         let cost = Self::state_cost(stride, nfa.words());
         // Premultiplied ids must fit a `u32`.

@@ -138,7 +138,10 @@ impl Lazy {
         {
             return State(id);
         }
-        let mut r = self.registry.write().unwrap_or_else(PoisonError::into_inner);
+        let mut r = self
+            .registry
+            .write()
+            .unwrap_or_else(PoisonError::into_inner);
         // Another thread may have interned it between the two locks.
         let next = r.subsets.len() as u32;
         let id = *r.ids.entry(sub).or_insert(next);
@@ -189,7 +192,7 @@ impl Lazy {
     /// One step through this thread's cache (for callers without a [`Cache`] of their
     /// own: the `State` API and [`crate::PathMatcher`]). One cache per thread, adopted by
     /// the set stepped last: a thread alternating between two lazy sets refills it.
-    #[inline(never)]
+    #[inline]
     pub(crate) fn step_local(&self, s: State, c: Class) -> State {
         if self.cache_budget == 0 {
             return self.step_uncached(s, c);
@@ -201,7 +204,7 @@ impl Lazy {
     }
 
     /// [`Lazy::matches`] through this thread's cache.
-    #[inline(never)]
+    #[inline]
     pub(crate) fn matches_local(&self, s: State) -> AovMask {
         if self.cache_budget == 0 {
             return self.matches_uncached(s);
@@ -283,7 +286,9 @@ impl Lazy {
         let row = (cache.masks.len() << self.shift) as u32;
         cache.row_of[id] = row;
         cache.with_rows.push(s.0);
-        cache.trans.resize(cache.trans.len() + (1 << self.shift), NONE);
+        cache
+            .trans
+            .resize(cache.trans.len() + (1 << self.shift), NONE);
         cache.masks.push(self.matches_uncached(s));
         row
     }
