@@ -334,6 +334,16 @@ impl AovSet {
         s == State::DEAD
     }
 
+    /// One step of many independent paths, for wavefront renderers: `states[i]` steps on
+    /// `classes[i]` (pairs past the shorter slice are left alone). On a DFA the loads of
+    /// different paths overlap, where one path's steps wait on each other.
+    #[inline]
+    pub fn step_batch(&self, states: &mut [State], classes: &[Class]) {
+        for (s, &c) in states.iter_mut().zip(classes) {
+            *s = self.step_class(*s, c);
+        }
+    }
+
     /// A cache for stepping this set with [`AovSet::step_with`]: one per thread. Sized by
     /// [`Options::lazy_cache`]; holds nothing for a set with a DFA.
     pub fn cache(&self) -> Cache {

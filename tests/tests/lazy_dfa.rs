@@ -6,7 +6,8 @@
 //! - one cache handed from one set to another answers for the new set;
 //! - threads stepping one set concurrently, each with its own cache, agree;
 //! - the wide-state NFA matcher and the hash-free interned classification agree;
-//! - a blow-up set goes lazy without a long eager attempt first.
+//! - a blow-up set goes lazy without a long eager attempt first;
+//! - `step_batch` (a wavefront of paths, one step each) answers per path.
 
 use lpe::macros::BASIC;
 use lpe::rng::SplitMix64;
@@ -205,5 +206,39 @@ fn blow_up_sets_go_lazy_at_once_and_answer_right() {
     assert!(set.match_path(&p).contains(0));
     for p in random_paths(4, 200, 30) {
         assert_eq!(set.match_path(&p), reference_mask(&exprs, &p), "{p}");
+    }
+}
+
+#[test]
+fn batch_steps_answer_per_path() {
+    let exprs = exprs();
+    let paths = random_paths(5, 300, 10);
+    for opts in [Options::default(), lazy(1)] {
+        let set = AovSet::compile_with(&named(&exprs), &opts).unwrap();
+        let mut states = vec![set.start(); paths.len()];
+        let longest = paths.iter().map(Path::len).max().unwrap();
+        for d in 0..longest {
+            // Paths past their end step on nothing: the batch's classes are the alive
+            // paths' only, so a shorter class slice leaves the rest alone.
+            let alive: Vec<usize> = (0..paths.len()).filter(|&i| paths[i].len() > d).collect();
+            let mut batch: Vec<State> = alive.iter().map(|&i| states[i]).collect();
+            let classes: Vec<Class> = alive
+                .iter()
+                .map(|&i| set.classify(&paths[i].vertices()[d]))
+                .collect();
+            batch.push(set.start());
+            set.step_batch(&mut batch, &classes);
+            assert_eq!(
+                batch.last(),
+                Some(&set.start()),
+                "past the classes: untouched"
+            );
+            for (&i, &s) in alive.iter().zip(&batch) {
+                states[i] = s;
+            }
+        }
+        for (p, &s) in paths.iter().zip(&states) {
+            assert_eq!(set.matches(s), reference_mask(&exprs, p), "{p}");
+        }
     }
 }

@@ -351,6 +351,8 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
             });
             Some(fast.matches(s))
         });
+        let wavefronts: Vec<shapes::Wavefront> =
+            fast_classes.iter().map(shapes::Wavefront::new).collect();
         let bare = fast
             .dfa_states()
             .map(|n| shapes::BareTable::new(n, fast.class_count(), cfg.seed));
@@ -395,6 +397,7 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
         if let Some(t) = &bare {
             jobs.push(Box::new(|c| shapes::run_bare(t, &fast_classes[c])));
         }
+        jobs.push(Box::new(|c| shapes::run_batch(&fast, &wavefronts[c])));
         if !fast.uses_dfa() {
             let mut cache = fast.cache();
             let (set, classes) = (&fast, &fast_classes);
@@ -483,6 +486,17 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
             }
         }
         wrows.extend(shaped);
+        wrows.push(r);
+        let mut r = row(w.name, "batch step, wavefront");
+        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+        r.note = "step_batch over the paths alive at each depth".into();
+        let one = wrows
+            .iter()
+            .find(|r| r.engine == "renderer-shaped caller")
+            .and_then(|r| r.ns_per_vertex);
+        if let (Some(x), Some(one)) = (r.ns_per_vertex, one) {
+            r.note = format!("{}; {:.2}x the renderer-shaped caller", r.note, x / one);
+        }
         wrows.push(r);
         let mut lazy_rows = Vec::new();
         if !fast.uses_dfa() {

@@ -146,3 +146,40 @@ pub fn run_cached(set: &AovSet, cache: &mut Cache, classes: &Flat<Class>) -> u64
     }
     acc
 }
+
+/// The paths of a chunk as a wavefront renderer holds them: sorted longest first, so that
+/// the paths still alive at depth `d` are the first few, with each depth's classes in
+/// one array (what a shading stage hands the matcher).
+pub struct Wavefront {
+    /// Per depth, the classes of the paths alive at it, in sorted order.
+    depths: Vec<Vec<Class>>,
+    paths: usize,
+}
+
+impl Wavefront {
+    /// The wavefront of one chunk of classified paths.
+    pub fn new(classes: &Flat<Class>) -> Wavefront {
+        let mut paths: Vec<&[Class]> = classes.paths().collect();
+        paths.sort_by_key(|p| std::cmp::Reverse(p.len()));
+        let longest = paths.first().map_or(0, |p| p.len());
+        let depths = (0..longest)
+            .map(|d| paths.iter().map_while(|p| p.get(d).copied()).collect())
+            .collect();
+        Wavefront {
+            depths,
+            paths: paths.len(),
+        }
+    }
+}
+
+/// Every path of the wavefront one depth at a time through [`AovSet::step_batch`], the
+/// masks read at the end.
+pub fn run_batch(set: &AovSet, wf: &Wavefront) -> u64 {
+    let mut states = vec![set.start(); wf.paths];
+    for d in &wf.depths {
+        set.step_batch(&mut states[..d.len()], d);
+    }
+    states
+        .iter()
+        .fold(0u64, |acc, &s| acc.wrapping_add(digest(set.matches(s))))
+}
