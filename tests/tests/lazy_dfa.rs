@@ -182,10 +182,17 @@ fn the_wide_nfa_and_interned_classes_agree_with_the_reference() {
     assert_ne!(dfa_set.label_id(Some("floor")), dfa_set.label_id(None));
     let small = AovSet::compile(&named(&[parse("CL").unwrap()])).unwrap();
     let foreign = dfa_set.label_id(Some("glass"));
-    for set in [&small, &lazy_set] {
+    // With a cache too: a foreign id must not size the cache's per-id index.
+    let cached = AovSet::compile_with(&named(&exprs), &lazy(1 << 20)).unwrap();
+    for set in [&small, &lazy_set, &cached] {
         let c = set.classify_interned(lpe::VertexType::L, None, foreign);
         let s = set.step_class(State::from_u32(u32::MAX - 3), c);
         let _ = (set.matches(s), set.is_dead(s));
+        let mut cache = set.cache();
+        let s = set.step_with(&mut cache, State::from_u32(u32::MAX - 3), c);
+        let _ = set.matches_with(&mut cache, State::from_u32(u32::MAX - 7));
+        let _ = (set.matches_with(&mut cache, s), set.is_dead(s));
+        assert!(cache.memory_bytes() < 1 << 20, "{}", cache.memory_bytes());
     }
 }
 

@@ -236,7 +236,7 @@ impl Lazy {
     #[inline(never)]
     fn fill(&self, cache: &mut Cache, s: State, c: Class) -> State {
         let next = self.step_uncached(s, c);
-        if self.cache_budget == 0 || c.index() >= self.classes {
+        if !self.cacheable(s) || c.index() >= self.classes {
             return next;
         }
         let row = self.row(cache, s);
@@ -259,11 +259,17 @@ impl Lazy {
 
     #[inline(never)]
     fn matches_fill(&self, cache: &mut Cache, s: State) -> AovMask {
-        if self.cache_budget == 0 {
+        if !self.cacheable(s) {
             return self.matches_uncached(s);
         }
         let row = self.row(cache, s);
         cache.masks[(row >> self.shift) as usize]
+    }
+
+    /// Whether `s` may get a cache row: caching is on and `s` is a registry id (a state
+    /// of another set could be any `u32`, and `row_of` is indexed by id).
+    fn cacheable(&self, s: State) -> bool {
+        self.cache_budget > 0 && (s.0 as usize) < self.registered()
     }
 
     /// The row of `s` in `cache`, made (clearing a full cache first) if it has none.
