@@ -266,7 +266,7 @@ impl AovSet {
         let nfa_positions = nfa.positions;
         // OSL sets have several times RenderMan's classes, so a blow-up reaches a large
         // budget slowly (OSL's own ReDoS expression: a second for 16 MiB): attempt the
-        // eager DFA within a smaller budget, and step the NFA past it.
+        // eager DFA within a smaller budget, and go lazy past it.
         let attempt = Options {
             dfa_budget: opts.dfa_budget.min(osl::DFA_ATTEMPT_BUDGET),
             ..opts.clone()
