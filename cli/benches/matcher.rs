@@ -9,7 +9,7 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use lpe::{AovSet, Options};
-use lpe_cli::bench::{self, baseline, sample, workload};
+use lpe_cli::bench::{self, baseline, sample, shapes, workload};
 
 /// Small enough for quick runs, large enough to leave the caches' comfort zone no more
 /// than a renderer's tile does.
@@ -34,11 +34,26 @@ fn matching(c: &mut Criterion) {
             dfa_budget: 0,
             ..Options::default()
         };
+        g.bench_function("renderer-shaped caller", |b| {
+            b.iter(|| shapes::run_renderer(&fast, &classes))
+        });
+        if let Some(n) = fast.dfa_states() {
+            let bare = shapes::BareTable::new(n, fast.class_count(), 1);
+            g.bench_function("bare dependent-load chain", |b| {
+                b.iter(|| shapes::run_bare(&bare, &classes))
+            });
+        }
         if let Ok(nfa) = AovSet::compile_with(&w.aovs, &nfa_opts) {
             let classes = bench::classify(&nfa, &paths);
-            g.bench_function("bitset NFA, on classes", |b| {
-                b.iter(|| bench::run_classes(&nfa, &classes))
+            let mut cache = nfa.cache();
+            g.bench_function("lazy DFA, own cache", |b| {
+                b.iter(|| shapes::run_cached(&nfa, &mut cache, &classes))
             });
+            if let Some(wide) = nfa.nfa() {
+                g.bench_function("bitset NFA, on classes", |b| {
+                    b.iter(|| shapes::run_renderer(&wide, &classes))
+                });
+            }
         }
         let enc = baseline::Encoding::new(&w.aovs).expect("workload labels fit a byte");
         let bytes = bench::encode(&enc, &paths);

@@ -106,9 +106,11 @@ fn compile_osl_set(
 }
 
 /// The bitset NFA alone: a DFA budget of 0.
+/// Every step on the bitset NFA: no DFA, and no lazy cache to remember transitions.
 fn nfa_only() -> Options {
     Options {
         dfa_budget: 0,
+        lazy_cache: 0,
         ..Options::default()
     }
 }

@@ -4,8 +4,15 @@
 //! 1. the compressed alphabet (module `automata::alphabet`): vertices grouped into [`Class`]es;
 //! 2. one bitset Glushkov NFA holding every AOV's positions (module `automata::nfa`);
 //! 3. a minimized dense DFA over it (module `automata::dfa`), unless that would exceed
-//!    [`Options::dfa_budget`]; then the set steps the NFA instead. Both give the same
-//!    answers (the `fast` and `nfa` engines of the differential harness check that).
+//!    [`Options::dfa_budget`]; then the set is a lazy DFA (module [`crate::automata::lazy`]):
+//!    determinized on demand into per-thread [`Cache`]s. Both give the same answers (the
+//!    `fast` and `nfa` engines of the differential harness check that).
+//!
+//! A [`State`] is one `u32` either way. Sets over the DFA budget step fastest through a
+//! caller-owned [`Cache`] per thread ([`AovSet::cache`], [`AovSet::step_with`],
+//! [`AovSet::matches_with`]); the plain `State` API uses a per-thread cache of its own.
+//! Labels can be interned once ([`AovSet::label_id`]) so that classifying a vertex is
+//! index arithmetic ([`AovSet::classify_interned`]).
 //!
 //! A renderer compiles once, shares the set across threads (`AovSet` is `Send + Sync`,
 //! immutable, lock-free), and per path calls [`AovSet::start`], then [`AovSet::step`] (or
@@ -43,22 +50,29 @@ use std::fmt;
 
 use crate::ast::{Atom, Expr};
 use crate::automata::alphabet::Alphabet;
-use crate::automata::dfa::Dfa;
+use crate::automata::dfa::{Dfa, MAX_EAGER_STATES};
 use crate::automata::emptiness::{self, Warning};
-use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
+pub use crate::automata::lazy::Cache;
+use crate::automata::lazy::Lazy;
+use crate::automata::mask::{AovMask, Class, LabelId, State, MAX_AOVS, NFA_STATE_WORDS};
 use crate::automata::nfa::{Builder, Nfa};
 use crate::automata::visible::Visible;
+pub use crate::automata::wide::NfaMatcher;
 use crate::osl;
-use crate::path::{Path, Vertex};
+use crate::path::{Event, Path, Vertex, VertexType};
 use crate::{Dialect, Lpe};
 
 /// Compile-time knobs.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Options {
     /// Most bytes the DFA may take (transition table, per-state masks and construction
-    /// scratch). Over it, the set steps the bitset NFA. Default 16 MiB. `0` forces the
-    /// NFA.
+    /// scratch). Over it, the set is a lazy DFA. Default 16 MiB. `0` forces the lazy
+    /// DFA.
     pub dfa_budget: usize,
+    /// Bytes of transition rows one lazy [`Cache`] may hold (per thread; a row is
+    /// `4 * stride + 40` bytes), cleared whole when full. `0` turns caching off: every
+    /// step of a lazy set runs the bitset NFA. Default 2 MiB. Unused by sets with a DFA.
+    pub lazy_cache: usize,
     /// Most bytes the NFA may take. It needs one follow row per position
     /// (`positions^2 / 8` bytes; over the budget, compilation fails: about 11 000
     /// positions at the default), and steps fast with per-byte tables of `16 KiB *
@@ -76,6 +90,7 @@ impl Default for Options {
     fn default() -> Self {
         Options {
             dfa_budget: 16 << 20,
+            lazy_cache: 2 << 20,
             nfa_budget: 16 << 20,
             max_path_len: None,
         }
@@ -111,8 +126,8 @@ pub enum CompileError {
         /// [`osl::MAX_VERTEX_STATES`].
         max: usize,
     },
-    /// The DFA exceeds [`Options::dfa_budget`], and the NFA has more positions than a
-    /// [`State`] holds, so the set cannot step the NFA instead either.
+    /// The DFA exceeds [`Options::dfa_budget`], and the NFA has more positions than an
+    /// NFA state of the lazy DFA holds, so the set cannot step lazily either.
     TooManyPositions {
         /// NFA positions, the start included.
         positions: usize,
@@ -181,28 +196,25 @@ pub struct AovSet {
     names: Vec<String>,
     lpes: Vec<Lpe>,
     alphabet: Alphabet,
-    engine: Engine,
+    /// The eager DFA; empty (no states) for a lazy set, so that a step of a lazy set
+    /// misses the table and takes the lazy path: the DFA step has no other branch.
+    dfa: Dfa,
+    /// Over the DFA budget: the lazy DFA.
+    lazy: Option<Lazy>,
+    /// The DFA's start, or the registry's id of the NFA start (position 0 alone).
+    start: State,
     /// NFA positions (the start included), kept for reporting once the NFA is dropped.
     nfa_positions: usize,
     /// With set algebra: the visible masks as formulas over the operands, which the
     /// automata hold as hidden AOVs. `None`: every AOV is its own hidden AOV.
     visible: Option<Visible>,
-    /// A state with no active NFA position is dead (false when a complement then
-    /// matches).
+    /// State 0 is dead: always with a DFA; on a lazy set, where it is the NFA state with
+    /// no active position, unless a complement then matches.
     empty_is_dead: bool,
     warnings: Vec<Warning>,
     /// The OSL side of a set compiled with [`AovSet::compile_osl`] (its `alphabet` is
     /// then an empty RenderMan one).
     osl: Option<Box<osl::Compiled>>,
-}
-
-/// What a set steps. The NFA only serves to build the DFA, so a set with a DFA drops it
-/// (with its follow tables, often the larger of the two).
-#[derive(Clone, Debug)]
-enum Engine {
-    Dfa(Dfa),
-    /// Over the DFA budget.
-    Nfa(Nfa),
 }
 
 impl AovSet {
@@ -253,13 +265,19 @@ impl AovSet {
             first += l.operands().len();
         }
         let nfa_positions = nfa.positions;
-        let empty_is_dead = visible.as_ref().is_none_or(|v| v.none().is_empty());
-        let engine = Self::engine(nfa, alphabet.class_count(), opts, visible.as_ref())?;
+        // A DFA's state 0 is always dead (`Dfa::build`); a lazy set's only without a
+        // complement.
+        let (dfa, lazy, start) = Self::engine(nfa, alphabet.class_count(), opts, visible.as_ref())?;
+        // A DFA's state 0 is always dead (`Dfa::build`); a lazy set's state 0 is the NFA
+        // state with no active position, where a complement `^A` still matches.
+        let empty_is_dead = lazy.is_none() || visible.as_ref().is_none_or(|v| v.none().is_empty());
         Ok(AovSet {
             names,
             lpes,
             alphabet,
-            engine,
+            dfa,
+            lazy,
+            start,
             nfa_positions,
             visible,
             empty_is_dead,
@@ -307,17 +325,19 @@ impl AovSet {
         let nfa_positions = nfa.positions;
         // OSL sets have several times RenderMan's classes, so a blow-up reaches a large
         // budget slowly (OSL's own ReDoS expression: a second for 16 MiB): attempt the
-        // eager DFA within a smaller budget, and step the NFA past it.
+        // eager DFA within a smaller budget, and go lazy past it.
         let attempt = Options {
             dfa_budget: opts.dfa_budget.min(osl::DFA_ATTEMPT_BUDGET),
             ..opts.clone()
         };
-        let engine = Self::engine(nfa, compiled.class_count(), &attempt, None)?;
+        let (dfa, lazy, start) = Self::engine(nfa, compiled.class_count(), &attempt, None)?;
         Ok(AovSet {
             names,
             lpes: Vec::new(),
             alphabet: Alphabet::new(&[], Vec::new()),
-            engine,
+            dfa,
+            lazy,
+            start,
             nfa_positions,
             visible: None,
             empty_is_dead: true,
@@ -326,17 +346,26 @@ impl AovSet {
         })
     }
 
-    /// The automaton a set steps: its DFA when it fits [`Options::dfa_budget`], else the
-    /// NFA (which must then fit a [`State`]).
-    /// With set algebra, `visible` gives the DFA's visible masks.
+    /// The automata a set steps: its eager DFA when it fits [`Options::dfa_budget`] and
+    /// [`MAX_EAGER_STATES`], else a lazy DFA over the NFA (which must then fit a lazy
+    /// state); and the start state.
+    /// With set algebra, `visible` gives the automata's visible masks.
     fn engine(
         nfa: Nfa,
         classes: usize,
         opts: &Options,
         visible: Option<&Visible>,
-    ) -> Result<Engine, CompileError> {
+    ) -> Result<(Dfa, Option<Lazy>, State), CompileError> {
         let dfa = if opts.dfa_budget > 0 {
-            Dfa::build(&nfa, classes, opts.dfa_budget, visible)
+            // Past `MAX_EAGER_STATES`, a set the lazy DFA can step goes lazy rather than
+            // spend its budget's worth of construction first; a wider one has no other
+            // way to step and gets the whole budget.
+            let max_states = if nfa.words() <= NFA_STATE_WORDS {
+                MAX_EAGER_STATES
+            } else {
+                usize::MAX
+            };
+            Dfa::build(&nfa, classes, opts.dfa_budget, visible, max_states)
         } else {
             None
         };
@@ -347,7 +376,13 @@ impl AovSet {
                 dfa_budget: opts.dfa_budget,
             });
         }
-        Ok(dfa.map_or(Engine::Nfa(nfa), Engine::Dfa))
+        // The NFA only serves to build the DFA, so a set with a DFA drops it (with its
+        // follow tables, often the larger of the two).
+        let start = dfa.as_ref().map_or(State(1), |d| State(d.start()));
+        let lazy = dfa
+            .is_none()
+            .then(|| Lazy::new(nfa, classes, opts.lazy_cache, visible.cloned()));
+        Ok((dfa.unwrap_or_else(Dfa::empty), lazy, start))
     }
 
     /// One follow row per position is the least an NFA needs: `positions^2 / 8` bytes.
@@ -388,19 +423,31 @@ impl AovSet {
     /// The state before any vertex.
     #[inline]
     pub fn start(&self) -> State {
-        match &self.engine {
-            Engine::Dfa(d) => State::id(d.start()),
-            // The NFA start: position 0 alone, bit 0 of word 0.
-            Engine::Nfa(_) => State::id(1),
-        }
+        self.start
     }
 
     /// The class of a vertex: compute it once per material lobe and step with
-    /// [`AovSet::step_class`]. On an OSL set the answer is unspecified: use
-    /// [`AovSet::classify_osl`].
+    /// [`AovSet::step_class`]. Hashes the label; [`AovSet::classify_interned`] does not.
+    /// On an OSL set the answer is unspecified: use [`AovSet::classify_osl`].
     #[inline]
     pub fn classify(&self, v: &Vertex) -> Class {
         self.alphabet.classify(v)
+    }
+
+    /// The id of a vertex label (or of no label) for [`AovSet::classify_interned`]:
+    /// intern each label of a scene once, at load. Labels no expression mentions all
+    /// get one id.
+    pub fn label_id(&self, label: Option<&str>) -> LabelId {
+        self.alphabet.label_id(label)
+    }
+
+    /// The class of a vertex given by its parts and an interned label: index arithmetic
+    /// and table loads, no hashing. Same answer as [`AovSet::classify`] on the vertex. An
+    /// event on `C`, `L` or `O` is ignored; `R`/`T` without an event or a label id of
+    /// another set give some class, never a panic.
+    #[inline]
+    pub fn classify_interned(&self, ty: VertexType, event: Option<Event>, label: LabelId) -> Class {
+        self.alphabet.classify_interned(ty, event, label)
     }
 
     /// One vertex.
@@ -410,45 +457,101 @@ impl AovSet {
     }
 
     /// One vertex, already classified. A class or state from another set gives an
-    /// unspecified state, never a panic.
+    /// unspecified state, never a panic. On a lazy set (no DFA) this goes through a
+    /// per-thread cache; [`AovSet::step_with`] with a [`Cache`] of the caller's is faster.
     #[inline]
     pub fn step_class(&self, s: State, c: Class) -> State {
-        match &self.engine {
-            Engine::Dfa(d) => State::id(d.next(s.0[0] as u32, c.0)),
-            Engine::Nfa(n) => Self::step_nfa(n, s, c),
+        match self.dfa.next(s.0, c.0) {
+            Some(n) => State(n),
+            None => self.step_miss(s, c),
         }
-    }
-
-    /// Out of line so that the DFA step above stays small enough to inline into the
-    /// caller's loop.
-    #[inline(never)]
-    fn step_nfa(nfa: &Nfa, s: State, c: Class) -> State {
-        let mut next = [0u64; NFA_STATE_WORDS];
-        nfa.step(&s.0, c.index(), &mut next);
-        State(next)
     }
 
     /// The AOVs that match a path ending in state `s`.
     #[inline]
     pub fn matches(&self, s: State) -> AovMask {
-        match &self.engine {
-            Engine::Dfa(d) => d.matches(s.0[0] as u32),
-            Engine::Nfa(n) => match &self.visible {
-                None => n.matches(&s.0),
-                Some(v) => v.mask(n.matches(&s.0)),
-            },
+        match self.dfa.matches(s.0) {
+            Some(m) => m,
+            None => self.matches_miss(s),
         }
     }
 
-    /// No continuation of the path can match any AOV. Exact on the DFA; on the NFA
-    /// (over the DFA budget) it is the state with no active position, unless a
-    /// complement (`^A`) matches from there on, and a state whose operands can still
-    /// match but whose set algebra never will (`A & B` after `B` died) is not flagged.
+    /// No continuation of the path can match any AOV. Exact on a DFA, where the dead
+    /// state is state 0. On a lazy set, state 0 is the NFA state with no active position:
+    /// dead unless a complement (`^A`) matches from there on; and a state whose operands
+    /// can still match but whose set algebra never will (`A & B` after `B` died) is not
+    /// flagged.
     #[inline]
     pub fn is_dead(&self, s: State) -> bool {
-        match &self.engine {
-            Engine::Dfa(_) => s.0[0] == 0,
-            Engine::Nfa(_) => self.empty_is_dead && s.0 == [0; NFA_STATE_WORDS],
+        s == State::DEAD && self.empty_is_dead
+    }
+
+    /// One step of many independent paths, for wavefront renderers: `states[i]` steps on
+    /// `classes[i]` (pairs past the shorter slice are left alone). On a DFA the loads of
+    /// different paths overlap, where one path's steps wait on each other.
+    #[inline]
+    pub fn step_batch(&self, states: &mut [State], classes: &[Class]) {
+        for (s, &c) in states.iter_mut().zip(classes) {
+            *s = self.step_class(*s, c);
+        }
+    }
+
+    /// A cache for stepping this set with [`AovSet::step_with`]: one per thread. Sized by
+    /// [`Options::lazy_cache`]; holds nothing for a set with a DFA.
+    pub fn cache(&self) -> Cache {
+        match &self.lazy {
+            None => Cache::empty(),
+            Some(l) => l.cache(),
+        }
+    }
+
+    /// [`AovSet::step_class`] through the caller's cache: on a lazy set, two loads when
+    /// the transition is cached. A cache of another set is reset for this one.
+    #[inline]
+    pub fn step_with(&self, cache: &mut Cache, s: State, c: Class) -> State {
+        match (self.dfa.next(s.0, c.0), &self.lazy) {
+            (Some(n), _) => State(n),
+            (None, Some(l)) => l.step(cache, s, c),
+            (None, None) => State::DEAD,
+        }
+    }
+
+    /// [`AovSet::matches`] through the caller's cache.
+    #[inline]
+    pub fn matches_with(&self, cache: &mut Cache, s: State) -> AovMask {
+        match (self.dfa.matches(s.0), &self.lazy) {
+            (Some(m), _) => m,
+            (None, Some(l)) => l.matches(cache, s),
+            (None, None) => AovMask::EMPTY,
+        }
+    }
+
+    /// The bitset NFA of a lazy set, stepped on its wide state without registry or
+    /// cache; `None` for a set with a DFA (which drops its NFA).
+    pub fn nfa(&self) -> Option<NfaMatcher<'_>> {
+        self.lazy.as_ref().map(|l| NfaMatcher {
+            nfa: l.nfa(),
+            alphabet: &self.alphabet,
+            visible: self.visible.as_ref(),
+            empty_is_dead: self.empty_is_dead,
+        })
+    }
+
+    /// A state or class out of the DFA's table: the lazy DFA's step, or (a state or
+    /// class of another set) the dead state.
+    #[inline(never)]
+    fn step_miss(&self, s: State, c: Class) -> State {
+        match &self.lazy {
+            Some(l) => l.step_local(s, c),
+            None => State::DEAD,
+        }
+    }
+
+    #[inline(never)]
+    fn matches_miss(&self, s: State) -> AovMask {
+        match &self.lazy {
+            Some(l) => l.matches_local(s),
+            None => AovMask::EMPTY,
         }
     }
 
@@ -540,17 +643,20 @@ impl AovSet {
         }
     }
 
-    /// Whether the set steps a DFA (else the bitset NFA: over the DFA budget).
+    /// Whether the set steps an eager DFA (else a lazy one: over the DFA budget).
     pub fn uses_dfa(&self) -> bool {
-        matches!(self.engine, Engine::Dfa(_))
+        self.lazy.is_none()
     }
 
     /// DFA states (dead state included), if the set has a DFA.
     pub fn dfa_states(&self) -> Option<usize> {
-        match &self.engine {
-            Engine::Dfa(d) => Some(d.state_count()),
-            Engine::Nfa(_) => None,
-        }
+        self.lazy.is_none().then(|| self.dfa.state_count())
+    }
+
+    /// NFA states a lazy set has determinized so far (dead and start included), across
+    /// all threads; `None` for a set with a DFA.
+    pub fn lazy_states(&self) -> Option<usize> {
+        self.lazy.as_ref().map(Lazy::registered)
     }
 
     /// NFA positions (the start included).
@@ -562,9 +668,10 @@ impl AovSet {
     pub fn memory_bytes(&self) -> usize {
         self.alphabet.memory_bytes()
             + self.osl.as_ref().map_or(0, |o| o.memory_bytes())
-            + match &self.engine {
-                Engine::Dfa(d) => d.memory_bytes(),
-                Engine::Nfa(n) => n.memory_bytes(),
+            + self.dfa.memory_bytes()
+            + match &self.lazy {
+                None => 0,
+                Some(l) => l.memory_bytes(),
             }
     }
 

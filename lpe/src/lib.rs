@@ -129,8 +129,10 @@ pub mod generate;
 pub mod strategy;
 
 pub use aov::{AovSet, CompileError, Options};
+pub use aov::{Cache, NfaMatcher};
 pub use ast::{Expr, Lpe};
 pub use automata::mask::{AovMask, Class, State, MAX_AOVS};
+pub use automata::mask::{LabelId, NfaState};
 pub use dialect::Dialect;
 pub use ini::{Config, IniError, IniErrorKind};
 pub use lobes::{LobeCategory, LobeError, LobeMap};

@@ -57,7 +57,8 @@
 //! ```
 
 use crate::aov::AovSet;
-use crate::automata::mask::{AovMask, Class, State};
+use crate::automata::mask::{AovMask, Class, NfaState, State};
+use crate::automata::wide::NfaMatcher;
 use crate::path::{Path, Vertex};
 
 /// An incremental LPE matcher over a list of AOVs: AOV `i` is the `i`-th expression the
@@ -125,6 +126,37 @@ impl PathMatcher for AovSet {
 
     fn match_path(&self, path: &Path) -> AovMask {
         AovSet::match_path(self, path)
+    }
+}
+
+/// The bitset NFA on its wide state (see [`NfaMatcher`]).
+impl PathMatcher for NfaMatcher<'_> {
+    type Class = Class;
+    type State = NfaState;
+
+    #[inline]
+    fn classify(&self, v: &Vertex) -> Class {
+        NfaMatcher::classify(self, v)
+    }
+
+    #[inline]
+    fn start(&self) -> NfaState {
+        NfaMatcher::start(self)
+    }
+
+    #[inline]
+    fn step(&self, s: NfaState, c: Class) -> NfaState {
+        NfaMatcher::step(self, s, c)
+    }
+
+    #[inline]
+    fn matches(&self, s: NfaState) -> AovMask {
+        NfaMatcher::matches(self, s)
+    }
+
+    #[inline]
+    fn is_dead(&self, s: NfaState) -> bool {
+        NfaMatcher::is_dead(self, s)
     }
 }
 

@@ -325,11 +325,19 @@ pub struct Config {
 /// case are skipped for them, and counted).
 pub const MAX_PATH_LEN: u32 = 6;
 
-/// Every configuration: the default, the NFA forced (DFA budget 0), and both with
-/// [`MAX_PATH_LEN`].
+/// Every configuration: the default, the NFA forced (DFA budget 0, no lazy cache: every
+/// step runs the bitset NFA), the lazy DFA (DFA budget 0 with its cache, default-sized
+/// and two rows, which clears on nearly every new transition), and the default and the
+/// NFA with [`MAX_PATH_LEN`].
 pub fn configs() -> Vec<Config> {
     let nfa = Options {
         dfa_budget: 0,
+        lazy_cache: 0,
+        ..Options::default()
+    };
+    let lazy = |lazy_cache| Options {
+        dfa_budget: 0,
+        lazy_cache,
         ..Options::default()
     };
     let short = |o: &Options| Options {
@@ -344,6 +352,14 @@ pub fn configs() -> Vec<Config> {
         Config {
             name: "dfa-budget-0",
             options: nfa.clone(),
+        },
+        Config {
+            name: "lazy",
+            options: lazy(Options::default().lazy_cache),
+        },
+        Config {
+            name: "lazy-2-rows",
+            options: lazy(1),
         },
         Config {
             name: "max-path-len-6",

@@ -8,8 +8,9 @@
 //! died, so there the state with no active position is not dead.
 //!
 //! Checked on every stepping mode: the DFA (default options), the bitset NFA
-//! (`dfa_budget: 0`) on small sets, and the bitset NFA on sets of more than 64 positions,
-//! whose state spans several 64-bit words.
+//! (`dfa_budget: 0`, `lazy_cache: 0`) on small sets, the bitset NFA on sets of more than
+//! 64 positions, whose state spans several 64-bit words, and the lazy DFA on both with a
+//! cache so small that it clears all the time.
 //!
 //! Two independent checks per set:
 //! - exact: every state reachable from the start (over one vertex per class, in any
@@ -206,15 +207,27 @@ fn padding() -> Lpe {
     parse(&format!("C({alts})L")).unwrap()
 }
 
+/// Every step runs the bitset NFA (no lazy cache).
 fn nfa_only() -> Options {
     Options {
         dfa_budget: 0,
+        lazy_cache: 0,
         ..Options::default()
     }
 }
 
-/// Every stepping mode on one drawn set: the DFA, the NFA, and the NFA behind a
-/// padding AOV that makes its states wide.
+/// The lazy DFA with a two-row cache: cleared on nearly every new transition, so states
+/// in flight keep crossing clears.
+fn lazy_two_rows() -> Options {
+    Options {
+        dfa_budget: 0,
+        lazy_cache: 1,
+        ..Options::default()
+    }
+}
+
+/// Every stepping mode on one drawn set: the DFA, the NFA and the lazy DFA, and the
+/// NFA and lazy DFA behind a padding AOV that makes their states wide.
 fn check_modes(
     exprs: &[Lpe],
     paths: &[Path],
@@ -227,6 +240,8 @@ fn check_modes(
         ("dfa", exprs, Options::default()),
         ("nfa", exprs, nfa_only()),
         ("wide nfa", &wide_exprs[..], nfa_only()),
+        ("lazy", exprs, lazy_two_rows()),
+        ("wide lazy", &wide_exprs[..], lazy_two_rows()),
     ];
     for (what, exprs, opts) in modes {
         let Ok(set) = AovSet::compile_with(&named(exprs), &opts) else {
@@ -236,7 +251,7 @@ fn check_modes(
         };
         let is_dfa = what == "dfa";
         prop_assert_eq!(set.uses_dfa(), is_dfa, "{}", what);
-        if what == "wide nfa" {
+        if what.starts_with("wide") {
             prop_assert!(set.nfa_positions() > 64, "{}", set.nfa_positions());
             bump(&stats.wide);
         }

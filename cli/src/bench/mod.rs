@@ -16,12 +16,13 @@
 pub mod baseline;
 pub mod osl;
 pub mod sample;
+pub mod shapes;
 pub mod workload;
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use lpe::{AovMask, AovSet, Class, Options};
+use lpe::{AovMask, AovSet, Class, Options, PathMatcher};
 use lpe::{Lpe, Path, Vertex};
 use regex_automata::dfa::dense;
 use regex_automata::hybrid;
@@ -208,12 +209,15 @@ type Job<'a> = Box<dyn FnMut(usize) -> u64 + 'a>;
 
 /// Times every job on every chunk `reps` times, round-robin so that every engine sees
 /// the same machine load, and sums each job's best time per chunk: preemption on this
-/// shared machine then only costs a repetition, not the measurement.
+/// shared machine then only costs a repetition, not the measurement. Each timed run
+/// follows an untimed one of the same job on the same chunk, so that every job finds its
+/// input in cache (else the job after one with other input pays the misses).
 fn best_times(reps: usize, chunks: usize, jobs: &mut [Job<'_>]) -> Vec<Duration> {
     let mut best = vec![vec![Duration::MAX; chunks]; jobs.len()];
     for _ in 0..reps.max(1) {
         for c in 0..chunks {
             for (job, b) in jobs.iter_mut().zip(&mut best) {
+                black_box(job(c));
                 let t = Instant::now();
                 black_box(job(c));
                 b[c] = b[c].min(t.elapsed());
@@ -333,7 +337,30 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
         let nfa_set = nfa_set.ok();
         if let Some(set) = &nfa_set {
             check("nfa", &mut |p| Some(set.match_path(p)));
+            let mut cache = set.cache();
+            check("lazy DFA, own cache", &mut |p| {
+                let s = p.vertices().iter().fold(set.start(), |s, v| {
+                    set.step_with(&mut cache, s, set.classify(v))
+                });
+                Some(set.matches_with(&mut cache, s))
+            });
+            if let Some(wide) = set.nfa() {
+                check("bitset NFA", &mut |p| Some(wide.match_path(p)));
+            }
         }
+        let interned = chunked(&paths, |c| shapes::intern(&fast, c));
+        check("fast, on interned vertices", &mut |p| {
+            let s = p.vertices().iter().fold(fast.start(), |s, v| {
+                let l = fast.label_id(v.label());
+                fast.step_class(s, fast.classify_interned(v.ty(), v.event(), l))
+            });
+            Some(fast.matches(s))
+        });
+        let wavefronts: Vec<shapes::Wavefront> =
+            fast_classes.iter().map(shapes::Wavefront::new).collect();
+        let bare = fast
+            .dfa_states()
+            .map(|n| shapes::BareTable::new(n, fast.class_count(), cfg.seed));
         let nfa_classes = nfa_set
             .as_ref()
             .map(|s| chunked(&paths, |c| classify(s, c)));
@@ -367,10 +394,30 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
         let lazy_gave_up = std::cell::Cell::new(false);
         let mut jobs: Vec<Job<'_>> = vec![
             Box::new(|c| run_vertices(&fast, &flat[c])),
+            Box::new(|c| shapes::run_interned(&fast, &interned[c])),
             Box::new(|c| run_classes(&fast, &fast_classes[c])),
+            Box::new(|c| shapes::run_renderer(&fast, &fast_classes[c])),
+            Box::new(|c| shapes::run_heap_record(&fast, &fast_classes[c])),
         ];
+        if let Some(t) = &bare {
+            jobs.push(Box::new(|c| shapes::run_bare(t, &fast_classes[c])));
+        }
+        jobs.push(Box::new(|c| shapes::run_batch(&fast, &wavefronts[c])));
+        if !fast.uses_dfa() {
+            let mut cache = fast.cache();
+            let (set, classes) = (&fast, &fast_classes);
+            jobs.push(Box::new(move |c| {
+                shapes::run_cached(set, &mut cache, &classes[c])
+            }));
+        }
         if let (Some(set), Some(classes)) = (&nfa_set, &nfa_classes) {
-            jobs.push(Box::new(move |c| run_classes(set, &classes[c])));
+            let mut cache = set.cache();
+            jobs.push(Box::new(move |c| {
+                shapes::run_cached(set, &mut cache, &classes[c])
+            }));
+            if let Some(wide) = set.nfa() {
+                jobs.push(Box::new(move |c| shapes::run_renderer(&wide, &classes[c])));
+            }
         }
         if let Ok((dfa, start)) = &dense {
             jobs.push(Box::new(|c| run_dense(dfa, *start, &bytes[c])));
@@ -398,28 +445,97 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
         r.memory = Some(fast.memory_bytes());
         r.note = match fast.dfa_states() {
             Some(n) => format!("DFA, {n} states, {} classes", fast.class_count()),
-            None => format!("NFA fallback, {} positions", fast.nfa_positions()),
+            None => format!("lazy DFA, {} positions", fast.nfa_positions()),
         };
+        wrows.push(r);
+        let mut r = row(w.name, "fast, on interned vertices");
+        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+        r.note = "labels interned at load: classify_interned, no hashing".into();
         wrows.push(r);
         let mut r = row(w.name, "fast, on classes");
         r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+        if !fast.uses_dfa() {
+            r.note = "lazy DFA, the State API's per-thread cache".into();
+        }
         wrows.push(r);
-        let mut r = row(w.name, "bitset NFA, on classes");
+        let mut shaped = Vec::new();
+        let mut r = row(w.name, "renderer-shaped caller");
+        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+        r.note = "for loop, state in a local, PathMatcher::step".into();
+        shaped.push(r);
+        let mut r = row(w.name, "state in a heap path record");
+        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+        r.note = "read and written back through memory every step".into();
+        shaped.push(r);
+        let mut r = row(w.name, "bare dependent-load chain, same table shape");
+        let bare_ns = match &bare {
+            Some(_) => {
+                r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+                r.note = format!(
+                    "s = table[s + class], {} rows of {}, mask read at the end",
+                    fast.dfa_states().unwrap_or(0),
+                    fast.class_count().next_power_of_two()
+                );
+                r.ns_per_vertex
+            }
+            None => {
+                r.note = "no DFA table".into();
+                None
+            }
+        };
+        if let Some(b) = bare_ns {
+            for s in &mut shaped {
+                if let Some(x) = s.ns_per_vertex {
+                    s.note = format!("{}; {:.2}x the bare chain", s.note, x / b);
+                }
+            }
+        }
+        wrows.extend(shaped);
+        wrows.push(r);
+        let mut r = row(w.name, "batch step, wavefront");
+        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+        r.note = "step_batch over the paths alive at each depth".into();
+        let one = wrows
+            .iter()
+            .find(|r| r.engine == "renderer-shaped caller")
+            .and_then(|r| r.ns_per_vertex);
+        if let (Some(x), Some(one)) = (r.ns_per_vertex, one) {
+            r.note = format!("{}; {:.2}x the renderer-shaped caller", r.note, x / one);
+        }
+        wrows.push(r);
+        let mut lazy_rows = Vec::new();
+        if !fast.uses_dfa() {
+            let mut r = row(w.name, "fast, own cache");
+            r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+            r.note = format!(
+                "lazy DFA, {} NFA states determinized",
+                fast.lazy_states().unwrap_or(0)
+            );
+            lazy_rows.push(r);
+        }
+        let mut r = row(w.name, "lazy DFA (dfa_budget 0), own cache");
+        let mut r_nfa = row(w.name, "bitset NFA, on classes");
         match &nfa_set {
             Some(set) => {
                 r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
                 r.compile = Some(nfa_set_time);
                 r.memory = Some(set.memory_bytes());
-                r.note = format!("{} positions", set.nfa_positions());
+                r.note = format!("{} NFA states determinized", set.lazy_states().unwrap_or(0));
+                lazy_rows.push(r);
+                if set.nfa().is_some() {
+                    r_nfa.ns_per_vertex = times.next().map(|t| ns(t, vertices));
+                }
+                r_nfa.note = format!("{} positions, wide state", set.nfa_positions());
             }
             None => {
-                r.note = format!(
+                r_nfa.note = format!(
                     "over the {} positions a stepping state holds",
                     64 * lpe::automata::mask::NFA_STATE_WORDS
                 )
             }
         }
-        wrows.push(r);
+        lazy_rows.push(r_nfa);
+        wrows.extend(lazy_rows);
         let mut r = row(w.name, "regex-automata dense DFA");
         r.compile = Some(ra_nfa_time + dense_time);
         let dense_ns = match &dense {
@@ -455,7 +571,19 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
             }
             Err(e) => r.note = format!("no lazy DFA: {e}"),
         }
+        let lazy_ns = r.ns_per_vertex;
         wrows.push(r);
+        // Lazy stepping against its peer, regex-automata's lazy DFA.
+        if let Some(l) = lazy_ns {
+            for r in wrows.iter_mut().filter(|r| {
+                r.engine.ends_with("own cache")
+                    || (!fast.uses_dfa() && r.engine == "fast, on classes")
+            }) {
+                if let Some(x) = r.ns_per_vertex {
+                    r.note = format!("{}; {:.2}x RA lazy", r.note, x / l);
+                }
+            }
+        }
 
         let mut r = row(w.name, "reference, per path");
         let t = Instant::now();

@@ -3,9 +3,9 @@
 pub mod bench;
 pub mod diff;
 pub mod equiv;
-pub mod match_osl;
 pub mod explain;
 pub mod lint;
+pub mod match_osl;
 pub mod matching;
 pub mod parse;
 pub mod partition;

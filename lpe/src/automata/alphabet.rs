@@ -18,7 +18,7 @@
 use crate::fxhash::FxMap;
 
 use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
-use crate::automata::mask::Class;
+use crate::automata::mask::{Class, LabelId};
 use crate::bits;
 use crate::path::{Event, Vertex, VertexType};
 
@@ -76,16 +76,16 @@ fn event_index(e: Event) -> usize {
     BASE[e.kind() as usize] + usize::from(e.lobe()) - 1
 }
 
+/// Per `VertexType` (C R T L O), where its run of `(type, event)` indices starts.
+const TYPE_BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
+
 /// `(type, event)` to its index: C 0, L 1, O 2, R 3.., T 27.. (a table lookup rather
 /// than nested matches, whose branches mispredict on a realistic mix of vertices).
 #[inline]
 fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
-    // Per `VertexType` (C R T L O), where its run of indices starts. A vertex carries an
-    // event exactly when it is R or T (`Vertex`'s constructors and parser enforce it),
-    // so the event only ever offsets into the R and T runs.
-    const BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
-    debug_assert_eq!(ty.is_scattering(), event.is_some());
-    BASE[ty as usize] + event.map_or(0, event_index)
+    // The event only ever offsets into the R and T runs (a `Vertex` carries one exactly
+    // when it is R or T; a caller of `classify_interned` may pass one anyway).
+    TYPE_BASE[ty as usize] + event.filter(|_| ty.is_scattering()).map_or(0, event_index)
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
@@ -227,6 +227,8 @@ impl LabelTable {
 #[derive(Clone, Debug)]
 pub(crate) struct Alphabet {
     labels: LabelTable,
+    /// Label symbols per `(type, event)`: none, the interned labels, OTHER.
+    label_syms: usize,
     /// Raw symbol -> class. Index `type_event * label_syms + label`, where label 0 is
     /// none, `1..=k` the interned labels and `k + 1` OTHER.
     raw_to_class: Vec<u32>,
@@ -299,6 +301,7 @@ impl Alphabet {
         }
         Alphabet {
             labels,
+            label_syms,
             raw_to_class,
             class_atoms,
             representatives,
@@ -321,16 +324,34 @@ impl Alphabet {
     /// The class of a vertex.
     #[inline]
     pub(crate) fn classify(&self, v: &Vertex) -> Class {
-        let label_syms = self.labels.len() + 2;
-        let l = match v.label() {
+        self.classify_interned(v.ty(), v.event(), self.label_id(v.label()))
+    }
+
+    /// The id of a label for [`Alphabet::classify_interned`]: `0` for no label, then
+    /// the interned labels, then OTHER for every label the expressions never mention.
+    #[inline]
+    pub(crate) fn label_id(&self, name: Option<&str>) -> LabelId {
+        LabelId(match name {
             None => 0,
-            Some(name) => match self.labels.get(name) {
-                Some(i) => i as usize + 1,
-                None => label_syms - 1,
-            },
-        };
-        let raw = type_event_index(v.ty(), v.event()) * label_syms + l;
-        Class(self.raw_to_class[raw])
+            Some(n) => self
+                .labels
+                .get(n)
+                .map_or(self.labels.len() as u32 + 1, |i| i + 1),
+        })
+    }
+
+    /// The class of `(type, event, label)` from a label interned beforehand: index
+    /// arithmetic and two table loads, no hashing. An event on `C`, `L` or `O` is
+    /// ignored; a label id of another set gives some class, never a panic.
+    #[inline]
+    pub(crate) fn classify_interned(
+        &self,
+        ty: VertexType,
+        event: Option<Event>,
+        label: LabelId,
+    ) -> Class {
+        let raw = type_event_index(ty, event) * self.label_syms + label.0 as usize;
+        Class(self.raw_to_class.get(raw).copied().unwrap_or(0))
     }
 
     pub(crate) fn class_count(&self) -> usize {

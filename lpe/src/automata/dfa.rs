@@ -8,15 +8,22 @@
 //! Minimization (Moore's partition refinement) merges every state that can no longer
 //! reach a match into the dead state, so a renderer can stop a path as soon as it dies.
 //!
-//! Construction stops as soon as the table would pass the memory budget (the DFA of a
-//! set can be exponential in its NFA: `C.*D.{k}[LO]` needs `2^(k+1)` states); the caller
-//! then steps the NFA instead.
+//! Construction stops as soon as the table would pass the memory budget or
+//! [`MAX_EAGER_STATES`] (the DFA of a set can be exponential in its NFA: `C.*D.{k}[LO]`
+//! needs `2^(k+1)` states); the caller then steps the lazy DFA instead.
 
 use crate::fxhash::FxMap;
 
 use crate::automata::mask::AovMask;
 use crate::automata::nfa::Nfa;
 use crate::automata::visible::Visible;
+
+/// Most states the subset construction builds before it gives up and leaves the set to
+/// the lazy DFA, whatever the budget (when the set can step lazily at all; the caller
+/// passes it to [`Dfa::build`]): a DFA this large takes milliseconds to build
+/// (`C.*D.{12}[LO]`, 8 195 states, fits), and a blow-up set such as `C.*D.{20}[LO]`
+/// (2^21 states) must not spend a budget's worth of construction before going lazy.
+pub(crate) const MAX_EAGER_STATES: usize = 1 << 14;
 
 /// Hashing work (state x class visits) minimization may spend before giving up.
 const MAX_MINIMIZE_WORK: usize = 20_000_000;
@@ -71,18 +78,21 @@ impl Dfa {
     }
 
     /// Determinizes `nfa` over `classes` classes, or `None` if the DFA would exceed
-    /// `budget` bytes. With set algebra, `visible` turns the NFA's hidden masks into the
-    /// states' visible masks, once per state.
+    /// `budget` bytes or `max_states` states. With set algebra, `visible` turns the
+    /// NFA's hidden masks into the states' visible masks, once per state.
     pub(crate) fn build(
         nfa: &Nfa,
         classes: usize,
         budget: usize,
         visible: Option<&Visible>,
+        max_states: usize,
     ) -> Option<Dfa> {
         let stride = classes.next_power_of_two();
         let cost = Self::state_cost(stride, nfa.words());
         // Premultiplied ids must fit a `u32`.
-        let max_states = (budget / cost).min(u32::MAX as usize / stride);
+        let max_states = (budget / cost)
+            .min(u32::MAX as usize / stride)
+            .min(max_states);
         let w = nfa.words();
         // Subset construction. Index 0 is the empty set: the dead state.
         let mut sets: Vec<Box<[u64]>> = vec![vec![0u64; w].into_boxed_slice()];
@@ -235,19 +245,30 @@ impl Dfa {
         self.start
     }
 
-    /// One transition. Out-of-range input (a state or class of another set) leads to
-    /// the dead state rather than a panic.
+    /// One transition; `None` for out-of-range input (a state or class of another set,
+    /// or any input of the empty DFA a lazy set carries), so that the caller's one branch
+    /// covers both.
     #[inline]
-    pub(crate) fn next(&self, state: u32, class: u32) -> u32 {
+    pub(crate) fn next(&self, state: u32, class: u32) -> Option<u32> {
         let i = state.wrapping_add(class) as usize;
-        self.table.get(i).copied().unwrap_or(0)
+        self.table.get(i).copied()
     }
 
-    /// The AOVs matching in `state`.
+    /// The AOVs matching in `state`; `None` out of range, as for [`Dfa::next`].
     #[inline]
-    pub(crate) fn matches(&self, state: u32) -> AovMask {
+    pub(crate) fn matches(&self, state: u32) -> Option<AovMask> {
         let i = (state >> self.shift) as usize;
-        self.masks.get(i).copied().unwrap_or(AovMask::EMPTY)
+        self.masks.get(i).copied()
+    }
+
+    /// No states: every step misses. What a lazy set carries in place of a DFA.
+    pub(crate) fn empty() -> Dfa {
+        Dfa {
+            table: Vec::new(),
+            shift: 0,
+            masks: Vec::new(),
+            start: 0,
+        }
     }
 
     /// Number of states, dead state included.

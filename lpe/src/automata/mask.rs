@@ -69,24 +69,52 @@ impl Class {
     }
 }
 
-/// Widest NFA state a [`State`] holds inline: sets stepped on the NFA (their DFA is over
-/// budget) may have at most `64 * NFA_STATE_WORDS` positions.
+/// A vertex label interned once (at scene load) for one set, so that classifying a
+/// vertex needs no string hashing: from [`crate::aov::AovSet::label_id`], used with
+/// [`crate::aov::AovSet::classify_interned`]. Only meaningful for the set that produced
+/// it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct LabelId(pub(crate) u32);
+
+/// Widest NFA state an [`NfaState`] holds: sets stepped on the bare NFA may have at most
+/// `64 * NFA_STATE_WORDS` positions.
 pub const NFA_STATE_WORDS: usize = 4;
 
-/// Where a path is in the automaton: a DFA state id, or the active NFA positions. Small,
-/// `Copy`, and only meaningful for the set that produced it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct State(pub(crate) [u64; NFA_STATE_WORDS]);
+/// Where a path is in a set's automaton: one `u32`, so it lives in a register in the
+/// caller's loop and costs four bytes in a path record.
+///
+/// For a set with an eager DFA it is the DFA state's premultiplied row offset; for a set
+/// stepped lazily it is the id of an NFA state in the set's state registry (ids are
+/// never reused, so a state stays valid however often a [`crate::aov::Cache`] is
+/// cleared). In both, `0` is the dead state. Only meaningful for the set that produced
+/// it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[repr(transparent)]
+pub struct State(pub(crate) u32);
 
 impl State {
-    /// The state holding DFA state `id` (or the NFA positions of the one word `id`).
+    /// The dead state, in every set.
+    pub(crate) const DEAD: State = State(0);
+
+    /// The raw id, for callers that pack states into their own records.
     #[inline]
-    pub(crate) fn id(id: u32) -> State {
-        let mut s = [0u64; NFA_STATE_WORDS];
-        s[0] = u64::from(id);
-        State(s)
+    pub fn to_u32(self) -> u32 {
+        self.0
+    }
+
+    /// A state from [`State::to_u32`]. A value that is no state of the set steps to some
+    /// state, never a panic.
+    #[inline]
+    pub fn from_u32(id: u32) -> State {
+        State(id)
     }
 }
+
+/// The active positions of a set's bitset NFA: the wide state of
+/// [`crate::aov::NfaMatcher`], kept apart from [`State`] so that DFA stepping never
+/// moves 32 bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct NfaState(pub(crate) [u64; NFA_STATE_WORDS]);
 
 #[cfg(test)]
 mod tests {

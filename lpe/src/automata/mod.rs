@@ -6,6 +6,9 @@
 //! - `dfa`: the minimized dense DFA built from it, when it fits its budget;
 //! - `visible`: the visible AOV masks of a set with set algebra, as formulas over the
 //!   hidden operand AOVs the NFA holds;
+//! - [`lazy`]: the lazy DFA of sets over that budget (a registry of NFA states, per-thread
+//!   transition caches);
+//! - [`wide`]: the bitset NFA stepped on its wide state, behind `PathMatcher`;
 //! - `shape`: small DFAs over vertex groups (camera, scatter, emitter) that searches run in
 //!   product with, so they visit only sequences of a path's shape;
 //! - `emptiness`: which AOVs can match no path, a search on the NFA alone (no DFA, no
@@ -16,7 +19,9 @@
 pub(crate) mod alphabet;
 pub(crate) mod dfa;
 pub(crate) mod emptiness;
+pub mod lazy;
 pub mod mask;
 pub(crate) mod nfa;
 pub(crate) mod shape;
 pub(crate) mod visible;
+pub mod wide;

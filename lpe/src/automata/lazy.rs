@@ -1,0 +1,383 @@
+//! The lazy DFA: sets whose eager DFA would pass its budget determinize on demand, one
+//! transition at a time, as paths reach them.
+//!
+//! Two layers, because a renderer keeps thousands of paths in flight:
+//! - the set owns a **registry** of the NFA states (position subsets) paths have reached,
+//!   each under a `u32` id that is never reused. A [`State`] of a lazy set is such an id,
+//!   so it is as small as a DFA state and stays valid for the life of the set: whatever
+//!   happens to a cache, a path's state can always be re-derived from the registry. The
+//!   registry is a memo behind a lock (the set's answers never change), consulted only
+//!   when a cache misses; it grows by one subset per distinct NFA state reached, at most
+//!   `2^positions` and in practice the few hundred to few thousand states that sampled
+//!   paths reach. That growth is the price of states that survive a clear; the
+//!   alternatives (a generation check that invalidates in-flight states, or a state that
+//!   carries its 32-byte subset) either lose paths or undo the register-sized state.
+//! - each thread owns a bounded [`Cache`] of transition rows over registry ids, like
+//!   regex-automata's hybrid DFA: a hit is two dependent loads (the state's row, then the
+//!   transition), a miss steps the bitset NFA and interns the result. When the rows pass
+//!   the cache's budget, every row is dropped and the cache refills; states in flight are
+//!   untouched, since they name registry entries, not rows.
+
+use std::cell::RefCell;
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{PoisonError, RwLock};
+
+use crate::automata::mask::{AovMask, Class, State, NFA_STATE_WORDS};
+use crate::automata::nfa::Nfa;
+use crate::automata::visible::Visible;
+use crate::fxhash::FxMap;
+
+/// A subset of NFA positions, padded to the widest state a lazy set steps.
+type Subset = [u64; NFA_STATE_WORDS];
+
+/// Marks "no row yet" in [`Cache::row_of`] and "not computed" in [`Cache::trans`].
+const NONE: u32 = u32::MAX;
+
+/// Fewest rows a cache holds whatever its budget, so a step can always store its
+/// transition.
+const MIN_ROWS: usize = 2;
+
+/// Tells sets apart for caches: a cache filled for one set must not answer for another.
+static NEXT_OWNER: AtomicU64 = AtomicU64::new(1);
+
+thread_local! {
+    /// The cache of the `State` API, per thread.
+    static LOCAL: RefCell<Cache> = RefCell::new(Cache::empty());
+}
+
+/// NFA states reached so far, by id. Id 0 is the empty subset (the dead state), id 1 the
+/// start (position 0 alone).
+#[derive(Clone, Debug)]
+struct Registry {
+    ids: FxMap<Subset, u32>,
+    subsets: Vec<Subset>,
+}
+
+impl Registry {
+    fn new() -> Registry {
+        let mut r = Registry {
+            ids: FxMap::default(),
+            subsets: Vec::new(),
+        };
+        let mut start = [0u64; NFA_STATE_WORDS];
+        start[0] = 1;
+        for s in [[0u64; NFA_STATE_WORDS], start] {
+            r.ids.insert(s, r.subsets.len() as u32);
+            r.subsets.push(s);
+        }
+        r
+    }
+}
+
+/// A set stepped lazily: its NFA, the shared registry and the size of per-thread caches.
+#[derive(Debug)]
+pub(crate) struct Lazy {
+    nfa: Nfa,
+    /// With set algebra, the visible masks over the NFA's hidden ones.
+    visible: Option<Visible>,
+    classes: usize,
+    /// `log2` of the row stride (class count rounded up to a power of two).
+    shift: u32,
+    /// Bytes of one cache's rows; 0 disables caching (every step runs the NFA).
+    cache_budget: usize,
+    owner: u64,
+    registry: RwLock<Registry>,
+}
+
+impl Clone for Lazy {
+    /// The clone gets its own registry (a copy) and owner id: ids of the two diverge
+    /// from here on, so their caches must not be shared.
+    fn clone(&self) -> Lazy {
+        let registry = self
+            .registry
+            .read()
+            .unwrap_or_else(PoisonError::into_inner)
+            .clone();
+        Lazy {
+            nfa: self.nfa.clone(),
+            visible: self.visible.clone(),
+            classes: self.classes,
+            shift: self.shift,
+            cache_budget: self.cache_budget,
+            owner: NEXT_OWNER.fetch_add(1, Ordering::Relaxed),
+            registry: RwLock::new(registry),
+        }
+    }
+}
+
+impl Lazy {
+    /// `nfa` must have at most `64 * NFA_STATE_WORDS` positions.
+    pub(crate) fn new(
+        nfa: Nfa,
+        classes: usize,
+        cache_budget: usize,
+        visible: Option<Visible>,
+    ) -> Lazy {
+        debug_assert!(nfa.words() <= NFA_STATE_WORDS);
+        Lazy {
+            nfa,
+            visible,
+            classes,
+            shift: classes.next_power_of_two().trailing_zeros(),
+            cache_budget,
+            owner: NEXT_OWNER.fetch_add(1, Ordering::Relaxed),
+            registry: RwLock::new(Registry::new()),
+        }
+    }
+
+    pub(crate) fn nfa(&self) -> &Nfa {
+        &self.nfa
+    }
+
+    /// The subset of state `s`; an id this set never gave out reads as the dead state.
+    fn subset(&self, s: State) -> Subset {
+        let r = self.registry.read().unwrap_or_else(PoisonError::into_inner);
+        r.subsets
+            .get(s.0 as usize)
+            .copied()
+            .unwrap_or([0; NFA_STATE_WORDS])
+    }
+
+    fn intern(&self, sub: Subset) -> State {
+        if let Some(&id) = self
+            .registry
+            .read()
+            .unwrap_or_else(PoisonError::into_inner)
+            .ids
+            .get(&sub)
+        {
+            return State(id);
+        }
+        let mut r = self
+            .registry
+            .write()
+            .unwrap_or_else(PoisonError::into_inner);
+        // Another thread may have interned it between the two locks.
+        let next = r.subsets.len() as u32;
+        let id = *r.ids.entry(sub).or_insert(next);
+        if id == next {
+            r.subsets.push(sub);
+        }
+        State(id)
+    }
+
+    /// One step on the NFA, no cache: the registry only.
+    pub(crate) fn step_uncached(&self, s: State, c: Class) -> State {
+        let w = self.nfa.words();
+        let cur = self.subset(s);
+        let mut next = [0u64; NFA_STATE_WORDS];
+        self.nfa.step(&cur[..w], c.index(), &mut next[..w]);
+        self.intern(next)
+    }
+
+    pub(crate) fn matches_uncached(&self, s: State) -> AovMask {
+        let w = self.nfa.words();
+        let hidden = self.nfa.matches(&self.subset(s)[..w]);
+        self.visible.as_ref().map_or(hidden, |v| v.mask(hidden))
+    }
+
+    /// Distinct NFA states reached so far.
+    pub(crate) fn registered(&self) -> usize {
+        self.registry
+            .read()
+            .unwrap_or_else(PoisonError::into_inner)
+            .subsets
+            .len()
+    }
+
+    /// Bytes of the NFA and the registry (caches are the caller's).
+    pub(crate) fn memory_bytes(&self) -> usize {
+        // A registry entry: the subset in the list and as a map key, the id, and about
+        // one control byte of the map.
+        let entry = 2 * std::mem::size_of::<Subset>() + 4 + 1;
+        self.nfa.memory_bytes() + self.registered() * entry
+    }
+
+    /// A cache for this set.
+    pub(crate) fn cache(&self) -> Cache {
+        let mut c = Cache::empty();
+        c.adopt(self);
+        c
+    }
+
+    /// One step through this thread's cache (for callers without a [`Cache`] of their
+    /// own: the `State` API and [`crate::PathMatcher`]). One cache per thread, adopted by
+    /// the set stepped last: a thread alternating between two lazy sets refills it.
+    #[inline]
+    pub(crate) fn step_local(&self, s: State, c: Class) -> State {
+        if self.cache_budget == 0 {
+            return self.step_uncached(s, c);
+        }
+        LOCAL.with(|cache| match cache.try_borrow_mut() {
+            Ok(mut cache) => self.step(&mut cache, s, c),
+            Err(_) => self.step_uncached(s, c),
+        })
+    }
+
+    /// [`Lazy::matches`] through this thread's cache.
+    #[inline]
+    pub(crate) fn matches_local(&self, s: State) -> AovMask {
+        if self.cache_budget == 0 {
+            return self.matches_uncached(s);
+        }
+        LOCAL.with(|cache| match cache.try_borrow_mut() {
+            Ok(mut cache) => self.matches(&mut cache, s),
+            Err(_) => self.matches_uncached(s),
+        })
+    }
+
+    /// One step through `cache`: two loads on a hit.
+    #[inline]
+    pub(crate) fn step(&self, cache: &mut Cache, s: State, c: Class) -> State {
+        if cache.owner == self.owner {
+            if let Some(&row) = cache.row_of.get(s.0 as usize) {
+                if row != NONE {
+                    if let Some(&n) = cache.trans.get(row as usize + c.0 as usize) {
+                        if n != NONE {
+                            return State(n);
+                        }
+                    }
+                }
+            }
+        }
+        self.fill(cache, s, c)
+    }
+
+    /// The miss path, out of line so that the hit path inlines into the caller's loop.
+    #[inline(never)]
+    fn fill(&self, cache: &mut Cache, s: State, c: Class) -> State {
+        let next = self.step_uncached(s, c);
+        if !self.cacheable(s) || c.index() >= self.classes {
+            return next;
+        }
+        let row = self.row(cache, s);
+        cache.trans[row as usize + c.index()] = next.0;
+        next
+    }
+
+    /// The AOVs matching in `s`, through `cache`.
+    #[inline]
+    pub(crate) fn matches(&self, cache: &mut Cache, s: State) -> AovMask {
+        if cache.owner == self.owner {
+            if let Some(&row) = cache.row_of.get(s.0 as usize) {
+                if row != NONE {
+                    return cache.masks[(row >> self.shift) as usize];
+                }
+            }
+        }
+        self.matches_fill(cache, s)
+    }
+
+    #[inline(never)]
+    fn matches_fill(&self, cache: &mut Cache, s: State) -> AovMask {
+        if !self.cacheable(s) {
+            return self.matches_uncached(s);
+        }
+        let row = self.row(cache, s);
+        cache.masks[(row >> self.shift) as usize]
+    }
+
+    /// Whether `s` may get a cache row: caching is on and `s` is a registry id (a state
+    /// of another set could be any `u32`, and `row_of` is indexed by id).
+    fn cacheable(&self, s: State) -> bool {
+        self.cache_budget > 0 && (s.0 as usize) < self.registered()
+    }
+
+    /// The row of `s` in `cache`, made (clearing a full cache first) if it has none.
+    fn row(&self, cache: &mut Cache, s: State) -> u32 {
+        if cache.owner != self.owner {
+            cache.adopt(self);
+        }
+        let id = s.0 as usize;
+        if let Some(&row) = cache.row_of.get(id) {
+            if row != NONE {
+                return row;
+            }
+        }
+        if cache.masks.len() >= cache.max_rows {
+            cache.clear();
+        }
+        if cache.row_of.len() <= id {
+            cache.row_of.resize(id + 1, NONE);
+        }
+        let row = (cache.masks.len() << self.shift) as u32;
+        cache.row_of[id] = row;
+        cache.with_rows.push(s.0);
+        cache
+            .trans
+            .resize(cache.trans.len() + (1 << self.shift), NONE);
+        cache.masks.push(self.matches_uncached(s));
+        row
+    }
+}
+
+/// A per-thread cache of a lazily stepped set's transitions, owned by the caller (make
+/// one per render thread with [`crate::aov::AovSet::cache`]). Bounded by
+/// [`crate::aov::Options::lazy_cache`] bytes of rows, cleared whole when full; states
+/// in flight stay valid across clears. A cache made for one set and handed to another
+/// starts over for it. For sets with an eager DFA it is unused.
+#[derive(Clone, Debug)]
+pub struct Cache {
+    owner: u64,
+    /// Per registry id, the premultiplied row of its transitions, or `NONE`.
+    row_of: Vec<u32>,
+    /// Next registry id per `(row, class)`, or `NONE`.
+    trans: Vec<u32>,
+    /// The AOVs matching in each row's state.
+    masks: Vec<AovMask>,
+    /// Registry ids that have a row, to reset `row_of` on a clear.
+    with_rows: Vec<u32>,
+    max_rows: usize,
+    clears: usize,
+}
+
+impl Cache {
+    /// A cache for no set (the first step adopts one).
+    pub(crate) fn empty() -> Cache {
+        Cache {
+            owner: 0,
+            row_of: Vec::new(),
+            trans: Vec::new(),
+            masks: Vec::new(),
+            with_rows: Vec::new(),
+            max_rows: MIN_ROWS,
+            clears: 0,
+        }
+    }
+
+    fn adopt(&mut self, set: &Lazy) {
+        self.clear();
+        self.row_of = Vec::new();
+        self.owner = set.owner;
+        let row_bytes = (4usize << set.shift) + std::mem::size_of::<AovMask>() + 8;
+        self.max_rows = (set.cache_budget / row_bytes).max(MIN_ROWS);
+        self.clears = 0;
+    }
+
+    fn clear(&mut self) {
+        for &id in &self.with_rows {
+            self.row_of[id as usize] = NONE;
+        }
+        self.with_rows.clear();
+        self.trans.clear();
+        self.masks.clear();
+        self.clears += 1;
+    }
+
+    /// How often the cache was cleared because it was full (a cache that clears often is
+    /// too small for the set's working states).
+    pub fn clears(&self) -> usize {
+        self.clears
+    }
+
+    /// States with a row now.
+    pub fn rows(&self) -> usize {
+        self.masks.len()
+    }
+
+    /// Bytes held.
+    pub fn memory_bytes(&self) -> usize {
+        (self.row_of.len() + self.trans.len() + self.with_rows.len()) * 4
+            + self.masks.len() * std::mem::size_of::<AovMask>()
+    }
+}

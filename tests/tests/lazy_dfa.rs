@@ -1,0 +1,251 @@
+//! Sets over the DFA budget step a lazy DFA (`lpe::automata::lazy`): a registry of NFA
+//! states shared by the set, and per-thread transition caches that are cleared when
+//! full. Checked against the reference matcher (expected answers never come from lpe):
+//! - states in flight survive cache clears (many paths stepped round-robin through one
+//!   tiny cache, so every path's state crosses many clears);
+//! - one cache handed from one set to another answers for the new set;
+//! - threads stepping one set concurrently, each with its own cache, agree;
+//! - the wide-state NFA matcher and the hash-free interned classification agree;
+//! - a blow-up set goes lazy without a long eager attempt first;
+//! - `step_batch` (a wavefront of paths, one step each) answers per path.
+
+use lpe::macros::BASIC;
+use lpe::rng::SplitMix64;
+use lpe::{parse, AovMask, AovSet, Class, Lpe, Options, Path, PathMatcher, State, Vertex};
+use lpe_tests::{named, vertex_pool};
+
+fn lazy(cache: usize) -> Options {
+    Options {
+        dfa_budget: 0,
+        lazy_cache: cache,
+        ..Options::default()
+    }
+}
+
+/// Basic AOVs, label AOVs and a blow-up shape, so that paths reach many NFA states.
+fn exprs() -> Vec<Lpe> {
+    let mut srcs: Vec<String> = BASIC.iter().map(|(_, s)| s.to_string()).collect();
+    srcs.extend(
+        [
+            "C.*D.{6}[LO]",
+            "C<.D'floor'>.*[<L.>O]",
+            "C[^'glass']+<L.>",
+            "C(<RS>|<TS>)*<RD>.{0,3}L",
+        ]
+        .map(String::from),
+    );
+    srcs.iter().map(|s| parse(s).unwrap()).collect()
+}
+
+/// Random camera-to-emitter paths over the pool, 0..=`max_bounces` scattering vertices.
+fn random_paths(seed: u64, n: usize, max_bounces: usize) -> Vec<Path> {
+    let pool = vertex_pool();
+    let scatter: Vec<&Vertex> = pool.iter().filter(|v| v.ty().is_scattering()).collect();
+    let emit: Vec<&Vertex> = pool
+        .iter()
+        .filter(|v| !v.ty().is_scattering() && v.event().is_none() && **v != Vertex::camera())
+        .collect();
+    let mut rng = SplitMix64::new(seed);
+    let mut pick = |k: usize| (rng.next_u64() % k as u64) as usize;
+    (0..n)
+        .map(|_| {
+            let mut vs = vec![Vertex::camera()];
+            for _ in 0..pick(max_bounces + 1) {
+                vs.push(scatter[pick(scatter.len())].clone());
+            }
+            vs.push(emit[pick(emit.len())].clone());
+            Path::new(vs).unwrap()
+        })
+        .collect()
+}
+
+fn reference_mask(exprs: &[Lpe], p: &Path) -> AovMask {
+    exprs
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| reference::is_match(e, p))
+        .map(|(i, _)| i)
+        .collect()
+}
+
+#[test]
+fn states_in_flight_survive_cache_clears() {
+    let exprs = exprs();
+    let paths = random_paths(1, 400, 10);
+    let want: Vec<AovMask> = paths.iter().map(|p| reference_mask(&exprs, p)).collect();
+    assert!(
+        want.iter().filter(|m| !m.is_empty()).count() >= 40,
+        "too few matching paths to mean anything"
+    );
+    // One byte of budget: the cache holds its minimum of two rows.
+    let set = AovSet::compile_with(&named(&exprs), &lazy(1)).unwrap();
+    assert!(!set.uses_dfa());
+    let mut cache = set.cache();
+    let classes: Vec<Vec<Class>> = paths
+        .iter()
+        .map(|p| p.vertices().iter().map(|v| set.classify(v)).collect())
+        .collect();
+    // Round-robin: one step of every live path, then the next step of each.
+    let mut states: Vec<State> = vec![set.start(); paths.len()];
+    let longest = classes.iter().map(Vec::len).max().unwrap();
+    for i in 0..longest {
+        for (s, cs) in states.iter_mut().zip(&classes) {
+            if let Some(&c) = cs.get(i) {
+                *s = set.step_with(&mut cache, *s, c);
+            }
+        }
+    }
+    assert!(cache.clears() > 100, "{} clears", cache.clears());
+    assert!(cache.rows() <= 2, "{} rows", cache.rows());
+    for ((p, s), w) in paths.iter().zip(&states).zip(&want) {
+        assert_eq!(set.matches_with(&mut cache, *s), *w, "{p}");
+        // The State API (its own per-thread cache) reads the same state alike.
+        assert_eq!(set.matches(*s), *w, "{p}");
+    }
+}
+
+#[test]
+fn a_cache_moved_to_another_set_answers_for_it() {
+    let exprs = exprs();
+    let (a, b) = exprs.split_at(5);
+    let paths = random_paths(2, 300, 8);
+    let sa = AovSet::compile_with(&named(a), &lazy(64 << 10)).unwrap();
+    let sb = AovSet::compile_with(&named(b), &lazy(64 << 10)).unwrap();
+    let mut cache = sa.cache();
+    for p in &paths {
+        for (set, exprs) in [(&sa, a), (&sb, b)] {
+            let s = p.vertices().iter().fold(set.start(), |s, v| {
+                set.step_with(&mut cache, s, set.classify(v))
+            });
+            assert_eq!(
+                set.matches_with(&mut cache, s),
+                reference_mask(exprs, p),
+                "{p}"
+            );
+        }
+    }
+    // A clone has its own registry: the original's cache is reset for it, not misread.
+    let sc = sa.clone();
+    for p in &paths {
+        let s = p.vertices().iter().fold(sc.start(), |s, v| {
+            sc.step_with(&mut cache, s, sc.classify(v))
+        });
+        assert_eq!(sc.matches_with(&mut cache, s), reference_mask(a, p), "{p}");
+    }
+}
+
+#[test]
+fn threads_share_one_lazy_set() {
+    let exprs = exprs();
+    let set = AovSet::compile_with(&named(&exprs), &lazy(16 << 10)).unwrap();
+    std::thread::scope(|scope| {
+        for t in 0..4 {
+            let (set, exprs) = (&set, &exprs);
+            scope.spawn(move || {
+                let mut cache = set.cache();
+                for p in random_paths(10 + t, 300, 10) {
+                    let s = p.vertices().iter().fold(set.start(), |s, v| {
+                        set.step_with(&mut cache, s, set.classify(v))
+                    });
+                    assert_eq!(set.matches_with(&mut cache, s), reference_mask(exprs, &p));
+                    // The plain State API steps through this thread's own cache.
+                    assert_eq!(set.match_path(&p), reference_mask(exprs, &p), "{p}");
+                }
+            });
+        }
+    });
+    assert!(set.lazy_states().unwrap() > 10);
+}
+
+#[test]
+fn the_wide_nfa_and_interned_classes_agree_with_the_reference() {
+    let exprs = exprs();
+    let lazy_set = AovSet::compile_with(&named(&exprs), &lazy(0)).unwrap();
+    let wide = lazy_set.nfa().expect("a lazy set keeps its NFA");
+    let dfa_set = AovSet::compile(&named(&exprs)).unwrap();
+    assert!(dfa_set.uses_dfa() && dfa_set.nfa().is_none());
+    for p in random_paths(3, 500, 10) {
+        let want = reference_mask(&exprs, &p);
+        assert_eq!(wide.match_path(&p), want, "{p}");
+        for set in [&lazy_set, &dfa_set] {
+            let s = p.vertices().iter().fold(set.start(), |s, v| {
+                let c = set.classify_interned(v.ty(), v.event(), set.label_id(v.label()));
+                assert_eq!(c, set.classify(v), "{v}");
+                set.step_class(s, c)
+            });
+            assert_eq!(set.matches(s), want, "{p}");
+        }
+    }
+    // Labels no expression mentions share one id; ids and states of another set never
+    // panic.
+    assert_eq!(dfa_set.label_id(Some("zz")), dfa_set.label_id(Some("yy")));
+    assert_ne!(dfa_set.label_id(Some("floor")), dfa_set.label_id(None));
+    let small = AovSet::compile(&named(&[parse("CL").unwrap()])).unwrap();
+    let foreign = dfa_set.label_id(Some("glass"));
+    // With a cache too: a foreign id must not size the cache's per-id index.
+    let cached = AovSet::compile_with(&named(&exprs), &lazy(1 << 20)).unwrap();
+    for set in [&small, &lazy_set, &cached] {
+        let c = set.classify_interned(lpe::VertexType::L, None, foreign);
+        let s = set.step_class(State::from_u32(u32::MAX - 3), c);
+        let _ = (set.matches(s), set.is_dead(s));
+        let mut cache = set.cache();
+        let s = set.step_with(&mut cache, State::from_u32(u32::MAX - 3), c);
+        let _ = set.matches_with(&mut cache, State::from_u32(u32::MAX - 7));
+        let _ = (set.matches_with(&mut cache, s), set.is_dead(s));
+        assert!(cache.memory_bytes() < 1 << 20, "{}", cache.memory_bytes());
+    }
+}
+
+#[test]
+fn blow_up_sets_go_lazy_at_once_and_answer_right() {
+    let src = "C.*D.{20}[LO]";
+    let exprs = vec![parse(src).unwrap()];
+    let set = AovSet::compile(&named(&exprs)).unwrap();
+    // The eager attempt stops at its state cap, far below the 2^21 states and the
+    // default budget: the registry holds only the two initial states until stepped.
+    assert!(!set.uses_dfa());
+    assert_eq!(set.lazy_states(), Some(2));
+    let mut p = "C RD".to_string();
+    p.push_str(&" RS".repeat(20));
+    p.push_str(" L");
+    let p: Path = p.parse().unwrap();
+    assert!(reference::is_match(&exprs[0], &p));
+    assert!(set.match_path(&p).contains(0));
+    for p in random_paths(4, 200, 30) {
+        assert_eq!(set.match_path(&p), reference_mask(&exprs, &p), "{p}");
+    }
+}
+
+#[test]
+fn batch_steps_answer_per_path() {
+    let exprs = exprs();
+    let paths = random_paths(5, 300, 10);
+    for opts in [Options::default(), lazy(1)] {
+        let set = AovSet::compile_with(&named(&exprs), &opts).unwrap();
+        let mut states = vec![set.start(); paths.len()];
+        let longest = paths.iter().map(Path::len).max().unwrap();
+        for d in 0..longest {
+            // Paths past their end step on nothing: the batch's classes are the alive
+            // paths' only, so a shorter class slice leaves the rest alone.
+            let alive: Vec<usize> = (0..paths.len()).filter(|&i| paths[i].len() > d).collect();
+            let mut batch: Vec<State> = alive.iter().map(|&i| states[i]).collect();
+            let classes: Vec<Class> = alive
+                .iter()
+                .map(|&i| set.classify(&paths[i].vertices()[d]))
+                .collect();
+            batch.push(set.start());
+            set.step_batch(&mut batch, &classes);
+            assert_eq!(
+                batch.last(),
+                Some(&set.start()),
+                "past the classes: untouched"
+            );
+            for (&i, &s) in alive.iter().zip(&batch) {
+                states[i] = s;
+            }
+        }
+        for (p, &s) in paths.iter().zip(&states) {
+            assert_eq!(set.matches(s), reference_mask(&exprs, p), "{p}");
+        }
+    }
+}
