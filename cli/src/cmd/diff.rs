@@ -4,6 +4,9 @@
 //! compiled at once) and `--paths` paths generated *from* it; see
 //! `engines::differential::cases`. Every engine answers; the first disagreements are
 //! minimized and printed, and the process exits 3.
+//!
+//! With `--external 'CMD ARGS'` the cases go to an external matcher over the protocol of
+//! docs/protocol.md instead (see [`super::external`]).
 
 use std::process::ExitCode;
 use std::time::Instant;
@@ -36,6 +39,26 @@ pub struct Args {
     /// Stop after this many disagreements.
     #[arg(long, default_value_t = 3)]
     pub max_failures: usize,
+    /// An external matcher to test: a command line (split like a shell does) speaking
+    /// the JSON Lines protocol of docs/protocol.md on stdin/stdout.
+    #[arg(long, value_name = "CMD ARGS")]
+    pub external: Option<String>,
+    /// The dialect of expressions and paths sent to the external matcher.
+    #[arg(long, value_enum, default_value_t = super::external::Dialect::Renderman)]
+    pub dialect: super::external::Dialect,
+    /// Milliseconds the external matcher has to answer one request.
+    #[arg(long, default_value_t = 2000)]
+    pub timeout_ms: u64,
+    /// Stop after the external process was restarted this many times.
+    #[arg(long, default_value_t = 20)]
+    pub max_restarts: u64,
+    /// With --external: replay one given AOV set (repeat for several AOVs) instead of
+    /// generated cases.
+    #[arg(long, requires = "external")]
+    pub expr: Vec<String>,
+    /// With --external and --expr: the paths to ask about.
+    #[arg(long, requires = "expr")]
+    pub path: Vec<String>,
 }
 
 impl Args {
@@ -54,6 +77,9 @@ impl Args {
 
 /// Runs `lpe-check diff`.
 pub fn run(args: Args) -> ExitCode {
+    if args.external.is_some() {
+        return super::external::run(&args);
+    }
     let engines = match select_engines(&args.engine) {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),

@@ -3,6 +3,7 @@
 pub mod bench;
 pub mod diff;
 pub mod equiv;
+pub mod external;
 pub mod matching;
 pub mod parse;
 pub mod partition;

@@ -24,7 +24,7 @@ pub mod shrink;
 pub use cases::{case_rng, generate_case, run_cases, Case, Run, Totals};
 pub use check::{answers_of, check, check_set, check_with, Agreement, Outcome};
 pub use counterexample::Counterexample;
-pub use shrink::{minimize, shrink_expr, shrink_path};
+pub use shrink::{minimize, minimize_by, shrink_expr, shrink_path};
 
 #[cfg(test)]
 pub(crate) mod tests {

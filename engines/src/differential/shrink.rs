@@ -21,7 +21,20 @@ const MAX_SHRINK_TRIES: usize = 20_000;
 
 /// Greedy minimization: take the first simpler input on which the engines still
 /// disagree, and start again from it, until no simpler input disagrees.
-pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) -> (Vec<Lpe>, Path) {
+pub fn minimize(engines: &[&dyn Engine], exprs: Vec<Lpe>, path: Path) -> (Vec<Lpe>, Path) {
+    minimize_by(exprs, path, |exprs, path| disagrees(engines, exprs, path))
+}
+
+/// Greedy minimization against any failure test: take the first simpler input (fewer
+/// expressions, a simpler expression, a shorter or less labelled path, or an expression
+/// and a path step together) on which `fails` still holds, and start again from it,
+/// until no simpler input fails. `lpe-check diff --external` passes a test that re-asks
+/// the external process.
+pub fn minimize_by(
+    mut exprs: Vec<Lpe>,
+    mut path: Path,
+    mut fails: impl FnMut(&[Lpe], &Path) -> bool,
+) -> (Vec<Lpe>, Path) {
     let mut tries = 0;
     'outer: loop {
         // Fewer expressions first: a set of one is easiest to read.
@@ -30,7 +43,7 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
                 let mut fewer = exprs.clone();
                 fewer.remove(i);
                 tries += 1;
-                if disagrees(engines, &fewer, &path) {
+                if fails(&fewer, &path) {
                     exprs = fewer;
                     continue 'outer;
                 }
@@ -47,7 +60,7 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
                     prefixes: lpe::Prefixes::NONE,
                     expr: smaller,
                 };
-                if disagrees(engines, &candidate, &path) {
+                if fails(&candidate, &path) {
                     exprs = candidate;
                     continue 'outer;
                 }
@@ -56,7 +69,7 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
             if !exprs[i].prefixes.is_empty() {
                 let mut candidate = exprs.clone();
                 candidate[i].prefixes = lpe::Prefixes::NONE;
-                if disagrees(engines, &candidate, &path) {
+                if fails(&candidate, &path) {
                     exprs = candidate;
                     continue 'outer;
                 }
@@ -68,7 +81,7 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
                 break 'outer;
             }
             tries += 1;
-            if disagrees(engines, &exprs, smaller) {
+            if fails(&exprs, smaller) {
                 path = smaller.clone();
                 continue 'outer;
             }
@@ -84,7 +97,7 @@ pub fn minimize(engines: &[&dyn Engine], mut exprs: Vec<Lpe>, mut path: Path) ->
                     tries += 1;
                     let mut candidate = exprs.clone();
                     candidate[i].expr = smaller.clone();
-                    if disagrees(engines, &candidate, smaller_path) {
+                    if fails(&candidate, smaller_path) {
                         exprs = candidate;
                         path = smaller_path.clone();
                         continue 'outer;
