@@ -137,6 +137,9 @@ pub fn shorten(line: &str) -> String {
     )
 }
 
+/// Least time a process has to start and answer its `hello`.
+pub const HELLO_TIMEOUT: Duration = Duration::from_secs(10);
+
 /// A connection to an external matcher that survives its crashes.
 pub struct Client {
     argv: Vec<String>,
@@ -186,11 +189,18 @@ impl Client {
         Ok(c)
     }
 
+    /// The first request of a process. It also waits for the process to start (an
+    /// interpreter on a loaded machine can take seconds), so it gets at least
+    /// [`HELLO_TIMEOUT`].
     fn hello(&mut self) -> Result<Reply, Fault> {
-        self.request(Body::Hello {
+        let timeout = self.timeout;
+        self.timeout = timeout.max(HELLO_TIMEOUT);
+        let reply = self.request(Body::Hello {
             protocol: PROTOCOL_VERSION,
             dialect: self.dialect.clone(),
-        })
+        });
+        self.timeout = timeout;
+        reply
     }
 
     /// Compiles a set: [`Reply::Done`], [`Reply::Rejected`] or [`Reply::Unsupported`].
