@@ -212,6 +212,7 @@ static void request_member(reader *r, const char *key, void *ctx) {
 /* ---- matching through the C ABI -------------------------------------------------- */
 
 static lpe_set *set = NULL;
+static lpe_options options;
 
 /* Steps a path written as text (vertices separated by spaces; labels in quotes may hold
  * spaces) and prints the names of the AOVs it lands in as a JSON array. 0 on a bad
@@ -268,7 +269,7 @@ static void answer(request *q) {
         size_t n = q->names.n < q->exprs.n ? q->names.n : q->exprs.n;
         lpe_status st = lpe_set_compile((const char *const *)q->names.items,
                                         (const char *const *)q->exprs.items, n,
-                                        LPE_DIALECT_RENDERMAN, NULL, NULL, &set, &err);
+                                        LPE_DIALECT_RENDERMAN, NULL, &options, &set, &err);
         if (st == LPE_OK) {
             printf("{\"id\":%s,\"ok\":true}\n", id);
         } else if (st == LPE_ERR_PARSE) {
@@ -303,7 +304,11 @@ static void answer(request *q) {
     fflush(stdout);
 }
 
-int main(void) {
+int main(int argc, char **argv) {
+    /* --dfa-budget BYTES: a renderer's compile options (0: step the bitset NFA). */
+    options = lpe_options_default();
+    for (int i = 1; i + 1 < argc; i++)
+        if (!strcmp(argv[i], "--dfa-budget")) options.dfa_budget = (size_t)strtoull(argv[++i], NULL, 10);
     size_t cap = 1 << 16;
     char *line = malloc(cap);
     request q;

@@ -401,9 +401,11 @@ def main():
                 except LpeError as e:
                     reply = {"id": rid, "ok": False,
                              "error": {"message": e.message, "aov": k, "position": e.position}}
+                    aovs = []  # no set: later matches answer "no AOV"
                     break
                 except Unsupported as e:
                     reply = {"id": rid, "ok": False, "unsupported": str(e)}
+                    aovs = []
                     break
         elif op == "match":
             try:

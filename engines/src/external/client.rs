@@ -247,45 +247,90 @@ impl Client {
 
     /// One request, one reply; any fault kills the process.
     fn request(&mut self, body: Body) -> Result<Reply, Fault> {
-        let request = Request {
-            id: self.next_id,
-            body,
-        };
-        self.next_id += 1;
-        let line = request.to_line();
-        match self.exchange(&request, &line) {
-            Ok(reply) => Ok(reply),
-            Err(mut kind) => {
-                if let Some(mut p) = self.process.take() {
-                    let (status, stderr) = p.kill();
-                    if let FaultKind::Crash { .. } = kind {
-                        kind = FaultKind::Crash { status, stderr };
-                    }
-                }
-                Err(Fault {
-                    request: shorten(&line),
-                    kind,
-                })
-            }
+        let (mut replies, fault) = self.exchange(vec![body]);
+        match fault {
+            Some(f) => Err(f),
+            None => Ok(replies.remove(0)),
         }
     }
 
-    fn exchange(&mut self, request: &Request, line: &str) -> Result<Reply, FaultKind> {
-        let p = self.process.as_mut().expect("ensure() ran");
-        let crash = || FaultKind::Crash {
-            status: String::new(),
-            stderr: Vec::new(),
+    /// Sends every request at once, then reads the replies in order: the protocol is
+    /// one reply per request, so a matcher that reads lines one by one needs nothing
+    /// to be pipelined, and a batch costs one round trip instead of one per request.
+    /// Returns the replies read before the first fault, and that fault (which killed
+    /// the process; the requests after it went unanswered). Each reply has the
+    /// per-request timeout.
+    pub fn pipeline(&mut self, bodies: Vec<Body>) -> (Vec<Reply>, Option<Fault>) {
+        if let Err(f) = self.ensure() {
+            return (Vec::new(), Some(f));
+        }
+        self.exchange(bodies)
+    }
+
+    fn exchange(&mut self, bodies: Vec<Body>) -> (Vec<Reply>, Option<Fault>) {
+        let requests: Vec<Request> = bodies
+            .into_iter()
+            .map(|body| {
+                self.next_id += 1;
+                Request {
+                    id: self.next_id - 1,
+                    body,
+                }
+            })
+            .collect();
+        let lines: Vec<String> = requests.iter().map(Request::to_line).collect();
+        let mut replies = Vec::with_capacity(requests.len());
+        let mut outcome = self.send_all(&lines);
+        if outcome.is_ok() {
+            for (k, r) in requests.iter().enumerate() {
+                match self.receive(r) {
+                    Ok(reply) => replies.push(reply),
+                    Err(kind) => {
+                        outcome = Err((k, kind));
+                        break;
+                    }
+                }
+            }
+        }
+        let Err((k, mut kind)) = outcome else {
+            return (replies, None);
         };
+        if let Some(mut p) = self.process.take() {
+            let (status, stderr) = p.kill();
+            if let FaultKind::Crash { .. } = kind {
+                kind = FaultKind::Crash { status, stderr };
+            }
+        }
+        let fault = Fault {
+            request: shorten(&lines[k]),
+            kind,
+        };
+        (replies, Some(fault))
+    }
+
+    /// Writes the lines, after checking that no reply is waiting that nobody asked for.
+    fn send_all(&mut self, lines: &[String]) -> Result<(), (usize, FaultKind)> {
+        let p = self.process.as_mut().expect("ensure() ran");
         if let Some(extra) = p.pending() {
-            return Err(match extra {
-                Line::Text(l) | Line::NotUtf8(l) => FaultKind::Extra(shorten(&l)),
-                Line::TooLong => FaultKind::Extra(format!("(over {} bytes)", super::MAX_LINE)),
-                Line::Eof => crash(),
-            });
+            return Err((
+                0,
+                match extra {
+                    Line::Text(l) | Line::NotUtf8(l) => FaultKind::Extra(shorten(&l)),
+                    Line::TooLong => FaultKind::Extra(format!("(over {} bytes)", super::MAX_LINE)),
+                    Line::Eof => crash(),
+                },
+            ));
         }
-        if p.send(line).is_err() {
-            return Err(crash());
+        for (k, line) in lines.iter().enumerate() {
+            if p.send(line).is_err() {
+                return Err((k, crash()));
+            }
         }
+        Ok(())
+    }
+
+    fn receive(&mut self, request: &Request) -> Result<Reply, FaultKind> {
+        let p = self.process.as_mut().expect("ensure() ran");
         let reply = match p.recv(self.timeout) {
             Ok(Line::Text(l)) => l,
             Ok(Line::NotUtf8(l)) => {
@@ -307,6 +352,14 @@ impl Client {
             line: shorten(&reply),
             violation,
         })
+    }
+}
+
+/// A crash before its status is known (filled in once the process is reaped).
+fn crash() -> FaultKind {
+    FaultKind::Crash {
+        status: String::new(),
+        stderr: Vec::new(),
     }
 }
 

@@ -16,7 +16,7 @@ use lpe::generate::Config as GenConfig;
 use lpe::{Lpe, Path};
 
 use super::client::{Client, Fault, FaultKind, StartError};
-use super::protocol::{AovSource, Reply, Violation};
+use super::protocol::{AovSource, Body, Reply, Violation};
 use crate::differential::{generate_case, minimize_by, Run};
 use crate::engine::Engine;
 
@@ -244,39 +244,57 @@ fn sources(exprs: &[String]) -> Vec<AovSource> {
         .collect()
 }
 
-/// The external side of one set: its compile reply, and if it compiled, one answer per
-/// path. `Ok(None)`: unsupported.
+/// The two requests that ask about one set: `compile`, then `match` of all its paths.
+fn requests(aovs: &[AovSource], paths: &[String]) -> [Body; 2] {
+    [
+        Body::Compile {
+            aovs: aovs.to_vec(),
+        },
+        Body::Match {
+            paths: paths.to_vec(),
+        },
+    ]
+}
+
+/// The external side of one set, asked in one round trip: one answer per path (a
+/// rejection repeated), or `Ok(None)`: unsupported.
 fn ask(
     client: &mut Client,
     aovs: &[AovSource],
     paths: &[String],
 ) -> Result<Option<Vec<Answer>>, Fault> {
-    match client.compile(aovs.to_vec())? {
-        Reply::Done => {}
-        Reply::Rejected(r) => {
+    let (replies, fault) = client.pipeline(requests(aovs, paths).into());
+    match fault {
+        Some(f) => Err(f),
+        None => interpret(aovs, paths, &replies),
+    }
+}
+
+/// The replies to [`requests`] as answers. After a rejected compile the match reply
+/// is read but not used.
+fn interpret(
+    aovs: &[AovSource],
+    paths: &[String],
+    replies: &[Reply],
+) -> Result<Option<Vec<Answer>>, Fault> {
+    let lists = match replies {
+        [Reply::Rejected(r), _] => {
             let rejected = Answer::Rejected {
                 aov: r.aov,
                 position: r.position,
-                message: r.message,
+                message: r.message.clone(),
             };
             return Ok(Some(vec![rejected; paths.len()]));
         }
-        Reply::Unsupported(_) => return Ok(None),
-        other => unreachable!("compile replies are checked: {other:?}"),
-    }
-    if paths.is_empty() {
-        return Ok(Some(Vec::new()));
-    }
-    let lists = match client.match_paths(paths.to_vec())? {
-        Reply::Matches(m) => m,
-        Reply::Unsupported(_) => return Ok(None),
-        other => unreachable!("match replies are checked: {other:?}"),
+        [Reply::Unsupported(_), _] | [_, Reply::Unsupported(_)] => return Ok(None),
+        [Reply::Done, Reply::Matches(m)] => m,
+        other => unreachable!("replies are checked against their requests: {other:?}"),
     };
     let mut answers = Vec::with_capacity(lists.len());
     for list in lists {
         let mut bits = vec![false; aovs.len()];
         for name in list {
-            match aovs.iter().position(|a| a.name == name) {
+            match aovs.iter().position(|a| &a.name == name) {
                 Some(i) => bits[i] = true,
                 None => {
                     return Err(Fault {
@@ -336,6 +354,12 @@ fn parse_all(exprs: &[String]) -> Result<Vec<Lpe>, Answer> {
         .collect()
 }
 
+/// A case: its index (generated runs), expressions and paths, as text.
+type Item = (Option<u64>, Vec<String>, Vec<String>);
+
+/// Cases per pipelined batch.
+const BATCH: usize = 64;
+
 /// Runs the cases against the external matcher.
 pub fn run(
     setup: &Setup,
@@ -347,7 +371,7 @@ pub fn run(
         name: client.name.clone(),
         ..Report::default()
     };
-    let (max_failures, list): (usize, Vec<(Option<u64>, Vec<String>, Vec<String>)>) = match cases {
+    let (max_failures, list): (usize, Vec<Item>) = match cases {
         Cases::Given { exprs, paths } => (usize::MAX, vec![(None, exprs.clone(), paths.clone())]),
         Cases::Generated(run) => {
             let cfg = GenConfig::default().with_max_atoms(run.max_size);
@@ -364,11 +388,8 @@ pub fn run(
             (run.max_failures, list)
         }
     };
-    for (case, exprs, paths) in list {
-        if report.disagreements() >= max_failures {
-            report.stopped = Some(format!("{max_failures} disagreement(s) found"));
-            break;
-        }
+    let mut queue: std::collections::VecDeque<_> = list.into();
+    'batches: while !queue.is_empty() {
         if client.restarts > setup.max_restarts {
             report.stopped = Some(format!(
                 "the external process was restarted {} times",
@@ -376,21 +397,49 @@ pub fn run(
             ));
             break;
         }
-        report.cases += 1;
-        one_case(setup, &mut client, engines, case, &exprs, &paths, &mut report);
+        // One round trip per batch: every case's compile and match, pipelined.
+        let batch: Vec<Item> = queue.drain(..queue.len().min(BATCH)).collect();
+        let bodies: Vec<Body> = batch
+            .iter()
+            .flat_map(|(_, exprs, paths)| requests(&sources(exprs), paths))
+            .collect();
+        let (replies, fault) = client.pipeline(bodies);
+        let answered = replies.len() / 2;
+        let mut fault = fault;
+        for (k, (case, exprs, paths)) in batch.iter().enumerate() {
+            if report.disagreements() >= max_failures {
+                report.stopped = Some(format!("{max_failures} disagreement(s) found"));
+                break 'batches;
+            }
+            let external = if k < answered {
+                interpret(&sources(exprs), paths, &replies[2 * k..2 * k + 2])
+            } else if let Some(f) = fault.take() {
+                Err(f)
+            } else {
+                // Unanswered after a fault: asked again in the next batch.
+                queue.extend(batch[k..].iter().cloned());
+                break;
+            };
+            report.cases += 1;
+            judge(setup, &mut client, engines, *case, exprs, paths, external, &mut report);
+        }
     }
     report.restarts = client.restarts;
     client.quit();
     Ok(report)
 }
 
-fn one_case(
+/// Compares the external answers on one case with every engine's; a disagreement is
+/// minimized and recorded.
+#[allow(clippy::too_many_arguments)]
+fn judge(
     setup: &Setup,
     client: &mut Client,
     engines: &[&dyn Engine],
     case: Option<u64>,
     exprs: &[String],
     path_texts: &[String],
+    external: Result<Option<Vec<Answer>>, Fault>,
     report: &mut Report,
 ) {
     let aovs = sources(exprs);
@@ -399,14 +448,17 @@ fn one_case(
         Ok(p) => p,
         Err(_) => Vec::new(),
     };
-    let external = match ask(client, &aovs, path_texts) {
+    let external = match external {
         Ok(Some(answers)) => answers,
         Ok(None) => {
             report.unsupported.0 += 1;
             report
                 .unsupported
                 .1
-                .get_or_insert_with(|| format!("case {case:?}: {}", exprs.join(" ; ")));
+                .get_or_insert_with(|| {
+                    let at = case.map_or(String::new(), |c| format!("case {c}: "));
+                    format!("{at}{}", exprs.join(" ; "))
+                });
             return;
         }
         Err(fault) => {

@@ -9,7 +9,7 @@
 use std::collections::VecDeque;
 use std::io::{BufRead, BufReader, Read, Write};
 use std::process::{Child, ChildStdin, Command, Stdio};
-use std::sync::mpsc::{self, Receiver, RecvTimeoutError};
+use std::sync::mpsc::{self, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex};
 use std::time::Duration;
 
@@ -33,6 +33,10 @@ pub enum Line {
     Eof,
 }
 
+/// stdin is closed: the process is gone.
+#[derive(Debug)]
+pub struct Closed;
+
 /// How waiting for a line ended without one.
 #[derive(Debug)]
 pub enum Wait {
@@ -45,7 +49,9 @@ pub enum Wait {
 /// A running external matcher.
 pub struct Process {
     child: Child,
-    stdin: Option<ChildStdin>,
+    /// Lines for the writer thread: a send never blocks, even on a process that stopped
+    /// reading with its pipe full.
+    stdin: Option<Sender<String>>,
     lines: Receiver<Line>,
     stderr: Arc<Mutex<VecDeque<String>>>,
 }
@@ -62,7 +68,9 @@ impl Process {
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
             .spawn()?;
-        let stdin = child.stdin.take();
+        let pipe = child.stdin.take().expect("stdin is piped");
+        let (stdin, queue) = mpsc::channel();
+        std::thread::spawn(move || write_lines(pipe, &queue));
         let stdout = child.stdout.take().expect("stdout is piped");
         let stderr = child.stderr.take().expect("stderr is piped");
         let (tx, lines) = mpsc::channel();
@@ -81,21 +89,17 @@ impl Process {
         });
         Ok(Process {
             child,
-            stdin,
+            stdin: Some(stdin),
             lines,
             stderr: tail,
         })
     }
 
-    /// Writes one line (the newline is added) and flushes.
-    pub fn send(&mut self, line: &str) -> std::io::Result<()> {
-        let stdin = self
-            .stdin
-            .as_mut()
-            .ok_or_else(|| std::io::Error::new(std::io::ErrorKind::BrokenPipe, "stdin closed"))?;
-        stdin.write_all(line.as_bytes())?;
-        stdin.write_all(b"\n")?;
-        stdin.flush()
+    /// Queues one line for stdin (the newline is added). Fails once the writer thread
+    /// has stopped (the pipe broke: the process is gone).
+    pub fn send(&mut self, line: &str) -> Result<(), Closed> {
+        let stdin = self.stdin.as_ref().ok_or(Closed)?;
+        stdin.send(format!("{line}\n")).map_err(|_| Closed)
     }
 
     /// The next stdout line, waiting at most `timeout`.
@@ -162,6 +166,20 @@ impl Drop for Process {
             let _ = self.child.kill();
         }
         let _ = self.child.wait();
+    }
+}
+
+/// The writer thread: queued lines to stdin until the queue or the pipe closes.
+fn write_lines(mut pipe: ChildStdin, queue: &Receiver<String>) {
+    while let Ok(line) = queue.recv() {
+        // Batch what is already queued into one write.
+        let mut chunk = line;
+        while let Ok(more) = queue.try_recv() {
+            chunk.push_str(&more);
+        }
+        if pipe.write_all(chunk.as_bytes()).and_then(|()| pipe.flush()).is_err() {
+            return;
+        }
     }
 }
 
