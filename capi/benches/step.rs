@@ -25,8 +25,10 @@ fn bench(c: &mut Criterion) {
         .map(|(n, e)| (n.to_string(), lpe::parse(e).unwrap()))
         .collect();
     let rust = AovSet::compile(&aovs).unwrap();
-    let names: Vec<std::ffi::CString> =
-        aovs.iter().map(|(n, _)| std::ffi::CString::new(n.as_str()).unwrap()).collect();
+    let names: Vec<std::ffi::CString> = aovs
+        .iter()
+        .map(|(n, _)| std::ffi::CString::new(n.as_str()).unwrap())
+        .collect();
     let exprs: Vec<std::ffi::CString> = lpe::macros::BASIC
         .iter()
         .map(|(_, e)| std::ffi::CString::new(*e).unwrap())
@@ -59,7 +61,10 @@ fn bench(c: &mut Criterion) {
                 .map(|v| {
                     let t = std::ffi::CString::new(v.to_string()).unwrap();
                     let mut c = lpe_class { id: 0 };
-                    assert_eq!(lpe_classify_text(set, t.as_ptr(), &mut c), lpe_status::LPE_OK);
+                    assert_eq!(
+                        lpe_classify_text(set, t.as_ptr(), &mut c),
+                        lpe_status::LPE_OK
+                    );
                     c
                 })
                 .collect()

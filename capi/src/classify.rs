@@ -70,7 +70,8 @@ fn vertex_of(v: &lpe_vertex) -> Result<Vertex, lpe_status> {
         VertexType::L if no_event => Ok(Vertex::light(label)),
         VertexType::O if no_event => Ok(Vertex::emissive(label)),
         VertexType::R | VertexType::T => {
-            let kind = EventKind::from_letter(char::from(v.event)).ok_or(lpe_status::LPE_ERR_RANGE)?;
+            let kind =
+                EventKind::from_letter(char::from(v.event)).ok_or(lpe_status::LPE_ERR_RANGE)?;
             let event = Event::new(kind, v.lobe).ok_or(lpe_status::LPE_ERR_RANGE)?;
             Ok(Vertex::scatter(ty, event, label))
         }
@@ -89,9 +90,11 @@ pub extern "C" fn lpe_classify(
     out: *mut lpe_class,
 ) -> lpe_status {
     // SAFETY: NULL or valid pointers from the caller.
-    let (Some(set), Some(vertex), Some(out)) =
-        (unsafe { set.as_ref() }, unsafe { vertex.as_ref() }, unsafe { out.as_mut() })
-    else {
+    let (Some(set), Some(vertex), Some(out)) = (
+        unsafe { set.as_ref() },
+        unsafe { vertex.as_ref() },
+        unsafe { out.as_mut() },
+    ) else {
         return lpe_status::LPE_ERR_NULL;
     };
     guard(lpe_status::LPE_ERR_PANIC, || match vertex_of(vertex) {
@@ -139,7 +142,11 @@ fn vertex_from_text(src: &str) -> Option<Vertex> {
         _ => (format!("C {src} L"), 1),
     };
     let path: Path = text.parse().ok()?;
-    let expected = if at == 1 && !matches!(first, 'L' | 'O') { 3 } else { 2 };
+    let expected = if at == 1 && !matches!(first, 'L' | 'O') {
+        3
+    } else {
+        2
+    };
     (path.len() == expected).then(|| path.vertices()[at].clone())
 }
 
@@ -167,7 +174,10 @@ mod tests {
         let v = vertex_from_text("RD2'a b'").unwrap();
         assert_eq!(v.to_string(), "RD2'a b'");
         assert_eq!(vertex_from_text("C").unwrap(), Vertex::camera());
-        assert_eq!(vertex_from_text("l'key'").unwrap(), Vertex::light(Some("key")));
+        assert_eq!(
+            vertex_from_text("l'key'").unwrap(),
+            Vertex::light(Some("key"))
+        );
         assert_eq!(vertex_from_text("O").unwrap(), Vertex::emissive(None));
         for bad in ["", "RD RS", "C L", "RX", "L O", "RD9", "C'x'"] {
             assert!(vertex_from_text(bad).is_none(), "{bad}");

@@ -14,7 +14,12 @@ pub struct lpe_error {
 }
 
 impl lpe_error {
-    pub(crate) fn new(status: lpe_status, message: String, aov: Option<usize>, position: Option<usize>) -> lpe_error {
+    pub(crate) fn new(
+        status: lpe_status,
+        message: String,
+        aov: Option<usize>,
+        position: Option<usize>,
+    ) -> lpe_error {
         // Messages never hold NUL; if one did, cut it there rather than fail.
         let message = CString::new(message).unwrap_or_else(|e| {
             let end = e.nul_position();

@@ -138,10 +138,14 @@ fn compile(
     let config = if ini_text.is_null() {
         Config::default()
     } else {
-        let ini = text(ini_text)
-            .map_err(|s| err(s, "the rendermn.ini text is not UTF-8", None))?;
+        let ini = text(ini_text).map_err(|s| err(s, "the rendermn.ini text is not UTF-8", None))?;
         Config::from_ini(ini).map_err(|e| {
-            lpe_error::new(lpe_status::LPE_ERR_INI, format!("rendermn.ini: {e}"), None, Some(e.line))
+            lpe_error::new(
+                lpe_status::LPE_ERR_INI,
+                format!("rendermn.ini: {e}"),
+                None,
+                Some(e.line),
+            )
         })?
     };
     let parser = config.parser();
@@ -151,8 +155,8 @@ fn compile(
         // SAFETY: the caller passes arrays of `count` pointers (checked non-null above).
         let (name_p, expr_p) = unsafe { (*names.add(i), *exprs.add(i)) };
         let name = text(name_p).map_err(|s| err(s, "an AOV name is NULL or not UTF-8", Some(i)))?;
-        let src = text(expr_p)
-            .map_err(|s| err(s, "an expression is NULL or not UTF-8", Some(i)))?;
+        let src =
+            text(expr_p).map_err(|s| err(s, "an expression is NULL or not UTF-8", Some(i)))?;
         let lpe = parser.parse(src).map_err(|e| {
             lpe_error::new(
                 lpe_status::LPE_ERR_PARSE,

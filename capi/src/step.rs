@@ -57,7 +57,11 @@ pub extern "C" fn lpe_start(set: *const lpe_set, out: *mut lpe_state) -> lpe_sta
 /// Steps `*state` over one vertex of class `cls`, in place. `LPE_ERR_RANGE` if `cls` is
 /// not a class of `set` (the state is then unchanged). No allocation, no lock.
 #[no_mangle]
-pub extern "C" fn lpe_step(set: *const lpe_set, state: *mut lpe_state, cls: lpe_class) -> lpe_status {
+pub extern "C" fn lpe_step(
+    set: *const lpe_set,
+    state: *mut lpe_state,
+    cls: lpe_class,
+) -> lpe_status {
     // SAFETY: NULL or valid pointers from the caller.
     let (Some(set), Some(state)) = (unsafe { set.as_ref() }, unsafe { state.as_mut() }) else {
         return lpe_status::LPE_ERR_NULL;
@@ -115,10 +119,16 @@ pub extern "C" fn lpe_matches(
 /// Whether no continuation of the path can match any AOV, into `*dead`: stop tracking
 /// the path once it is.
 #[no_mangle]
-pub extern "C" fn lpe_is_dead(set: *const lpe_set, state: *const lpe_state, dead: *mut bool) -> lpe_status {
+pub extern "C" fn lpe_is_dead(
+    set: *const lpe_set,
+    state: *const lpe_state,
+    dead: *mut bool,
+) -> lpe_status {
     // SAFETY: NULL or valid pointers from the caller.
     let (Some(set), Some(state), Some(dead)) =
-        (unsafe { set.as_ref() }, unsafe { state.as_ref() }, unsafe { dead.as_mut() })
+        (unsafe { set.as_ref() }, unsafe { state.as_ref() }, unsafe {
+            dead.as_mut()
+        })
     else {
         return lpe_status::LPE_ERR_NULL;
     };

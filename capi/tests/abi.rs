@@ -5,7 +5,9 @@ use std::ffi::{c_char, CStr, CString};
 use std::ptr::{null, null_mut};
 
 use lpe_capi::classify::{lpe_classify, lpe_classify_osl, lpe_classify_text};
-use lpe_capi::error::{lpe_error_aov, lpe_error_free, lpe_error_message, lpe_error_position, lpe_error_status};
+use lpe_capi::error::{
+    lpe_error_aov, lpe_error_free, lpe_error_message, lpe_error_position, lpe_error_status,
+};
 use lpe_capi::set::*;
 use lpe_capi::status::lpe_status_message;
 use lpe_capi::step::{lpe_is_dead, lpe_matches, lpe_start, lpe_step};
@@ -29,7 +31,11 @@ fn cstrings(xs: &[&str]) -> (Vec<CString>, Vec<*const c_char>) {
     (owned, ptrs)
 }
 
-fn compile(names: &[&str], exprs: &[&str], ini: Option<&str>) -> Result<Set, (lpe_status, String, i64, i64)> {
+fn compile(
+    names: &[&str],
+    exprs: &[&str],
+    ini: Option<&str>,
+) -> Result<Set, (lpe_status, String, i64, i64)> {
     let (_n, np) = cstrings(names);
     let (_e, ep) = cstrings(exprs);
     let ini = ini.map(|s| CString::new(s).unwrap());
@@ -50,8 +56,16 @@ fn compile(names: &[&str], exprs: &[&str], ini: Option<&str>) -> Result<Set, (lp
         return Ok(Set(out));
     }
     assert!(out.is_null());
-    let msg = unsafe { CStr::from_ptr(lpe_error_message(err)) }.to_str().unwrap().to_string();
-    let r = (lpe_error_status(err), msg, lpe_error_aov(err), lpe_error_position(err));
+    let msg = unsafe { CStr::from_ptr(lpe_error_message(err)) }
+        .to_str()
+        .unwrap()
+        .to_string();
+    let r = (
+        lpe_error_status(err),
+        msg,
+        lpe_error_aov(err),
+        lpe_error_position(err),
+    );
     assert_eq!(r.0, st);
     lpe_error_free(err);
     Err(r)
@@ -60,7 +74,11 @@ fn compile(names: &[&str], exprs: &[&str], ini: Option<&str>) -> Result<Set, (lp
 fn class(set: &Set, text: &str) -> lpe_class {
     let t = CString::new(text).unwrap();
     let mut c = lpe_class { id: u32::MAX };
-    assert_eq!(lpe_classify_text(set.0, t.as_ptr(), &mut c), lpe_status::LPE_OK, "{text}");
+    assert_eq!(
+        lpe_classify_text(set.0, t.as_ptr(), &mut c),
+        lpe_status::LPE_OK,
+        "{text}"
+    );
     c
 }
 
@@ -95,7 +113,14 @@ fn answers_equal_lpe_on_the_basic_aovs() {
         .map(|(n, e)| (n.to_string(), lpe::parse(e).unwrap()))
         .collect();
     let rust = lpe::AovSet::compile(&aovs).unwrap();
-    for p in ["C RD2'floor' RD L'key'", "C RD L", "C RS TS RD L", "C O", "C TD L", "C RU3 L"] {
+    for p in [
+        "C RD2'floor' RD L'key'",
+        "C RD L",
+        "C RS TS RD L",
+        "C O",
+        "C TD L",
+        "C RU3 L",
+    ] {
         let path: lpe::Path = p.parse().unwrap();
         let want: Vec<usize> = rust.match_path(&path).iter().collect();
         let texts: Vec<String> = path.vertices().iter().map(|v| v.to_string()).collect();
@@ -114,7 +139,12 @@ fn fields_and_text_classify_alike_and_dead_paths_are_seen() {
     let set = compile(&["d"], &["C<RD'floor'>L"], None).unwrap();
     let label = CString::new("floor").unwrap();
     let mut by_fields = lpe_class { id: 0 };
-    let v = lpe_vertex { vertex_type: b'R', event: b'D', lobe: 2, label: label.as_ptr() };
+    let v = lpe_vertex {
+        vertex_type: b'R',
+        event: b'D',
+        lobe: 2,
+        label: label.as_ptr(),
+    };
     assert_eq!(lpe_classify(set.0, &v, &mut by_fields), lpe_status::LPE_OK);
     assert_eq!(by_fields, class(&set, "RD2'floor'"));
     assert_ne!(by_fields, class(&set, "RD2'wall'"));
@@ -128,10 +158,23 @@ fn fields_and_text_classify_alike_and_dead_paths_are_seen() {
     assert_eq!(lpe_is_dead(set.0, &s, &mut dead), lpe_status::LPE_OK);
     assert!(dead);
     // Bad fields: unknown letters, lobes out of range, an event on a light, a camera label.
-    for (t, e, l, lab) in [(b'X', 0, 0, null()), (b'R', b'D', 5, null()), (b'R', b'Q', 1, null()),
-        (b'L', b'D', 1, null()), (b'C', 0, 0, label.as_ptr())] {
-        let v = lpe_vertex { vertex_type: t, event: e, lobe: l, label: lab };
-        assert_eq!(lpe_classify(set.0, &v, &mut by_fields), lpe_status::LPE_ERR_RANGE);
+    for (t, e, l, lab) in [
+        (b'X', 0, 0, null()),
+        (b'R', b'D', 5, null()),
+        (b'R', b'Q', 1, null()),
+        (b'L', b'D', 1, null()),
+        (b'C', 0, 0, label.as_ptr()),
+    ] {
+        let v = lpe_vertex {
+            vertex_type: t,
+            event: e,
+            lobe: l,
+            label: lab,
+        };
+        assert_eq!(
+            lpe_classify(set.0, &v, &mut by_fields),
+            lpe_status::LPE_ERR_RANGE
+        );
     }
 }
 
@@ -145,27 +188,53 @@ fn bad_arguments_are_errors_not_crashes() {
     lpe_start(set.0, &mut s);
     let before = s;
     let n = lpe_set_class_count(set.0) as u32;
-    assert_eq!(lpe_step(set.0, &mut s, lpe_class { id: n }), lpe_status::LPE_ERR_RANGE);
+    assert_eq!(
+        lpe_step(set.0, &mut s, lpe_class { id: n }),
+        lpe_status::LPE_ERR_RANGE
+    );
     assert_eq!(s, before, "a refused step leaves the state alone");
     assert_eq!(lpe_step(null(), &mut s, c), lpe_status::LPE_ERR_NULL);
     assert_eq!(lpe_step(set.0, null_mut(), c), lpe_status::LPE_ERR_NULL);
-    assert_eq!(lpe_classify_text(set.0, null(), &mut c), lpe_status::LPE_ERR_NULL);
+    assert_eq!(
+        lpe_classify_text(set.0, null(), &mut c),
+        lpe_status::LPE_ERR_NULL
+    );
     let two = CString::new("RD RS").unwrap();
-    assert_eq!(lpe_classify_text(set.0, two.as_ptr(), &mut c), lpe_status::LPE_ERR_PARSE);
+    assert_eq!(
+        lpe_classify_text(set.0, two.as_ptr(), &mut c),
+        lpe_status::LPE_ERR_PARSE
+    );
     let bad_utf8 = [b'R', b'D', b'\'', 0xff, b'\'', 0];
-    assert_eq!(lpe_classify_text(set.0, bad_utf8.as_ptr().cast(), &mut c), lpe_status::LPE_ERR_UTF8);
-    assert_eq!(lpe_classify(set.0, null(), &mut c), lpe_status::LPE_ERR_NULL);
+    assert_eq!(
+        lpe_classify_text(set.0, bad_utf8.as_ptr().cast(), &mut c),
+        lpe_status::LPE_ERR_UTF8
+    );
+    assert_eq!(
+        lpe_classify(set.0, null(), &mut c),
+        lpe_status::LPE_ERR_NULL
+    );
     let mut w = [0u64; 1];
-    assert_eq!(lpe_matches(set.0, &s, w.as_mut_ptr(), 0, null_mut()), lpe_status::LPE_OK);
-    assert_eq!(lpe_matches(set.0, &s, null_mut(), 1, null_mut()), lpe_status::LPE_ERR_NULL);
+    assert_eq!(
+        lpe_matches(set.0, &s, w.as_mut_ptr(), 0, null_mut()),
+        lpe_status::LPE_OK
+    );
+    assert_eq!(
+        lpe_matches(set.0, &s, null_mut(), 1, null_mut()),
+        lpe_status::LPE_ERR_NULL
+    );
     assert_eq!(lpe_is_dead(set.0, &s, null_mut()), lpe_status::LPE_ERR_NULL);
     assert_eq!(lpe_set_len(null()), 0);
     assert!(lpe_set_name(null(), 0).is_null());
     assert_eq!(lpe_set_warning_aov(set.0, 0), -1);
     let syms = [null::<c_char>()];
-    assert_eq!(lpe_classify_osl(set.0, syms.as_ptr(), 1, &mut c), lpe_status::LPE_ERR_UNSUPPORTED);
     assert_eq!(
-        unsafe { CStr::from_ptr(lpe_status_message(12345)) }.to_str().unwrap(),
+        lpe_classify_osl(set.0, syms.as_ptr(), 1, &mut c),
+        lpe_status::LPE_ERR_UNSUPPORTED
+    );
+    assert_eq!(
+        unsafe { CStr::from_ptr(lpe_status_message(12345)) }
+            .to_str()
+            .unwrap(),
         "unknown status"
     );
     // A mask too small for a set of 65 AOVs is refused, not truncated.
@@ -175,7 +244,10 @@ fn bad_arguments_are_errors_not_crashes() {
     assert_eq!(lpe_set_mask_words(big.0), 2);
     let mut bs = lpe_state { opaque: [0; 4] };
     lpe_start(big.0, &mut bs);
-    assert_eq!(lpe_matches(big.0, &bs, w.as_mut_ptr(), 1, null_mut()), lpe_status::LPE_ERR_RANGE);
+    assert_eq!(
+        lpe_matches(big.0, &bs, w.as_mut_ptr(), 1, null_mut()),
+        lpe_status::LPE_ERR_RANGE
+    );
     lpe_set_free(null_mut());
     lpe_error_free(null_mut());
     let mut out = null_mut();
@@ -188,31 +260,56 @@ fn bad_arguments_are_errors_not_crashes() {
         lpe_status::LPE_ERR_RANGE
     );
     assert_eq!(
-        lpe_set_compile(null(), null(), 0, LPE_DIALECT_OSL, null(), null(), &mut out, null_mut()),
+        lpe_set_compile(
+            null(),
+            null(),
+            0,
+            LPE_DIALECT_OSL,
+            null(),
+            null(),
+            &mut out,
+            null_mut()
+        ),
         lpe_status::LPE_ERR_UNSUPPORTED
     );
 }
 
 #[test]
 fn errors_name_the_aov_and_the_byte() {
-    let (st, msg, aov, pos) = compile(&["ok", "bad"], &["C.L", "C<L'key'>"], None).err().unwrap();
+    let (st, msg, aov, pos) = compile(&["ok", "bad"], &["C.L", "C<L'key'>"], None)
+        .err()
+        .unwrap();
     assert_eq!(st, lpe_status::LPE_ERR_PARSE);
     assert_eq!((aov, pos), (1, 3));
-    assert!(msg.contains("bad") && msg.contains("third position"), "{msg}");
-    let (st, _, aov, line) = compile(&["a"], &["C.L"], Some("/prman/lpe/macro/x C(\n")).err().unwrap();
+    assert!(
+        msg.contains("bad") && msg.contains("third position"),
+        "{msg}"
+    );
+    let (st, _, aov, line) = compile(&["a"], &["C.L"], Some("/prman/lpe/macro/x C(\n"))
+        .err()
+        .unwrap();
     assert_eq!((st, aov, line), (lpe_status::LPE_ERR_INI, -1, 1));
     // User macros from the ini text are available.
-    let set = compile(&["mine"], &["myDiffuse"], Some("/prman/lpe/macro/myDiffuse C<RD>L\n")).unwrap();
+    let set = compile(
+        &["mine"],
+        &["myDiffuse"],
+        Some("/prman/lpe/macro/myDiffuse C<RD>L\n"),
+    )
+    .unwrap();
     assert_eq!(route(&set, &["C", "RD", "L"]).1, 1);
     let names: Vec<String> = (0..=lpe::MAX_AOVS).map(|i| format!("a{i}")).collect();
     let names: Vec<&str> = names.iter().map(|s| s.as_str()).collect();
-    let (st, msg, _, _) = compile(&names, &vec!["C.L"; names.len()], None).err().unwrap();
+    let (st, msg, _, _) = compile(&names, &vec!["C.L"; names.len()], None)
+        .err()
+        .unwrap();
     assert_eq!(st, lpe_status::LPE_ERR_COMPILE);
     assert!(msg.contains("over the limit"), "{msg}");
     let set = compile(&["never", "ok"], &["C.*", "C.L"], None).unwrap();
     assert_eq!(lpe_set_warning_count(set.0), 1);
     assert_eq!(lpe_set_warning_aov(set.0, 0), 0);
-    let w = unsafe { CStr::from_ptr(lpe_set_warning(set.0, 0)) }.to_str().unwrap();
+    let w = unsafe { CStr::from_ptr(lpe_set_warning(set.0, 0)) }
+        .to_str()
+        .unwrap();
     assert!(w.contains("never"), "{w}");
 }
 

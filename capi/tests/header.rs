@@ -26,7 +26,12 @@ fn the_checked_in_header_is_current() {
          and commit it"
     );
     // What C and C++ callers rely on.
-    for needle in ["#ifdef __cplusplus", "extern \"C\" {", "lpe_step(", "#include <stdint.h>"] {
+    for needle in [
+        "#ifdef __cplusplus",
+        "extern \"C\" {",
+        "lpe_step(",
+        "#include <stdint.h>",
+    ] {
         assert!(generated.contains(needle), "{needle}");
     }
 }

@@ -165,7 +165,14 @@ fn rejections_are_compared_both_ways() {
         panic!("{:?}", r.findings);
     };
     assert!(
-        matches!(d.external, Answer::Rejected { aov: Some(0), position: Some(0), .. }),
+        matches!(
+            d.external,
+            Answer::Rejected {
+                aov: Some(0),
+                position: Some(0),
+                ..
+            }
+        ),
         "{:?}",
         d.external
     );
@@ -225,11 +232,9 @@ fn a_command_that_cannot_start_is_bad_input() {
         &generated(1, 0),
         &engines::all(),
     )
-    .err()
-    .expect("cannot start");
+    .expect_err("cannot start");
     assert!(err.to_string().contains("/nonexistent/matcher"), "{err}");
     let err = external::run(&setup("'unclosed".into(), 500), &generated(1, 0), &[])
-        .err()
-        .expect("bad quoting");
+        .expect_err("bad quoting");
     assert!(err.to_string().contains("bad --external command"), "{err}");
 }

@@ -40,6 +40,11 @@ pub fn run(args: &Args) -> ExitCode {
     if !args.path.is_empty() && args.expr.is_empty() {
         return bad_input("error: --path needs --expr");
     }
+    for p in &args.path {
+        if let Err(e) = p.parse::<lpe::Path>() {
+            return bad_input(format!("error: --path {p:?}: {e}"));
+        }
+    }
     let cases = if args.expr.is_empty() {
         Cases::Generated(args.run())
     } else {
@@ -93,7 +98,10 @@ pub fn run(args: &Args) -> ExitCode {
         ),
     }
     if report.uncompared > 0 {
-        println!("uncompared: {} cases no engine could build", report.uncompared);
+        println!(
+            "uncompared: {} cases no engine could build",
+            report.uncompared
+        );
     }
     for f in &report.findings {
         println!("\n{f}");

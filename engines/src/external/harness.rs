@@ -143,7 +143,9 @@ impl fmt::Display for Finding {
             Finding::Disagreement(d) => {
                 let names: Vec<String> = d.aovs.iter().map(|a| a.name.clone()).collect();
                 match d.case {
-                    Some(c) => writeln!(f, "case {c}: the external matcher disagrees (minimized):")?,
+                    Some(c) => {
+                        writeln!(f, "case {c}: the external matcher disagrees (minimized):")?
+                    }
                     None => writeln!(f, "the external matcher disagrees (minimized):")?,
                 }
                 for a in &d.aovs {
@@ -361,11 +363,7 @@ type Item = (Option<u64>, Vec<String>, Vec<String>);
 const BATCH: usize = 64;
 
 /// Runs the cases against the external matcher.
-pub fn run(
-    setup: &Setup,
-    cases: &Cases,
-    engines: &[&dyn Engine],
-) -> Result<Report, StartError> {
+pub fn run(setup: &Setup, cases: &Cases, engines: &[&dyn Engine]) -> Result<Report, StartError> {
     let mut client = Client::start(&setup.command, &setup.dialect, setup.timeout)?;
     let mut report = Report {
         name: client.name.clone(),
@@ -421,7 +419,16 @@ pub fn run(
                 break;
             };
             report.cases += 1;
-            judge(setup, &mut client, engines, *case, exprs, paths, external, &mut report);
+            judge(
+                setup,
+                &mut client,
+                engines,
+                *case,
+                exprs,
+                paths,
+                external,
+                &mut report,
+            );
         }
     }
     report.restarts = client.restarts;
@@ -444,21 +451,20 @@ fn judge(
 ) {
     let aovs = sources(exprs);
     let parsed = parse_all(exprs);
-    let paths: Vec<Path> = match path_texts.iter().map(|p| p.parse()).collect() {
-        Ok(p) => p,
-        Err(_) => Vec::new(),
-    };
+    // Generated paths always parse; given ones are checked by the caller.
+    let paths: Vec<Path> = path_texts
+        .iter()
+        .map(|p| p.parse())
+        .collect::<Result<_, _>>()
+        .unwrap_or_default();
     let external = match external {
         Ok(Some(answers)) => answers,
         Ok(None) => {
             report.unsupported.0 += 1;
-            report
-                .unsupported
-                .1
-                .get_or_insert_with(|| {
-                    let at = case.map_or(String::new(), |c| format!("case {c}: "));
-                    format!("{at}{}", exprs.join(" ; "))
-                });
+            report.unsupported.1.get_or_insert_with(|| {
+                let at = case.map_or(String::new(), |c| format!("case {c}: "));
+                format!("{at}{}", exprs.join(" ; "))
+            });
             return;
         }
         Err(fault) => {
@@ -491,7 +497,10 @@ fn judge(
                 // answer on the result.
                 let judge = &engines[culprit..=culprit];
                 let (e, p) = minimize(setup, client, judge, exprs.clone(), path.clone(), report);
-                (sources(&e.iter().map(|x| x.to_string()).collect::<Vec<_>>()), p.to_string())
+                (
+                    sources(&e.iter().map(|x| x.to_string()).collect::<Vec<_>>()),
+                    p.to_string(),
+                )
             }
             _ => original.clone(),
         };
@@ -504,15 +513,17 @@ fn judge(
             _ => ext.clone(),
         };
         let engines_answers = ours_on_one(engines, &min_parsed, &min_paths);
-        report.findings.push(Finding::Disagreement(Box::new(Disagreement {
-            case,
-            replay: replay(setup, &min_exprs, &path_min),
-            aovs: aovs_min,
-            path: path_min,
-            external,
-            engines: engines_answers,
-            original,
-        })));
+        report
+            .findings
+            .push(Finding::Disagreement(Box::new(Disagreement {
+                case,
+                replay: replay(setup, &min_exprs, &path_min),
+                aovs: aovs_min,
+                path: path_min,
+                external,
+                engines: engines_answers,
+                original,
+            })));
         return;
     }
 }

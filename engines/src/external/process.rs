@@ -177,7 +177,11 @@ fn write_lines(mut pipe: ChildStdin, queue: &Receiver<String>) {
         while let Ok(more) = queue.try_recv() {
             chunk.push_str(&more);
         }
-        if pipe.write_all(chunk.as_bytes()).and_then(|()| pipe.flush()).is_err() {
+        if pipe
+            .write_all(chunk.as_bytes())
+            .and_then(|()| pipe.flush())
+            .is_err()
+        {
             return;
         }
     }
@@ -187,7 +191,10 @@ fn write_lines(mut pipe: ChildStdin, queue: &Receiver<String>) {
 fn read_lines(mut out: impl BufRead, tx: &mpsc::Sender<Line>) {
     loop {
         let mut buf = Vec::new();
-        let line = match (&mut out).take(MAX_LINE as u64 + 1).read_until(b'\n', &mut buf) {
+        let line = match (&mut out)
+            .take(MAX_LINE as u64 + 1)
+            .read_until(b'\n', &mut buf)
+        {
             Ok(0) | Err(_) => Line::Eof,
             Ok(_) if buf.len() > MAX_LINE => Line::TooLong,
             Ok(_) => {

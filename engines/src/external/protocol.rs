@@ -292,10 +292,7 @@ mod tests {
             }))
         );
         assert!(matches!(
-            read_reply(
-                &r,
-                r#"{"id":1,"ok":false,"error":{"message":"m","aov":1}}"#
-            ),
+            read_reply(&r, r#"{"id":1,"ok":false,"error":{"message":"m","aov":1}}"#),
             Err(Violation::Unknown(_))
         ));
         let hello = Request {
