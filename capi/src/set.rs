@@ -204,61 +204,58 @@ pub extern "C" fn lpe_set_free(set: *mut lpe_set) {
     }
 }
 
+/// What `f` reads from the set, or `none` when `set` is NULL (or `f` finds nothing).
+fn read<T>(set: *const lpe_set, none: T, f: impl FnOnce(&lpe_set) -> Option<T>) -> T {
+    // SAFETY: NULL or a set this library returned.
+    unsafe { set.as_ref() }.and_then(f).unwrap_or(none)
+}
+
 /// Number of AOVs (0 if `set` is NULL).
 #[no_mangle]
 pub extern "C" fn lpe_set_len(set: *const lpe_set) -> usize {
-    // SAFETY: NULL or a set this library returned.
-    unsafe { set.as_ref() }.map_or(0, |s| s.names.len())
+    read(set, 0, |s| Some(s.names.len()))
 }
 
 /// Name of AOV `i`, NUL-terminated, valid until `lpe_set_free`; NULL if `set` is NULL
 /// or `i` is out of range.
 #[no_mangle]
 pub extern "C" fn lpe_set_name(set: *const lpe_set, i: usize) -> *const c_char {
-    // SAFETY: NULL or a set this library returned.
-    unsafe { set.as_ref() }
-        .and_then(|s| s.names.get(i))
-        .map_or(std::ptr::null(), |n| n.as_ptr())
+    read(set, std::ptr::null(), |s| {
+        s.names.get(i).map(|n| n.as_ptr())
+    })
 }
 
 /// 64-bit words a match mask of this set needs: `(len + 63) / 64`, at least 1 (0 if
 /// `set` is NULL).
 #[no_mangle]
 pub extern "C" fn lpe_set_mask_words(set: *const lpe_set) -> usize {
-    // SAFETY: NULL or a set this library returned.
-    unsafe { set.as_ref() }.map_or(0, |s| s.names.len().div_ceil(64).max(1))
+    read(set, 0, |s| Some(s.names.len().div_ceil(64).max(1)))
 }
 
 /// Number of vertex classes: every `lpe_class` of this set has an index below it (0 if
 /// `set` is NULL).
 #[no_mangle]
 pub extern "C" fn lpe_set_class_count(set: *const lpe_set) -> usize {
-    // SAFETY: NULL or a set this library returned.
-    unsafe { set.as_ref() }.map_or(0, |s| s.class_count)
+    read(set, 0, |s| Some(s.class_count))
 }
 
 /// Number of compile warnings: AOVs that can match no path (0 if `set` is NULL).
 #[no_mangle]
 pub extern "C" fn lpe_set_warning_count(set: *const lpe_set) -> usize {
-    // SAFETY: NULL or a set this library returned.
-    unsafe { set.as_ref() }.map_or(0, |s| s.warnings.len())
+    read(set, 0, |s| Some(s.warnings.len()))
 }
 
 /// Warning `i` as text (naming the AOV and why it can match nothing), valid until
 /// `lpe_set_free`; NULL if out of range.
 #[no_mangle]
 pub extern "C" fn lpe_set_warning(set: *const lpe_set, i: usize) -> *const c_char {
-    // SAFETY: NULL or a set this library returned.
-    unsafe { set.as_ref() }
-        .and_then(|s| s.warnings.get(i))
-        .map_or(std::ptr::null(), |w| w.as_ptr())
+    read(set, std::ptr::null(), |s| {
+        s.warnings.get(i).map(|w| w.as_ptr())
+    })
 }
 
 /// Index of the AOV warning `i` is about, or -1 if out of range.
 #[no_mangle]
 pub extern "C" fn lpe_set_warning_aov(set: *const lpe_set, i: usize) -> i64 {
-    // SAFETY: NULL or a set this library returned.
-    unsafe { set.as_ref() }
-        .and_then(|s| s.set.warnings().get(i))
-        .map_or(-1, |w| w.aov as i64)
+    read(set, -1, |s| s.set.warnings().get(i).map(|w| w.aov as i64))
 }
