@@ -8,7 +8,7 @@ use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use lpe::{AovSet, Lpe, Path};
 use lpe_capi::classify::lpe_classify_text;
 use lpe_capi::set::{lpe_set_compile, lpe_set_free, LPE_DIALECT_RENDERMAN};
-use lpe_capi::step::{lpe_matches, lpe_start, lpe_step};
+use lpe_capi::step::{lpe_matches, lpe_start, lpe_step, lpe_step_n};
 use lpe_capi::{lpe_class, lpe_set, lpe_state, lpe_status};
 
 /// Paths a renderer steps: bounces of every kind, with labels, ending at emitters.
@@ -89,6 +89,12 @@ fn bench(c: &mut Criterion) {
     });
     let step: extern "C" fn(*const lpe_set, *mut lpe_state, lpe_class) -> lpe_status =
         black_box(lpe_step);
+    let step_n: extern "C" fn(
+        *const lpe_set,
+        *mut lpe_state,
+        *const lpe_class,
+        usize,
+    ) -> lpe_status = black_box(lpe_step_n);
     g.bench_function("C ABI lpe_step", |b| {
         b.iter(|| {
             let mut hits = 0;
@@ -98,6 +104,20 @@ fn bench(c: &mut Criterion) {
                 for &c in path {
                     step(set, &mut s, c);
                 }
+                let mut count = 0;
+                lpe_matches(set, &s, std::ptr::null_mut(), 0, &mut count);
+                hits += count;
+            }
+            hits
+        })
+    });
+    g.bench_function("C ABI lpe_step_n (one call per path)", |b| {
+        b.iter(|| {
+            let mut hits = 0;
+            for path in black_box(&c_classes) {
+                let mut s = lpe_state { opaque: [0; 4] };
+                lpe_start(set, &mut s);
+                step_n(set, &mut s, path.as_ptr(), path.len());
                 let mut count = 0;
                 lpe_matches(set, &s, std::ptr::null_mut(), 0, &mut count);
                 hits += count;

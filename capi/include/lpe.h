@@ -204,6 +204,15 @@ enum lpe_status lpe_start(const struct lpe_set *set, struct lpe_state *out);
 // not a class of `set` (the state is then unchanged). No allocation, no lock.
 enum lpe_status lpe_step(const struct lpe_set *set, struct lpe_state *state, struct lpe_class cls);
 
+// Steps `*state` over `count` vertices of the given classes, in place: the same as
+// `count` calls of `lpe_step`, one call for a whole path segment (the per-call overhead
+// paid once). `LPE_ERR_RANGE` if any class is not one of `set`'s: then no step is
+// taken. `classes` may be NULL when `count` is 0.
+enum lpe_status lpe_step_n(const struct lpe_set *set,
+                           struct lpe_state *state,
+                           const struct lpe_class *classes,
+                           size_t count);
+
 // Which AOVs match a path ending in `*state`: bit `i % 64` of `words[i / 64]` is AOV
 // `i`. `word_count` must be at least `lpe_set_mask_words(set)` (else `LPE_ERR_RANGE`);
 // extra words are zeroed. `words` may be NULL when `word_count` is 0 (only the count is

@@ -75,6 +75,44 @@ pub extern "C" fn lpe_step(
     })
 }
 
+/// Steps `*state` over `count` vertices of the given classes, in place: the same as
+/// `count` calls of `lpe_step`, one call for a whole path segment (the per-call overhead
+/// paid once). `LPE_ERR_RANGE` if any class is not one of `set`'s: then no step is
+/// taken. `classes` may be NULL when `count` is 0.
+#[no_mangle]
+pub extern "C" fn lpe_step_n(
+    set: *const lpe_set,
+    state: *mut lpe_state,
+    classes: *const lpe_class,
+    count: usize,
+) -> lpe_status {
+    // SAFETY: NULL or valid pointers from the caller.
+    let (Some(set), Some(state)) = (unsafe { set.as_ref() }, unsafe { state.as_mut() }) else {
+        return lpe_status::LPE_ERR_NULL;
+    };
+    if count == 0 {
+        return lpe_status::LPE_OK;
+    }
+    if classes.is_null() {
+        return lpe_status::LPE_ERR_NULL;
+    }
+    // SAFETY: the caller passes `count` readable classes (checked non-null).
+    let classes = unsafe { std::slice::from_raw_parts(classes, count) };
+    if classes.iter().any(|c| c.to_class(set).is_none()) {
+        return lpe_status::LPE_ERR_RANGE;
+    }
+    guard(lpe_status::LPE_ERR_PANIC, || {
+        let mut s = state.to_state();
+        for c in classes {
+            if let Some(c) = c.to_class(set) {
+                s = set.set.step_class(s, c);
+            }
+        }
+        *state = lpe_state::from_state(s);
+        lpe_status::LPE_OK
+    })
+}
+
 /// Which AOVs match a path ending in `*state`: bit `i % 64` of `words[i / 64]` is AOV
 /// `i`. `word_count` must be at least `lpe_set_mask_words(set)` (else `LPE_ERR_RANGE`);
 /// extra words are zeroed. `words` may be NULL when `word_count` is 0 (only the count is

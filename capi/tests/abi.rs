@@ -10,7 +10,7 @@ use lpe_capi::error::{
 };
 use lpe_capi::set::*;
 use lpe_capi::status::lpe_status_message;
-use lpe_capi::step::{lpe_is_dead, lpe_matches, lpe_start, lpe_step};
+use lpe_capi::step::{lpe_is_dead, lpe_matches, lpe_start, lpe_step, lpe_step_n};
 use lpe_capi::{lpe_class, lpe_error, lpe_set, lpe_state, lpe_status, lpe_vertex};
 
 struct Set(*mut lpe_set);
@@ -85,9 +85,17 @@ fn class(set: &Set, text: &str) -> lpe_class {
 fn route(set: &Set, path: &[&str]) -> (Vec<u64>, usize) {
     let mut s = lpe_state { opaque: [7; 4] };
     assert_eq!(lpe_start(set.0, &mut s), lpe_status::LPE_OK);
-    for v in path {
-        assert_eq!(lpe_step(set.0, &mut s, class(set, v)), lpe_status::LPE_OK);
+    let classes: Vec<lpe_class> = path.iter().map(|v| class(set, v)).collect();
+    let mut whole = s;
+    for &c in &classes {
+        assert_eq!(lpe_step(set.0, &mut s, c), lpe_status::LPE_OK);
     }
+    // One call per path steps to the same state.
+    assert_eq!(
+        lpe_step_n(set.0, &mut whole, classes.as_ptr(), classes.len()),
+        lpe_status::LPE_OK
+    );
+    assert_eq!(whole, s);
     let mut words = vec![u64::MAX; lpe_set_mask_words(set.0) + 1];
     let mut count = 99;
     assert_eq!(
@@ -194,6 +202,17 @@ fn bad_arguments_are_errors_not_crashes() {
     );
     assert_eq!(s, before, "a refused step leaves the state alone");
     assert_eq!(lpe_step(null(), &mut s, c), lpe_status::LPE_ERR_NULL);
+    let mixed = [c, lpe_class { id: n }];
+    assert_eq!(
+        lpe_step_n(set.0, &mut s, mixed.as_ptr(), 2),
+        lpe_status::LPE_ERR_RANGE
+    );
+    assert_eq!(s, before, "no step of a refused segment is taken");
+    assert_eq!(
+        lpe_step_n(set.0, &mut s, null(), 1),
+        lpe_status::LPE_ERR_NULL
+    );
+    assert_eq!(lpe_step_n(set.0, &mut s, null(), 0), lpe_status::LPE_OK);
     assert_eq!(lpe_step(set.0, null_mut(), c), lpe_status::LPE_ERR_NULL);
     assert_eq!(
         lpe_classify_text(set.0, null(), &mut c),
