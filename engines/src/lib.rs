@@ -12,12 +12,15 @@
 //!   the names (`reference`, `oracle`, `fast`, `nfa`) are what `lpe-check --engine` takes.
 //! - [`differential`]: the differential harness, generated cases, and the shrinker that
 //!   minimizes a disagreement before it is printed.
+//! - [`external`]: external matchers over the JSON Lines protocol (docs/protocol.md),
+//!   compared with the engines by `lpe-check diff --external`.
 //! - [`fuzzing`]: the bodies of the cargo-fuzz targets in `fuzz/`, as plain functions
 //!   that `cargo test` also replays.
 
 pub mod adapters;
 pub mod differential;
 pub mod engine;
+pub mod external;
 pub mod fuzzing;
 pub mod regex;
 pub mod registry;

@@ -9,6 +9,9 @@
 //! none, else some user event and scattering labels), expressions of up to
 //! `--max-size` vertex patterns, and paths over their labels, NONE, `_`, registered and
 //! unmentioned labels.
+//!
+//! With `--external 'CMD ARGS'` the cases go to an external matcher over the protocol of
+//! docs/protocol.md instead (see [`super::external`]).
 
 use std::process::ExitCode;
 use std::time::Instant;
@@ -45,6 +48,23 @@ pub struct Args {
     /// The expression language: `renderman` or `osl`.
     #[arg(long, default_value_t = Dialect::RenderMan)]
     pub dialect: Dialect,
+    /// An external matcher to test: a command line (split like a shell does) speaking
+    /// the JSON Lines protocol of docs/protocol.md on stdin/stdout.
+    #[arg(long, value_name = "CMD ARGS")]
+    pub external: Option<String>,
+    /// Milliseconds the external matcher has to answer one request.
+    #[arg(long, default_value_t = 2000)]
+    pub timeout_ms: u64,
+    /// Stop after the external process was restarted this many times.
+    #[arg(long, default_value_t = 20)]
+    pub max_restarts: u64,
+    /// With --external: replay one given AOV set (repeat for several AOVs) instead of
+    /// generated cases.
+    #[arg(long, requires = "external")]
+    pub expr: Vec<String>,
+    /// With --external and --expr: the paths to ask about.
+    #[arg(long, requires = "expr")]
+    pub path: Vec<String>,
 }
 
 impl Args {
@@ -63,6 +83,9 @@ impl Args {
 
 /// Runs `lpe-check diff`.
 pub fn run(args: Args) -> ExitCode {
+    if args.external.is_some() {
+        return super::external::run(&args);
+    }
     let engines = match select_engines(&args.engine) {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),

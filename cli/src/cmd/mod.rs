@@ -4,6 +4,7 @@ pub mod bench;
 pub mod diff;
 pub mod equiv;
 pub mod explain;
+pub mod external;
 pub mod lint;
 pub mod match_osl;
 pub mod matching;

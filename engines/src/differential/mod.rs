@@ -32,7 +32,7 @@ pub use check::{
 };
 pub use counterexample::Counterexample;
 pub use language::{Language, Osl, RenderMan};
-pub use shrink::{minimize, minimize_in, shrink_expr, shrink_path};
+pub use shrink::{minimize, minimize_by, minimize_in, shrink_expr, shrink_path};
 
 #[cfg(test)]
 pub(crate) mod tests {

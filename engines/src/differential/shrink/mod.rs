@@ -37,8 +37,24 @@ pub fn minimize(engines: &[&dyn Engine], exprs: Vec<Lpe>, path: Path) -> (Vec<Lp
 pub fn minimize_in<L: Language>(
     lang: &L,
     engines: &[&dyn Engine],
+    exprs: Vec<L::Expr>,
+    path: L::Path,
+) -> (Vec<L::Expr>, L::Path) {
+    minimize_by(lang, exprs, path, |exprs, path| {
+        disagrees(lang, engines, exprs, path)
+    })
+}
+
+/// Greedy minimization against any failure test: take the first simpler input (fewer
+/// expressions, a simpler expression, a shorter or less labelled path, or an expression
+/// and a path step together) on which `fails` still holds, and start again from it,
+/// until no simpler input fails. `lpe-check diff --external` passes a test that re-asks
+/// the external process.
+pub fn minimize_by<L: Language>(
+    lang: &L,
     mut exprs: Vec<L::Expr>,
     mut path: L::Path,
+    mut fails: impl FnMut(&[L::Expr], &L::Path) -> bool,
 ) -> (Vec<L::Expr>, L::Path) {
     let mut tries = 0;
     'outer: loop {
@@ -48,7 +64,7 @@ pub fn minimize_in<L: Language>(
                 let mut fewer = exprs.clone();
                 fewer.remove(i);
                 tries += 1;
-                if disagrees(lang, engines, &fewer, &path) {
+                if fails(&fewer, &path) {
                     exprs = fewer;
                     continue 'outer;
                 }
@@ -62,7 +78,7 @@ pub fn minimize_in<L: Language>(
                 tries += 1;
                 let mut candidate = exprs.clone();
                 candidate[i] = smaller;
-                if disagrees(lang, engines, &candidate, &path) {
+                if fails(&candidate, &path) {
                     exprs = candidate;
                     continue 'outer;
                 }
@@ -74,7 +90,7 @@ pub fn minimize_in<L: Language>(
                 break 'outer;
             }
             tries += 1;
-            if disagrees(lang, engines, &exprs, smaller) {
+            if fails(&exprs, smaller) {
                 path = smaller.clone();
                 continue 'outer;
             }
@@ -90,7 +106,7 @@ pub fn minimize_in<L: Language>(
                     tries += 1;
                     let mut candidate = exprs.clone();
                     candidate[i] = smaller.clone();
-                    if disagrees(lang, engines, &candidate, smaller_path) {
+                    if fails(&candidate, smaller_path) {
                         exprs = candidate;
                         path = smaller_path.clone();
                         continue 'outer;

@@ -1,0 +1,186 @@
+//! Vertices to classes: once per material lobe, light and camera at scene load.
+
+use std::ffi::c_char;
+
+use lpe::{Class, Event, EventKind, Path, Vertex, VertexType};
+
+use crate::set::{lpe_set, text};
+use crate::status::{guard, lpe_status};
+
+/// A vertex after classification. Plain data, only meaningful for the set that made it;
+/// `id` is below `lpe_set_class_count` (classes are lpe's 32-bit class numbers).
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct lpe_class {
+    /// The class number.
+    pub id: u32,
+}
+
+// The C side carries lpe's class number; converting back is a plain copy of it.
+const _: () = assert!(std::mem::size_of::<Class>() == std::mem::size_of::<u32>());
+const _: () = assert!(std::mem::align_of::<Class>() <= std::mem::align_of::<u32>());
+
+impl lpe_class {
+    pub(crate) fn from_class(c: Class) -> lpe_class {
+        lpe_class {
+            // Class numbers are u32 inside lpe (asserted above).
+            id: c.index() as u32,
+        }
+    }
+
+    /// lpe's class, if `id` is one of `set`'s.
+    #[inline(always)]
+    pub(crate) fn to_class(self, set: &lpe_set) -> Option<Class> {
+        if (self.id as usize) < set.class_count {
+            // SAFETY: `Class` is a u32 class number (size asserted above), and any
+            // number below the set's class count is one of its classes.
+            Some(unsafe { std::mem::transmute::<u32, Class>(self.id) })
+        } else {
+            None
+        }
+    }
+}
+
+/// One vertex of a path, by fields (docs/language.md §2.1).
+#[repr(C)]
+#[derive(Clone, Copy, Debug)]
+pub struct lpe_vertex {
+    /// `'C'` camera, `'R'` reflection, `'T'` transmission, `'L'` light, `'O'` emissive
+    /// object (lower case accepted).
+    pub vertex_type: u8,
+    /// On `R`/`T` only: `'D'` diffuse, `'S'` specular, `'U'` user lobe; 0 on `C`/`L`/`O`.
+    pub event: u8,
+    /// On `R`/`T` only: the lobe number, D 1-4, S 1-8, U 1-12; 0 on `C`/`L`/`O`.
+    pub lobe: u8,
+    /// The label (`lpegroup`, or the light's group), NUL-terminated UTF-8, or NULL for
+    /// none. Never on `C`.
+    pub label: *const c_char,
+}
+
+fn vertex_of(v: &lpe_vertex) -> Result<Vertex, lpe_status> {
+    let label = if v.label.is_null() {
+        None
+    } else {
+        Some(text(v.label)?)
+    };
+    let ty = VertexType::from_letter(char::from(v.vertex_type)).ok_or(lpe_status::LPE_ERR_RANGE)?;
+    let no_event = v.event == 0 && v.lobe == 0;
+    match ty {
+        VertexType::C if no_event && label.is_none() => Ok(Vertex::camera()),
+        VertexType::L if no_event => Ok(Vertex::light(label)),
+        VertexType::O if no_event => Ok(Vertex::emissive(label)),
+        VertexType::R | VertexType::T => {
+            let kind =
+                EventKind::from_letter(char::from(v.event)).ok_or(lpe_status::LPE_ERR_RANGE)?;
+            let event = Event::new(kind, v.lobe).ok_or(lpe_status::LPE_ERR_RANGE)?;
+            Ok(Vertex::scatter(ty, event, label))
+        }
+        _ => Err(lpe_status::LPE_ERR_RANGE),
+    }
+}
+
+/// The class of a vertex, into `*out`. Classify every kind of scene vertex once, at
+/// load, and step with classes. `LPE_ERR_RANGE`: an unknown letter, a lobe out of
+/// range, an event on `C`/`L`/`O`, a label on `C`; `LPE_ERR_UTF8`: a label that is not
+/// UTF-8.
+#[no_mangle]
+pub extern "C" fn lpe_classify(
+    set: *const lpe_set,
+    vertex: *const lpe_vertex,
+    out: *mut lpe_class,
+) -> lpe_status {
+    // SAFETY: NULL or valid pointers from the caller.
+    let (Some(set), Some(vertex), Some(out)) = (
+        unsafe { set.as_ref() },
+        unsafe { vertex.as_ref() },
+        unsafe { out.as_mut() },
+    ) else {
+        return lpe_status::LPE_ERR_NULL;
+    };
+    guard(lpe_status::LPE_ERR_PANIC, || match vertex_of(vertex) {
+        Ok(v) => {
+            *out = lpe_class::from_class(set.set.classify(&v));
+            lpe_status::LPE_OK
+        }
+        Err(s) => s,
+    })
+}
+
+/// The class of one vertex written in path text form (docs/language.md §2.3), such as
+/// `RD2'floor'`, `L'key'` or `C`, into `*out`. `LPE_ERR_PARSE` if it is not exactly one
+/// vertex.
+#[no_mangle]
+pub extern "C" fn lpe_classify_text(
+    set: *const lpe_set,
+    vertex: *const c_char,
+    out: *mut lpe_class,
+) -> lpe_status {
+    // SAFETY: NULL or valid pointers from the caller.
+    let (Some(set), Some(out)) = (unsafe { set.as_ref() }, unsafe { out.as_mut() }) else {
+        return lpe_status::LPE_ERR_NULL;
+    };
+    let src = match text(vertex) {
+        Ok(s) => s,
+        Err(e) => return e,
+    };
+    guard(lpe_status::LPE_ERR_PANIC, || match vertex_from_text(src) {
+        Some(v) => {
+            *out = lpe_class::from_class(set.set.classify(&v));
+            lpe_status::LPE_OK
+        }
+        None => lpe_status::LPE_ERR_PARSE,
+    })
+}
+
+/// One vertex in path text: parsed inside the shortest path that can hold it (a camera
+/// before an emitter, an emitter after a camera, both around a scattering vertex).
+fn vertex_from_text(src: &str) -> Option<Vertex> {
+    let first = src.trim_start().chars().next()?.to_ascii_uppercase();
+    let (text, at) = match first {
+        'C' => (format!("{src} L"), 0),
+        'L' | 'O' => (format!("C {src}"), 1),
+        _ => (format!("C {src} L"), 1),
+    };
+    let path: Path = text.parse().ok()?;
+    let expected = if at == 1 && !matches!(first, 'L' | 'O') {
+        3
+    } else {
+        2
+    };
+    (path.len() == expected).then(|| path.vertices()[at].clone())
+}
+
+/// The class of an OSL vertex (`count` symbols: event, scattering, custom labels; a NULL
+/// entry is OSL's NONE). Not in this build yet: answers `LPE_ERR_UNSUPPORTED`.
+#[no_mangle]
+pub extern "C" fn lpe_classify_osl(
+    set: *const lpe_set,
+    symbols: *const *const c_char,
+    count: usize,
+    out: *mut lpe_class,
+) -> lpe_status {
+    if set.is_null() || out.is_null() || (symbols.is_null() && count > 0) {
+        return lpe_status::LPE_ERR_NULL;
+    }
+    lpe_status::LPE_ERR_UNSUPPORTED
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_vertex_of_text_and_nothing_else() {
+        let v = vertex_from_text("RD2'a b'").unwrap();
+        assert_eq!(v.to_string(), "RD2'a b'");
+        assert_eq!(vertex_from_text("C").unwrap(), Vertex::camera());
+        assert_eq!(
+            vertex_from_text("l'key'").unwrap(),
+            Vertex::light(Some("key"))
+        );
+        assert_eq!(vertex_from_text("O").unwrap(), Vertex::emissive(None));
+        for bad in ["", "RD RS", "C L", "RX", "L O", "RD9", "C'x'"] {
+            assert!(vertex_from_text(bad).is_none(), "{bad}");
+        }
+    }
+}

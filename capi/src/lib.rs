@@ -1,0 +1,34 @@
+//! The C ABI of lpe: compile an AOV set once, classify each kind of scene vertex once,
+//! then per path `lpe_start`, one `lpe_step` per vertex, `lpe_matches` at an emitter and
+//! `lpe_is_dead` to stop early. The header is `capi/include/lpe.h`, generated from
+//! these items by cbindgen (a test fails when the checked-in header is stale).
+//!
+//! Conventions every function keeps:
+//! - the return value is an [`lpe_status`] (or a size, a string or a pointer that is
+//!   `NULL`/0 on bad arguments, as documented per function);
+//! - null pointers and out-of-range indices or classes are errors, never crashes;
+//! - no Rust panic crosses the boundary: each body runs under `catch_unwind`, a panic
+//!   becomes `LPE_ERR_PANIC`;
+//! - a compiled `lpe_set` is immutable: share it across threads freely; `lpe_state`
+//!   and `lpe_class` are plain values the caller copies.
+//!
+//! Modules: [`status`] (codes and the panic guard), [`error`] (the error object of a
+//! failed compile), [`set`] (compile, names, warnings, free), [`classify`] (vertices
+//! to classes), [`step`] (states: start, step, matches, is_dead).
+
+#![allow(non_camel_case_types)]
+// Every pointer argument is checked for null and documented in the header; marking the
+// functions `unsafe` would add nothing for C callers.
+#![allow(clippy::not_unsafe_ptr_arg_deref)]
+
+pub mod classify;
+pub mod error;
+pub mod set;
+pub mod status;
+pub mod step;
+
+pub use classify::{lpe_class, lpe_vertex};
+pub use error::lpe_error;
+pub use set::{lpe_options, lpe_set};
+pub use status::lpe_status;
+pub use step::lpe_state;

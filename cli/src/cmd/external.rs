@@ -1,0 +1,116 @@
+//! `lpe-check diff --external 'CMD ARGS'`: an external matcher against every engine.
+//!
+//! Prints each finding in full (a minimized disagreement with each side's answer and a
+//! replay command, or a protocol fault with its request), then a summary of all of them.
+//! Exit 0: agreement; 3: any finding; 2: bad input (the command cannot start, refuses
+//! the hello, or the dialect is not available).
+
+use std::process::ExitCode;
+use std::time::{Duration, Instant};
+
+use engines::external::{self, Cases, Setup};
+
+use super::diff::Args;
+use crate::input::{bad_input, select_engines};
+
+/// Runs `diff --external`.
+pub fn run(args: &Args) -> ExitCode {
+    let Some(command) = args.external.clone() else {
+        return bad_input("error: --external needs a command");
+    };
+    if args.dialect == lpe::Dialect::Osl {
+        return bad_input(
+            "error: --external --dialect osl is not supported yet; use --dialect renderman",
+        );
+    }
+    let engines = match select_engines(&args.engine) {
+        Ok(e) => e,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    if !args.path.is_empty() && args.expr.is_empty() {
+        return bad_input("error: --path needs --expr");
+    }
+    for p in &args.path {
+        if let Err(e) = p.parse::<lpe::Path>() {
+            return bad_input(format!("error: --path {p:?}: {e}"));
+        }
+    }
+    let cases = if args.expr.is_empty() {
+        Cases::Generated(args.run())
+    } else {
+        Cases::Given {
+            exprs: args.expr.clone(),
+            paths: args.path.clone(),
+        }
+    };
+    let setup = Setup {
+        command,
+        dialect: "renderman".into(),
+        timeout: Duration::from_millis(args.timeout_ms),
+        max_restarts: args.max_restarts,
+    };
+    let start = Instant::now();
+    let report = match external::run(&setup, &cases, &engines) {
+        Ok(r) => r,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    let secs = start.elapsed().as_secs_f64().max(1e-9);
+    let names: Vec<&str> = engines.iter().map(|e| e.name()).collect();
+    println!(
+        "external: {} ({}); engines: {}",
+        setup.command,
+        report.name.as_deref().unwrap_or("unnamed"),
+        names.join(", ")
+    );
+    if let Cases::Generated(run) = &cases {
+        println!(
+            "seed {}, cases {}..{}, max size {}, {} paths per case",
+            run.seed,
+            run.first,
+            run.first + report.cases,
+            run.max_size,
+            run.paths
+        );
+    }
+    println!(
+        "{} cases, {} AOV/path pairs in {:.2} s: {:.0} cases/s ({} matched)",
+        report.cases,
+        report.pairs,
+        secs,
+        report.cases as f64 / secs,
+        report.matched
+    );
+    match &report.unsupported {
+        (0, _) => println!("unsupported: none"),
+        (n, first) => println!(
+            "unsupported: {n} cases the external matcher does not implement (first: {})",
+            first.as_deref().unwrap_or("?")
+        ),
+    }
+    if report.uncompared > 0 {
+        println!(
+            "uncompared: {} cases no engine could build",
+            report.uncompared
+        );
+    }
+    for f in &report.findings {
+        println!("\n{f}");
+    }
+    if let Some(why) = &report.stopped {
+        println!("\nstopped early: {why}");
+    }
+    if report.findings.is_empty() {
+        println!("the external matcher agrees with every engine");
+        return ExitCode::SUCCESS;
+    }
+    println!(
+        "\nsummary: {} finding(s), {} disagreement(s), {} restart(s) of the external process",
+        report.findings.len(),
+        report.disagreements(),
+        report.restarts
+    );
+    for (i, f) in report.findings.iter().enumerate() {
+        println!("  {}. {}", i + 1, f.summary());
+    }
+    ExitCode::from(3)
+}

@@ -1,0 +1,590 @@
+//! `lpe-check diff --external`: generated (or given) cases asked of an external matcher
+//! and of the registered engines, disagreements minimized by re-asking the external
+//! process, protocol faults reported with their request.
+//!
+//! Per case: `compile` the AOV set, then one batched `match` of all its paths. An
+//! external `unsupported` reply (to `compile` or `match`) makes the case *unsupported*:
+//! counted and reported in the summary, never a disagreement, and the minimizer never
+//! steps onto an unsupported input. Whether an expression is an error is compared too:
+//! the external rejecting a set every engine accepts, or accepting one lpe rejects, is a
+//! disagreement (byte positions are shown, not compared: they legitimately differ).
+
+use std::fmt;
+use std::time::Duration;
+
+use lpe::generate::Config as GenConfig;
+use lpe::{Lpe, Path};
+
+use super::client::{Client, Fault, FaultKind, StartError};
+use super::protocol::{AovSource, Body, Reply, Violation};
+use crate::differential::{generate_case, minimize_by, RenderMan, Run};
+use crate::engine::Engine;
+
+/// One side's verdict on a set and a path.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Answer {
+    /// Per AOV, whether the path lands in it.
+    Matches(Vec<bool>),
+    /// The set does not compile: which AOV, where, why.
+    Rejected {
+        /// The AOV's index, if known.
+        aov: Option<usize>,
+        /// Byte position in its expression, if known.
+        position: Option<usize>,
+        /// The message.
+        message: String,
+    },
+}
+
+impl Answer {
+    fn agrees(&self, other: &Answer) -> bool {
+        match (self, other) {
+            (Answer::Matches(a), Answer::Matches(b)) => a == b,
+            // Both reject: positions and wording may differ between implementations.
+            (Answer::Rejected { .. }, Answer::Rejected { .. }) => true,
+            _ => false,
+        }
+    }
+
+    fn show(&self, names: &[String]) -> String {
+        match self {
+            Answer::Matches(bits) => {
+                let hit: Vec<&str> = names
+                    .iter()
+                    .zip(bits)
+                    .filter(|(_, &b)| b)
+                    .map(|(n, _)| n.as_str())
+                    .collect();
+                if hit.is_empty() {
+                    "no AOV".into()
+                } else {
+                    hit.join(" ")
+                }
+            }
+            Answer::Rejected {
+                aov,
+                position,
+                message,
+            } => {
+                let aov = aov.map_or(String::new(), |i| {
+                    format!(" in {}", names.get(i).map_or("?", |s| s.as_str()))
+                });
+                let at = position.map_or(String::new(), |p| format!(" at byte {p}"));
+                format!("error{aov}{at}: {message}")
+            }
+        }
+    }
+}
+
+/// A minimized disagreement between the external matcher and the engines.
+#[derive(Clone, Debug)]
+pub struct Disagreement {
+    /// Case index (generated runs).
+    pub case: Option<u64>,
+    /// The minimized AOV set.
+    pub aovs: Vec<AovSource>,
+    /// The minimized path, in text form.
+    pub path: String,
+    /// The external answer on them.
+    pub external: Answer,
+    /// Each engine's answer on them (`None`: it could not build the set).
+    pub engines: Vec<(&'static str, Option<Answer>)>,
+    /// The case before minimization.
+    pub original: (Vec<AovSource>, String),
+    /// A command line that replays the minimized case.
+    pub replay: String,
+}
+
+/// Something the run found.
+#[derive(Clone, Debug)]
+pub enum Finding {
+    /// The external matcher answers differently from the engines.
+    Disagreement(Box<Disagreement>),
+    /// The external process misbehaved.
+    Fault {
+        /// Case index, if in a generated run.
+        case: Option<u64>,
+        /// What happened, with the request.
+        fault: Fault,
+    },
+}
+
+impl Finding {
+    /// One line for the summary.
+    pub fn summary(&self) -> String {
+        match self {
+            Finding::Disagreement(d) => {
+                let exprs: Vec<&str> = d.aovs.iter().map(|a| a.expr.as_str()).collect();
+                format!(
+                    "disagreement{}: {} on `{}`",
+                    d.case.map_or(String::new(), |c| format!(" (case {c})")),
+                    exprs.join(" ; "),
+                    d.path
+                )
+            }
+            Finding::Fault { case, fault } => format!(
+                "{}{}",
+                fault.kind.label(),
+                case.map_or(String::new(), |c| format!(" (case {c})"))
+            ),
+        }
+    }
+}
+
+impl fmt::Display for Finding {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Finding::Fault { case, fault } => {
+                if let Some(c) = case {
+                    write!(f, "case {c}: ")?;
+                }
+                write!(f, "{fault}")
+            }
+            Finding::Disagreement(d) => {
+                let names: Vec<String> = d.aovs.iter().map(|a| a.name.clone()).collect();
+                match d.case {
+                    Some(c) => {
+                        writeln!(f, "case {c}: the external matcher disagrees (minimized):")?
+                    }
+                    None => writeln!(f, "the external matcher disagrees (minimized):")?,
+                }
+                for a in &d.aovs {
+                    writeln!(f, "  aov {}: {}", a.name, a.expr)?;
+                }
+                writeln!(f, "  path:   {}", d.path)?;
+                writeln!(f, "  {:>12}: {}", "external", d.external.show(&names))?;
+                for (name, answer) in &d.engines {
+                    match answer {
+                        Some(a) => writeln!(f, "  {name:>12}: {}", a.show(&names))?,
+                        None => writeln!(f, "  {name:>12}: could not build the set")?,
+                    }
+                }
+                writeln!(f, "  from the original case:")?;
+                for a in &d.original.0 {
+                    writeln!(f, "    aov {}: {}", a.name, a.expr)?;
+                }
+                writeln!(f, "    path:   {}", d.original.1)?;
+                write!(f, "  replay: {}", d.replay)
+            }
+        }
+    }
+}
+
+/// What to run.
+#[derive(Clone, Debug)]
+pub struct Setup {
+    /// The external command line (split like a shell does).
+    pub command: String,
+    /// `renderman` or `osl`.
+    pub dialect: String,
+    /// Per-request timeout.
+    pub timeout: Duration,
+    /// Stop after this many processes restarted after faults.
+    pub max_restarts: u64,
+}
+
+/// Cases to ask.
+#[derive(Clone, Debug)]
+pub enum Cases {
+    /// Generated, as `lpe-check diff` does.
+    Generated(Run),
+    /// One given set of expressions (source text) and paths (text): a replay.
+    Given {
+        /// Expressions, in order (AOVs `a0`, `a1`, ...).
+        exprs: Vec<String>,
+        /// Paths.
+        paths: Vec<String>,
+    },
+}
+
+/// Totals of a run.
+#[derive(Debug, Default)]
+pub struct Report {
+    /// The matcher's name from its hello.
+    pub name: Option<String>,
+    /// Cases asked.
+    pub cases: u64,
+    /// Set/path pairs compared (one per AOV per path).
+    pub pairs: u64,
+    /// Pairs that matched.
+    pub matched: u64,
+    /// Cases the external answered `unsupported`, and the first reason.
+    pub unsupported: (u64, Option<String>),
+    /// Cases no engine could build (nothing to compare with).
+    pub uncompared: u64,
+    /// Everything found, in order.
+    pub findings: Vec<Finding>,
+    /// Processes restarted after faults.
+    pub restarts: u64,
+    /// Why the run stopped before its last case, if it did.
+    pub stopped: Option<String>,
+}
+
+impl Report {
+    /// Disagreements found.
+    pub fn disagreements(&self) -> usize {
+        self.findings
+            .iter()
+            .filter(|f| matches!(f, Finding::Disagreement(_)))
+            .count()
+    }
+}
+
+/// The AOV names of a set of `n`: `a0`, `a1`, ...
+fn names(n: usize) -> Vec<String> {
+    (0..n).map(|i| format!("a{i}")).collect()
+}
+
+fn sources(exprs: &[String]) -> Vec<AovSource> {
+    names(exprs.len())
+        .into_iter()
+        .zip(exprs)
+        .map(|(name, expr)| AovSource {
+            name,
+            expr: expr.clone(),
+        })
+        .collect()
+}
+
+/// The two requests that ask about one set: `compile`, then `match` of all its paths.
+fn requests(aovs: &[AovSource], paths: &[String]) -> [Body; 2] {
+    [
+        Body::Compile {
+            aovs: aovs.to_vec(),
+        },
+        Body::Match {
+            paths: paths.to_vec(),
+        },
+    ]
+}
+
+/// The external side of one set, asked in one round trip: one answer per path (a
+/// rejection repeated), or `Ok(None)`: unsupported.
+fn ask(
+    client: &mut Client,
+    aovs: &[AovSource],
+    paths: &[String],
+) -> Result<Option<Vec<Answer>>, Fault> {
+    let (replies, fault) = client.pipeline(requests(aovs, paths).into());
+    match fault {
+        Some(f) => Err(f),
+        None => interpret(aovs, paths, &replies),
+    }
+}
+
+/// The replies to [`requests`] as answers. After a rejected compile the match reply
+/// is read but not used.
+fn interpret(
+    aovs: &[AovSource],
+    paths: &[String],
+    replies: &[Reply],
+) -> Result<Option<Vec<Answer>>, Fault> {
+    let lists = match replies {
+        [Reply::Rejected(r), _] => {
+            let rejected = Answer::Rejected {
+                aov: r.aov,
+                position: r.position,
+                message: r.message.clone(),
+            };
+            return Ok(Some(vec![rejected; paths.len()]));
+        }
+        [Reply::Unsupported(_), _] | [_, Reply::Unsupported(_)] => return Ok(None),
+        [Reply::Done, Reply::Matches(m)] => m,
+        other => unreachable!("replies are checked against their requests: {other:?}"),
+    };
+    let mut answers = Vec::with_capacity(lists.len());
+    for list in lists {
+        let mut bits = vec![false; aovs.len()];
+        for name in list {
+            match aovs.iter().position(|a| &a.name == name) {
+                Some(i) => bits[i] = true,
+                None => {
+                    return Err(Fault {
+                        request: format!("match {paths:?}"),
+                        kind: FaultKind::Reply {
+                            line: format!("AOV name {name:?}"),
+                            violation: Violation::Unknown(format!(
+                                "the reply names `{name}`, not an AOV of the set"
+                            )),
+                        },
+                    })
+                }
+            }
+        }
+        answers.push(Answer::Matches(bits));
+    }
+    Ok(Some(answers))
+}
+
+/// Our side: each engine's answer per path (`None`: could not build), or the parse
+/// error shared by every engine.
+fn ours(
+    engines: &[&dyn Engine],
+    parsed: &Result<Vec<Lpe>, Answer>,
+    paths: &[Path],
+) -> Vec<(&'static str, Vec<Option<Answer>>)> {
+    engines
+        .iter()
+        .map(|e| {
+            let answers = match parsed {
+                Err(rejected) => vec![Some(rejected.clone()); paths.len()],
+                Ok(exprs) => match e.compile(exprs) {
+                    Ok(m) => paths
+                        .iter()
+                        .map(|p| Some(Answer::Matches(m.which(p))))
+                        .collect(),
+                    Err(_) => vec![None; paths.len()],
+                },
+            };
+            (e.name(), answers)
+        })
+        .collect()
+}
+
+/// Parses expression texts as the CLI does, the first error as a rejection.
+fn parse_all(exprs: &[String]) -> Result<Vec<Lpe>, Answer> {
+    exprs
+        .iter()
+        .enumerate()
+        .map(|(i, e)| {
+            lpe::parse(e).map_err(|err| Answer::Rejected {
+                aov: Some(i),
+                position: Some(err.span().start),
+                message: err.message().to_string(),
+            })
+        })
+        .collect()
+}
+
+/// A case: its index (generated runs), expressions and paths, as text.
+type Item = (Option<u64>, Vec<String>, Vec<String>);
+
+/// Cases per pipelined batch.
+const BATCH: usize = 64;
+
+/// Runs the cases against the external matcher.
+pub fn run(setup: &Setup, cases: &Cases, engines: &[&dyn Engine]) -> Result<Report, StartError> {
+    let mut client = Client::start(&setup.command, &setup.dialect, setup.timeout)?;
+    let mut report = Report {
+        name: client.name.clone(),
+        ..Report::default()
+    };
+    let (max_failures, list): (usize, Vec<Item>) = match cases {
+        Cases::Given { exprs, paths } => (usize::MAX, vec![(None, exprs.clone(), paths.clone())]),
+        Cases::Generated(run) => {
+            let cfg = GenConfig::default().with_max_atoms(run.max_size);
+            let list = (run.first..run.first.saturating_add(run.cases))
+                .map(|i| {
+                    let c = generate_case(run.seed, i, &cfg, run.paths);
+                    (
+                        Some(i),
+                        c.exprs.iter().map(|e| e.to_string()).collect(),
+                        c.paths.iter().map(|p| p.to_string()).collect(),
+                    )
+                })
+                .collect();
+            (run.max_failures, list)
+        }
+    };
+    let mut queue: std::collections::VecDeque<_> = list.into();
+    'batches: while !queue.is_empty() {
+        if client.restarts > setup.max_restarts {
+            report.stopped = Some(format!(
+                "the external process was restarted {} times",
+                client.restarts
+            ));
+            break;
+        }
+        // One round trip per batch: every case's compile and match, pipelined.
+        let batch: Vec<Item> = queue.drain(..queue.len().min(BATCH)).collect();
+        let bodies: Vec<Body> = batch
+            .iter()
+            .flat_map(|(_, exprs, paths)| requests(&sources(exprs), paths))
+            .collect();
+        let (replies, fault) = client.pipeline(bodies);
+        let answered = replies.len() / 2;
+        let mut fault = fault;
+        for (k, (case, exprs, paths)) in batch.iter().enumerate() {
+            if report.disagreements() >= max_failures {
+                report.stopped = Some(format!("{max_failures} disagreement(s) found"));
+                break 'batches;
+            }
+            let external = if k < answered {
+                interpret(&sources(exprs), paths, &replies[2 * k..2 * k + 2])
+            } else if let Some(f) = fault.take() {
+                Err(f)
+            } else {
+                // Unanswered after a fault: asked again in the next batch.
+                queue.extend(batch[k..].iter().cloned());
+                break;
+            };
+            report.cases += 1;
+            judge(
+                setup,
+                &mut client,
+                engines,
+                *case,
+                exprs,
+                paths,
+                external,
+                &mut report,
+            );
+        }
+    }
+    report.restarts = client.restarts;
+    client.quit();
+    Ok(report)
+}
+
+/// Compares the external answers on one case with every engine's; a disagreement is
+/// minimized and recorded.
+#[allow(clippy::too_many_arguments)]
+fn judge(
+    setup: &Setup,
+    client: &mut Client,
+    engines: &[&dyn Engine],
+    case: Option<u64>,
+    exprs: &[String],
+    path_texts: &[String],
+    external: Result<Option<Vec<Answer>>, Fault>,
+    report: &mut Report,
+) {
+    let aovs = sources(exprs);
+    let parsed = parse_all(exprs);
+    // Generated paths always parse; given ones are checked by the caller.
+    let paths: Vec<Path> = path_texts
+        .iter()
+        .map(|p| p.parse())
+        .collect::<Result<_, _>>()
+        .unwrap_or_default();
+    let external = match external {
+        Ok(Some(answers)) => answers,
+        Ok(None) => {
+            report.unsupported.0 += 1;
+            report.unsupported.1.get_or_insert_with(|| {
+                let at = case.map_or(String::new(), |c| format!("case {c}: "));
+                format!("{at}{}", exprs.join(" ; "))
+            });
+            return;
+        }
+        Err(fault) => {
+            report.findings.push(Finding::Fault { case, fault });
+            return;
+        }
+    };
+    let ours = ours(engines, &parsed, &paths);
+    if ours.iter().all(|(_, a)| a.iter().all(Option::is_none)) {
+        report.uncompared += 1;
+        return;
+    }
+    for (k, ext) in external.iter().enumerate() {
+        let culprit = ours
+            .iter()
+            .position(|(_, a)| a.get(k).cloned().flatten().is_some_and(|o| !o.agrees(ext)));
+        let Some(culprit) = culprit else {
+            if let Answer::Matches(bits) = ext {
+                report.pairs += bits.len() as u64;
+                report.matched += bits.iter().filter(|&&b| b).count() as u64;
+            }
+            continue;
+        };
+        let original = (aovs.clone(), path_texts.get(k).cloned().unwrap_or_default());
+        let (aovs_min, path_min) = match (&parsed, paths.get(k)) {
+            (Ok(exprs), Some(path)) => {
+                // Minimized against the first engine that disagrees (the reference, unless
+                // the engines disagree among themselves): every candidate recompiles it,
+                // and the automata engines pay for large counts on every one. All engines
+                // answer on the result.
+                let judge = &engines[culprit..=culprit];
+                let (e, p) = minimize(setup, client, judge, exprs.clone(), path.clone(), report);
+                (
+                    sources(&e.iter().map(|x| x.to_string()).collect::<Vec<_>>()),
+                    p.to_string(),
+                )
+            }
+            _ => original.clone(),
+        };
+        // Ask both sides again on the minimized case, for the report.
+        let min_exprs: Vec<String> = aovs_min.iter().map(|a| a.expr.clone()).collect();
+        let min_parsed = parse_all(&min_exprs);
+        let min_paths: Vec<Path> = path_min.parse().into_iter().collect();
+        let external = match ask(client, &aovs_min, std::slice::from_ref(&path_min)) {
+            Ok(Some(mut a)) if !a.is_empty() => a.swap_remove(0),
+            _ => ext.clone(),
+        };
+        let engines_answers = ours_on_one(engines, &min_parsed, &min_paths);
+        report
+            .findings
+            .push(Finding::Disagreement(Box::new(Disagreement {
+                case,
+                replay: replay(setup, &min_exprs, &path_min),
+                aovs: aovs_min,
+                path: path_min,
+                external,
+                engines: engines_answers,
+                original,
+            })));
+        return;
+    }
+}
+
+fn ours_on_one(
+    engines: &[&dyn Engine],
+    parsed: &Result<Vec<Lpe>, Answer>,
+    paths: &[Path],
+) -> Vec<(&'static str, Option<Answer>)> {
+    ours(engines, parsed, paths)
+        .into_iter()
+        .map(|(n, mut a)| (n, if a.is_empty() { None } else { a.swap_remove(0) }))
+        .collect()
+}
+
+/// Shrinks a disagreement, re-asking the external process at every candidate. Faults
+/// met on the way are findings too; the candidate that caused one does not count as a
+/// disagreement.
+fn minimize(
+    setup: &Setup,
+    client: &mut Client,
+    engines: &[&dyn Engine],
+    exprs: Vec<Lpe>,
+    path: Path,
+    report: &mut Report,
+) -> (Vec<Lpe>, Path) {
+    minimize_by(&RenderMan, exprs, path, |exprs, path| {
+        if client.restarts > setup.max_restarts {
+            return false;
+        }
+        let texts: Vec<String> = exprs.iter().map(|e| e.to_string()).collect();
+        let aovs = sources(&texts);
+        let ext = match ask(client, &aovs, &[path.to_string()]) {
+            Ok(Some(mut a)) if a.len() == 1 => a.swap_remove(0),
+            Ok(_) => return false,
+            Err(fault) => {
+                report.findings.push(Finding::Fault { case: None, fault });
+                return false;
+            }
+        };
+        let parsed = Ok(exprs.to_vec());
+        ours(engines, &parsed, std::slice::from_ref(path))
+            .iter()
+            .any(|(_, a)| a[0].as_ref().is_some_and(|o| !o.agrees(&ext)))
+    })
+}
+
+/// The one-line command that replays a case.
+fn replay(setup: &Setup, exprs: &[String], path: &str) -> String {
+    let mut words = vec![
+        "lpe-check".to_string(),
+        "diff".into(),
+        "--external".into(),
+        setup.command.clone(),
+    ];
+    if setup.dialect != "renderman" {
+        words.extend(["--dialect".into(), setup.dialect.clone()]);
+    }
+    for e in exprs {
+        words.extend(["--expr".into(), e.clone()]);
+    }
+    words.extend(["--path".into(), path.to_string()]);
+    shell_words::join(words)
+}

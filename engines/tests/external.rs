@@ -1,0 +1,240 @@
+//! The external-matcher harness against real processes: the independent Python matcher
+//! (clean: agreement; with its planted bug: found and minimized), and adapters that
+//! break the protocol on purpose (each misbehaviour a finding, the run finishes).
+//!
+//! Skipped, with the reason printed, when `python3` is not installed.
+
+use std::path::PathBuf;
+use std::process::Command;
+use std::time::Duration;
+
+use engines::differential::Run;
+use engines::external::{self, Answer, Cases, FaultKind, Finding, Report, Setup};
+
+fn python() -> bool {
+    let found = Command::new("python3")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    if !found {
+        eprintln!("skipped: python3 is not installed, so no external matcher can run");
+    }
+    found
+}
+
+fn repo(rel: &str) -> String {
+    let p: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", rel].iter().collect();
+    p.to_string_lossy().into_owned()
+}
+
+fn setup(command: String, timeout_ms: u64) -> Setup {
+    Setup {
+        command,
+        dialect: "renderman".into(),
+        timeout: Duration::from_millis(timeout_ms),
+        max_restarts: 20,
+    }
+}
+
+fn generated(cases: u64, seed: u64) -> Cases {
+    Cases::Generated(Run {
+        cases,
+        seed,
+        first: 0,
+        max_size: 10,
+        paths: 4,
+        max_failures: 1,
+    })
+}
+
+fn naive(flags: &str) -> String {
+    format!(
+        "python3 {} {flags}",
+        shell_quote(&repo("examples/python/naive_matcher.py"))
+    )
+}
+
+fn shell_quote(s: &str) -> String {
+    format!("'{}'", s.replace('\'', r"'\''"))
+}
+
+fn run(command: String, cases: &Cases, timeout_ms: u64) -> Report {
+    external::run(&setup(command, timeout_ms), cases, &engines::all()).expect("starts")
+}
+
+#[test]
+fn the_naive_python_matcher_agrees_with_every_engine() {
+    if !python() {
+        return;
+    }
+    let r = run(naive(""), &generated(300, 11), 5000);
+    if let Some(f) = r.findings.first() {
+        panic!("{f}");
+    }
+    assert_eq!(r.cases, 300);
+    assert_eq!(r.unsupported.0, 0, "{:?}", r.unsupported);
+    assert_eq!(r.uncompared, 0);
+    // Every case compared its AOVs on its paths, and both answers occur.
+    assert!(r.pairs >= 300 * 4, "{}", r.pairs);
+    assert!(r.matched > 0 && r.matched < r.pairs);
+    assert_eq!(r.restarts, 0);
+}
+
+#[test]
+fn the_planted_bug_is_found_and_minimized_by_re_asking() {
+    if !python() {
+        return;
+    }
+    let r = run(naive("--plant-bug"), &generated(400, 11), 5000);
+    let Some(Finding::Disagreement(d)) = r.findings.first() else {
+        panic!("the planted `{{n,m}}` bug went unnoticed: {:?}", r.findings);
+    };
+    assert!(d.path.split(' ').count() <= 3, "{}", d.path);
+    assert_eq!(d.aovs.len(), 1, "{:?}", d.aovs);
+    // The bug lives in `{n,m}` with both bounds written: the minimized expression
+    // keeps one.
+    let e = &d.aovs[0].expr;
+    assert!(
+        e.contains('{') && e.contains(','),
+        "minimized to {e}, which has no {{n,m}}"
+    );
+    // The minimized case still disagrees, asked afresh: the reference matches where
+    // the buggy matcher does not (the bug only ever demands more repetitions).
+    let reference = &d.engines[0];
+    assert_eq!(reference.0, "reference");
+    assert_eq!(reference.1, Some(Answer::Matches(vec![true])));
+    assert_eq!(d.external, Answer::Matches(vec![false]));
+    assert!(d.replay.contains("--plant-bug"), "{}", d.replay);
+    assert!(
+        d.replay.contains("--expr") && d.replay.contains("--path"),
+        "{}",
+        d.replay
+    );
+    // The replayed case disagrees in the same way.
+    let again = run(
+        naive("--plant-bug"),
+        &Cases::Given {
+            exprs: vec![e.clone()],
+            paths: vec![d.path.clone()],
+        },
+        5000,
+    );
+    assert_eq!(again.disagreements(), 1, "{:?}", again.findings);
+}
+
+#[test]
+fn unsupported_constructs_are_counted_not_disagreements() {
+    if !python() {
+        return;
+    }
+    let r = run(
+        naive(""),
+        &Cases::Given {
+            exprs: vec!["directDiffuse".into()],
+            paths: vec!["C RD L".into()],
+        },
+        5000,
+    );
+    assert!(r.findings.is_empty(), "{:?}", r.findings);
+    assert_eq!(r.unsupported.0, 1);
+}
+
+#[test]
+fn rejections_are_compared_both_ways() {
+    if !python() {
+        return;
+    }
+    // Both reject: agreement.
+    let r = run(
+        naive(""),
+        &Cases::Given {
+            exprs: vec!["C.L".into(), "C(L".into()],
+            paths: vec!["C RD L".into()],
+        },
+        5000,
+    );
+    assert!(r.findings.is_empty(), "{:?}", r.findings);
+    // The external rejects what every engine accepts: a disagreement, minimized to one
+    // small expression (the path does not matter to a rejection).
+    let broken = format!(
+        "python3 {} reject",
+        shell_quote(&repo("engines/tests/adapters/broken_matcher.py"))
+    );
+    let r = run(broken, &generated(3, 2), 5000);
+    let Some(Finding::Disagreement(d)) = r.findings.first() else {
+        panic!("{:?}", r.findings);
+    };
+    assert!(
+        matches!(
+            d.external,
+            Answer::Rejected {
+                aov: Some(0),
+                position: Some(0),
+                ..
+            }
+        ),
+        "{:?}",
+        d.external
+    );
+    assert_eq!(d.aovs.len(), 1);
+    assert!(d.aovs[0].expr.len() <= 3, "{}", d.aovs[0].expr);
+}
+
+#[test]
+fn broken_adapters_become_findings_and_the_run_finishes() {
+    if !python() {
+        return;
+    }
+    let script = shell_quote(&repo("engines/tests/adapters/broken_matcher.py"));
+    let cases = generated(3, 5);
+    for (mode, label) in [
+        ("crash", "crash"),
+        ("hang", "timeout"),
+        ("garbage", "malformed reply"),
+        ("count", "wrong answer count"),
+        // Requests are pipelined: the second compile reply arrives where the match
+        // reply should.
+        ("extra", "reply to another request"),
+        ("wrongid", "reply to another request"),
+    ] {
+        let r = run(format!("python3 {script} {mode}"), &cases, 1000);
+        assert_eq!(r.cases, 3, "{mode}: the run did not finish");
+        assert_eq!(r.findings.len(), 3, "{mode}: {:?}", r.findings);
+        for f in &r.findings {
+            let Finding::Fault { case, fault } = f else {
+                panic!("{mode}: {f}");
+            };
+            assert!(case.is_some());
+            assert_eq!(fault.kind.label(), label, "{mode}: {f}");
+            // The report names the request that caused it (`extra` is noticed on the
+            // request after the double reply: the match).
+            assert!(fault.request.contains(r#""op":"match""#), "{mode}: {f}");
+        }
+        // Each fault killed the process; each next case started a fresh one.
+        assert_eq!(r.restarts, 2, "{mode}");
+        if mode == "crash" {
+            let Finding::Fault { fault, .. } = &r.findings[0] else {
+                unreachable!()
+            };
+            let FaultKind::Crash { status, stderr } = &fault.kind else {
+                unreachable!()
+            };
+            assert!(status.contains('3'), "{status}");
+            assert_eq!(stderr, &["boom: mode crash"]);
+        }
+    }
+}
+
+#[test]
+fn a_command_that_cannot_start_is_bad_input() {
+    let err = external::run(
+        &setup("/nonexistent/matcher --flag".into(), 500),
+        &generated(1, 0),
+        &engines::all(),
+    )
+    .expect_err("cannot start");
+    assert!(err.to_string().contains("/nonexistent/matcher"), "{err}");
+    let err = external::run(&setup("'unclosed".into(), 500), &generated(1, 0), &[])
+        .expect_err("bad quoting");
+    assert!(err.to_string().contains("bad --external command"), "{err}");
+}
