@@ -34,6 +34,7 @@ impl<M: PathMatcher + Sync> Integrator<'_, M> {
             ProgressBar::hidden()
         };
         let start = Instant::now();
+        let cpu_start = process_cpu_seconds();
         let (rejected, aov_rejected, rays) = pool.install(|| {
             film.rows_mut()
                 .map(|(y, mut row)| {
@@ -62,8 +63,15 @@ impl<M: PathMatcher + Sync> Integrator<'_, M> {
             film,
             plan: self.plan,
             seconds: start.elapsed().as_secs_f64(),
+            cpu_seconds: process_cpu_seconds() - cpu_start,
             paths: (w * h) as u64 * s.spp as u64,
             rays,
         })
     }
+}
+
+/// CPU time this process has used so far, all threads.
+fn process_cpu_seconds() -> f64 {
+    let t = rustix::time::clock_gettime(rustix::time::ClockId::ProcessCPUTime);
+    t.tv_sec as f64 + t.tv_nsec as f64 * 1e-9
 }

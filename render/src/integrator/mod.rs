@@ -126,6 +126,10 @@ pub struct Render {
     pub film: Film,
     pub plan: Plan,
     pub seconds: f64,
+    /// CPU time of the whole process over the same span (every worker thread): what
+    /// `lpe-render bench` compares, since on a shared machine it does not count the
+    /// time a worker waits for a core.
+    pub cpu_seconds: f64,
     /// Camera samples traced.
     pub paths: u64,
     /// Rays cast (camera, bounce and shadow rays).
