@@ -48,7 +48,7 @@ impl Matcher for AovSetMatcher {
     }
 }
 
-fn compile_set(exprs: &[Lpe], opts: &Options) -> Result<Box<dyn Matcher>, EngineError> {
+pub(crate) fn compile_set(exprs: &[Lpe], opts: &Options) -> Result<Box<dyn Matcher>, EngineError> {
     let aovs: Vec<(String, Lpe)> = exprs
         .iter()
         .enumerate()
