@@ -91,7 +91,7 @@ fn numbered<T: Clone>(exprs: &[T]) -> Vec<(String, T)> {
         .collect()
 }
 
-fn compile_set(exprs: &[Lpe], opts: &Options) -> Result<Box<dyn Matcher>, EngineError> {
+pub(crate) fn compile_set(exprs: &[Lpe], opts: &Options) -> Result<Box<dyn Matcher>, EngineError> {
     let set = AovSet::compile_with(&numbered(exprs), opts)?;
     Ok(Box::new(AovSetMatcher(set)))
 }
@@ -105,7 +105,6 @@ fn compile_osl_set(
     Ok(Box::new(AovSetMatcher(set)))
 }
 
-/// The bitset NFA alone: a DFA budget of 0.
 /// Every step on the bitset NFA: no DFA, and no lazy cache to remember transitions.
 fn nfa_only() -> Options {
     Options {

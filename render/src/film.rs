@@ -7,10 +7,13 @@
 //! and a compensated one (an f32 sum plus an f32 running error, renormalized after each
 //! addition, so the stored estimate is within an f32 rounding or two of the exact sum
 //! at any count).
-//! The film owns accumulation: the integrator hands it [`Contribution`]s, which a
-//! [`SampleValues`] weighs into beauty and the matched AOVs by their prefixes
-//! ([`Weighting`]), and a [`FilmRow`] commits each finished sample to its pixel with the
-//! film's [`Accumulation`], so the integrator does not care which film it writes.
+//! The film owns accumulation: the integrator hands it [`Contribution`]s with the final
+//! matcher state of their path, which a [`SampleValues`] weighs into beauty and the
+//! matched AOVs by their prefixes ([`Weighting`]), and a [`FilmRow`] commits each
+//! finished sample to its pixel with the film's [`Accumulation`], so the integrator does
+//! not care which film it writes. Plain AOVs are summed per final state and expanded
+//! into their layers once per pixel ([`by_state`]); AOVs with prefixes are routed per
+//! contribution.
 
 use glam::{DVec3, Vec3};
 use rayon::prelude::*;
@@ -18,6 +21,10 @@ use rayon::prelude::*;
 use crate::aov::matcher::AovMask;
 use crate::aov::{AovFlags, AovList};
 use crate::sampling::max_component;
+
+mod by_state;
+
+use by_state::ByState;
 
 /// How a film adds samples into its pixel sums (`converge` and `stress` compare them).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -194,6 +201,7 @@ impl Film {
             .par_chunks_mut(self.width * stride)
             .enumerate()
             .map(move |(y, pixels)| {
+                warm(pixels);
                 (
                     y,
                     FilmRow {
@@ -268,17 +276,28 @@ pub struct Weighting {
     flags: Vec<AovFlags>,
     /// AOVs with no prefix that changes a contribution's value: they receive beauty's.
     like_beauty: AovMask,
+    /// Like beauty, and neither `overwrite;` nor `noinfinitecheck;`: summed per final
+    /// matcher state ([`by_state`]).
+    plain: AovMask,
+    /// The others: routed per contribution.
+    direct: AovMask,
     clamp: Option<f32>,
 }
 
 impl Weighting {
     pub fn new(aovs: &AovList, clamp: Option<f32>) -> Weighting {
+        let which = |keep: &dyn Fn(&AovFlags) -> bool| -> AovMask {
+            (aovs.aovs.iter().enumerate())
+                .filter(|(_, a)| keep(&a.flags))
+                .map(|(i, _)| i)
+                .collect()
+        };
+        let plain = |f: &AovFlags| f.values_like_beauty() && !f.overwrite && !f.noinfinitecheck;
         Weighting {
             flags: aovs.aovs.iter().map(|a| a.flags).collect(),
-            like_beauty: (aovs.aovs.iter().enumerate())
-                .filter(|(_, a)| a.flags.values_like_beauty())
-                .map(|(i, _)| i)
-                .collect(),
+            like_beauty: which(&|f| f.values_like_beauty()),
+            plain: which(&plain),
+            direct: which(&|f| !plain(f)),
             clamp,
         }
     }
@@ -298,32 +317,48 @@ impl Weighting {
     }
 }
 
-/// The values of one camera sample, before they join the pixel.
+/// The values of one camera sample, before they join the pixel, for a matcher whose
+/// path states are `K`; and the plain AOVs' per-state sums of the pixel's samples so far.
 #[derive(Clone, Debug)]
-pub struct SampleValues {
+pub struct SampleValues<K> {
     beauty: DVec3,
+    /// Per AOV routed per contribution (and user-lobe signals): this sample's value.
     aov: Vec<DVec3>,
     touched: AovMask,
+    /// This sample's beauty values by final state, in arrival order, for the plain AOVs.
+    arrivals: ByState<K>,
+    /// The pixel's plain-AOV sums by final state, committed samples only (f64 film).
+    pending: ByState<K>,
     /// All light-transport contributions were finite.
     finite: bool,
     /// AOV-only values dropped as non-finite, over every sample this accumulator saw.
     pub aov_rejected: u64,
 }
 
-impl SampleValues {
-    pub fn new(aovs: usize) -> SampleValues {
+impl<K: Copy + PartialEq> SampleValues<K> {
+    pub fn new(aovs: usize) -> SampleValues<K> {
         SampleValues {
             beauty: DVec3::ZERO,
             aov: vec![DVec3::ZERO; aovs],
             touched: AovMask::EMPTY,
+            arrivals: ByState::default(),
+            pending: ByState::default(),
             finite: true,
             aov_rejected: 0,
         }
     }
 
-    /// Adds one contribution to beauty and to the AOVs in `matched` (the AOVs whose
-    /// expressions match its path), each weighed by its prefixes.
-    pub fn add(&mut self, w: &Weighting, a: &Contribution, matched: AovMask) {
+    /// Adds one contribution whose path ended in state `state` to beauty and to the AOVs
+    /// whose expressions match its path (`matches(state)`), each weighed by its
+    /// prefixes. Plain AOVs only note the state: which of them match is asked once per
+    /// state when the film expands the sums.
+    pub fn add(
+        &mut self,
+        w: &Weighting,
+        a: &Contribution,
+        state: K,
+        matches: impl Fn(K) -> AovMask,
+    ) {
         let clamp = w.clamp;
         let clamped = |v: Vec3, f: &AovFlags| match clamp {
             Some(c) if !f.noclamp && max_component(v) > c => v * (c / max_component(v)),
@@ -340,8 +375,14 @@ impl SampleValues {
         }
         if counts_in_beauty {
             self.beauty += beauty_d;
+            if !w.plain.is_empty() {
+                self.arrivals.push(state, beauty_d);
+            }
         }
-        for i in matched.iter() {
+        if w.direct.is_empty() {
+            return;
+        }
+        for i in matches(state).iter().filter(|&i| w.direct.contains(i)) {
             if w.like_beauty.contains(i) {
                 if counts_in_beauty {
                     self.aov[i] += beauty_d;
@@ -382,6 +423,15 @@ impl SampleValues {
     }
 }
 
+/// Reads one value per cache line of a row about to be rendered, in address order:
+/// the hardware streams the row into the cache at once, where the scattered writes of
+/// its pixels' AOV layers (792 bytes a pixel with 32 AOVs) would each wait for memory.
+fn warm(pixels: &[DVec3]) {
+    // 24-byte values, 64-byte lines: every second value (48 bytes on) touches each line.
+    let sum = pixels.iter().step_by(2).fold(0.0, |a, v| a + v.x);
+    std::hint::black_box(sum);
+}
+
 /// One row of the film, handed to one worker.
 pub struct FilmRow<'a> {
     pixels: &'a mut [DVec3],
@@ -391,16 +441,35 @@ pub struct FilmRow<'a> {
 }
 
 impl FilmRow<'_> {
-    /// Adds a finished sample to pixel `x` of this row and clears it; returns whether
-    /// the sample was rejected as non-finite.
-    pub fn commit(&mut self, x: usize, acc: &mut SampleValues, w: &Weighting) -> bool {
+    /// Adds a finished sample to pixel `x` of this row and clears it (`matches`: the
+    /// AOVs a final state matches); returns whether the sample was rejected as
+    /// non-finite. On the f64 film the plain AOVs' share waits, summed per state, for
+    /// [`FilmRow::finish_pixel`]; the f32 films add it to the pixel with the sample, as a
+    /// renderer with an f32 film would.
+    pub fn commit<K: Copy + PartialEq>(
+        &mut self,
+        x: usize,
+        acc: &mut SampleValues<K>,
+        w: &Weighting,
+        matches: impl Fn(K) -> AovMask,
+    ) -> bool {
         let rejected = !(acc.finite && acc.beauty.is_finite());
         let (layers, accumulation, stride) = (self.layers, self.accumulation, self.stride);
         let pixel = &mut self.pixels[x * stride..(x + 1) * stride];
         let add = |pixel: &mut [DVec3], layer, x| accumulation.add(pixel, layers, layer, x);
         if !rejected {
             add(pixel, 0, acc.beauty);
+            if accumulation == Accumulation::F64 {
+                acc.pending.merge_from(&mut acc.arrivals);
+            } else {
+                let (aov, touched) = (&mut acc.aov, &mut acc.touched);
+                acc.arrivals.expand(&w.plain, matches, |i, v| {
+                    aov[i] += v;
+                    touched.insert(i);
+                });
+            }
         }
+        acc.arrivals.clear();
         for i in acc.touched.iter() {
             let f = &w.flags[i];
             if !rejected || f.noinfinitecheck {
@@ -416,6 +485,22 @@ impl FilmRow<'_> {
         acc.beauty = DVec3::ZERO;
         acc.finite = true;
         rejected
+    }
+
+    /// Adds the plain AOVs' per-state sums of pixel `x`'s committed samples to its
+    /// layers and empties them: call once all of the pixel's samples are committed.
+    pub fn finish_pixel<K: Copy + PartialEq>(
+        &mut self,
+        x: usize,
+        acc: &mut SampleValues<K>,
+        w: &Weighting,
+        matches: impl Fn(K) -> AovMask,
+    ) {
+        let (layers, accumulation, stride) = (self.layers, self.accumulation, self.stride);
+        let pixel = &mut self.pixels[x * stride..(x + 1) * stride];
+        acc.pending.expand(&w.plain, matches, |i, v| {
+            accumulation.add(pixel, layers, 1 + i, v)
+        });
     }
 }
 
@@ -450,16 +535,42 @@ mod tests {
         Weighting::new(&aovs, clamp)
     }
 
-    /// Routes one contribution into every AOV of [`ROUTED`]; beauty and each AOV's value,
-    /// `None` for an AOV the contribution did not reach at all.
+    /// Commits `v` as the only sample of the one-pixel film `film` (rows: 1) and
+    /// finishes the pixel; states are their own masks.
+    fn commit_only_sample(film: &mut Film, v: &mut SampleValues<AovMask>, w: &Weighting) {
+        let mut rows: Vec<_> = film.rows_mut().collect();
+        let row = &mut rows[0].1;
+        assert!(!row.commit(0, v, w, |m| m));
+        row.finish_pixel(0, v, w, |m| m);
+    }
+
+    /// Routes one contribution, whose path every AOV of [`ROUTED`] matches, through a
+    /// one-sample, one-pixel film of each kind (all must agree); beauty and each AOV's
+    /// value.
     fn route(c: Contribution, clamp: Option<f32>) -> (DVec3, Vec<Option<DVec3>>) {
         let w = weighting(clamp);
-        let mut v = SampleValues::new(w.len());
-        v.add(&w, &c, (0..w.len()).collect());
+        let films = Accumulation::ALL.map(|a| {
+            let mut film = Film::new(1, 1, 1, w.overwrite(), a);
+            let mut v = SampleValues::new(w.len());
+            let all: AovMask = (0..w.len()).collect();
+            v.add(&w, &c, all, |m| m);
+            commit_only_sample(&mut film, &mut v, &w);
+            film
+        });
+        for f in &films[1..] {
+            for layer in 0..=w.len() {
+                assert_eq!(
+                    f.layer(layer),
+                    films[0].layer(layer),
+                    "{:?}",
+                    f.accumulation
+                );
+            }
+        }
         let aovs = (0..w.len())
-            .map(|i| v.touched.contains(i).then_some(v.aov[i]))
+            .map(|i| Some(films[0].pixel(0, 0, 1 + i)))
             .collect();
-        (v.beauty, aovs)
+        (films[0].pixel(0, 0, 0), aovs)
     }
 
     /// Throughput and local estimate chosen so that every product below is exact in f32.
@@ -802,6 +913,7 @@ mod tests {
                 false,
             ),
             matched,
+            |m| m,
         );
         v.add(
             &w,
@@ -813,6 +925,7 @@ mod tests {
                 false,
             ),
             matched,
+            |m| m,
         );
         assert_eq!(v.beauty, DVec3::new(0.125, 0.25, 0.5));
         let touched: Vec<usize> = v.touched.iter().collect();
@@ -820,7 +933,69 @@ mod tests {
         assert_eq!(v.aov[1], DVec3::new(0.5, 1.0, 2.0)); // shadows: the blocked one
         assert_eq!(v.aov[2], DVec3::new(1.0, 2.0, 4.0)); // unoccluded: both, weight 1
         assert_eq!(v.aov[4], DVec3::new(0.25, 0.5, 1.0)); // nothruput: the visible one
-        assert_eq!(v.aov[0], DVec3::ZERO);
+        let mut film = Film::new(1, 1, 1, w.overwrite(), Accumulation::F64);
+        commit_only_sample(&mut film, &mut v, &w);
+        assert_eq!(film.pixel(0, 0, 0), DVec3::new(0.125, 0.25, 0.5));
+        // The plain AOV 0 is not in the mask: nothing, though its value is beauty's.
+        assert_eq!(film.pixel(0, 0, 1), DVec3::ZERO);
+        assert_eq!(film.pixel(0, 0, 1 + 1), DVec3::new(0.5, 1.0, 2.0));
+        assert_eq!(film.pixel(0, 0, 1 + 4), DVec3::new(0.25, 0.5, 1.0));
+    }
+
+    #[test]
+    fn plain_aovs_get_every_committed_sample_of_the_pixel_by_final_state() {
+        // Three samples of one pixel, states standing for their own masks: AOV 0 is
+        // plain (summed per state), AOV 5 (`noclamp;`, no clamp set) is routed per
+        // contribution, both with beauty's values. The third sample is not finite:
+        // rejected from beauty and both AOVs, on every film.
+        let w = weighting(None);
+        let mask = |ids: &[usize]| -> AovMask { ids.iter().copied().collect() };
+        let (s0, s5, s05) = (mask(&[0]), mask(&[5]), mask(&[0, 5]));
+        let nee = |wt| {
+            c(
+                Strategy::Nee {
+                    w: wt,
+                    visible: true,
+                },
+                false,
+            )
+        };
+        let samples: [Vec<(Contribution, AovMask)>; 3] = [
+            vec![(nee(0.25), s0), (nee(0.5), s5)],
+            vec![(c(ONLY_STRATEGY, false), s05)],
+            vec![(
+                Contribution {
+                    beta: Vec3::splat(f32::NAN),
+                    ..c(ONLY_STRATEGY, false)
+                },
+                s0,
+            )],
+        ];
+        for a in Accumulation::ALL {
+            let mut film = Film::new(1, 1, 3, w.overwrite(), a);
+            let mut v = SampleValues::new(w.len());
+            let mut rejected = Vec::new();
+            {
+                let mut rows: Vec<_> = film.rows_mut().collect();
+                let row = &mut rows[0].1;
+                for sample in &samples {
+                    for (contribution, state) in sample {
+                        v.add(&w, contribution, *state, |m| m);
+                    }
+                    rejected.push(row.commit(0, &mut v, &w, |m| m));
+                }
+                row.finish_pixel(0, &mut v, &w, |m| m);
+            }
+            assert_eq!(rejected, [false, false, true], "{a:?}");
+            // (0.5, 1, 2) per unit weight: 1/4 + 1 for AOV 0, 1/2 + 1 for AOV 5.
+            let third = |x: f64| DVec3::new(0.5, 1.0, 2.0) * x / 3.0;
+            assert_eq!(film.pixel(0, 0, 0), third(1.75), "{a:?}");
+            assert_eq!(film.pixel(0, 0, 1), third(1.25), "{a:?}");
+            assert_eq!(film.pixel(0, 0, 1 + 5), third(1.5), "{a:?}");
+            assert!((1..=w.len())
+                .filter(|&l| l != 1 && l != 6)
+                .all(|l| film.pixel(0, 0, l) == DVec3::ZERO));
+        }
     }
 
     /// Adds `xs` to a one-layer pixel with `a`; the stored total.

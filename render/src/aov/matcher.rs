@@ -21,6 +21,13 @@ use std::sync::{Mutex, RwLock};
 /// trait: lpe's own, shared so engines hand masks over without converting.
 pub use lpe::{AovMask, PathMatcher, MAX_AOVS};
 
+/// What the integrator needs of a matcher: one shared by every render worker, whose
+/// states compare (the film sums a pixel's contributions per final state and asks
+/// [`PathMatcher::matches`] once per state). Every `PathMatcher` with such states is one.
+pub trait RenderMatcher: PathMatcher<State: PartialEq> + Sync {}
+
+impl<M: PathMatcher<State: PartialEq> + Sync> RenderMatcher for M {}
+
 /// Why a whole-path matcher could not be built.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum MatcherError {

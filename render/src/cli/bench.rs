@@ -35,7 +35,7 @@ pub fn run(
     print!(
         "{}",
         lpe_render::output::table::markdown(
-            &["configuration", "best s", "paths/s"],
+            &["configuration", "best CPU s", "paths per CPU s"],
             [
                 ("beauty only".to_string(), b.beauty_seconds),
                 (format!("{} AOVs", b.aov_count), b.aov_seconds),
@@ -48,8 +48,9 @@ pub fn run(
         )
     );
     println!(
-        "LPE tracking overhead (median of {rounds} paired rounds): {:+.1}%",
-        b.overhead * 100.0
+        "LPE tracking overhead (median of {rounds} paired rounds): {:+.1}% CPU time, {:+.1}% wall clock",
+        b.overhead * 100.0,
+        b.wall_overhead * 100.0
     );
     Ok(true)
 }

@@ -5,7 +5,7 @@ use lpe::{LobeCategory, LobeMap, Vertex, VertexType};
 
 use super::estimator::PathState;
 use super::{Integrator, USER_SIGNALS};
-use crate::aov::matcher::{AovMask, PathMatcher};
+use crate::aov::matcher::{AovMask, PathMatcher, RenderMatcher};
 use crate::film::{Contribution, SampleValues, Strategy};
 use crate::geometry::Hit;
 use crate::material::Material;
@@ -14,8 +14,8 @@ use glam::Vec3;
 
 /// What one worker accumulates for the camera sample it traces: the sample's values
 /// and the rays cast.
-pub(super) struct Tally {
-    pub(super) values: SampleValues,
+pub(super) struct Tally<K> {
+    pub(super) values: SampleValues<K>,
     pub(super) rays: u64,
 }
 
@@ -114,16 +114,12 @@ impl<C: Copy> Vertices<C> {
     }
 }
 
-impl<M: PathMatcher + Sync> Integrator<'_, M> {
+impl<M: RenderMatcher> Integrator<'_, M> {
     /// Hands a contribution whose complete path ended in matcher state `state` to the
     /// sample's values.
-    pub(super) fn splat(&self, state: M::State, c: &Contribution, acc: &mut Tally) {
-        let matched = if self.plan.matching {
-            self.matcher.matches(state)
-        } else {
-            AovMask::EMPTY
-        };
-        acc.values.add(&self.weighting, c, matched);
+    pub(super) fn splat(&self, state: M::State, c: &Contribution, acc: &mut Tally<M::State>) {
+        acc.values
+            .add(&self.weighting, c, state, |s| self.matcher.matches(s));
     }
 
     /// The path reached an emitter of radiance `le` through vertex class `class`.
@@ -134,7 +130,7 @@ impl<M: PathMatcher + Sync> Integrator<'_, M> {
         le: Vec3,
         strategy: Strategy,
         holdout: bool,
-        acc: &mut Tally,
+        acc: &mut Tally<M::State>,
     ) {
         let state = if self.plan.matching {
             self.matcher.step(path.matcher, class)
@@ -152,7 +148,7 @@ impl<M: PathMatcher + Sync> Integrator<'_, M> {
 
     /// User-lobe pseudo paths `C <R Un> L` at a camera hit: material properties, not
     /// light transport (never in beauty).
-    pub(super) fn user_lobes(&self, hit: &Hit, mat: &Material, acc: &mut Tally) {
+    pub(super) fn user_lobes(&self, hit: &Hit, mat: &Material, acc: &mut Tally<M::State>) {
         for &(signal, mask) in &self.vertices.user[hit.object as usize] {
             let value = match signal {
                 UserSignal::Albedo => mat.albedo(),

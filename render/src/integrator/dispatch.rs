@@ -3,7 +3,7 @@
 use lpe::LobeMap;
 
 use super::{Integrator, Render, RenderError, Settings};
-use crate::aov::matcher::{PathMatcher, Reference, ReferenceMatcher};
+use crate::aov::matcher::{Reference, ReferenceMatcher, RenderMatcher};
 use crate::aov::AovList;
 use crate::scene::Scene;
 
@@ -43,7 +43,7 @@ pub fn render_announcing(
 }
 
 /// Renders with a given matcher, calling `on_plan` with the effects plan first.
-pub fn render_with<M: PathMatcher + Sync>(
+pub fn render_with<M: RenderMatcher>(
     matcher: &M,
     scene: &Scene,
     aovs: &AovList,

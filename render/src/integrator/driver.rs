@@ -7,11 +7,11 @@ use std::time::Instant;
 
 use super::contributions::Tally;
 use super::{Integrator, Render, RenderError};
-use crate::aov::matcher::PathMatcher;
+use crate::aov::matcher::RenderMatcher;
 use crate::film::{Film, SampleValues};
 use crate::rng::Rng;
 
-impl<M: PathMatcher + Sync> Integrator<'_, M> {
+impl<M: RenderMatcher> Integrator<'_, M> {
     /// Renders the whole image; rows in parallel, each pixel's samples in order.
     pub fn render(&self) -> Result<Render, RenderError> {
         let s = self.settings;
@@ -34,6 +34,7 @@ impl<M: PathMatcher + Sync> Integrator<'_, M> {
             ProgressBar::hidden()
         };
         let start = Instant::now();
+        let cpu_start = process_cpu_seconds();
         let (rejected, aov_rejected, rays) = pool.install(|| {
             film.rows_mut()
                 .map(|(y, mut row)| {
@@ -42,13 +43,16 @@ impl<M: PathMatcher + Sync> Integrator<'_, M> {
                         rays: 0,
                     };
                     let mut rejected = 0;
+                    let matches = |state| self.matcher.matches(state);
                     for x in 0..w {
                         for sample in 0..s.spp {
                             let index = (y * w + x) as u64;
                             let mut rng = Rng::for_sample(s.seed, index, sample as u64);
                             self.sample(x, y, &mut rng, &mut acc);
-                            rejected += row.commit(x, &mut acc.values, &self.weighting) as u64;
+                            rejected +=
+                                row.commit(x, &mut acc.values, &self.weighting, matches) as u64;
                         }
+                        row.finish_pixel(x, &mut acc.values, &self.weighting, matches);
                     }
                     bar.inc(1);
                     (rejected, acc.values.aov_rejected, acc.rays)
@@ -62,8 +66,15 @@ impl<M: PathMatcher + Sync> Integrator<'_, M> {
             film,
             plan: self.plan,
             seconds: start.elapsed().as_secs_f64(),
+            cpu_seconds: process_cpu_seconds() - cpu_start,
             paths: (w * h) as u64 * s.spp as u64,
             rays,
         })
     }
+}
+
+/// CPU time this process has used so far, all threads.
+fn process_cpu_seconds() -> f64 {
+    let t = rustix::time::clock_gettime(rustix::time::ClockId::ProcessCPUTime);
+    t.tv_sec as f64 + t.tv_nsec as f64 * 1e-9
 }

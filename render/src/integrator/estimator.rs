@@ -5,7 +5,7 @@ use glam::Vec3;
 
 use super::contributions::Tally;
 use super::{Integrator, Technique};
-use crate::aov::matcher::PathMatcher;
+use crate::aov::matcher::RenderMatcher;
 use crate::film::{Contribution, Strategy, ONLY_STRATEGY};
 use crate::geometry::{error_bound, Hit, Ray};
 use crate::material::Material;
@@ -25,9 +25,9 @@ pub(super) struct PathState<S> {
     pub(super) holdout: bool,
 }
 
-impl<M: PathMatcher + Sync> Integrator<'_, M> {
+impl<M: RenderMatcher> Integrator<'_, M> {
     /// Traces one camera sample through pixel `(x, y)`.
-    pub(super) fn sample(&self, x: usize, y: usize, rng: &mut Rng, acc: &mut Tally) {
+    pub(super) fn sample(&self, x: usize, y: usize, rng: &mut Rng, acc: &mut Tally<M::State>) {
         let s = self.settings;
         let scene = self.scene;
         let m = self.matcher;
@@ -159,7 +159,7 @@ impl<M: PathMatcher + Sync> Integrator<'_, M> {
         wo: Vec3,
         rng: &mut Rng,
         light_pick_pdf: f32,
-        acc: &mut Tally,
+        acc: &mut Tally<M::State>,
     ) {
         let scene = self.scene;
         let n_lights = scene.lights.len();

@@ -43,7 +43,7 @@
 
 use lpe::LobeMap;
 
-use crate::aov::matcher::{MatcherError, PathMatcher};
+use crate::aov::matcher::{MatcherError, RenderMatcher};
 use crate::aov::plan::Plan;
 use crate::aov::AovList;
 use crate::camera::Camera;
@@ -126,6 +126,10 @@ pub struct Render {
     pub film: Film,
     pub plan: Plan,
     pub seconds: f64,
+    /// CPU time of the whole process over the same span (every worker thread): what
+    /// `lpe-render bench` compares, since on a shared machine it does not count the
+    /// time a worker waits for a core.
+    pub cpu_seconds: f64,
     /// Camera samples traced.
     pub paths: u64,
     /// Rays cast (camera, bounce and shadow rays).
@@ -136,7 +140,7 @@ pub struct Render {
 /// them for lobe collisions).
 pub const USER_SIGNALS: [&str; 3] = ["Albedo", "Position", "Normal"];
 
-pub struct Integrator<'a, M: PathMatcher + Sync> {
+pub struct Integrator<'a, M: RenderMatcher> {
     scene: &'a Scene,
     matcher: &'a M,
     /// How contributions weigh into each AOV (handed to the film).
@@ -149,7 +153,7 @@ pub struct Integrator<'a, M: PathMatcher + Sync> {
     camera: Camera,
 }
 
-impl<'a, M: PathMatcher + Sync> Integrator<'a, M> {
+impl<'a, M: RenderMatcher> Integrator<'a, M> {
     pub fn new(
         scene: &'a Scene,
         aovs: &AovList,
