@@ -26,8 +26,12 @@ fn nfa_only() -> Options {
 fn max_aovs_compile_and_one_more_does_not() {
     // AOV i matches a diffuse bounce off label `li`, so the last one is told apart.
     let srcs: Vec<String> = (0..MAX_AOVS).map(|i| format!("C<RD'l{i}'>L")).collect();
-    let set = AovSet::compile(&named(&srcs)).unwrap();
-    assert_eq!(set.len(), MAX_AOVS);
+    let aovs = named(&srcs);
+    let set = AovSet::compile(&aovs).unwrap();
+    // Every AOV kept, in order, with its name and expression.
+    assert_eq!((set.len(), set.is_empty()), (MAX_AOVS, false));
+    assert_eq!(set.names()[MAX_AOVS - 1], format!("a{}", MAX_AOVS - 1));
+    assert_eq!(set.lpes(), aovs.iter().map(|(_, l)| l.clone()).collect::<Vec<_>>());
     let bounce = |label: &str| {
         let d = Event::new(EventKind::D, 1).unwrap();
         Path::new(vec![
@@ -48,6 +52,13 @@ fn max_aovs_compile_and_one_more_does_not() {
         AovSet::compile(&named(&more)).unwrap_err(),
         CompileError::TooManyAovs(MAX_AOVS + 1)
     );
+}
+
+#[test]
+fn a_set_of_no_aovs_compiles_and_matches_nothing() {
+    let set = AovSet::compile(&[]).unwrap();
+    assert_eq!((set.len(), set.is_empty()), (0, true));
+    assert!(set.match_path(&"C RD1 L".parse().unwrap()).is_empty());
 }
 
 #[test]
