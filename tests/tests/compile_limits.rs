@@ -31,7 +31,10 @@ fn max_aovs_compile_and_one_more_does_not() {
     // Every AOV kept, in order, with its name and expression.
     assert_eq!((set.len(), set.is_empty()), (MAX_AOVS, false));
     assert_eq!(set.names()[MAX_AOVS - 1], format!("a{}", MAX_AOVS - 1));
-    assert_eq!(set.lpes(), aovs.iter().map(|(_, l)| l.clone()).collect::<Vec<_>>());
+    assert_eq!(
+        set.lpes(),
+        aovs.iter().map(|(_, l)| l.clone()).collect::<Vec<_>>()
+    );
     let bounce = |label: &str| {
         let d = Event::new(EventKind::D, 1).unwrap();
         Path::new(vec![

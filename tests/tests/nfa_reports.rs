@@ -40,7 +40,10 @@ fn the_empty_sequence_matches_only_in_the_start_state() {
         assert_eq!(s.matches(s.start()).iter().collect::<Vec<_>>(), [0]);
         let after_c = s.step(s.start(), &path("C L").vertices()[0]);
         assert!(s.matches(after_c).is_empty());
-        assert_eq!(s.match_path(&path("C RD1 L")).iter().collect::<Vec<_>>(), [1]);
+        assert_eq!(
+            s.match_path(&path("C RD1 L")).iter().collect::<Vec<_>>(),
+            [1]
+        );
         // A dead path reports nothing either.
         assert!(s.match_path(&path("C RS1 L")).is_empty());
     }
@@ -54,7 +57,11 @@ fn emptiness_is_decided_on_sets_wider_than_one_word() {
     let long = format!("C{dots}L");
     let stuck = format!("C{dots}D");
     for s in both(&[("long", &long), ("stuck", &stuck)]) {
-        let w: Vec<_> = s.warnings().iter().map(|w| (w.aov, w.name.as_str())).collect();
+        let w: Vec<_> = s
+            .warnings()
+            .iter()
+            .map(|w| (w.aov, w.name.as_str()))
+            .collect();
         assert_eq!(w, [(1, "stuck")]);
         assert!(s.warnings()[0].message.contains("never reaches an emitter"));
     }
