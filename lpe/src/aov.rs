@@ -46,9 +46,10 @@ use crate::automata::alphabet::Alphabet;
 use crate::automata::dfa::Dfa;
 use crate::automata::emptiness::{self, Warning};
 use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
-use crate::automata::nfa::{Builder, Nfa, Parts};
+use crate::automata::nfa::{Builder, Nfa};
+use crate::osl;
 use crate::path::{Path, Vertex};
-use crate::Lpe;
+use crate::{Dialect, Lpe};
 
 /// Compile-time knobs.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -95,6 +96,12 @@ pub enum CompileError {
         /// [`Options::nfa_budget`].
         budget: usize,
     },
+    /// An OSL set's vertex patterns need more states than
+    /// [`osl::MAX_VERTEX_STATES`] to classify a vertex.
+    TooManyVertexStates {
+        /// [`osl::MAX_VERTEX_STATES`].
+        max: usize,
+    },
     /// The DFA exceeds [`Options::dfa_budget`], and the NFA has more positions than a
     /// [`State`] holds, so the set cannot step the NFA instead either.
     TooManyPositions {
@@ -132,6 +139,11 @@ impl fmt::Display for CompileError {
                     budget >> 20
                 )
             }
+            CompileError::TooManyVertexStates { max } => write!(
+                f,
+                "the set's vertex patterns need more than {max} states to classify a vertex \
+                 (many long `<...>` groups with negations): split the set"
+            ),
             CompileError::TooManyPositions {
                 positions,
                 max,
@@ -159,6 +171,9 @@ pub struct AovSet {
     /// NFA positions (the start included), kept for reporting once the NFA is dropped.
     nfa_positions: usize,
     warnings: Vec<Warning>,
+    /// The OSL side of a set compiled with [`AovSet::compile_osl`] (its `alphabet` is
+    /// then an empty RenderMan one).
+    osl: Option<Box<osl::Compiled>>,
 }
 
 /// What a set steps. The NFA only serves to build the DFA, so a set with a DFA drops it
@@ -182,8 +197,83 @@ impl AovSet {
             return Err(CompileError::TooManyAovs(aovs.len()));
         }
         let (alphabet, nfa, atoms) = Self::build_nfa(aovs, opts)?;
+        let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
+        let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
+        let warnings = emptiness::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
+        let nfa_positions = nfa.positions;
+        let engine = Self::engine(nfa, alphabet.class_count(), opts)?;
+        Ok(AovSet {
+            names,
+            lpes,
+            alphabet,
+            engine,
+            nfa_positions,
+            warnings,
+            osl: None,
+        })
+    }
+
+    /// Compiles OSL-dialect expressions (parsed with [`osl::parse`] under `registered`)
+    /// into a set stepped exactly like a RenderMan one, on OSL vertex classes
+    /// ([`AovSet::classify_osl`]). The eager DFA is attempted within the smaller of
+    /// [`Options::dfa_budget`] and [`osl::DFA_ATTEMPT_BUDGET`].
+    ///
+    /// ```
+    /// use lpe::osl::{self, Registered};
+    /// use lpe::{AovSet, Options};
+    ///
+    /// let reg = Registered::none();
+    /// let aovs = vec![("diffuse".to_string(), osl::parse("C<RD>L", &reg).unwrap())];
+    /// let set = AovSet::compile_osl(&aovs, &reg, &Options::default()).unwrap();
+    /// let hit = set.match_osl_path(&"C,_ R,D,floor L,_".parse().unwrap());
+    /// assert!(hit.contains(0));
+    /// assert!(set.match_osl_path(&"C,_ R,D,G L,_".parse().unwrap()).is_empty());
+    /// ```
+    pub fn compile_osl(
+        aovs: &[(String, osl::Lpe)],
+        registered: &osl::Registered,
+        opts: &Options,
+    ) -> Result<AovSet, CompileError> {
+        if aovs.len() > MAX_AOVS {
+            return Err(CompileError::TooManyAovs(aovs.len()));
+        }
+        let positions = aovs
+            .iter()
+            .fold(1u64, |n, (_, l)| n.saturating_add(l.expr.positions()));
+        Self::check_nfa_budget(positions, opts)?;
+        let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
+        let (compiled, nfa, warnings) =
+            osl::Compiled::build(aovs, &names, registered, opts.max_path_len, opts.nfa_budget)
+                .map_err(
+                    |osl::TooManyVertexStates| CompileError::TooManyVertexStates {
+                        max: osl::MAX_VERTEX_STATES,
+                    },
+                )?;
+        let nfa_positions = nfa.positions;
+        // OSL sets have several times RenderMan's classes, so a blow-up reaches a large
+        // budget slowly (OSL's own ReDoS expression: a second for 16 MiB): attempt the
+        // eager DFA within a smaller budget, and step the NFA past it.
+        let attempt = Options {
+            dfa_budget: opts.dfa_budget.min(osl::DFA_ATTEMPT_BUDGET),
+            ..opts.clone()
+        };
+        let engine = Self::engine(nfa, compiled.class_count(), &attempt)?;
+        Ok(AovSet {
+            names,
+            lpes: Vec::new(),
+            alphabet: Alphabet::new(&[], Vec::new()),
+            engine,
+            nfa_positions,
+            warnings,
+            osl: Some(Box::new(compiled)),
+        })
+    }
+
+    /// The automaton a set steps: its DFA when it fits [`Options::dfa_budget`], else the
+    /// NFA (which must then fit a [`State`]).
+    fn engine(nfa: Nfa, classes: usize, opts: &Options) -> Result<Engine, CompileError> {
         let dfa = if opts.dfa_budget > 0 {
-            Dfa::build(&nfa, alphabet.class_count(), opts.dfa_budget)
+            Dfa::build(&nfa, classes, opts.dfa_budget)
         } else {
             None
         };
@@ -194,18 +284,22 @@ impl AovSet {
                 dfa_budget: opts.dfa_budget,
             });
         }
-        let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
-        let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
-        let warnings = emptiness::empty_aovs(&nfa, &alphabet, &atoms, &names, &lpes);
-        let nfa_positions = nfa.positions;
-        Ok(AovSet {
-            names,
-            lpes,
-            alphabet,
-            engine: dfa.map_or(Engine::Nfa(nfa), Engine::Dfa),
-            nfa_positions,
-            warnings,
-        })
+        Ok(dfa.map_or(Engine::Nfa(nfa), Engine::Dfa))
+    }
+
+    /// One follow row per position is the least an NFA needs: `positions^2 / 8` bytes.
+    fn check_nfa_budget(positions: u64, opts: &Options) -> Result<(), CompileError> {
+        let rows = positions
+            .checked_mul(positions.div_ceil(64))
+            .and_then(|r| r.checked_mul(8));
+        if rows.is_none_or(|r| r > opts.nfa_budget as u64) {
+            return Err(CompileError::NfaOverBudget {
+                positions,
+                bytes: rows,
+                budget: opts.nfa_budget,
+            });
+        }
+        Ok(())
     }
 
     /// The alphabet and NFA of `aovs`, and their distinct atoms (the NFA's atom indices
@@ -217,26 +311,9 @@ impl AovSet {
         let positions = aovs.iter().fold(1u64, |n, (_, l)| {
             n.saturating_add(l.expr.positions_with(opts.max_path_len))
         });
-        // One follow row per position is the least the NFA needs: `positions^2 / 8`.
-        let rows = positions
-            .checked_mul(positions.div_ceil(64))
-            .and_then(|r| r.checked_mul(8));
-        if rows.is_none_or(|r| r > opts.nfa_budget as u64) {
-            return Err(CompileError::NfaOverBudget {
-                positions,
-                bytes: rows,
-                budget: opts.nfa_budget,
-            });
-        }
-        let mut builder = Builder::new(opts.max_path_len);
-        let mut parts = Parts {
-            aov_first: Vec::new(),
-            aov_last: Vec::new(),
-            aov_nullable: Vec::new(),
-        };
-        for (_, l) in aovs {
-            builder.add(&l.expr, &mut parts);
-        }
+        Self::check_nfa_budget(positions, opts)?;
+        let (builder, parts) =
+            Builder::of_all(aovs.iter().map(|(_, l)| &l.expr), opts.max_path_len);
         // Duplicates across AOVs are fine: the alphabet's label table deduplicates.
         let labels: Vec<String> = aovs.iter().flat_map(|(_, l)| l.expr.labels()).collect();
         let alphabet = Alphabet::new(&builder.atoms, labels);
@@ -257,7 +334,8 @@ impl AovSet {
     }
 
     /// The class of a vertex: compute it once per material lobe and step with
-    /// [`AovSet::step_class`].
+    /// [`AovSet::step_class`]. On an OSL set the answer is unspecified: use
+    /// [`AovSet::classify_osl`].
     #[inline]
     pub fn classify(&self, v: &Vertex) -> Class {
         self.alphabet.classify(v)
@@ -306,6 +384,49 @@ impl AovSet {
         }
     }
 
+    /// The class of a whole OSL vertex, read once (one table load per symbol): compute
+    /// it once per material lobe and step with [`AovSet::step_class`]. On a RenderMan set
+    /// every vertex gets a class one past the set's last, which steps to the dead state.
+    #[inline]
+    pub fn classify_osl(&self, v: &osl::Vertex) -> Class {
+        match &self.osl {
+            Some(o) => o.classify(v),
+            None => Class(self.alphabet.class_count() as u32),
+        }
+    }
+
+    /// Steps a whole OSL path from the start (only meaningful on an OSL set).
+    pub fn match_osl_path(&self, p: &osl::Path) -> AovMask {
+        let s = p.vertices.iter().fold(self.start(), |s, v| {
+            self.step_class(s, self.classify_osl(v))
+        });
+        self.matches(s)
+    }
+
+    /// The dialect the set was compiled from.
+    pub fn dialect(&self) -> Dialect {
+        if self.osl.is_some() {
+            Dialect::Osl
+        } else {
+            Dialect::RenderMan
+        }
+    }
+
+    /// The OSL expressions of an OSL set, in compile order (empty for a RenderMan set,
+    /// whose expressions are [`AovSet::lpes`]).
+    pub fn osl_lpes(&self) -> &[osl::Lpe] {
+        self.osl.as_ref().map_or(&[], |o| o.lpes())
+    }
+
+    /// The labels an OSL set was compiled under.
+    pub fn osl_registered(&self) -> Option<&osl::Registered> {
+        self.osl.as_ref().map(|o| o.registered())
+    }
+
+    pub(crate) fn osl_compiled(&self) -> Option<&osl::Compiled> {
+        self.osl.as_deref()
+    }
+
     /// Steps a whole path from the start.
     pub fn match_path(&self, path: &Path) -> AovMask {
         let s = path
@@ -331,7 +452,7 @@ impl AovSet {
     }
 
     /// The AOV expressions, in compile order (prefixes tell the renderer what to
-    /// accumulate).
+    /// accumulate); empty for an OSL set ([`AovSet::osl_lpes`]).
     pub fn lpes(&self) -> &[Lpe] {
         &self.lpes
     }
@@ -343,7 +464,10 @@ impl AovSet {
 
     /// Number of vertex classes.
     pub fn class_count(&self) -> usize {
-        self.alphabet.class_count()
+        match &self.osl {
+            Some(o) => o.class_count(),
+            None => self.alphabet.class_count(),
+        }
     }
 
     /// Whether the set steps a DFA (else the bitset NFA: over the DFA budget).
@@ -367,6 +491,7 @@ impl AovSet {
     /// Bytes held by the automaton the set steps and by the alphabet tables.
     pub fn memory_bytes(&self) -> usize {
         self.alphabet.memory_bytes()
+            + self.osl.as_ref().map_or(0, |o| o.memory_bytes())
             + match &self.engine {
                 Engine::Dfa(d) => d.memory_bytes(),
                 Engine::Nfa(n) => n.memory_bytes(),

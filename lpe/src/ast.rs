@@ -34,6 +34,7 @@ use std::fmt;
 
 use crate::path::{EventKind, VertexType};
 use crate::prefix::Prefixes;
+use crate::print::write_parts;
 
 /// A parsed light path expression: prefixes plus the expression proper.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
@@ -318,26 +319,16 @@ impl fmt::Display for Expr {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         // Parenthesize exactly where the parser would otherwise build a different tree:
         // `|` binds tighter than concatenation and a quantifier binds tighter than `|`.
-        fn child(f: &mut fmt::Formatter<'_>, e: &Expr, paren: bool) -> fmt::Result {
-            if paren {
-                write!(f, "({e})")
-            } else {
-                write!(f, "{e}")
-            }
-        }
         match self {
             Expr::Atom(a) => write!(f, "{a}"),
-            Expr::Concat(es) => es
-                .iter()
-                .try_for_each(|e| child(f, e, matches!(e, Expr::Concat(_)))),
-            Expr::Alt(es) => es.iter().enumerate().try_for_each(|(i, e)| {
-                if i > 0 {
-                    f.write_str("|")?;
-                }
-                child(f, e, matches!(e, Expr::Concat(_) | Expr::Alt(_)))
-            }),
+            Expr::Concat(es) => write_parts(f, es, "", |e| matches!(e, Expr::Concat(_))),
+            Expr::Alt(es) => {
+                write_parts(f, es, "|", |e| matches!(e, Expr::Concat(_) | Expr::Alt(_)))
+            }
             Expr::Repeat(e, r) => {
-                child(f, e, !matches!(**e, Expr::Atom(_)))?;
+                write_parts(f, std::slice::from_ref(&**e), "", |e| {
+                    !matches!(e, Expr::Atom(_))
+                })?;
                 write!(f, "{r}")
             }
         }

@@ -10,7 +10,8 @@
 //! - The language: the path model ([`path`]), the expression syntax tree ([`ast`]), the
 //!   RenderMan-dialect front end ([`syntax`]: lexer, parser, errors with spans) with
 //!   prefixes ([`prefix`]), macros ([`macros`]), lobe mappings ([`lobes`]) and
-//!   `rendermn.ini` loading ([`ini`]).
+//!   `rendermn.ini` loading ([`ini`]); the OSL-dialect front end ([`osl`]: its path
+//!   model, expanded tree and parser), and [`Dialect`] naming the two.
 //! - The automata ([`automata`]): the shared ids in the leaf [`automata::mask`]
 //!   ([`AovMask`], [`Class`], [`State`], [`MAX_AOVS`]), then the compressed alphabet,
 //!   the bitset Glushkov NFA and the minimized DFA (crate-private).
@@ -106,13 +107,16 @@ pub mod aov;
 pub mod ast;
 pub mod automata;
 mod bits;
+pub mod dialect;
 pub mod fxhash;
 pub mod ini;
 pub mod lobes;
 pub mod macros;
 pub mod matcher;
+pub mod osl;
 pub mod path;
 pub mod prefix;
+mod print;
 pub mod rng;
 pub mod syntax;
 
@@ -124,6 +128,7 @@ pub mod strategy;
 pub use aov::{AovSet, CompileError, Options};
 pub use ast::{Expr, Lpe};
 pub use automata::mask::{AovMask, Class, State, MAX_AOVS};
+pub use dialect::Dialect;
 pub use ini::{Config, IniError, IniErrorKind};
 pub use lobes::{LobeCategory, LobeError, LobeMap};
 pub use matcher::PathMatcher;

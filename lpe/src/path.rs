@@ -346,13 +346,7 @@ impl Path {
 
 impl fmt::Display for Path {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        for (i, v) in self.vertices.iter().enumerate() {
-            if i > 0 {
-                f.write_str(" ")?;
-            }
-            write!(f, "{v}")?;
-        }
-        Ok(())
+        crate::print::write_parts(f, &self.vertices, " ", |_| false)
     }
 }
 

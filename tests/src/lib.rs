@@ -3,6 +3,7 @@
 //! ([`conformance`]).
 
 pub mod conformance;
+pub mod osl_rows;
 
 use lpe::ast::{Atom, Expr, Item, Triple, TypePos};
 use lpe::strategy::{self, LABELS};

@@ -20,6 +20,9 @@ mod partition;
 mod search;
 
 pub use crate::automata::emptiness::Warning;
-pub use compare::{compare, Comparison};
-pub use partition::{default_universe, partition, Partition, DEFAULT_UNIVERSE};
+pub use compare::{compare, compare_osl, Comparison};
+pub use partition::{
+    default_osl_universe, default_universe, partition, partition_osl, Partition,
+    DEFAULT_OSL_UNIVERSE, DEFAULT_UNIVERSE,
+};
 pub use search::{AnalysisError, MAX_SEARCH_STATES};

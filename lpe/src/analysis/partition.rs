@@ -1,27 +1,35 @@
 //! Partition checks: does a list of AOVs split a universe of paths into disjoint parts
 //! that cover it, and if not, shortest witnesses of each overlap, gap and stray path.
 
-use super::search::{analysis_options, explore, AnalysisError};
+use super::search::{analysis_options, explore, explore_osl, AnalysisError};
 use crate::aov::AovSet;
+use crate::automata::mask::AovMask;
 use crate::path::Path;
-use crate::{parse, Lpe};
+use crate::{osl, parse, Lpe};
 
 /// The default universe of a partition check: every light-transport path.
 pub const DEFAULT_UNIVERSE: &str = "C.*[<L.>O]";
 
+/// The OSL counterpart of [`DEFAULT_UNIVERSE`], and the domain of every OSL partition
+/// check: the paths a renderer feeds with the built-in labels, a camera, scattering
+/// vertices (event `R` or `T`, scattering `D`, `G` or `S`, any non-basic custom labels),
+/// then a light or an emitting object. RenderMan's searches run over its path shape; OSL
+/// paths have none, so this expression plays that part.
+pub const DEFAULT_OSL_UNIVERSE: &str = "C<[RT][DGS]>*[LO]";
+
 /// The result of a partition check.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Partition {
+pub struct Partition<P = Path> {
     /// `(i, j, path)`: a shortest universe path matched by both AOV `i` and AOV `j`
     /// (`i < j`), one entry per overlapping pair.
-    pub overlaps: Vec<(usize, usize, Path)>,
+    pub overlaps: Vec<(usize, usize, P)>,
     /// A shortest universe path matched by no AOV.
-    pub gap: Option<Path>,
+    pub gap: Option<P>,
     /// `(i, path)`: a shortest path outside the universe that AOV `i` matches.
-    pub outside: Vec<(usize, Path)>,
+    pub outside: Vec<(usize, P)>,
 }
 
-impl Partition {
+impl<P> Partition<P> {
     /// Every universe path matches exactly one AOV and no AOV matches outside.
     pub fn is_clean(&self) -> bool {
         self.overlaps.is_empty() && self.gap.is_none() && self.outside.is_empty()
@@ -34,13 +42,52 @@ pub fn partition(aovs: &[(String, Lpe)], universe: &Lpe) -> Result<Partition, An
     let mut all = vec![("universe".to_string(), universe.clone())];
     all.extend_from_slice(aovs);
     let set = AovSet::compile_with(&all, &analysis_options())?;
+    split(|visit| explore(&set, visit), 1)
+}
+
+/// [`partition`] for OSL expressions parsed under `registered`, over the paths of
+/// [`DEFAULT_OSL_UNIVERSE`] (the default universe is that same expression): overlaps and
+/// gaps inside `universe`, and AOV matches on such paths outside it.
+pub fn partition_osl(
+    aovs: &[(String, osl::Lpe)],
+    universe: &osl::Lpe,
+    registered: &osl::Registered,
+) -> Result<Partition<osl::Path>, AnalysisError> {
+    let domain = osl::parse(DEFAULT_OSL_UNIVERSE, registered).expect("the OSL domain parses");
+    let mut all = vec![
+        ("paths".to_string(), domain.clone()),
+        ("universe".to_string(), universe.clone()),
+    ];
+    all.extend_from_slice(aovs);
+    let set = AovSet::compile_osl(&all, registered, &analysis_options())?;
+    split(
+        |visit| {
+            explore_osl(&set, &mut |m: AovMask, w: &dyn Fn() -> osl::Path| {
+                // Outside the domain nothing counts: drop bit 0 there as if unmatched.
+                m.contains(0) && visit(m.iter().skip(1).map(|i| i - 1).collect(), w)
+            })
+        },
+        1,
+    )
+}
+
+/// Overlaps, the gap and strays from a search over a set whose AOV 0 is the universe and
+/// AOVs `first..` the parts (reported from 0).
+fn split<P>(
+    run: impl FnOnce(&mut dyn FnMut(AovMask, &dyn Fn() -> P) -> bool) -> Result<(), AnalysisError>,
+    first: usize,
+) -> Result<Partition<P>, AnalysisError> {
     let mut out = Partition {
         overlaps: Vec::new(),
         gap: None,
         outside: Vec::new(),
     };
-    explore(&set, |m, witness| {
-        let members: Vec<usize> = m.iter().filter(|&i| i > 0).map(|i| i - 1).collect();
+    run(&mut |m, witness| {
+        let members: Vec<usize> = m
+            .iter()
+            .filter(|&i| i >= first)
+            .map(|i| i - first)
+            .collect();
         if m.contains(0) {
             if members.is_empty() && out.gap.is_none() {
                 out.gap = Some(witness());
@@ -69,6 +116,11 @@ pub fn partition(aovs: &[(String, Lpe)], universe: &Lpe) -> Result<Partition, An
 /// The default universe, parsed.
 pub fn default_universe() -> Lpe {
     parse(DEFAULT_UNIVERSE).expect("the default universe parses")
+}
+
+/// [`DEFAULT_OSL_UNIVERSE`], parsed under `registered`.
+pub fn default_osl_universe(registered: &osl::Registered) -> osl::Lpe {
+    osl::parse(DEFAULT_OSL_UNIVERSE, registered).expect("the OSL universe parses")
 }
 
 #[cfg(test)]
@@ -110,5 +162,59 @@ mod tests {
                 ("subsurface", "caustics", 4)
             ]
         );
+    }
+
+    fn osl_set(srcs: &[&str]) -> Vec<(String, osl::Lpe)> {
+        let reg = osl::Registered::none();
+        srcs.iter()
+            .map(|s| (s.to_string(), osl::parse(s, &reg).unwrap()))
+            .collect()
+    }
+
+    #[test]
+    fn osl_basic_set_partitions_the_osl_universe() {
+        let reg = osl::Registered::none();
+        let p = partition_osl(
+            &osl_set(&osl::BASIC.map(|(_, src)| src)),
+            &default_osl_universe(&reg),
+            &reg,
+        )
+        .unwrap();
+        assert!(p.is_clean(), "{p:?}");
+    }
+
+    #[test]
+    fn osl_partition_witnesses() {
+        let reg = osl::Registered::none();
+        // Without `C[LO]` the direct paths are a gap; doubling `C<RD>[LO]` overlaps.
+        let mut aovs = osl_set(&osl::BASIC.map(|(_, src)| src)[..6]);
+        aovs.push(("again".into(), osl::parse("C<RD>L", &reg).unwrap()));
+        let p = partition_osl(&aovs, &default_osl_universe(&reg), &reg).unwrap();
+        assert_eq!(p.gap.unwrap().to_string(), "C,~ L,~");
+        let o: Vec<(usize, usize, String)> = p
+            .overlaps
+            .iter()
+            .map(|(i, j, w)| (*i, *j, w.to_string()))
+            .collect();
+        assert_eq!(o, [(0, 6, "C,~ R,D L,~".to_string())]);
+        assert!(p.outside.is_empty());
+        // A universe without glossy: glossy AOVs match outside it.
+        let u = osl::parse("C<[RT]D>*[LO]", &reg).unwrap();
+        let p = partition_osl(&osl_set(&osl::BASIC.map(|(_, src)| src)), &u, &reg).unwrap();
+        let out: Vec<(usize, String)> =
+            p.outside.iter().map(|(i, w)| (*i, w.to_string())).collect();
+        // Each a shortest one: the glossy bounce comes first, or right after the
+        // diffuse one (`.+`, `.*` accept any vertex).
+        assert_eq!(
+            out,
+            [
+                (1, "C,~ R,D R,G L,~".to_string()),
+                (2, "C,~ T,D R,G L,~".to_string()),
+                (3, "C,~ R,G L,~".to_string()),
+                (4, "C,~ R,G R,D L,~".to_string()),
+                (5, "C,~ T,G L,~".to_string())
+            ]
+        );
+        assert_eq!(p.overlaps.len(), 0);
     }
 }

@@ -5,9 +5,10 @@ use std::fmt;
 
 use crate::aov::{AovSet, CompileError, Options};
 use crate::automata::alphabet::Group;
-use crate::automata::mask::{AovMask, State};
-use crate::automata::shape::{NONE, PATH};
+use crate::automata::mask::{AovMask, Class, State};
+use crate::automata::shape::{Shape, ANY, NONE, PATH};
 use crate::fxhash::FxSet;
+use crate::osl;
 use crate::path::{Path, Vertex};
 
 /// Most `(state, shape)` pairs a comparison or partition search visits before giving up.
@@ -47,39 +48,87 @@ impl From<CompileError> for AnalysisError {
 /// masks are never empty.
 pub(super) fn explore(
     set: &AovSet,
+    visit: impl FnMut(AovMask, &dyn Fn() -> Path) -> bool,
+) -> Result<(), AnalysisError> {
+    explore_within(set, MAX_SEARCH_STATES, visit)
+}
+
+/// [`explore`], giving up past `cap` states.
+pub(super) fn explore_within(
+    set: &AovSet,
+    cap: usize,
     mut visit: impl FnMut(AovMask, &dyn Fn() -> Path) -> bool,
 ) -> Result<(), AnalysisError> {
     let alphabet = set.alphabet();
     // Letters: (class, group) with a representative vertex.
-    let letters: Vec<(usize, Group, Vertex)> = (0..alphabet.class_count())
+    let letters: Vec<(Class, Group, Vertex)> = (0..alphabet.class_count())
         .flat_map(|c| {
-            Group::ALL
-                .into_iter()
-                .filter_map(move |g| alphabet.representative(c, g).map(|v| (c, g, v)))
+            Group::ALL.into_iter().filter_map(move |g| {
+                alphabet
+                    .representative(c, g)
+                    .map(|v| (set.classify(&v), g, v))
+            })
         })
         .collect();
-    let classes: Vec<_> = letters.iter().map(|(_, _, v)| set.classify(v)).collect();
+    walk(set, &letters, &PATH, cap, |m, witness| {
+        // Built along the PATH shape from constructible vertices: valid.
+        visit(m, &|| {
+            Path::new(witness()).expect("witnesses follow the path shape")
+        })
+    })
+}
+
+/// [`explore`] on an OSL set: every sequence of vertices (OSL paths have no fixed
+/// shape), one letter per vertex class, witnessed by the class representatives.
+pub(super) fn explore_osl(
+    set: &AovSet,
+    mut visit: impl FnMut(AovMask, &dyn Fn() -> osl::Path) -> bool,
+) -> Result<(), AnalysisError> {
+    let Some(compiled) = set.osl_compiled() else {
+        return Ok(());
+    };
+    let letters: Vec<(Class, Group, osl::Vertex)> = (0..compiled.class_count())
+        .map(|c| {
+            let v = compiled.representative(c).clone();
+            (set.classify_osl(&v), Group::Scatter, v)
+        })
+        .collect();
+    walk(set, &letters, &ANY, MAX_SEARCH_STATES, |m, witness| {
+        visit(m, &|| osl::Path::new(witness()))
+    })
+}
+
+/// Breadth-first search over `(state, shape state)` of the product of `set` with
+/// `shape`, reading `letters`; calls `visit` on every newly reached accepting node, with
+/// the letters' values along a shortest way there.
+fn walk<V: Clone>(
+    set: &AovSet,
+    letters: &[(Class, Group, V)],
+    shape: &Shape,
+    cap: usize,
+    mut visit: impl FnMut(AovMask, &dyn Fn() -> Vec<V>) -> bool,
+) -> Result<(), AnalysisError> {
     // Node: (state, shape state); parent index and letter, for the witness.
     let mut nodes: Vec<(State, u8, usize, usize)> = vec![(set.start(), 0, usize::MAX, 0)];
     let mut seen: FxSet<(State, u8)> = FxSet::default();
     seen.insert((set.start(), 0));
     let mut head = 0;
     while head < nodes.len() {
-        let (state, shape, _, _) = nodes[head];
-        for (l, (_, group, _)) in letters.iter().enumerate() {
-            let t = PATH.next[shape as usize][group.index()];
+        let (state, at, _, _) = nodes[head];
+        for (l, (class, group, _)) in letters.iter().enumerate() {
+            let t = shape.next[at as usize][group.index()];
             if t == NONE {
                 continue;
             }
-            let next = set.step_class(state, classes[l]);
+            let next = set.step_class(state, *class);
             if set.is_dead(next) || !seen.insert((next, t)) {
                 continue;
             }
-            if nodes.len() >= MAX_SEARCH_STATES {
-                return Err(AnalysisError::TooLarge(MAX_SEARCH_STATES));
+            if nodes.len() >= cap {
+                return Err(AnalysisError::TooLarge(cap));
             }
             nodes.push((next, t, head, l));
-            if PATH.accept[t as usize] {
+            if shape.accept[t as usize] {
                 let end = nodes.len() - 1;
                 let witness = || {
                     let mut vs = Vec::new();
@@ -89,8 +138,7 @@ pub(super) fn explore(
                         i = nodes[i].2;
                     }
                     vs.reverse();
-                    // Built along the PATH shape from constructible vertices: valid.
-                    Path::new(vs).expect("witnesses follow the path shape")
+                    vs
                 };
                 if visit(set.matches(next), &witness) {
                     return Ok(());

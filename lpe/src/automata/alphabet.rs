@@ -99,6 +99,24 @@ fn type_event(i: usize) -> (VertexType, Option<Event>) {
     }
 }
 
+/// What the NFA asks of an alphabet: how many classes, and which atoms accept which
+/// class. RenderMan's [`Alphabet`] and OSL's vertex classes (`crate::osl`) both answer.
+pub(crate) trait AcceptTable {
+    fn class_count(&self) -> usize;
+    /// Whether distinct atom `a` accepts the vertices of class `c`.
+    fn accepts(&self, c: usize, a: usize) -> bool;
+}
+
+impl AcceptTable for Alphabet {
+    fn class_count(&self) -> usize {
+        Alphabet::class_count(self)
+    }
+
+    fn accepts(&self, c: usize, a: usize) -> bool {
+        Alphabet::accepts(self, c, a)
+    }
+}
+
 /// The labels the compiled expressions mention, in a small open-addressing hash table.
 ///
 /// The key of a label is its length and two words that, for labels of up to 16 bytes,

@@ -30,7 +30,7 @@ impl fmt::Display for Warning {
 
 /// Which AOVs match some sequence of `shape`, by breadth-first search over
 /// `(position, shape state)`.
-fn nonempty_under(nfa: &Nfa, groups: &[u8], shape: &Shape, aovs: usize) -> Vec<bool> {
+pub(crate) fn nonempty_under(nfa: &Nfa, groups: &[u8], shape: &Shape, aovs: usize) -> Vec<bool> {
     let mut found = vec![false; aovs];
     let mut seen = vec![[false; 3]; nfa.positions];
     seen[0][0] = true;

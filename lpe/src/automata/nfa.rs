@@ -20,12 +20,46 @@
 //! Many AOVs share one automaton: each keeps its own positions, and a final position
 //! names the AOV it ends ([`Nfa::matches`]).
 
+use std::hash::Hash;
+
 use crate::fxhash::FxMap;
 
 use crate::ast::{Atom, Expr, Repetition};
-use crate::automata::alphabet::Alphabet;
+use crate::automata::alphabet::AcceptTable;
 use crate::automata::mask::AovMask;
 use crate::bits::{self, set};
+
+/// One node of an expression tree, as the Glushkov construction sees it: the seam that
+/// lets each dialect's tree (RenderMan's [`Expr`], OSL's [`crate::osl::Expr`]) build the
+/// same NFA. An atom reads exactly one vertex.
+pub(crate) enum Node<'a, E: Regex> {
+    Atom(&'a E::Atom),
+    Concat(&'a [E]),
+    /// No alternatives matches nothing.
+    Alt(&'a [E]),
+    Repeat(&'a E, Repetition),
+    /// The empty sequence.
+    Empty,
+}
+
+/// An expression tree the NFA can be built from.
+pub(crate) trait Regex: Sized {
+    /// What one position reads; equal atoms share one alphabet column.
+    type Atom: Eq + Hash;
+    fn node(&self) -> Node<'_, Self>;
+}
+
+impl Regex for Expr {
+    type Atom = Atom;
+    fn node(&self) -> Node<'_, Expr> {
+        match self {
+            Expr::Atom(a) => Node::Atom(a),
+            Expr::Concat(es) => Node::Concat(es),
+            Expr::Alt(es) => Node::Alt(es),
+            Expr::Repeat(e, r) => Node::Repeat(e, *r),
+        }
+    }
+}
 
 /// What the Glushkov construction computes for one subexpression.
 struct Frag {
@@ -45,18 +79,18 @@ impl Frag {
 }
 
 /// The Glushkov construction: positions, their atoms and follow lists.
-pub(crate) struct Builder<'a> {
+pub(crate) struct Builder<'a, A> {
     /// Distinct atoms, in first-seen order; positions refer to them by index.
-    pub atoms: Vec<&'a Atom>,
-    atom_ids: FxMap<&'a Atom, u32>,
+    pub atoms: Vec<&'a A>,
+    atom_ids: FxMap<&'a A, u32>,
     atom_of: Vec<u32>,
     follow: Vec<Vec<u32>>,
     /// The path length repetitions are [`Repetition::bounded`] by.
     max_path_len: Option<u32>,
 }
 
-impl<'a> Builder<'a> {
-    pub(crate) fn new(max_path_len: Option<u32>) -> Builder<'a> {
+impl<'a, A: Eq + Hash> Builder<'a, A> {
+    pub(crate) fn new(max_path_len: Option<u32>) -> Builder<'a, A> {
         Builder {
             atoms: Vec::new(),
             atom_ids: FxMap::default(),
@@ -67,7 +101,7 @@ impl<'a> Builder<'a> {
         }
     }
 
-    fn position(&mut self, atom: &'a Atom) -> u32 {
+    fn position(&mut self, atom: &'a A) -> u32 {
         let next = self.atoms.len() as u32;
         let a = *self.atom_ids.entry(atom).or_insert(next);
         if a == next {
@@ -101,9 +135,9 @@ impl<'a> Builder<'a> {
         }
     }
 
-    fn build(&mut self, e: &'a Expr) -> Frag {
-        match e {
-            Expr::Atom(a) => {
+    fn build<E: Regex<Atom = A>>(&mut self, e: &'a E) -> Frag {
+        match e.node() {
+            Node::Atom(a) => {
                 let p = self.position(a);
                 Frag {
                     first: vec![p],
@@ -111,11 +145,12 @@ impl<'a> Builder<'a> {
                     nullable: false,
                 }
             }
-            Expr::Concat(es) => es.iter().fold(Frag::empty(), |acc, e| {
+            Node::Empty => Frag::empty(),
+            Node::Concat(es) => es.iter().fold(Frag::empty(), |acc, e| {
                 let f = self.build(e);
                 self.concat(acc, f)
             }),
-            Expr::Alt(es) => {
+            Node::Alt(es) => {
                 let mut out = Frag {
                     first: Vec::new(),
                     last: Vec::new(),
@@ -129,7 +164,7 @@ impl<'a> Builder<'a> {
                 }
                 out
             }
-            Expr::Repeat(body, r) => {
+            Node::Repeat(body, r) => {
                 let Repetition { min, max } = r.bounded(self.max_path_len);
                 let mut acc = Frag::empty();
                 for _ in 0..min {
@@ -152,7 +187,7 @@ impl<'a> Builder<'a> {
 
     /// `(e(e(e)?)?)?` with `k` copies: nested optionals keep Follow linear in `k`, where
     /// `e?e?e?` would link every copy to every later one.
-    fn optional_chain(&mut self, body: &'a Expr, k: u32) -> Frag {
+    fn optional_chain<E: Regex<Atom = A>>(&mut self, body: &'a E, k: u32) -> Frag {
         if k == 0 {
             return Frag::empty();
         }
@@ -193,9 +228,26 @@ pub(crate) struct Parts {
     pub aov_nullable: Vec<bool>,
 }
 
-impl<'a> Builder<'a> {
+impl<'a, A: Eq + Hash> Builder<'a, A> {
+    /// The construction of `exprs`, one AOV each, in order.
+    pub(crate) fn of_all<E: Regex<Atom = A> + 'a>(
+        exprs: impl IntoIterator<Item = &'a E>,
+        max_path_len: Option<u32>,
+    ) -> (Builder<'a, A>, Parts) {
+        let mut builder = Builder::new(max_path_len);
+        let mut parts = Parts {
+            aov_first: Vec::new(),
+            aov_last: Vec::new(),
+            aov_nullable: Vec::new(),
+        };
+        for e in exprs {
+            builder.add(e, &mut parts);
+        }
+        (builder, parts)
+    }
+
     /// Adds one AOV's expression.
-    pub(crate) fn add(&mut self, e: &'a Expr, parts: &mut Parts) {
+    pub(crate) fn add<E: Regex<Atom = A>>(&mut self, e: &'a E, parts: &mut Parts) {
         let f = self.build(e);
         parts.aov_first.push(f.first);
         parts.aov_last.push(f.last);
@@ -212,10 +264,10 @@ impl Nfa {
     /// Tabulates a finished construction. Positions that cannot be reached from the start
     /// or cannot reach a final position are dropped: they never change an answer, and
     /// dropping them makes [`Nfa::is_dead`] exact and the DFA smaller.
-    pub(crate) fn new(
-        builder: Builder<'_>,
+    pub(crate) fn new<A>(
+        builder: Builder<'_, A>,
         parts: Parts,
-        alphabet: &Alphabet,
+        alphabet: &impl AcceptTable,
         table_budget: usize,
     ) -> Nfa {
         let Builder {
@@ -447,6 +499,7 @@ impl Nfa {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::automata::alphabet::Alphabet;
     use crate::parse;
     use crate::rng::SplitMix64;
 
@@ -457,15 +510,7 @@ mod tests {
     /// The NFA of `srcs` with the given table budget, and its class count.
     fn nfa(srcs: &[&str], table_budget: usize) -> (Nfa, usize) {
         let lpes: Vec<_> = srcs.iter().map(|s| parse(s).unwrap()).collect();
-        let mut builder = Builder::new(None);
-        let mut parts = Parts {
-            aov_first: Vec::new(),
-            aov_last: Vec::new(),
-            aov_nullable: Vec::new(),
-        };
-        for l in &lpes {
-            builder.add(&l.expr, &mut parts);
-        }
+        let (builder, parts) = Builder::of_all(lpes.iter().map(|l| &l.expr), None);
         let labels = lpes.iter().flat_map(|l| l.expr.labels()).collect();
         let alphabet = Alphabet::new(&builder.atoms, labels);
         let classes = alphabet.class_count();

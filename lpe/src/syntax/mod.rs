@@ -13,8 +13,9 @@
 //! nearest names; one made of event letters and digits (`CDL`, `C2L`, `CD5L`) is taken
 //! as the expression it looks like and gets that expression's error, if any.
 //!
-//! The front end is the only dialect-specific part: another dialect (OSL's, with `G`, `V`,
-//! `B`) would be another module producing the same AST.
+//! The front end is the only dialect-specific part: OSL's dialect ([`crate::osl`], with
+//! `G`, `V`, `B` and an open alphabet) is another module, whose own tree compiles into the
+//! same automata.
 
 mod error;
 mod lexer;

@@ -1,0 +1,328 @@
+//! The parsed OSL expression, fully expanded: shorthand is already turned into whole
+//! vertex patterns and registration already applied, so a matcher needs nothing but this
+//! tree.
+//!
+//! A vertex pattern reads one vertex's symbols: `symbols[0]` the event, `symbols[1]` the
+//! scattering, the rest the custom labels in order; then, when it has an eater, any
+//! further symbols outside the eater's exclusion list; then the vertex must end. The
+//! [`fmt::Display`] impls print OSL syntax that means the same tree when every vertex
+//! pattern keeps OSL's own eater rule (an eater exactly when it has fewer than five custom
+//! items and is the basic set); a hand-built pattern outside that rule prints with the
+//! nearest OSL spelling.
+
+use std::fmt;
+
+use super::symbol::Symbol;
+use crate::ast::Repetition;
+use crate::print::write_parts;
+
+/// What one slot of a vertex pattern accepts. No slot accepts STOP.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum SymbolPattern {
+    /// `.` inside `<>`: any symbol (NONE and basic labels included).
+    Any,
+    /// One symbol (`x` is [`Symbol::None`]).
+    One(Symbol),
+    /// `[abc]` inside `<>`: one of these (none when empty).
+    Set(Vec<Symbol>),
+    /// `[^abc]`: any symbol except these.
+    NotIn(Vec<Symbol>),
+}
+
+impl SymbolPattern {
+    /// Whether the slot accepts `s`.
+    pub fn accepts(&self, s: &Symbol) -> bool {
+        match self {
+            SymbolPattern::Any => true,
+            SymbolPattern::One(x) => x == s,
+            SymbolPattern::Set(xs) => xs.contains(s),
+            SymbolPattern::NotIn(xs) => !xs.contains(s),
+        }
+    }
+
+    /// Every symbol the pattern names.
+    pub fn symbols(&self) -> &[Symbol] {
+        match self {
+            SymbolPattern::Any => &[],
+            SymbolPattern::One(x) => std::slice::from_ref(x),
+            SymbolPattern::Set(xs) | SymbolPattern::NotIn(xs) => xs,
+        }
+    }
+}
+
+/// One whole vertex: `symbols[0]` matches the event, `symbols[1]` the scattering, the
+/// rest the custom labels in order (a `( ... )` group in a slot contributes several
+/// entries); then, if `eater` is `Some(excluded)`, zero or more further symbols none of
+/// which is in `excluded` (OSL's eater: the basic and registered labels and NONE), then
+/// STOP. With `eater: None` the vertex has exactly `symbols.len()` symbols.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct VertexPattern {
+    /// One pattern per leading symbol.
+    pub symbols: Vec<SymbolPattern>,
+    /// What the eater may not skip, if the pattern has one.
+    pub eater: Option<Vec<Symbol>>,
+}
+
+impl VertexPattern {
+    /// Whether the pattern accepts the vertex of `symbols`. A vertex of fewer than two
+    /// symbols is never accepted (in OSL the event and scattering slots exclude STOP).
+    pub fn accepts(&self, symbols: &[Symbol]) -> bool {
+        let k = self.symbols.len();
+        symbols.len() >= k.max(2)
+            && self.symbols.iter().zip(symbols).all(|(p, s)| p.accepts(s))
+            && match &self.eater {
+                None => symbols.len() == k,
+                Some(ex) => symbols[k..].iter().all(|s| !ex.contains(s)),
+            }
+    }
+}
+
+/// An expression over vertex sequences.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Expr {
+    /// One vertex.
+    Vertex(VertexPattern),
+    /// A sequence, at least two parts.
+    Concat(Vec<Expr>),
+    /// Alternatives, at least two.
+    Alt(Vec<Expr>),
+    /// `min..=max` repetitions; `{m,n}` with `m > n` is already `{m}`.
+    Repeat(Box<Expr>, Repetition),
+    /// The empty sequence: what a leading `{0}` item of a sequence leaves (OSL drops it).
+    Empty,
+    /// `[]`: matches no sequence.
+    Nothing,
+}
+
+impl Expr {
+    /// Visits every vertex pattern.
+    pub fn for_each_vertex(&self, f: &mut impl FnMut(&VertexPattern)) {
+        match self {
+            Expr::Vertex(v) => f(v),
+            Expr::Concat(es) | Expr::Alt(es) => es.iter().for_each(|e| e.for_each_vertex(f)),
+            Expr::Repeat(e, _) => e.for_each_vertex(f),
+            Expr::Empty | Expr::Nothing => {}
+        }
+    }
+
+    /// Vertex-pattern positions after unrolling counted repetition (as
+    /// [`crate::Expr::positions`] counts them), saturating.
+    pub fn positions(&self) -> u64 {
+        match self {
+            Expr::Vertex(_) => 1,
+            Expr::Concat(es) | Expr::Alt(es) => es
+                .iter()
+                .fold(0u64, |acc, e| acc.saturating_add(e.positions())),
+            Expr::Repeat(e, r) => e.positions().saturating_mul(r.copies()),
+            Expr::Empty | Expr::Nothing => 0,
+        }
+    }
+}
+
+/// What an OSL warning is about.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum WarningKind {
+    /// `[^RD]`: labels of different slots in one negation; the whole list applies to the
+    /// slot of the last label.
+    MixedNegation,
+    /// `{m,n}` with `m > n`: read as `{m}`.
+    ReversedRange {
+        /// `m`
+        min: u32,
+        /// `n`
+        max: u32,
+    },
+}
+
+/// A warning OSL prints on stderr while it accepts the expression, with the byte
+/// position of the construct.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Warning {
+    /// What.
+    pub kind: WarningKind,
+    /// Byte offset of the construct's opening `[` or `{`.
+    pub pos: usize,
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match &self.kind {
+            WarningKind::MixedNegation => write!(
+                f,
+                "you are mixing labels of different type in [...] at char {} (the whole \
+                 list applies to the slot of the last label)",
+                self.pos
+            ),
+            WarningKind::ReversedRange { min, max } => write!(
+                f,
+                "{{{min},{max}}} at char {} has its bounds reversed: read as {{{min}}}",
+                self.pos
+            ),
+        }
+    }
+}
+
+/// A parsed OSL expression: the tree plus the warnings OSL prints on stderr.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct Lpe {
+    /// The expanded expression.
+    pub expr: Expr,
+    /// Accepted-but-dubious constructs, in source order.
+    pub warnings: Vec<Warning>,
+}
+
+/// A label as it reads inside `<>`: one plain character bare, anything else quoted
+/// (characters with a meaning inside `<>` included).
+fn write_label(f: &mut fmt::Formatter<'_>, l: &str) -> fmt::Result {
+    let mut cs = l.chars();
+    match (cs.next(), cs.next()) {
+        (Some(c), None) if !"x.'[]()<>*+{}^".contains(c) => write!(f, "{c}"),
+        _ => write!(f, "'{l}'"),
+    }
+}
+
+fn write_symbol(f: &mut fmt::Formatter<'_>, s: &Symbol) -> fmt::Result {
+    match s {
+        Symbol::None => f.write_str("x"),
+        Symbol::Label(l) => write_label(f, l),
+    }
+}
+
+impl fmt::Display for SymbolPattern {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        // In a set every unquoted character is a label; in a negation only known labels
+        // may go unquoted, so its labels are all quoted. NONE has no spelling in either.
+        let list = |f: &mut fmt::Formatter<'_>, open: &str, xs: &[Symbol], bare: bool| {
+            f.write_str(open)?;
+            for x in xs {
+                match x {
+                    Symbol::None => f.write_str("x")?,
+                    Symbol::Label(l)
+                        if bare && l.chars().count() == 1 && !"'[]^".contains(l.as_str()) =>
+                    {
+                        f.write_str(l)?
+                    }
+                    Symbol::Label(l) => write!(f, "'{l}'")?,
+                }
+            }
+            f.write_str("]")
+        };
+        match self {
+            SymbolPattern::Any => f.write_str("."),
+            SymbolPattern::One(s) => write_symbol(f, s),
+            SymbolPattern::Set(xs) => list(f, "[", xs, true),
+            SymbolPattern::NotIn(xs) => list(f, "[^", xs, false),
+        }
+    }
+}
+
+impl fmt::Display for VertexPattern {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str("<")?;
+        for p in &self.symbols {
+            write!(f, "{p}")?;
+        }
+        f.write_str(">")
+    }
+}
+
+impl fmt::Display for Expr {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Expr::Vertex(v) => write!(f, "{v}"),
+            Expr::Concat(es) => write_parts(f, es, "", |e| matches!(e, Expr::Concat(_))),
+            // `|` binds tighter than concatenation and takes one item on each side.
+            Expr::Alt(es) => {
+                write_parts(f, es, "|", |e| matches!(e, Expr::Concat(_) | Expr::Alt(_)))
+            }
+            Expr::Repeat(e, r) => {
+                write_parts(f, std::slice::from_ref(&**e), "", |e| {
+                    matches!(e, Expr::Concat(_) | Expr::Alt(_) | Expr::Repeat(..))
+                })?;
+                // OSL has no `?`: `{0,1}` is spelled out.
+                match (r.min, r.max) {
+                    (0, None) => f.write_str("*"),
+                    (1, None) => f.write_str("+"),
+                    (n, None) => write!(f, "{{{n},}}"),
+                    (n, Some(m)) if n == m => write!(f, "{{{n}}}"),
+                    (n, Some(m)) => write!(f, "{{{n},{m}}}"),
+                }
+            }
+            // A leading `{0}` item: OSL drops it, and so does printing.
+            Expr::Empty => Ok(()),
+            Expr::Nothing => f.write_str("[]"),
+        }
+    }
+}
+
+impl fmt::Display for Lpe {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.expr)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn lbl(s: &str) -> Symbol {
+        Symbol::label(s)
+    }
+
+    #[test]
+    fn vertex_pattern_acceptance() {
+        let basic = vec![lbl("D"), Symbol::None];
+        let p = VertexPattern {
+            symbols: vec![
+                SymbolPattern::One(lbl("R")),
+                SymbolPattern::NotIn(vec![lbl("D")]),
+            ],
+            eater: Some(basic),
+        };
+        let acc = |v: &[&str]| p.accepts(&v.iter().map(|s| lbl(s)).collect::<Vec<_>>());
+        assert!(acc(&["R", "G"]));
+        assert!(acc(&["R", "G", "foo", "bar"]));
+        assert!(!acc(&["R", "G", "D"]));
+        assert!(!acc(&["R", "D"]));
+        assert!(!acc(&["R"]));
+        assert!(p.accepts(&[lbl("R"), Symbol::None]));
+        let exact = VertexPattern {
+            eater: None,
+            ..p.clone()
+        };
+        assert!(exact.accepts(&[lbl("R"), lbl("G")]));
+        assert!(!exact.accepts(&[lbl("R"), lbl("G"), lbl("foo")]));
+        assert!(!SymbolPattern::Set(vec![]).accepts(&Symbol::None));
+        let short = VertexPattern {
+            symbols: vec![SymbolPattern::Any],
+            eater: Some(vec![]),
+        };
+        assert!(!short.accepts(&[lbl("R")]));
+        assert!(short.accepts(&[lbl("R"), lbl("D")]));
+    }
+
+    #[test]
+    fn positions_count_unrolled_vertices() {
+        let v = Expr::Vertex(VertexPattern {
+            symbols: vec![SymbolPattern::Any, SymbolPattern::Any],
+            eater: None,
+        });
+        let e = Expr::Concat(vec![
+            v.clone(),
+            Expr::Repeat(
+                Box::new(v.clone()),
+                Repetition {
+                    min: 2,
+                    max: Some(4),
+                },
+            ),
+            Expr::Empty,
+            Expr::Nothing,
+        ]);
+        assert_eq!(e.positions(), 5);
+        assert_eq!(
+            Expr::Repeat(Box::new(v), Repetition { min: 3, max: None }).positions(),
+            4
+        );
+    }
+}

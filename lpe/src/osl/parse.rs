@@ -1,0 +1,546 @@
+//! The OSL parser: text to the expanded [`Expr`], following OSL's `lpeparse` grammar
+//! (docs/language.md, OSL chapter) with a clean error where OSL crashes or truncates.
+//!
+//! ```text
+//! seq    := (item | '|' item)*          `|` ORs the next item with the previous one
+//! item   := atom postfix?               one postfix at most
+//! atom   := '.' | letter | "'" label "'" | '(' seq ')' | '[' item* ']'
+//!         | '[^' label+ ']' | '<' slot* '>'
+//! postfix:= '*' | '+' | '{' n '}' | '{' n ',' '}' | '{' n ',' m '}'
+//! slot   := '.' | 'x' | char | "'" label "'" | '[' label* ']' | '[^' label+ ']'
+//!         | '(' slot+ ')'
+//! ```
+//!
+//! Every vertex-level atom expands to a whole [`VertexPattern`] with the eater (when it
+//! has fewer than five custom items). No whitespace is skipped.
+
+use super::ast::{Expr, Lpe, SymbolPattern, VertexPattern, Warning, WarningKind};
+use super::error::{Error, ErrorKind};
+use super::symbol::{LabelKind, Registered, Symbol, STOP_LABEL};
+use crate::ast::Repetition;
+use crate::Limits;
+
+/// Custom items from which on a vertex pattern gets no eater.
+const EATER_MAX_CUSTOM: usize = 5;
+
+/// Parses `src` with `registered` labels and default [`Limits`].
+///
+/// ```
+/// use lpe::osl::{parse, Registered};
+///
+/// let lpe = parse("C<RD>[LO]", &Registered::none()).unwrap();
+/// assert_eq!(lpe.expr.to_string(), "<C.><RD><L.>|<O.>");
+/// let err = parse("C<RD", &Registered::none()).unwrap_err();
+/// assert_eq!(err.to_string(), "Reached end of line looking for > to end a group at char 4");
+/// ```
+pub fn parse(src: &str, registered: &Registered) -> std::result::Result<Lpe, Error> {
+    parse_with(src, registered, &Limits::default())
+}
+
+/// Parses with explicit limits (`max_repeat`, `max_depth`, `max_positions` apply).
+pub fn parse_with(
+    src: &str,
+    registered: &Registered,
+    limits: &Limits,
+) -> std::result::Result<Lpe, Error> {
+    let mut p = Parser {
+        src,
+        pos: 0,
+        reg: registered,
+        eater: registered.basic_labels(),
+        limits,
+        depth: 0,
+        warnings: Vec::new(),
+    };
+    if src.is_empty() {
+        return Err(p.err(ErrorKind::Empty, 0));
+    }
+    let expr = match p.seq(false)? {
+        // A whole expression of `{0}` items: OSL builds a rule with no states.
+        Expr::Empty => return Err(p.err(ErrorKind::ZeroRepeat, 0)),
+        e => e,
+    };
+    let positions = expr.positions();
+    if positions > limits.max_positions as u64 {
+        return Err(p.err(
+            ErrorKind::TooManyPositions {
+                positions,
+                max: limits.max_positions,
+            },
+            0,
+        ));
+    }
+    Ok(Lpe {
+        expr,
+        warnings: p.warnings,
+    })
+}
+
+/// Adds an alternative, flattening nested alternations (`(a|b)|c`, `[[ab]c]`): the
+/// same language, and one tree per language for printing to reproduce.
+fn push_alt(alts: &mut Vec<Expr>, e: Expr) {
+    match e {
+        Expr::Alt(es) => alts.extend(es),
+        e => alts.push(e),
+    }
+}
+
+struct Parser<'a> {
+    src: &'a str,
+    pos: usize,
+    reg: &'a Registered,
+    eater: Vec<Symbol>,
+    limits: &'a Limits,
+    depth: usize,
+    warnings: Vec<Warning>,
+}
+
+type Result<T> = std::result::Result<T, Error>;
+
+/// What a label in a `[^...]` list is, for choosing the negated slot.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Kind {
+    Event,
+    Scattering,
+    Quoted,
+}
+
+impl<'a> Parser<'a> {
+    fn err(&self, kind: ErrorKind, pos: usize) -> Error {
+        Error { kind, pos }
+    }
+
+    fn head(&self) -> Option<char> {
+        self.src[self.pos..].chars().next()
+    }
+
+    fn bump(&mut self) -> Option<char> {
+        let c = self.head()?;
+        self.pos += c.len_utf8();
+        Some(c)
+    }
+
+    fn enter(&mut self) -> Result<()> {
+        self.depth += 1;
+        if self.depth > self.limits.max_depth {
+            return Err(self.err(
+                ErrorKind::TooDeep {
+                    max: self.limits.max_depth,
+                },
+                self.pos,
+            ));
+        }
+        Ok(())
+    }
+
+    fn vertex(&self, symbols: Vec<SymbolPattern>, customs: usize) -> Expr {
+        Expr::Vertex(VertexPattern {
+            symbols,
+            eater: (customs < EATER_MAX_CUSTOM).then(|| self.eater.clone()),
+        })
+    }
+
+    /// A sequence, up to the end of the text or (inside a group) its `)`.
+    fn seq(&mut self, in_paren: bool) -> Result<Expr> {
+        let open = self.pos.saturating_sub(1);
+        let mut items: Vec<(Expr, usize)> = Vec::new();
+        loop {
+            let start = self.pos;
+            match self.head() {
+                None if in_paren => return Err(self.err(ErrorKind::UnclosedParen, self.src.len())),
+                None => break,
+                Some(')') if in_paren => {
+                    self.pos += 1;
+                    break;
+                }
+                Some('|') => {
+                    let Some((prev, prev_start)) = items.pop() else {
+                        return Err(self.err(ErrorKind::NoLeftExpression, start));
+                    };
+                    self.pos += 1;
+                    let next_start = self.pos;
+                    let next = self.item()?;
+                    for (e, at) in [(&prev, prev_start), (&next, next_start)] {
+                        if *e == Expr::Empty {
+                            return Err(self.err(ErrorKind::ZeroRepeat, at));
+                        }
+                    }
+                    let mut alts = Vec::new();
+                    push_alt(&mut alts, prev);
+                    push_alt(&mut alts, next);
+                    items.push((Expr::Alt(alts), prev_start));
+                }
+                Some(_) => {
+                    let e = self.item()?;
+                    items.push((e, start));
+                }
+            }
+        }
+        if items.is_empty() {
+            return Err(self.err(ErrorKind::EmptyGroup, open));
+        }
+        // OSL chains fragments from the first non-empty one: leading `{0}` items drop
+        // out; a later one would be chained to as a null state.
+        let lead = items.iter().take_while(|(e, _)| *e == Expr::Empty).count();
+        if lead == items.len() {
+            return Ok(Expr::Empty);
+        }
+        let mut parts = Vec::with_capacity(items.len() - lead);
+        for (e, at) in items.into_iter().skip(lead) {
+            if e == Expr::Empty {
+                return Err(self.err(ErrorKind::ZeroRepeat, at));
+            }
+            parts.push(e);
+        }
+        Ok(if parts.len() == 1 {
+            parts.pop().expect("one part")
+        } else {
+            Expr::Concat(parts)
+        })
+    }
+
+    /// One atom and its postfix. A `{0}` item is returned as [`Expr::Empty`].
+    fn item(&mut self) -> Result<Expr> {
+        let start = self.pos;
+        let atom = match self.head() {
+            None => return Err(self.err(ErrorKind::UnrecognizedBasicLabel(String::new()), start)),
+            Some('.') => {
+                self.pos += 1;
+                self.vertex(vec![SymbolPattern::Any, SymbolPattern::Any], 0)
+            }
+            Some('(') => {
+                self.enter()?;
+                self.pos += 1;
+                let e = self.seq(true)?;
+                self.depth -= 1;
+                e
+            }
+            Some('[') => {
+                self.enter()?;
+                self.pos += 1;
+                let e = if self.head() == Some('^') {
+                    self.pos += 1;
+                    self.negation_item(start)?
+                } else {
+                    self.or_list()?
+                };
+                self.depth -= 1;
+                e
+            }
+            Some('<') => {
+                self.enter()?;
+                let e = self.group()?;
+                self.depth -= 1;
+                e
+            }
+            Some('\'') => {
+                // OSL overwrites the unclosed-quote message here with an empty label.
+                let l = self.literal().map_err(|e| match e.kind {
+                    ErrorKind::UnclosedLiteral => {
+                        self.err(ErrorKind::UnrecognizedBasicLabel(String::new()), e.pos)
+                    }
+                    _ => e,
+                })?;
+                self.vertex(
+                    vec![
+                        SymbolPattern::Any,
+                        SymbolPattern::Any,
+                        SymbolPattern::One(l),
+                    ],
+                    1,
+                )
+            }
+            Some(c) => {
+                let slots = match self.reg.kind_of(c.encode_utf8(&mut [0; 4])) {
+                    Some(LabelKind::Event) => {
+                        vec![SymbolPattern::One(Symbol::label(c)), SymbolPattern::Any]
+                    }
+                    Some(LabelKind::Scattering) => {
+                        vec![SymbolPattern::Any, SymbolPattern::One(Symbol::label(c))]
+                    }
+                    None => {
+                        // `x` is NONE, whose name is empty.
+                        let shown = if c == 'x' {
+                            String::new()
+                        } else {
+                            c.to_string()
+                        };
+                        return Err(self.err(ErrorKind::UnrecognizedBasicLabel(shown), start));
+                    }
+                };
+                self.pos += c.len_utf8();
+                self.vertex(slots, 0)
+            }
+        };
+        self.postfix(atom)
+    }
+
+    fn postfix(&mut self, atom: Expr) -> Result<Expr> {
+        let start = self.pos;
+        let rep = match self.head() {
+            Some('*') => {
+                self.pos += 1;
+                Repetition::STAR
+            }
+            Some('+') => {
+                self.pos += 1;
+                Repetition::PLUS
+            }
+            Some('{') => self.range()?,
+            _ => return Ok(atom),
+        };
+        if rep.max == Some(0) {
+            return Ok(Expr::Empty);
+        }
+        if atom == Expr::Empty {
+            return Err(self.err(ErrorKind::ZeroRepeat, start));
+        }
+        Ok(Expr::Repeat(Box::new(atom), rep))
+    }
+
+    /// `{n}`, `{n,}`, `{n,m}`; `{m,n}` with `m > n` is `{m}` plus a warning.
+    fn range(&mut self) -> Result<Repetition> {
+        let open = self.pos;
+        self.pos += 1;
+        let min = self
+            .number()?
+            .ok_or_else(|| self.err(ErrorKind::BadRange, self.pos))?;
+        let max = if self.head() == Some(',') {
+            self.pos += 1;
+            self.number()?
+        } else {
+            Some(min)
+        };
+        if self.head() != Some('}') {
+            return Err(self.err(ErrorKind::BadRange, self.pos));
+        }
+        self.pos += 1;
+        Ok(match max {
+            Some(m) if m < min => {
+                self.warnings.push(Warning {
+                    kind: WarningKind::ReversedRange { min, max: m },
+                    pos: open,
+                });
+                Repetition {
+                    min,
+                    max: Some(min),
+                }
+            }
+            max => Repetition { min, max },
+        })
+    }
+
+    fn number(&mut self) -> Result<Option<u32>> {
+        let start = self.pos;
+        let digits = self.src[start..]
+            .bytes()
+            .take_while(u8::is_ascii_digit)
+            .count();
+        if digits == 0 {
+            return Ok(None);
+        }
+        self.pos += digits;
+        let max = self.limits.max_repeat;
+        match self.src[start..self.pos].parse::<u32>() {
+            Ok(n) if n <= max => Ok(Some(n)),
+            _ => Err(self.err(ErrorKind::RepeatTooLarge { max }, start)),
+        }
+    }
+
+    /// `[...]` outside `<>`: an alternation of items; `[]` matches nothing.
+    fn or_list(&mut self) -> Result<Expr> {
+        let mut alts = Vec::new();
+        loop {
+            match self.head() {
+                None => return Err(self.err(ErrorKind::UnclosedOrList, self.src.len())),
+                Some(']') => {
+                    self.pos += 1;
+                    break;
+                }
+                Some(_) => {
+                    let at = self.pos;
+                    let e = self.item()?;
+                    if e == Expr::Empty {
+                        return Err(self.err(ErrorKind::ZeroRepeat, at));
+                    }
+                    push_alt(&mut alts, e);
+                }
+            }
+        }
+        Ok(match alts.len() {
+            0 => Expr::Nothing,
+            1 => alts.pop().expect("one alternative"),
+            _ => Expr::Alt(alts),
+        })
+    }
+
+    /// The labels of a `[^...]` (after the `^`) and the kind of each.
+    fn negated_labels(&mut self) -> Result<Vec<(Symbol, Kind)>> {
+        let mut out = Vec::new();
+        loop {
+            match self.head() {
+                None => return Err(self.err(ErrorKind::UnclosedNegativeOrList, self.src.len())),
+                Some(']') => {
+                    if out.is_empty() {
+                        return Err(self.err(ErrorKind::EmptyNegation, self.pos));
+                    }
+                    self.pos += 1;
+                    return Ok(out);
+                }
+                Some('\'') => out.push((self.literal()?, Kind::Quoted)),
+                Some(c) => {
+                    let kind = match self.reg.kind_of(c.encode_utf8(&mut [0; 4])) {
+                        Some(LabelKind::Event) => Kind::Event,
+                        Some(LabelKind::Scattering) => Kind::Scattering,
+                        None => return Err(self.err(ErrorKind::UnrecognizedLabel, self.pos)),
+                    };
+                    self.pos += c.len_utf8();
+                    out.push((Symbol::label(c), kind));
+                }
+            }
+        }
+    }
+
+    /// `[^...]` outside `<>`: one negated slot, the slot of the last label listed.
+    fn negation_item(&mut self, open: usize) -> Result<Expr> {
+        let labels = self.negated_labels()?;
+        let last = labels.last().expect("non-empty").1;
+        if labels.iter().any(|(_, k)| *k != last) {
+            self.warnings.push(Warning {
+                kind: WarningKind::MixedNegation,
+                pos: open,
+            });
+        }
+        let not_in = SymbolPattern::NotIn(labels.into_iter().map(|(s, _)| s).collect());
+        Ok(match last {
+            Kind::Event => self.vertex(vec![not_in, SymbolPattern::Any], 0),
+            Kind::Scattering => self.vertex(vec![SymbolPattern::Any, not_in], 0),
+            Kind::Quoted => self.vertex(vec![SymbolPattern::Any, SymbolPattern::Any, not_in], 1),
+        })
+    }
+
+    /// `'...'` at the quote: any characters but `'`, no escapes.
+    fn literal(&mut self) -> Result<Symbol> {
+        let start = self.pos + 1;
+        let Some(len) = self.src[start..].find('\'') else {
+            return Err(self.err(ErrorKind::UnclosedLiteral, self.src.len()));
+        };
+        let label = &self.src[start..start + len];
+        if label == STOP_LABEL {
+            return Err(self.err(ErrorKind::StopLabel, self.pos));
+        }
+        self.pos = start + len + 1;
+        Ok(Symbol::label(label))
+    }
+
+    /// `<...>` at the `<`: items fill the event slot, the scattering slot, then custom
+    /// slots; missing slots are `.`.
+    fn group(&mut self) -> Result<Expr> {
+        self.pos += 1;
+        let mut items: Vec<Vec<SymbolPattern>> = Vec::new();
+        loop {
+            match self.head() {
+                None => return Err(self.err(ErrorKind::UnclosedGroup, self.src.len())),
+                Some('>') => {
+                    self.pos += 1;
+                    break;
+                }
+                Some('(') => {
+                    self.enter()?;
+                    let open = self.pos;
+                    self.pos += 1;
+                    let seq = self.slot_seq(open)?;
+                    self.depth -= 1;
+                    items.push(seq);
+                }
+                Some(_) => {
+                    let s = self.slot()?;
+                    items.push(vec![s]);
+                }
+            }
+        }
+        let customs = items.len().saturating_sub(2);
+        while items.len() < 2 {
+            items.push(vec![SymbolPattern::Any]);
+        }
+        Ok(self.vertex(items.into_iter().flatten().collect(), customs))
+    }
+
+    /// `( ... )` inside `<>`, after the `(`: a sequence of slot patterns, up to `)`.
+    fn slot_seq(&mut self, open: usize) -> Result<Vec<SymbolPattern>> {
+        let mut out = Vec::new();
+        loop {
+            match self.head() {
+                None => return Err(self.err(ErrorKind::UnclosedParen, self.src.len())),
+                Some(')') => {
+                    self.pos += 1;
+                    if out.is_empty() {
+                        return Err(self.err(ErrorKind::EmptyGroup, open));
+                    }
+                    return Ok(out);
+                }
+                Some('(') => {
+                    self.enter()?;
+                    let inner = self.pos;
+                    self.pos += 1;
+                    out.extend(self.slot_seq(inner)?);
+                    self.depth -= 1;
+                }
+                Some(_) => out.push(self.slot()?),
+            }
+        }
+    }
+
+    /// One slot pattern inside `<>`.
+    fn slot(&mut self) -> Result<SymbolPattern> {
+        let at = self.pos;
+        match self.head() {
+            Some('<') => Err(self.err(ErrorKind::NestedGroup, at)),
+            Some('*' | '+' | '{') => Err(self.err(ErrorKind::RepetitionInGroup, at)),
+            Some('.') => {
+                self.pos += 1;
+                Ok(SymbolPattern::Any)
+            }
+            Some('x') => {
+                self.pos += 1;
+                Ok(SymbolPattern::One(Symbol::None))
+            }
+            Some('\'') => Ok(SymbolPattern::One(self.literal()?)),
+            Some('[') => {
+                self.pos += 1;
+                if self.head() == Some('^') {
+                    self.pos += 1;
+                    let labels = self.negated_labels()?;
+                    Ok(SymbolPattern::NotIn(
+                        labels.into_iter().map(|(s, _)| s).collect(),
+                    ))
+                } else {
+                    self.symbol_set()
+                }
+            }
+            _ => {
+                let c = self.bump().expect("not at the end");
+                Ok(SymbolPattern::One(Symbol::label(c)))
+            }
+        }
+    }
+
+    /// `[...]` inside `<>`, after the `[`: every unquoted character is a label.
+    fn symbol_set(&mut self) -> Result<SymbolPattern> {
+        let mut out = Vec::new();
+        loop {
+            match self.head() {
+                None => return Err(self.err(ErrorKind::UnclosedOrList, self.src.len())),
+                Some(']') => {
+                    self.pos += 1;
+                    return Ok(SymbolPattern::Set(out));
+                }
+                Some('\'') => out.push(self.literal()?),
+                Some(_) => {
+                    let c = self.bump().expect("not at the end");
+                    out.push(Symbol::label(c));
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,94 @@
+//! OSL's own LPE unit test (liboslexec's accum test, 130 verdicts produced by running
+//! OSL's code) and the hand-written rows of `extra.tsv`, on `AovSet` compiled from the
+//! OSL dialect, in both stepping modes: the DFA, and the bitset NFA (a zero DFA budget).
+
+use lpe::osl::{self, Registered};
+use lpe::{AovSet, Options};
+use lpe_tests::osl_rows::{load_osl_rows, OslRow};
+
+fn modes() -> [(&'static str, Options); 2] {
+    [
+        ("dfa", Options::default()),
+        (
+            "nfa",
+            Options {
+                dfa_budget: 0,
+                ..Options::default()
+            },
+        ),
+    ]
+}
+
+/// The rows whose answer differs from OSL's, as `file:line mode: ...` lines.
+fn failures(file: &str, rows: &[OslRow]) -> Vec<String> {
+    let mut out = Vec::new();
+    for (mode, opts) in modes() {
+        for r in rows {
+            let lpe = match osl::parse(&r.expr, &r.registered) {
+                Ok(l) => l,
+                Err(e) => {
+                    out.push(format!("{file}:{} {mode}: `{}`: {e}", r.line, r.expr));
+                    continue;
+                }
+            };
+            let set = AovSet::compile_osl(&[("rule".into(), lpe)], &r.registered, &opts)
+                .unwrap_or_else(|e| panic!("{file}:{}: {e}", r.line));
+            assert_eq!(set.uses_dfa(), mode == "dfa", "{file}:{}", r.line);
+            let got = set.match_osl_path(&r.path).contains(0);
+            if got != r.matches {
+                out.push(format!(
+                    "{file}:{} {mode}: `{}` [{}] on `{}`: got {got}, OSL says {}",
+                    r.line, r.expr, r.registered, r.path, r.matches
+                ));
+            }
+        }
+    }
+    out
+}
+
+#[test]
+fn accum_test_answers_130_of_130_in_both_modes() {
+    let rows = load_osl_rows("accum_test.tsv").unwrap();
+    assert_eq!(rows.len(), 130);
+    let fails = failures("accum_test.tsv", &rows);
+    assert!(fails.is_empty(), "{}", fails.join("\n"));
+}
+
+#[test]
+fn extra_rows_in_both_modes() {
+    let rows = load_osl_rows("extra.tsv").unwrap();
+    assert!(rows.len() >= 30, "{}", rows.len());
+    let fails = failures("extra.tsv", &rows);
+    assert!(fails.is_empty(), "{}", fails.join("\n"));
+}
+
+#[test]
+fn one_set_of_all_accum_rules_answers_each_rule() {
+    // All rules in one set (as OSL compiles them, sharing one automaton): each AOV's bit
+    // still gives that rule's verdict.
+    let rows = load_osl_rows("accum_test.tsv").unwrap();
+    let reg: Registered = "events=U;scatters=Y".parse().unwrap();
+    let mut rules: Vec<String> = Vec::new();
+    for r in &rows {
+        assert_eq!(r.registered, reg);
+        if !rules.contains(&r.expr) {
+            rules.push(r.expr.clone());
+        }
+    }
+    let aovs: Vec<(String, osl::Lpe)> = rules
+        .iter()
+        .map(|e| (e.clone(), osl::parse(e, &reg).unwrap()))
+        .collect();
+    for (mode, opts) in modes() {
+        let set = AovSet::compile_osl(&aovs, &reg, &opts).unwrap();
+        for r in &rows {
+            let i = rules.iter().position(|e| *e == r.expr).unwrap();
+            let got = set.match_osl_path(&r.path).contains(i);
+            assert_eq!(
+                got, r.matches,
+                "{mode}: line {} `{}` on `{}`",
+                r.line, r.expr, r.path
+            );
+        }
+    }
+}
