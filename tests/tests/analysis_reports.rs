@@ -77,6 +77,27 @@ fn partition_report_of_a_partition_is_empty() {
     assert!(p.overlaps.is_empty() && p.gap.is_none(), "{p:?}");
     let outside: Vec<usize> = p.outside.iter().map(|o| o.0).collect();
     assert_eq!(outside, [1, 2, 3, 4, 5, 6]);
+    assert!(!p.is_clean());
+}
+
+#[test]
+fn any_one_field_alone_makes_a_partition_unclean() {
+    let basic = aovs(&lpe::macros::BASIC);
+    let universe = default_universe();
+    // Overlaps only: caustics lie inside indirectDiffuse and subsurface.
+    let mut set = basic.clone();
+    set.extend(aovs(&[("caustics", "CDS+[<L.>O]")]));
+    let p = analysis::partition(&set, &universe).unwrap();
+    assert!(!p.overlaps.is_empty() && p.gap.is_none() && p.outside.is_empty());
+    assert!(!p.is_clean(), "{p:?}");
+    // A gap only: the paths of the AOV left out.
+    let p = analysis::partition(&basic[1..], &universe).unwrap();
+    assert!(p.overlaps.is_empty() && p.gap.is_some() && p.outside.is_empty());
+    assert!(!p.is_clean(), "{p:?}");
+    // Outside only: the narrow universe of `partition_report_of_a_partition_is_empty`.
+    let p = analysis::partition(&basic, &parse("C<RD>[<L.>O]").unwrap()).unwrap();
+    assert!(p.overlaps.is_empty() && p.gap.is_none() && !p.outside.is_empty());
+    assert!(!p.is_clean(), "{p:?}");
 }
 
 #[test]
@@ -95,11 +116,13 @@ fn comparison_reports_both_sides() {
     // Strict inclusion, both ways round: only the larger side has a witness.
     let (small, large) = (lpe("C<RD>L"), lpe("C.L"));
     let c = analysis::compare(&small, &large).unwrap();
+    assert!(!c.equivalent());
     assert_eq!(c.first_only, None);
     let w = c.second_only.expect("second_only");
     assert_eq!(w.len(), 3, "{w}");
     assert!(!m(&small, &w) && m(&large, &w), "{w}");
     let c = analysis::compare(&large, &small).unwrap();
+    assert!(!c.equivalent());
     assert_eq!(c.second_only, None);
     let w = c.first_only.expect("first_only");
     assert!(m(&large, &w) && !m(&small, &w), "{w}");
@@ -129,4 +152,62 @@ fn emptiness_warnings_name_the_aov() {
         assert!(!w.message.is_empty());
         assert!(w.to_string().contains(&w.name), "{w}");
     }
+}
+
+#[test]
+fn a_one_sided_witness_stays_the_shortest_while_the_search_goes_on() {
+    // Only one side has witnesses, so the search runs over every state: the first
+    // (shortest) witness, `C . . L`, must be the one kept.
+    let lpe = |s: &str| parse(s).unwrap();
+    let (one, more) = (lpe("C.L"), lpe("C.+L"));
+    let c = analysis::compare(&more, &one).unwrap();
+    let w = c.first_only.expect("first_only");
+    assert_eq!((w.len(), c.second_only), (4, None), "{w}");
+    let c = analysis::compare(&one, &more).unwrap();
+    let w = c.second_only.expect("second_only");
+    assert_eq!((c.first_only, w.len()), (None, 4), "{w}");
+}
+
+#[test]
+fn analyses_get_a_dfa_budget_above_the_renderers() {
+    // `C.*D.{16}[LO]` remembers which of its last 17 bounces were diffuse: a DFA of
+    // 2^17 = 131 072 states and more. Next to a 267-bounce chain the set has 290 NFA
+    // positions (five words), so each state costs at least 16 + 32 + 2 * 5 * 8 + 32 =
+    // 160 bytes: over 20 MiB, past the 16 MiB a renderer's set gets by default, and too
+    // many positions to step the NFA instead; an analysis set still compiles.
+    let (a, b) = (
+        parse("C.*D.{16}[LO]").unwrap(),
+        parse("C<RD'x'>{250}<RS>{17}L").unwrap(),
+    );
+    let renderer = AovSet::compile(&[("a".into(), a.clone()), ("b".into(), b.clone())]);
+    assert!(
+        matches!(renderer, Err(lpe::CompileError::TooManyPositions { .. })),
+        "{renderer:?}"
+    );
+    let c = analysis::compare(&a, &b).unwrap();
+    let first = c.first_only.expect("first_only");
+    let second = c.second_only.expect("second_only");
+    // `C D .{16} L`, and the chain (its 17th bounce from the end is not diffuse).
+    assert_eq!((first.len(), second.len()), (19, 269), "{first} / {second}");
+    assert!(m(&a, &first) && !m(&b, &first), "{first}");
+    assert!(!m(&a, &second) && m(&b, &second), "{second}");
+}
+
+#[test]
+fn analysis_errors_say_what_went_wrong() {
+    // A set over the NFA budget: the compile error, with its message.
+    let big = parse("C(.{256}){200}L").unwrap();
+    let err = analysis::compare(&big, &parse("CL").unwrap()).unwrap_err();
+    let analysis::AnalysisError::Compile(compile) = &err else {
+        panic!("{err:?}")
+    };
+    assert!(matches!(compile, lpe::CompileError::NfaOverBudget { .. }));
+    assert_eq!(err.to_string(), compile.to_string());
+    assert!(err.to_string().contains("NFA budget"), "{err}");
+    // The search limit names its number.
+    let err = analysis::AnalysisError::TooLarge(analysis::MAX_SEARCH_STATES);
+    assert_eq!(
+        err.to_string(),
+        "the search visited more than 2000000 automaton states without finishing"
+    );
 }

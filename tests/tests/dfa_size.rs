@@ -24,16 +24,22 @@ fn default_set(expr: &str) -> AovSet {
     set(expr, Options::default().dfa_budget)
 }
 
-/// `.{n}` written as repetitions the parser's 256 limit accepts.
-fn dots(n: usize) -> String {
+/// `atom{n}` written as repetitions the parser's 256 limit accepts.
+fn repeat(atom: &str, n: usize) -> String {
     let mut s = String::new();
     for _ in 0..n / 100 {
-        s.push_str(".{100}");
+        s.push_str(atom);
+        s.push_str("{100}");
     }
     for _ in 0..n % 100 {
-        s.push('.');
+        s.push_str(atom);
     }
     s
+}
+
+/// `.{n}`.
+fn dots(n: usize) -> String {
+    repeat(".", n)
 }
 
 #[test]
@@ -111,4 +117,31 @@ fn minimization_gives_up_past_its_work_cap() {
     // 1800 dots: 1806 * 6 * 1804 = 19.5 M, under the cap, so it is minimized.
     let s = default_set(&format!("C(D|S){}L", dots(1800)));
     assert_eq!(s.dfa_states(), Some(1805));
+}
+
+#[test]
+fn minimization_runs_when_its_work_lands_exactly_on_the_cap() {
+    // (C a{k} L) | (C b{m} L) | (C c L) | (C d L), with a..d D-scatter vertices told
+    // apart by label: 7 classes (camera, light, the four labels, anything else). The
+    // alternatives start with different letters after C, so the construction builds
+    // dead, start, after C, k a-states, m b-states, after c, after d and four after-L
+    // states: k + m + 9. Moore's algorithm starts from "same AOV mask" and each round
+    // tells apart the states a word one letter longer separates; the state after C a
+    // needs a{k-1}L (k letters) to be told from the dead state, so it takes k rounds
+    // that split and one that splits nothing: k + 1 rounds of (k + m + 9) * (7 + 1)
+    // work. k = 1249, m = 742: 1250 * 2000 * 8 = 20 000 000, exactly the cap, which is
+    // still allowed: minimized, the four after-L states and the four "L next" states
+    // (after a{k}, after b{m}, after c, after d) merge: 2000 - 6 = 1994.
+    let expr = |k: usize, m: usize| {
+        format!(
+            "(C{}L)|(C{}L)|(C<.D'c'>L)|(C<.D'd'>L)",
+            repeat("<.D'a'>", k),
+            repeat("<.D'b'>", m)
+        )
+    };
+    let s = default_set(&expr(1249, 742));
+    assert_eq!(s.class_count(), 7);
+    assert_eq!(s.dfa_states(), Some(1994));
+    // One more b: 1250 * 2001 * 8 = 20 008 000, over the cap: kept unminimized.
+    assert_eq!(default_set(&expr(1249, 743)).dfa_states(), Some(2001));
 }

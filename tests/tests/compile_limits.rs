@@ -1,0 +1,110 @@
+//! The compile limits at their exact boundaries: a set at a limit compiles and answers,
+//! one past it is the documented error with its numbers. Every number is worked out by
+//! hand from the documented limits (`MAX_AOVS` AOVs, `64 * NFA_STATE_WORDS` positions
+//! for a set stepped on its NFA, `positions * words * 8` bytes of follow rows within
+//! `nfa_budget`).
+
+use lpe::{
+    parse, AovSet, CompileError, Event, EventKind, Lpe, Options, Path, Vertex, VertexType, MAX_AOVS,
+};
+
+fn named(srcs: &[String]) -> Vec<(String, Lpe)> {
+    srcs.iter()
+        .enumerate()
+        .map(|(i, s)| (format!("a{i}"), parse(s).unwrap()))
+        .collect()
+}
+
+fn nfa_only() -> Options {
+    Options {
+        dfa_budget: 0,
+        ..Options::default()
+    }
+}
+
+#[test]
+fn max_aovs_compile_and_one_more_does_not() {
+    // AOV i matches a diffuse bounce off label `li`, so the last one is told apart.
+    let srcs: Vec<String> = (0..MAX_AOVS).map(|i| format!("C<RD'l{i}'>L")).collect();
+    let aovs = named(&srcs);
+    let set = AovSet::compile(&aovs).unwrap();
+    // Every AOV kept, in order, with its name and expression.
+    assert_eq!((set.len(), set.is_empty()), (MAX_AOVS, false));
+    assert_eq!(set.names()[MAX_AOVS - 1], format!("a{}", MAX_AOVS - 1));
+    assert_eq!(
+        set.lpes(),
+        aovs.iter().map(|(_, l)| l.clone()).collect::<Vec<_>>()
+    );
+    let bounce = |label: &str| {
+        let d = Event::new(EventKind::D, 1).unwrap();
+        Path::new(vec![
+            Vertex::camera(),
+            Vertex::scatter(VertexType::R, d, Some(label)),
+            Vertex::light(None),
+        ])
+        .unwrap()
+    };
+    let last = format!("l{}", MAX_AOVS - 1);
+    assert_eq!(
+        set.match_path(&bounce(&last)).iter().collect::<Vec<_>>(),
+        [MAX_AOVS - 1]
+    );
+    let mut more = srcs;
+    more.push("CL".to_string());
+    assert_eq!(
+        AovSet::compile(&named(&more)).unwrap_err(),
+        CompileError::TooManyAovs(MAX_AOVS + 1)
+    );
+}
+
+#[test]
+fn a_set_of_no_aovs_compiles_and_matches_nothing() {
+    let set = AovSet::compile(&[]).unwrap();
+    assert_eq!((set.len(), set.is_empty()), (0, true));
+    assert!(set.match_path(&"C RD1 L".parse().unwrap()).is_empty());
+}
+
+#[test]
+fn a_set_of_exactly_the_positions_a_state_holds_steps_its_nfa() {
+    // C.{253}L: the start, C, 253 dots and L = 256 positions, four 64-bit words: what a
+    // stepping state holds, so with no DFA budget the set steps its NFA.
+    let set = AovSet::compile_with(&named(&["C.{253}L".to_string()]), &nfa_only()).unwrap();
+    assert!(!set.uses_dfa());
+    assert_eq!(set.nfa_positions(), 256);
+    for (n, want) in [(253, true), (252, false), (254, false)] {
+        let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
+        assert_eq!(set.match_path(&p).contains(0), want, "{n}");
+    }
+    // One more dot: 257 positions, five words.
+    assert_eq!(
+        AovSet::compile_with(&named(&["C.{254}L".to_string()]), &nfa_only()).unwrap_err(),
+        CompileError::TooManyPositions {
+            positions: 257,
+            max: 256,
+            dfa_budget: 0
+        }
+    );
+}
+
+#[test]
+fn the_nfa_budget_holds_the_follow_rows_to_the_byte() {
+    // CDL: 4 positions (the start included), one word each: 4 * 1 * 8 = 32 bytes of
+    // follow rows. A budget of 32 bytes compiles (too small for step tables, so the NFA
+    // only builds the DFA), 31 does not.
+    let cdl = named(&["CDL".to_string()]);
+    let budget = |nfa_budget| Options {
+        nfa_budget,
+        ..Options::default()
+    };
+    let set = AovSet::compile_with(&cdl, &budget(32)).unwrap();
+    assert!(set.uses_dfa());
+    assert!(set.match_path(&"C RD1 L".parse().unwrap()).contains(0));
+    assert_eq!(
+        AovSet::compile_with(&cdl, &budget(31)).unwrap_err(),
+        CompileError::NfaOverBudget {
+            positions: 4,
+            bytes: Some(32),
+            budget: 31
+        }
+    );
+}
