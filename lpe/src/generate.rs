@@ -104,6 +104,9 @@ pub struct Config {
     pub labels: Vec<String>,
     /// A path label the expressions never mention.
     pub stranger: String,
+    /// Whether [`lpe`] sometimes draws set algebra (`&`, `-`, `^`): this toolkit's
+    /// extension, which other programs' matchers do not speak.
+    pub set_algebra: bool,
 }
 
 impl Default for Config {
@@ -118,11 +121,18 @@ impl Default for Config {
                 .map(str::to_string)
                 .to_vec(),
             stranger: "stranger".into(),
+            set_algebra: true,
         }
     }
 }
 
 impl Config {
+    /// This config without set algebra.
+    pub fn without_set_algebra(mut self) -> Config {
+        self.set_algebra = false;
+        self
+    }
+
     /// This config with at most `max_atoms` atoms per expression.
     pub fn with_max_atoms(mut self, max_atoms: usize) -> Config {
         self.max_atoms = max_atoms.max(1);
@@ -363,10 +373,10 @@ pub fn path_shaped_expr(c: &mut impl Choices, cfg: &Config) -> Expr {
 }
 
 /// Random prefixes plus [`path_shaped_expr`] (or, one time in ten, [`expr`]); one
-/// time in twelve, [`algebra`] instead.
+/// time in twelve, [`algebra`] instead (when [`Config::set_algebra`]).
 pub fn lpe(c: &mut impl Choices, cfg: &Config) -> Lpe {
     let prefixes: Prefixes = (0..c.below(3)).map(|_| *c.pick(&Prefix::ALL)).collect();
-    if c.chance(8) {
+    if c.chance(8) && cfg.set_algebra {
         return Lpe::from_algebra(prefixes, algebra(c, cfg));
     }
     let expr = if c.chance(90) {

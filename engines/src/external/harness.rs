@@ -372,7 +372,10 @@ pub fn run(setup: &Setup, cases: &Cases, engines: &[&dyn Engine]) -> Result<Repo
     let (max_failures, list): (usize, Vec<Item>) = match cases {
         Cases::Given { exprs, paths } => (usize::MAX, vec![(None, exprs.clone(), paths.clone())]),
         Cases::Generated(run) => {
-            let cfg = GenConfig::default().with_max_atoms(run.max_size);
+            // Set algebra is this toolkit's extension: other matchers do not speak it.
+            let cfg = GenConfig::default()
+                .with_max_atoms(run.max_size)
+                .without_set_algebra();
             let list = (run.first..run.first.saturating_add(run.cases))
                 .map(|i| {
                     let c = generate_case(run.seed, i, &cfg, run.paths);

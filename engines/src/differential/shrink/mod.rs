@@ -259,7 +259,10 @@ fn shrink_atom(a: &Atom) -> Vec<Atom> {
     match a {
         Atom::Item(i) => out.extend(shrink_item(i).into_iter().map(Atom::Item)),
         Atom::Class { negated, items } => {
-            if !negated {
+            if *negated {
+                // `[^X]` has no member to keep; the wildcard is the simplest atom.
+                out.push(Atom::Item(Item::Any));
+            } else {
                 out.extend(items.iter().cloned().map(Atom::Item));
             }
             if items.len() > 1 {
