@@ -16,9 +16,8 @@ pub trait Checked: Display {
     type Path: Display;
     /// The reference matcher's answer on `path`.
     fn reference_match(&self, path: &Self::Path) -> bool;
-    /// The expression that closes a partition's gap (the universe minus every AOV), in
-    /// dialects with set algebra.
-    fn remainder(aovs: &[(String, Self)], universe: &Self) -> Option<Self>
+    /// The expression that closes a partition's gap: the universe minus every AOV.
+    fn remainder(aovs: &[(String, Self)], universe: &Self) -> Self
     where
         Self: Sized;
 }
@@ -28,8 +27,8 @@ impl Checked for Lpe {
     fn reference_match(&self, path: &Path) -> bool {
         reference::is_match(self, path)
     }
-    fn remainder(aovs: &[(String, Lpe)], universe: &Lpe) -> Option<Lpe> {
-        Some(lpe::analysis::remainder(aovs, universe))
+    fn remainder(aovs: &[(String, Lpe)], universe: &Lpe) -> Lpe {
+        lpe::analysis::remainder(aovs, universe)
     }
 }
 
@@ -38,8 +37,8 @@ impl Checked for osl::Lpe {
     fn reference_match(&self, path: &osl::Path) -> bool {
         reference::osl::is_match(self, path)
     }
-    fn remainder(_: &[(String, osl::Lpe)], _: &osl::Lpe) -> Option<osl::Lpe> {
-        None
+    fn remainder(aovs: &[(String, osl::Lpe)], universe: &osl::Lpe) -> osl::Lpe {
+        lpe::analysis::remainder_osl(aovs, universe)
     }
 }
 

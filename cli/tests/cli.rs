@@ -308,7 +308,33 @@ fn osl_match_parse_equiv_and_partition_with_arguments() {
     args.retain(|a| *a != "C<R[GS]>[LO]");
     let (code, out, _) = osl(&args);
     assert_eq!(code, 1);
-    assert!(out.ends_with("gap: C,~ R,G L,~\n"), "{out}");
+    assert!(out.contains("gap: C,~ R,G L,~\n"), "{out}");
+    // With the remainder that closes it: the OSL universe minus every AOV, which parses
+    // back, is exactly the AOV left out (within the universe), and closes the gap.
+    let rest = out
+        .lines()
+        .find_map(|l| l.strip_prefix("remainder: "))
+        .unwrap_or_else(|| panic!("{out}"));
+    assert!(rest.starts_with("<C.><[RT][DGS]>*<L.>|<O.> - (("), "{rest}");
+    let within = "C<R[GS]>[LO] & C<[RT][DGS]>*[LO]";
+    let (code, out, _) = osl(&["equiv", "--dialect", "osl", rest, within]);
+    assert_eq!((code, out.as_str()), (0, "equivalent\n"), "{rest}");
+    args.push(rest);
+    let (code, out, _) = osl(&args);
+    assert_eq!(code, 0, "{out}");
+    assert!(out.ends_with("clean partition\n"), "{out}");
+    // Set algebra in the OSL dialect: the AOVs may use it too.
+    let (code, out, _) = osl(&[
+        "match",
+        "--dialect",
+        "osl",
+        "C.*L - C.*DL",
+        "C,_ R,G L,_",
+        "C,_ R,D L,_",
+    ]);
+    assert_eq!((code, out.as_str()), (0, "match\nno-match\n"));
+    let (code, out, _) = osl(&["equiv", "--dialect", "osl", "C.*L - C.*DL", "C.*L & ^C.*DL"]);
+    assert_eq!((code, out.as_str()), (0, "equivalent\n"));
 }
 
 #[test]

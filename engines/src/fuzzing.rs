@@ -169,7 +169,8 @@ pub fn osl_differential_compared(data: &[u8]) -> bool {
         .collect();
     let paths: Vec<osl::Path> = (0..1 + u.below(8))
         .map(|_| {
-            let target = &exprs[u.below(exprs.len())].expr;
+            let operands = exprs[u.below(exprs.len())].operands();
+            let target = operands[u.below(operands.len())];
             generate::osl::biased_path(target, &mut u, &registered, &cfg)
         })
         .collect();

@@ -48,6 +48,7 @@
 
 use std::fmt;
 
+use crate::algebra::SetExpr;
 use crate::ast::{Atom, Expr};
 use crate::automata::alphabet::Alphabet;
 use crate::automata::dfa::{Dfa, MAX_EAGER_STATES};
@@ -190,6 +191,67 @@ impl fmt::Display for CompileError {
 
 impl std::error::Error for CompileError {}
 
+/// The hidden AOVs of a set, in either dialect: every operand of set algebra is one, a
+/// plain AOV is one operand.
+struct Hidden<'a, E> {
+    operands: Vec<&'a E>,
+    /// Per hidden AOV, the name of the AOV it belongs to.
+    names: Vec<String>,
+    /// With set algebra: the visible masks as formulas over the hidden ones.
+    visible: Option<Visible>,
+}
+
+impl<'a, E> Hidden<'a, E> {
+    fn of<L: SetExpr<Operand = E>>(aovs: &'a [(String, L)]) -> Result<Self, CompileError> {
+        if aovs.len() > MAX_AOVS {
+            return Err(CompileError::TooManyAovs(aovs.len()));
+        }
+        let operands: Vec<&E> = aovs.iter().flat_map(|(_, l)| l.operands()).collect();
+        if operands.len() > MAX_AOVS {
+            return Err(CompileError::TooManyOperands {
+                aovs: aovs.len(),
+                hidden: operands.len(),
+            });
+        }
+        let visible = aovs
+            .iter()
+            .any(|(_, l)| l.algebra().is_some())
+            .then(|| Visible::new(crate::algebra::formulas(aovs.iter().map(|(_, l)| l))));
+        let names = aovs
+            .iter()
+            .flat_map(|(n, l)| std::iter::repeat_n(n.clone(), l.operands().len()))
+            .collect();
+        Ok(Hidden {
+            operands,
+            names,
+            visible,
+        })
+    }
+
+    /// The emptiness warnings of the plain AOVs, renumbered from hidden AOVs: the NFA
+    /// alone answers for them, while an AOV with set algebra needs a search of the set's
+    /// states (`analysis::warnings`).
+    fn plain_warnings<L: SetExpr<Operand = E>>(
+        aovs: &[(String, L)],
+        hidden: &[Warning],
+    ) -> Vec<Warning> {
+        let mut out = Vec::new();
+        let mut first = 0;
+        for (i, (_, l)) in aovs.iter().enumerate() {
+            if l.algebra().is_none() {
+                if let Some(w) = hidden.iter().find(|w| w.aov == first) {
+                    out.push(Warning {
+                        aov: i,
+                        ..w.clone()
+                    });
+                }
+            }
+            first += l.operands().len();
+        }
+        out
+    }
+}
+
 /// A compiled AOV set. See the [module docs](self).
 #[derive(Clone, Debug)]
 pub struct AovSet {
@@ -225,52 +287,21 @@ impl AovSet {
 
     /// Compiles with explicit options.
     pub fn compile_with(aovs: &[(String, Lpe)], opts: &Options) -> Result<AovSet, CompileError> {
-        if aovs.len() > MAX_AOVS {
-            return Err(CompileError::TooManyAovs(aovs.len()));
-        }
-        // Every operand is a hidden AOV; a plain AOV is one operand.
-        let operands: Vec<&Expr> = aovs.iter().flat_map(|(_, l)| l.operands()).collect();
-        if operands.len() > MAX_AOVS {
-            return Err(CompileError::TooManyOperands {
-                aovs: aovs.len(),
-                hidden: operands.len(),
-            });
-        }
-        let visible = aovs
-            .iter()
-            .any(|(_, l)| l.algebra.is_some())
-            .then(|| Visible::new(Lpe::formulas(aovs.iter().map(|(_, l)| l))));
+        let Hidden {
+            operands,
+            names: hidden_names,
+            visible,
+        } = Hidden::of(aovs)?;
         let (alphabet, nfa, atoms) = Self::build_nfa(&operands, opts)?;
         let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
         let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
-        // Emptiness on the NFA alone covers the plain AOVs; an AOV with set algebra needs
-        // a search of the set's states (`analysis::warnings`).
-        let mut warnings = Vec::new();
-        let mut first = 0;
-        let hidden_names: Vec<String> = aovs
-            .iter()
-            .flat_map(|(n, l)| std::iter::repeat_n(n.clone(), l.operands().len()))
-            .collect();
-        let slot_warnings =
-            emptiness::empty_aovs(&nfa, &alphabet, &atoms, &hidden_names, &operands);
-        for (i, (_, l)) in aovs.iter().enumerate() {
-            if l.algebra.is_none() {
-                if let Some(w) = slot_warnings.iter().find(|w| w.aov == first) {
-                    warnings.push(Warning {
-                        aov: i,
-                        ..w.clone()
-                    });
-                }
-            }
-            first += l.operands().len();
-        }
+        let warnings = Hidden::plain_warnings(
+            aovs,
+            &emptiness::empty_aovs(&nfa, &alphabet, &atoms, &hidden_names, &operands),
+        );
         let nfa_positions = nfa.positions;
-        // A DFA's state 0 is always dead (`Dfa::build`); a lazy set's only without a
-        // complement.
         let (dfa, lazy, start) = Self::engine(nfa, alphabet.class_count(), opts, visible.as_ref())?;
-        // A DFA's state 0 is always dead (`Dfa::build`); a lazy set's state 0 is the NFA
-        // state with no active position, where a complement `^A` still matches.
-        let empty_is_dead = lazy.is_none() || visible.as_ref().is_none_or(|v| v.none().is_empty());
+        let empty_is_dead = Self::empty_is_dead(lazy.as_ref(), visible.as_ref());
         Ok(AovSet {
             names,
             lpes,
@@ -307,21 +338,30 @@ impl AovSet {
         registered: &osl::Registered,
         opts: &Options,
     ) -> Result<AovSet, CompileError> {
-        if aovs.len() > MAX_AOVS {
-            return Err(CompileError::TooManyAovs(aovs.len()));
-        }
+        let Hidden {
+            operands,
+            names: hidden_names,
+            visible,
+        } = Hidden::of(aovs)?;
         let positions = aovs
             .iter()
-            .fold(1u64, |n, (_, l)| n.saturating_add(l.expr.positions()));
+            .fold(1u64, |n, (_, l)| n.saturating_add(l.positions()));
         Self::check_nfa_budget(positions, opts)?;
         let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
-        let (compiled, nfa, warnings) =
-            osl::Compiled::build(aovs, &names, registered, opts.max_path_len, opts.nfa_budget)
-                .map_err(
-                    |osl::TooManyVertexStates| CompileError::TooManyVertexStates {
-                        max: osl::MAX_VERTEX_STATES,
-                    },
-                )?;
+        let (compiled, nfa, hidden_warnings) = osl::Compiled::build(
+            aovs,
+            &operands,
+            &hidden_names,
+            registered,
+            opts.max_path_len,
+            opts.nfa_budget,
+        )
+        .map_err(
+            |osl::TooManyVertexStates| CompileError::TooManyVertexStates {
+                max: osl::MAX_VERTEX_STATES,
+            },
+        )?;
+        let warnings = Hidden::plain_warnings(aovs, &hidden_warnings);
         let nfa_positions = nfa.positions;
         // OSL sets have several times RenderMan's classes, so a blow-up reaches a large
         // budget slowly (OSL's own ReDoS expression: a second for 16 MiB): attempt the
@@ -330,7 +370,9 @@ impl AovSet {
             dfa_budget: opts.dfa_budget.min(osl::DFA_ATTEMPT_BUDGET),
             ..opts.clone()
         };
-        let (dfa, lazy, start) = Self::engine(nfa, compiled.class_count(), &attempt, None)?;
+        let (dfa, lazy, start) =
+            Self::engine(nfa, compiled.class_count(), &attempt, visible.as_ref())?;
+        let empty_is_dead = Self::empty_is_dead(lazy.as_ref(), visible.as_ref());
         Ok(AovSet {
             names,
             lpes: Vec::new(),
@@ -339,8 +381,8 @@ impl AovSet {
             lazy,
             start,
             nfa_positions,
-            visible: None,
-            empty_is_dead: true,
+            visible,
+            empty_is_dead,
             warnings,
             osl: Some(Box::new(compiled)),
         })
@@ -383,6 +425,12 @@ impl AovSet {
             .is_none()
             .then(|| Lazy::new(nfa, classes, opts.lazy_cache, visible.cloned()));
         Ok((dfa.unwrap_or_else(Dfa::empty), lazy, start))
+    }
+
+    /// A DFA's state 0 is always dead (`Dfa::build`); a lazy set's state 0 is the NFA
+    /// state with no active position, where a complement `^A` still matches.
+    fn empty_is_dead(lazy: Option<&Lazy>, visible: Option<&Visible>) -> bool {
+        lazy.is_none() || visible.is_none_or(|v| v.none().is_empty())
     }
 
     /// One follow row per position is the least an NFA needs: `positions^2 / 8` bytes.
@@ -633,6 +681,14 @@ impl AovSet {
     /// [`crate::analysis::warnings`] covers every AOV.
     pub fn warnings(&self) -> &[Warning] {
         &self.warnings
+    }
+
+    /// A shortest vertex of OSL class `c` (`0..class_count()`), NONE first and then
+    /// labels in byte order; `None` for a RenderMan set or a class out of range. Every
+    /// class has one, so stepping over these visits every state of the set.
+    pub fn osl_class_vertex(&self, c: usize) -> Option<&osl::Vertex> {
+        let o = self.osl.as_ref()?;
+        (c < o.class_count()).then(|| o.representative(c))
     }
 
     /// Number of vertex classes.

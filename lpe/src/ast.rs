@@ -32,7 +32,7 @@
 
 use std::fmt;
 
-use crate::algebra::Algebra;
+use crate::algebra::{write_operands, Algebra, SetExpr};
 use crate::path::{EventKind, VertexType};
 use crate::prefix::Prefixes;
 use crate::print::write_parts;
@@ -75,18 +75,13 @@ impl Lpe {
 
     /// The whole expression as a tree (a plain expression is one leaf).
     pub fn tree(&self) -> Algebra<Expr> {
-        self.algebra
-            .clone()
-            .unwrap_or_else(|| Algebra::Leaf(self.expr.clone()))
+        SetExpr::tree(self)
     }
 
     /// The expressions a matcher must match, left to right: `expr` alone, or every
     /// operand of the set algebra.
     pub fn operands(&self) -> Vec<&Expr> {
-        match &self.algebra {
-            Some(t) => t.leaves(),
-            None => vec![&self.expr],
-        }
+        SetExpr::operands(self)
     }
 
     /// Rewrites every operand (and `expr` with it).
@@ -98,27 +93,27 @@ impl Lpe {
         }
     }
 
-    /// Per expression, its set algebra over operand numbers, the operands of all of
-    /// them numbered in one sequence in [`Lpe::operands`] order (a plain expression is
-    /// one operand): how a set of expressions maps onto per-operand answers.
+    /// Per expression, its set algebra over operand numbers ([`crate::algebra::formulas`]).
     pub fn formulas<'a>(lpes: impl IntoIterator<Item = &'a Lpe>) -> Vec<Algebra<usize>> {
-        let mut next = 0;
-        lpes.into_iter()
-            .map(|l| {
-                let f = l.tree().numbered(next);
-                next += l.operands().len();
-                f
-            })
-            .collect()
+        crate::algebra::formulas(lpes)
     }
 
     /// Whether a path is matched, given whether it matches each operand (asked once
     /// each, in [`Lpe::operands`] order).
     pub fn eval(&self, operand: &mut impl FnMut(&Expr) -> bool) -> bool {
-        match &self.algebra {
-            Some(t) => t.eval(operand),
-            None => operand(&self.expr),
-        }
+        SetExpr::eval(self, operand)
+    }
+}
+
+impl SetExpr for Lpe {
+    type Operand = Expr;
+
+    fn first(&self) -> &Expr {
+        &self.expr
+    }
+
+    fn algebra(&self) -> Option<&Algebra<Expr>> {
+        self.algebra.as_ref()
     }
 }
 
@@ -389,22 +384,8 @@ impl fmt::Display for Lpe {
             write!(f, "{p};")?;
         }
         match &self.algebra {
-            // An alternation operand in parentheses: `A - (b|c)` reads as it parses,
-            // where `A - b|c` would suggest `(A - b)|c`.
-            Some(t) => write!(f, "{}", t.map(&mut |e| Operand(e))),
+            Some(t) => write_operands(f, t, |e| matches!(e, Expr::Alt(_))),
             None => write!(f, "{}", self.expr),
-        }
-    }
-}
-
-/// A set-algebra operand as printed inside [`Lpe`]'s text.
-struct Operand<'a>(&'a Expr);
-
-impl fmt::Display for Operand<'_> {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self.0 {
-            Expr::Alt(_) => write!(f, "({})", self.0),
-            e => write!(f, "{e}"),
         }
     }
 }

@@ -390,26 +390,35 @@ pub fn lpe(c: &mut impl Choices, cfg: &Config) -> Lpe {
 /// Set algebra over two to four [`path_shaped_expr`] operands: `A - B`, `A & B - C`,
 /// `A - (B & C)`, `^A & B`, `^(A - B)`.
 pub fn algebra(c: &mut impl Choices, cfg: &Config) -> Algebra<Expr> {
-    fn leaf(c: &mut impl Choices, cfg: &Config) -> Algebra<Expr> {
-        let e = Algebra::Leaf(path_shaped_expr(c, cfg));
-        if c.chance(20) {
-            Algebra::complement(e)
-        } else {
-            e
-        }
-    }
-    fn binary(c: &mut impl Choices, a: Algebra<Expr>, b: Algebra<Expr>) -> Algebra<Expr> {
+    algebra_over(c, &mut |c| path_shaped_expr(c, cfg))
+}
+
+/// The shapes of [`algebra`] over operands drawn by `operand`: every dialect's
+/// generator draws its set algebra here.
+pub(crate) fn algebra_over<C: Choices, E>(
+    c: &mut C,
+    operand: &mut impl FnMut(&mut C) -> E,
+) -> Algebra<E> {
+    fn binary<E>(c: &mut impl Choices, a: Algebra<E>, b: Algebra<E>) -> Algebra<E> {
         if c.chance(50) {
             Algebra::and(a, b)
         } else {
             Algebra::minus(a, b)
         }
     }
-    let mut t = leaf(c, cfg);
+    let mut leaf = |c: &mut C| {
+        let e = Algebra::Leaf(operand(c));
+        if c.chance(20) {
+            Algebra::complement(e)
+        } else {
+            e
+        }
+    };
+    let mut t = leaf(c);
     for _ in 0..1 + c.below(2) {
-        let mut rhs = leaf(c, cfg);
+        let mut rhs = leaf(c);
         if c.chance(15) {
-            let more = leaf(c, cfg);
+            let more = leaf(c);
             rhs = binary(c, rhs, more);
         }
         t = binary(c, t, rhs);

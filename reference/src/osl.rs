@@ -199,7 +199,8 @@ impl<'a> Matcher<'a> {
 
 /// Whether `lpe` matches the whole of `path`.
 pub fn is_match(lpe: &Lpe, path: &Path) -> bool {
-    is_expr_match(&lpe.expr, path)
+    // Set algebra by its definition: each operand matched, the answers combined.
+    lpe.eval(&mut |e| is_expr_match(e, path))
 }
 
 /// Whether `expr` matches the whole of `path`'s symbol stream.

@@ -63,6 +63,13 @@ fn extra_rows_in_both_modes() {
 }
 
 #[test]
+fn algebra_rows_in_both_modes() {
+    let rows = load_osl_rows("algebra.tsv").unwrap();
+    let fails = failures("algebra.tsv", &rows);
+    assert!(fails.is_empty(), "{}", fails.join("\n"));
+}
+
+#[test]
 fn one_set_of_all_accum_rules_answers_each_rule() {
     // All rules in one set (as OSL compiles them, sharing one automaton): each AOV's bit
     // still gives that rule's verdict.

@@ -177,15 +177,16 @@ proptest! {
     #[test]
     fn parsing_never_panics_and_printing_parses_back(
         src in item(),
-        noise in "[CRDLGx.'<>()\\[\\]^|*+{},0-9 ]{0,12}",
+        noise in "[CRDLGx.'<>()\\[\\]^&|*+{},0-9 -]{0,12}",
         reg in registered(),
     ) {
         for text in [src.clone(), format!("{src}{noise}"), noise.clone()] {
             if let Ok(l) = osl::parse(&text, &reg) {
-                let printed = l.expr.to_string();
+                let printed = l.to_string();
                 let again = osl::parse(&printed, &reg)
                     .map_err(|e| TestCaseError::fail(format!("`{text}` -> `{printed}`: {e}")))?;
                 prop_assert_eq!(&again.expr, &l.expr, "`{}` -> `{}`", text, printed);
+                prop_assert_eq!(&again.algebra, &l.algebra, "`{}` -> `{}`", text, printed);
             }
         }
     }

@@ -98,3 +98,137 @@ fn renderman_sets_say_their_dialect_and_give_osl_vertices_no_class() {
     assert_eq!(c.index(), s.class_count());
     assert!(s.is_dead(s.step_class(s.start(), c)));
 }
+
+/// Dead states of OSL sets with set algebra, on every stepping mode: a complement `^A`
+/// matches after every operand died, so "no active position" is not dead there. Exact
+/// soundness of `is_dead` over every reachable state (one vertex per class), and
+/// completeness on the DFA; and against the reference: once a path prefix is dead, no
+/// AOV matches that prefix spliced with the tail of any path.
+#[test]
+fn dead_states_of_osl_set_algebra_are_sound_and_dfa_dead_states_complete() {
+    use lpe::generate::osl as gen;
+    use lpe::rng::SplitMix64;
+    use std::collections::{HashMap, VecDeque};
+
+    let cfg = gen::Config::default().with_max_vertices(5);
+    let modes = [
+        ("dfa", Options::default()),
+        (
+            "nfa",
+            Options {
+                dfa_budget: 0,
+                lazy_cache: 0,
+                ..Options::default()
+            },
+        ),
+        (
+            "lazy",
+            Options {
+                dfa_budget: 0,
+                lazy_cache: 1,
+                ..Options::default()
+            },
+        ),
+    ];
+    let (mut complements, mut dead_seen, mut complete_checked) = (0, 0, 0);
+    for seed in 0..60u64 {
+        let mut rng = SplitMix64::new(seed);
+        let reg = gen::registered(&mut rng);
+        let mut aovs: Vec<(String, osl::Lpe)> = Vec::new();
+        while aovs.len() < 1 + (seed % 3) as usize {
+            let l = gen::lpe(&mut rng, &reg, &cfg);
+            if l.algebra.is_some() {
+                aovs.push((format!("a{}", aovs.len()), l));
+            }
+        }
+        if aovs.iter().any(|(_, l)| l.to_string().contains('^')) {
+            complements += 1;
+        }
+        let mut paths: Vec<osl::Path> = Vec::new();
+        for (_, l) in &aovs {
+            for e in l.operands() {
+                paths.extend((0..3).map(|_| gen::biased_path(e, &mut rng, &reg, &cfg)));
+            }
+        }
+        paths.extend((0..6).map(|_| gen::uniform_path(&mut rng, &reg, &cfg)));
+        for (mode, opts) in &modes {
+            let set = AovSet::compile_osl(&aovs, &reg, opts).unwrap();
+            let letters: Vec<lpe::Class> = (0..set.class_count())
+                .map(|c| set.classify_osl(set.osl_class_vertex(c).unwrap()))
+                .collect();
+            // Every state reachable over the letters, and which can reach a match.
+            let mut index = HashMap::from([(set.start(), 0usize)]);
+            let mut states = vec![set.start()];
+            let mut preds: Vec<Vec<usize>> = vec![Vec::new()];
+            let mut head = 0;
+            while head < states.len() && states.len() < 20_000 {
+                for &c in &letters {
+                    let t = set.step_class(states[head], c);
+                    let j = *index.entry(t).or_insert_with(|| {
+                        states.push(t);
+                        preds.push(Vec::new());
+                        states.len() - 1
+                    });
+                    preds[j].push(head);
+                }
+                head += 1;
+            }
+            let explored = head == states.len();
+            let mut live: Vec<bool> = states.iter().map(|&s| !set.matches(s).is_empty()).collect();
+            let mut queue: VecDeque<usize> = (0..states.len()).filter(|&i| live[i]).collect();
+            while let Some(j) = queue.pop_front() {
+                for &i in &preds[j] {
+                    if !live[i] {
+                        live[i] = true;
+                        queue.push_back(i);
+                    }
+                }
+            }
+            let complete = *mode == "dfa" && explored;
+            complete_checked += usize::from(complete);
+            for (s, &l) in states.iter().zip(&live) {
+                if set.is_dead(*s) {
+                    dead_seen += 1;
+                    assert!(
+                        !explored || !l,
+                        "seed {seed} {mode}: a dead state reaches a match"
+                    );
+                    assert!(
+                        set.matches(*s).is_empty(),
+                        "seed {seed} {mode}: a dead state matches"
+                    );
+                } else if complete {
+                    assert!(l, "seed {seed} {mode}: a live DFA state reaches no match");
+                }
+            }
+            for p in &paths {
+                let mut s = set.start();
+                for k in 0..p.vertices.len() {
+                    s = set.step_class(s, set.classify_osl(&p.vertices[k]));
+                    if !set.is_dead(s) {
+                        continue;
+                    }
+                    for q in &paths {
+                        for cut in 0..=q.vertices.len() {
+                            let v = p.vertices[..=k].iter().chain(&q.vertices[cut..]);
+                            let e = osl::Path::new(v.cloned().collect());
+                            for (n, l) in &aovs {
+                                assert!(
+                                    !reference::osl::is_match(l, &e),
+                                    "seed {seed} {mode}: dead after {k} vertices of `{p}` but \
+                                     {n} `{l}` matches `{e}`"
+                                );
+                            }
+                        }
+                    }
+                    break;
+                }
+            }
+        }
+    }
+    // The run saw complements, dead states and complete DFA checks: none of the checks
+    // above was vacuous.
+    assert!(complements >= 10, "{complements}");
+    assert!(dead_seen >= 20, "{dead_seen}");
+    assert!(complete_checked >= 50, "{complete_checked}");
+}

@@ -170,17 +170,16 @@ pub fn report<E: Checked>(
         }));
         witness::recheck(path, &expects)?;
         out.push_str(&format!("gap: {path}\n"));
-        if let Some(rest) = E::remainder(aovs, universe) {
-            witness::recheck(
-                path,
-                &[Expect {
-                    name: "remainder",
-                    lpe: &rest,
-                    matches: true,
-                }],
-            )?;
-            out.push_str(&format!("remainder: {rest}\n"));
-        }
+        let rest = E::remainder(aovs, universe);
+        witness::recheck(
+            path,
+            &[Expect {
+                name: "remainder",
+                lpe: &rest,
+                matches: true,
+            }],
+        )?;
+        out.push_str(&format!("remainder: {rest}\n"));
     }
     for (i, path) in &p.outside {
         let a = &aovs[*i];

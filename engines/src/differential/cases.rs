@@ -78,7 +78,8 @@ pub fn generate_osl_case(
         .collect();
     let paths = (0..paths)
         .map(|_| {
-            let target = &rng.pick(&exprs).expr;
+            let operands = rng.pick(&exprs).operands();
+            let target = *rng.pick(&operands);
             generate::osl::biased_path(target, &mut rng, &registered, cfg)
         })
         .collect();
@@ -271,6 +272,35 @@ mod tests {
             .map(|i| generate_osl_case(5, i, &cfg, 1).lang.registered.to_string())
             .collect();
         assert!(regs.contains("-") && regs.len() > 3, "{regs:?}");
+    }
+
+    #[test]
+    fn some_osl_cases_hold_set_algebra_that_matches_some_of_their_paths() {
+        let cfg = generate::osl::Config::default();
+        let cases: Vec<Case<Osl>> = (0..400).map(|i| generate_osl_case(3, i, &cfg, 4)).collect();
+        let algebra = |c: &&Case<Osl>| c.exprs.iter().any(|e| e.algebra.is_some());
+        let with_algebra: Vec<&Case<Osl>> = cases.iter().filter(algebra).collect();
+        assert!(
+            (16..=80).contains(&with_algebra.len()),
+            "{}",
+            with_algebra.len()
+        );
+        let hits = with_algebra
+            .iter()
+            .flat_map(|c| {
+                c.exprs
+                    .iter()
+                    .flat_map(|e| c.paths.iter().map(move |p| (e, p)))
+            })
+            .filter(|(e, p)| e.algebra.is_some() && reference::osl::is_match(e, p))
+            .count();
+        assert!(hits >= 10, "{hits}");
+        // Without set algebra when asked (for matchers that do not speak it).
+        let plain = generate::osl::Config::default().without_set_algebra();
+        assert!((0..400).all(|i| generate_osl_case(3, i, &plain, 1)
+            .exprs
+            .iter()
+            .all(|e| e.algebra.is_none())));
     }
 
     #[test]

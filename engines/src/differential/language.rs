@@ -94,13 +94,12 @@ impl Language for Osl {
     }
 
     fn shrink_expr(&self, e: &osl::Lpe) -> Vec<osl::Lpe> {
-        shrink::osl::shrink_expr(&e.expr, &self.registered.basic_labels())
-            .into_iter()
-            .map(|expr| osl::Lpe {
-                expr,
-                warnings: Vec::new(),
-            })
-            .collect()
+        let basic = self.registered.basic_labels();
+        shrink::shrink_set_expr(
+            e,
+            |x| shrink::osl::shrink_expr(x, &basic),
+            osl::Lpe::from_algebra,
+        )
     }
 
     fn shrink_path(&self, p: &osl::Path) -> Vec<osl::Path> {

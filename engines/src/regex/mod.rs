@@ -251,24 +251,32 @@ impl Matcher for RegexMatcher {
         for v in path.vertices() {
             encode::encode_vertex(&self.labels, v, &mut bytes);
         }
-        // Set algebra combines the per-operand answers.
-        let operands = self.program.which(&bytes, path);
-        self.formulas
-            .iter()
-            .map(|f| f.eval(&mut |&i| operands[i]))
-            .collect()
+        combine(&self.formulas, &self.program.which(&bytes, path))
     }
 }
 
-/// An OSL set: the symbol interning and the automaton over symbol streams.
+/// Set algebra combines the per-operand answers: per expression, its formula over
+/// pattern ids.
+fn combine(formulas: &[Algebra<usize>], operands: &[bool]) -> Vec<bool> {
+    formulas
+        .iter()
+        .map(|f| f.eval(&mut |&i| operands[i]))
+        .collect()
+}
+
+/// An OSL set: the symbol interning and the automaton over symbol streams, one pattern
+/// per operand.
 struct OslRegexMatcher {
     symbols: osl::Symbols,
     program: Program,
+    /// Per expression, its set algebra over pattern ids (a plain expression is one).
+    formulas: Vec<Algebra<usize>>,
 }
 
 impl Matcher<lpe::osl::Path> for OslRegexMatcher {
     fn which(&self, path: &lpe::osl::Path) -> Vec<bool> {
-        self.program.which(&self.symbols.encode_path(path), path)
+        let operands = self.program.which(&self.symbols.encode_path(path), path);
+        combine(&self.formulas, &operands)
     }
 }
 
@@ -278,6 +286,7 @@ impl RegexEngine {
         Ok(OslRegexMatcher {
             symbols,
             program: self.program(&hirs)?,
+            formulas: lpe::osl::Lpe::formulas(exprs),
         })
     }
 }

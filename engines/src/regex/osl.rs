@@ -164,16 +164,19 @@ fn mentioned<'a>(e: &'a Expr, out: &mut Vec<&'a str>) {
     }
 }
 
-/// The anchored regex of each expression, plus the symbol interning they share.
+/// The anchored regex of each operand of each expression (one for a plain expression,
+/// one per operand of set algebra, in [`Lpe::operands`] order), plus the symbol
+/// interning they share.
 pub fn translate(exprs: &[Lpe]) -> Result<(Symbols, Vec<Hir>), BuildError> {
+    let operands: Vec<&Expr> = exprs.iter().flat_map(|e| e.operands()).collect();
     let mut names = Vec::new();
-    for e in exprs {
-        mentioned(&e.expr, &mut names);
+    for e in &operands {
+        mentioned(e, &mut names);
     }
     let symbols = Symbols::new(names)?;
-    let hirs = exprs
+    let hirs = operands
         .iter()
-        .map(|e| Hir::concat(vec![symbols.expr(&e.expr), Hir::look(Look::End)]))
+        .map(|e| Hir::concat(vec![symbols.expr(e), Hir::look(Look::End)]))
         .collect();
     Ok((symbols, hirs))
 }

@@ -13,4 +13,5 @@ mod parse;
 mod tree;
 
 pub use parse::{has_algebra, parse, AlgebraError, ParseError, MAX_OPERANDS};
-pub use tree::Algebra;
+pub(crate) use tree::write_operands;
+pub use tree::{formulas, Algebra, SetExpr};

@@ -21,7 +21,7 @@ use std::ops::Range;
 use super::tree::Algebra;
 
 /// What is wrong with the set algebra itself (not with an operand).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum AlgebraError {
     /// An operator with no operand on one side: `A -`, `& B`, `^`, `A & & B`, `()`.
     MissingOperand {
@@ -135,22 +135,24 @@ fn scan(src: &str, range: Range<usize>) -> Vec<(Tok, Range<usize>)> {
     let mut out: Vec<(Tok, Range<usize>)> = Vec::new();
     let mut i = range.start;
     let end = range.end;
-    // From an `open` byte at `i`: past its `close` (nested pairs counted, quotes
-    // skipped whole), or to `end`.
-    let skip = |mut i: usize, open: u8, close: u8| -> usize {
-        let mut depth = 0usize;
+    // From a `<` or `[` at `i`: past the closer matching it, or to `end`. Quotes are
+    // skipped whole, `<...>` and `[...]` nest in each other (`[<L.>O]`, OSL's
+    // `<R[DG]>`), and a closer of the other kind is a plain character there (OSL's
+    // `<R]>` has the label `]`).
+    let skip = |mut i: usize| -> usize {
+        let mut open: Vec<u8> = Vec::new();
         while i < end {
             match b[i] {
                 b'\'' => {
                     i = src[i + 1..end].find('\'').map_or(end, |k| i + 1 + k + 1);
                     continue;
                 }
-                c if c == open => depth += 1,
-                c if c == close => {
-                    if depth <= 1 {
+                c @ (b'<' | b'[') => open.push(c),
+                c @ (b'>' | b']') if open.last() == Some(&if c == b'>' { b'<' } else { b'[' }) => {
+                    open.pop();
+                    if open.is_empty() {
                         return i + 1;
                     }
-                    depth -= 1;
                 }
                 _ => {}
             }
@@ -182,12 +184,8 @@ fn scan(src: &str, range: Range<usize>) -> Vec<(Tok, Range<usize>)> {
                     .map_or(end, |k| start + 1 + k + 1);
                 Tok::Text
             }
-            b'<' => {
-                i = skip(i, b'<', b'>');
-                Tok::Text
-            }
-            b'[' => {
-                i = skip(i, b'[', b']');
+            b'<' | b'[' => {
+                i = skip(i);
                 Tok::Text
             }
             _ => {
@@ -454,6 +452,9 @@ mod tests {
             tree("C[<L.[^'a']>O] - C.*L").unwrap(),
             "[C[<L.[^'a']>O]] - [C.*L]"
         );
+        // OSL's `<R]>` has the label `]`: the unit ends at the `>` matching its `<`.
+        assert!(!has_algebra("C[<R]-D>]L", 0..10));
+        assert_eq!(tree("C<R]>L-C[<]>]L").unwrap(), "[C<R]>L] - [C[<]>]L]");
         // `^` where no operand can start is operand text for the dialect.
         assert!(!has_algebra("C^L", 0..3));
         assert!(has_algebra("^CL", 0..3));

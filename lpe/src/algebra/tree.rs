@@ -120,6 +120,82 @@ impl<E> Algebra<E> {
     }
 }
 
+/// A dialect's parsed expression: one expression, or set algebra over several that keeps
+/// its first operand as the plain expression (so code that ignores algebra still sees a
+/// real expression). Both dialects' `Lpe` implement it; everything below is shared.
+pub trait SetExpr {
+    /// The dialect's expression: an operand.
+    type Operand: Clone;
+
+    /// The plain expression, or the first operand of the set algebra.
+    fn first(&self) -> &Self::Operand;
+
+    /// The set algebra, `None` for a plain expression.
+    fn algebra(&self) -> Option<&Algebra<Self::Operand>>;
+
+    /// The expressions a matcher must match, left to right: the plain expression alone,
+    /// or every operand of the set algebra.
+    fn operands(&self) -> Vec<&Self::Operand> {
+        match self.algebra() {
+            Some(t) => t.leaves(),
+            None => vec![self.first()],
+        }
+    }
+
+    /// The whole expression as a tree (a plain expression is one leaf).
+    fn tree(&self) -> Algebra<Self::Operand> {
+        self.algebra()
+            .cloned()
+            .unwrap_or_else(|| Algebra::Leaf(self.first().clone()))
+    }
+
+    /// Whether a path is matched, given whether it matches each operand (asked once
+    /// each, in [`SetExpr::operands`] order).
+    fn eval(&self, operand: &mut impl FnMut(&Self::Operand) -> bool) -> bool {
+        match self.algebra() {
+            Some(t) => t.eval(operand),
+            None => operand(self.first()),
+        }
+    }
+}
+
+/// Per expression, its set algebra over operand numbers, the operands of all of them
+/// numbered in one sequence in [`SetExpr::operands`] order (a plain expression is one
+/// operand): how a set of expressions maps onto per-operand answers.
+pub fn formulas<'a, L: SetExpr + 'a>(lpes: impl IntoIterator<Item = &'a L>) -> Vec<Algebra<usize>> {
+    let mut next = 0;
+    lpes.into_iter()
+        .map(|l| {
+            let f = match l.algebra() {
+                Some(t) => t.numbered(next),
+                None => Algebra::Leaf(next),
+            };
+            next += l.operands().len();
+            f
+        })
+        .collect()
+}
+
+/// Set algebra printed with each operand that is `alternation` in parentheses: in both
+/// dialects `A - (b|c)` reads as it parses, where `A - b|c` would suggest `(A - b)|c`.
+pub(crate) fn write_operands<E: fmt::Display>(
+    f: &mut fmt::Formatter<'_>,
+    t: &Algebra<E>,
+    alternation: impl Fn(&E) -> bool,
+) -> fmt::Result {
+    struct Operand<'a, E>(&'a E, bool);
+    impl<E: fmt::Display> fmt::Display for Operand<'_, E> {
+        fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+            if self.1 {
+                write!(f, "({})", self.0)
+            } else {
+                write!(f, "{}", self.0)
+            }
+        }
+    }
+    write!(f, "{}", t.map(&mut |e| Operand(e, alternation(e))))
+}
+
 impl<E: fmt::Display> fmt::Display for Algebra<E> {
     /// Spelled so that the algebra layer parses it back to the same tree: `&` and `-`
     /// are left-associative, so a binary right operand is parenthesized, and so is a

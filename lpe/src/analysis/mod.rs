@@ -23,8 +23,8 @@ mod unmatched;
 pub use crate::automata::emptiness::Warning;
 pub use compare::{compare, compare_osl, Comparison};
 pub use partition::{
-    default_osl_universe, default_universe, partition, partition_osl, remainder, Partition,
-    DEFAULT_OSL_UNIVERSE, DEFAULT_UNIVERSE,
+    default_osl_universe, default_universe, partition, partition_osl, remainder, remainder_osl,
+    Partition, DEFAULT_OSL_UNIVERSE, DEFAULT_UNIVERSE,
 };
 pub use search::{AnalysisError, MAX_SEARCH_STATES};
 pub use unmatched::warnings;

@@ -2,7 +2,7 @@
 //! that cover it, and if not, shortest witnesses of each overlap, gap and stray path.
 
 use super::search::{analysis_options, explore, explore_osl, AnalysisError};
-use crate::algebra::Algebra;
+use crate::algebra::{Algebra, SetExpr};
 use crate::aov::AovSet;
 use crate::automata::mask::AovMask;
 use crate::path::Path;
@@ -120,19 +120,35 @@ fn split<P>(
 /// dropped (they never change what matches). Overlaps are not its business: it only
 /// covers what no AOV covers.
 pub fn remainder(aovs: &[(String, Lpe)], universe: &Lpe) -> Lpe {
-    let plain: Vec<Expr> = aovs
+    Lpe::from_algebra(Prefixes::NONE, remainder_tree(aovs, universe, Expr::alt))
+}
+
+/// [`remainder`] in the OSL dialect: `C<[RT][DGS]>*[LO] - ((a)|(b))`, printed as the
+/// OSL parser reads it back (under the registration the AOVs were parsed with).
+pub fn remainder_osl(aovs: &[(String, osl::Lpe)], universe: &osl::Lpe) -> osl::Lpe {
+    osl::Lpe::from_algebra(remainder_tree(aovs, universe, osl::Expr::alt))
+}
+
+/// The universe minus the plain AOVs as one alternation (`alt`), then minus each
+/// set-algebra AOV.
+fn remainder_tree<L: SetExpr>(
+    aovs: &[(String, L)],
+    universe: &L,
+    alt: impl FnOnce(Vec<L::Operand>) -> L::Operand,
+) -> Algebra<L::Operand> {
+    let plain: Vec<L::Operand> = aovs
         .iter()
-        .filter(|(_, l)| l.algebra.is_none())
-        .map(|(_, l)| l.expr.clone())
+        .filter(|(_, l)| l.algebra().is_none())
+        .map(|(_, l)| l.first().clone())
         .collect();
     let mut t = universe.tree();
     if !plain.is_empty() {
-        t = Algebra::minus(t, Algebra::Leaf(Expr::alt(plain)));
+        t = Algebra::minus(t, Algebra::Leaf(alt(plain)));
     }
-    for (_, l) in aovs.iter().filter(|(_, l)| l.algebra.is_some()) {
+    for (_, l) in aovs.iter().filter(|(_, l)| l.algebra().is_some()) {
         t = Algebra::minus(t, l.tree());
     }
-    Lpe::from_algebra(Prefixes::NONE, t)
+    t
 }
 
 /// The default universe, parsed.
@@ -270,5 +286,38 @@ mod tests {
             ]
         );
         assert_eq!(p.overlaps.len(), 0);
+    }
+
+    #[test]
+    fn osl_algebra_members_and_the_osl_remainder() {
+        use crate::analysis::compare_osl;
+        let reg = osl::Registered::none();
+        let universe = default_osl_universe(&reg);
+        // The basic set without `C[LO]`, its first member split: `C<RD>O` now goes
+        // nowhere either.
+        let mut aovs = osl_set(&osl::BASIC.map(|(_, src)| src)[1..6]);
+        aovs.insert(
+            0,
+            (
+                "split".into(),
+                osl::parse("C<RD>[LO] - C<RD>O", &reg).unwrap(),
+            ),
+        );
+        let p = partition_osl(&aovs, &universe, &reg).unwrap();
+        assert_eq!(p.gap.as_ref().unwrap().to_string(), "C,~ L,~");
+        assert!(p.overlaps.is_empty() && p.outside.is_empty(), "{p:?}");
+        let r = remainder_osl(&aovs, &universe);
+        let text = r.to_string();
+        assert!(text.starts_with("<C.><[RT][DGS]>*<L.>|<O.> - (("), "{text}");
+        assert!(
+            text.ends_with(" - (<C.><RD><L.>|<O.> - <C.><RD><O.>)"),
+            "{text}"
+        );
+        assert_eq!(osl::parse(&text, &reg).unwrap(), r, "{text}");
+        // Exactly the two missing parts, worked out by hand.
+        let want = osl::parse("(C[LO])|(C<RD>O)", &reg).unwrap();
+        assert!(compare_osl(&r, &want, &reg).unwrap().equivalent(), "{text}");
+        aovs.push(("rest".into(), r));
+        assert!(partition_osl(&aovs, &universe, &reg).unwrap().is_clean());
     }
 }

@@ -82,6 +82,15 @@ pub(super) fn explore_within(
 /// shape), one letter per vertex class, witnessed by the class representatives.
 pub(super) fn explore_osl(
     set: &AovSet,
+    visit: impl FnMut(AovMask, &dyn Fn() -> osl::Path) -> bool,
+) -> Result<(), AnalysisError> {
+    explore_osl_within(set, MAX_SEARCH_STATES, visit)
+}
+
+/// [`explore_osl`], giving up past `cap` states.
+pub(super) fn explore_osl_within(
+    set: &AovSet,
+    cap: usize,
     mut visit: impl FnMut(AovMask, &dyn Fn() -> osl::Path) -> bool,
 ) -> Result<(), AnalysisError> {
     let Some(compiled) = set.osl_compiled() else {
@@ -93,7 +102,7 @@ pub(super) fn explore_osl(
             (set.classify_osl(&v), Group::Scatter, v)
         })
         .collect();
-    walk(set, &letters, &ANY, MAX_SEARCH_STATES, |m, witness| {
+    walk(set, &letters, &ANY, cap, |m, witness| {
         visit(m, &|| osl::Path::new(witness()))
     })
 }

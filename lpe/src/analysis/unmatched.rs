@@ -2,7 +2,7 @@
 //! plain AOVs; whether `A - B` or `A & B` leaves any path needs the two operands' states
 //! together, so it searches the compiled set's own states.
 
-use super::search::explore_within;
+use super::search::{explore_osl_within, explore_within};
 use crate::aov::AovSet;
 use crate::automata::emptiness::Warning;
 use crate::automata::mask::AovMask;
@@ -21,19 +21,27 @@ pub fn warnings(set: &AovSet) -> Vec<Warning> {
     out
 }
 
-/// Warnings for the AOVs with set algebra that match no path of the path model.
+/// Warnings for the AOVs with set algebra that match no path of the path model (for an
+/// OSL set: no non-empty sequence of vertices).
 fn algebra_warnings(set: &AovSet) -> Vec<Warning> {
     let algebra: Vec<usize> = (0..set.len())
-        .filter(|&i| set.lpes()[i].algebra.is_some())
+        .filter(|&i| match set.osl_registered() {
+            Some(_) => set.osl_lpes()[i].algebra.is_some(),
+            None => set.lpes()[i].algebra.is_some(),
+        })
         .collect();
     if algebra.is_empty() {
         return Vec::new();
     }
     let mut seen = AovMask::EMPTY;
-    let searched = explore_within(set, MAX_STATES, |m, _| {
+    let mut visit = |m: AovMask| {
         seen = m.iter().chain(seen.iter()).collect();
         algebra.iter().all(|&i| seen.contains(i))
-    });
+    };
+    let searched = match set.osl_registered() {
+        Some(_) => explore_osl_within(set, MAX_STATES, |m, _| visit(m)),
+        None => explore_within(set, MAX_STATES, |m, _| visit(m)),
+    };
     if searched.is_err() {
         return Vec::new();
     }
@@ -73,5 +81,24 @@ mod tests {
         // `^C.*[<L.>O]` still matches paths with a user-lobe vertex.
         assert_eq!(names(&warnings(&set)), ["none", "disjoint", "dead"]);
         assert!(warnings(&set)[0].message.contains("set algebra"));
+    }
+
+    #[test]
+    fn osl_algebra_that_leaves_no_sequence_is_reported() {
+        let reg = crate::osl::Registered::none();
+        let aovs: Vec<(String, crate::osl::Lpe)> = [
+            ("none", "C.*L - C.*L"),
+            ("disjoint", "C<RD>L & C<RG>L"),
+            ("some", "C.*L - C.*DL"),
+            ("comp", "^C.*L"),
+            ("dead", "C<R[]>L"),
+        ]
+        .iter()
+        .map(|(n, s)| (n.to_string(), crate::osl::parse(s, &reg).unwrap()))
+        .collect();
+        let set = AovSet::compile_osl(&aovs, &reg, &crate::Options::default()).unwrap();
+        let names = |ws: &[Warning]| ws.iter().map(|w| w.name.clone()).collect::<Vec<_>>();
+        assert_eq!(names(set.warnings()), ["dead"]);
+        assert_eq!(names(&warnings(&set)), ["none", "disjoint", "dead"]);
     }
 }

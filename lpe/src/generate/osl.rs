@@ -31,6 +31,9 @@ pub struct Config {
     pub max_depth: usize,
     /// Most vertices in a generated path.
     pub max_path_len: usize,
+    /// Whether [`lpe`] sometimes draws set algebra (`&`, `-`, `^`): this toolkit's
+    /// extension, which OSL's own matcher does not speak.
+    pub set_algebra: bool,
 }
 
 impl Default for Config {
@@ -39,6 +42,7 @@ impl Default for Config {
             max_vertices: 8,
             max_depth: 4,
             max_path_len: 10,
+            set_algebra: true,
         }
     }
 }
@@ -47,6 +51,12 @@ impl Config {
     /// This config with at most `n` vertex patterns per expression.
     pub fn with_max_vertices(mut self, n: usize) -> Config {
         self.max_vertices = n.max(1);
+        self
+    }
+
+    /// This config without set algebra.
+    pub fn without_set_algebra(mut self) -> Config {
+        self.set_algebra = false;
         self
     }
 }
@@ -214,9 +224,17 @@ pub fn expr(c: &mut impl Choices, reg: &Registered, cfg: &Config) -> Expr {
 }
 
 /// An expression shaped like a real AOV most of the time: a camera vertex, a middle, a
-/// light or emitter vertex (`C … [LO]`).
+/// light or emitter vertex (`C … [LO]`); one time in twelve set algebra over such
+/// expressions instead (when [`Config::set_algebra`]).
 pub fn lpe(c: &mut impl Choices, reg: &Registered, cfg: &Config) -> Lpe {
-    let expr = if c.chance(70) {
+    if c.chance(8) && cfg.set_algebra {
+        return Lpe::from_algebra(super::algebra_over(c, &mut |c| aov_shaped(c, reg, cfg)));
+    }
+    Lpe::new(aov_shaped(c, reg, cfg))
+}
+
+fn aov_shaped(c: &mut impl Choices, reg: &Registered, cfg: &Config) -> Expr {
+    if c.chance(70) {
         let end = if c.chance(50) {
             event_vertex("L", reg)
         } else {
@@ -227,10 +245,6 @@ pub fn lpe(c: &mut impl Choices, reg: &Registered, cfg: &Config) -> Lpe {
         Expr::Concat(vec![event_vertex("C", reg), middle, end])
     } else {
         expr(c, reg, cfg)
-    };
-    Lpe {
-        expr,
-        warnings: Vec::new(),
     }
 }
 

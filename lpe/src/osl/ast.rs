@@ -13,6 +13,7 @@
 use std::fmt;
 
 use super::symbol::Symbol;
+use crate::algebra::{write_operands, Algebra, SetExpr};
 use crate::ast::Repetition;
 use crate::print::write_parts;
 
@@ -105,6 +106,24 @@ impl Expr {
         }
     }
 
+    /// The alternation of `alts` (at least one), nested alternations flattened as the
+    /// parser flattens them: one expression alone is itself.
+    pub fn alt(alts: Vec<Expr>) -> Expr {
+        let mut flat = Vec::with_capacity(alts.len());
+        for e in alts {
+            match e {
+                Expr::Alt(es) => flat.extend(es),
+                e => flat.push(e),
+            }
+        }
+        assert!(!flat.is_empty(), "empty alternation");
+        if flat.len() == 1 {
+            flat.pop().unwrap()
+        } else {
+            Expr::Alt(flat)
+        }
+    }
+
     /// Vertex-pattern positions after unrolling counted repetition (as
     /// [`crate::Expr::positions`] counts them), saturating.
     pub fn positions(&self) -> u64 {
@@ -162,13 +181,82 @@ impl fmt::Display for Warning {
     }
 }
 
-/// A parsed OSL expression: the tree plus the warnings OSL prints on stderr.
+/// A parsed OSL expression: the tree plus the warnings OSL prints on stderr; with set
+/// algebra (this front end's extension, docs/language.md §18.5), the tree over its
+/// operands.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Lpe {
-    /// The expanded expression.
+    /// The expanded expression; for set algebra, its first operand only (match through
+    /// [`Lpe::operands`] and [`Lpe::eval`], which see every one).
     pub expr: Expr,
-    /// Accepted-but-dubious constructs, in source order.
+    /// Accepted-but-dubious constructs, in source order (of every operand).
     pub warnings: Vec<Warning>,
+    /// Set algebra over the operands, or `None` for a plain expression.
+    pub algebra: Option<Algebra<Expr>>,
+}
+
+impl Lpe {
+    /// A plain expression without warnings.
+    pub fn new(expr: Expr) -> Lpe {
+        Lpe {
+            expr,
+            warnings: Vec::new(),
+            algebra: None,
+        }
+    }
+
+    /// Set algebra without warnings; a lone leaf is a plain expression.
+    pub fn from_algebra(tree: Algebra<Expr>) -> Lpe {
+        match tree {
+            Algebra::Leaf(expr) => Lpe::new(expr),
+            tree => Lpe {
+                expr: tree.leaves()[0].clone(),
+                warnings: Vec::new(),
+                algebra: Some(tree),
+            },
+        }
+    }
+
+    /// The whole expression as a tree (a plain expression is one leaf).
+    pub fn tree(&self) -> Algebra<Expr> {
+        SetExpr::tree(self)
+    }
+
+    /// The expressions a matcher must match, left to right: `expr` alone, or every
+    /// operand of the set algebra.
+    pub fn operands(&self) -> Vec<&Expr> {
+        SetExpr::operands(self)
+    }
+
+    /// Per expression, its set algebra over operand numbers ([`crate::algebra::formulas`]).
+    pub fn formulas<'a>(lpes: impl IntoIterator<Item = &'a Lpe>) -> Vec<Algebra<usize>> {
+        crate::algebra::formulas(lpes)
+    }
+
+    /// Whether a path is matched, given whether it matches each operand (asked once
+    /// each, in [`Lpe::operands`] order).
+    pub fn eval(&self, operand: &mut impl FnMut(&Expr) -> bool) -> bool {
+        SetExpr::eval(self, operand)
+    }
+
+    /// Vertex positions of every operand together, saturating.
+    pub fn positions(&self) -> u64 {
+        self.operands()
+            .iter()
+            .fold(0u64, |n, e| n.saturating_add(e.positions()))
+    }
+}
+
+impl SetExpr for Lpe {
+    type Operand = Expr;
+
+    fn first(&self) -> &Expr {
+        &self.expr
+    }
+
+    fn algebra(&self) -> Option<&Algebra<Expr>> {
+        self.algebra.as_ref()
+    }
 }
 
 /// A label as it reads inside `<>`: one plain character bare, anything else quoted
@@ -266,7 +354,10 @@ impl fmt::Display for Expr {
 
 impl fmt::Display for Lpe {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}", self.expr)
+        match &self.algebra {
+            Some(t) => write_operands(f, t, |e| matches!(e, Expr::Alt(_))),
+            None => write!(f, "{}", self.expr),
+        }
     }
 }
 

@@ -35,20 +35,23 @@ pub(crate) struct Compiled {
 }
 
 impl Compiled {
-    /// The vertex classes and NFA of `aovs` (repetitions bounded by `max_path_len`,
-    /// step tables within `nfa_budget`), and the AOVs that can match nothing.
+    /// The vertex classes and NFA of `operands` (every operand of `aovs`, each a hidden
+    /// AOV of the NFA; repetitions bounded by `max_path_len`, step tables within
+    /// `nfa_budget`), and the operands that can match nothing (named by `hidden_names`,
+    /// numbered as hidden AOVs).
     pub(crate) fn build(
         aovs: &[(String, Lpe)],
-        names: &[String],
+        operands: &[&Expr],
+        hidden_names: &[String],
         registered: &Registered,
         max_path_len: Option<u32>,
         nfa_budget: usize,
     ) -> Result<(Compiled, Nfa, Vec<Warning>), TooManyVertexStates> {
-        let (builder, parts) = Builder::of_all(aovs.iter().map(|(_, l)| &l.expr), max_path_len);
+        let (builder, parts) = Builder::of_all(operands.iter().copied(), max_path_len);
         let classes = VertexClasses::new(&builder.atoms)?;
         let atoms = builder.atoms.clone();
         let nfa = Nfa::new(builder, parts, &classes, nfa_budget);
-        let warnings = empty_aovs(&nfa, &classes, &atoms, names, aovs);
+        let warnings = empty_aovs(&nfa, &classes, &atoms, hidden_names, operands);
         let lpes = aovs.iter().map(|(_, l)| l.clone()).collect();
         Ok((
             Compiled {
@@ -95,7 +98,7 @@ fn empty_aovs(
     classes: &VertexClasses,
     atoms: &[&VertexPattern],
     names: &[String],
-    aovs: &[(String, Lpe)],
+    operands: &[&Expr],
 ) -> Vec<Warning> {
     let live: Vec<bool> = (0..atoms.len())
         .map(|a| (0..classes.class_count()).any(|c| classes.accepts(c, a)))
@@ -107,7 +110,7 @@ fn empty_aovs(
         .filter(|&i| !found[i])
         .map(|i| {
             let mut dead = None;
-            aovs[i].1.expr.for_each_vertex(&mut |v| {
+            operands[i].for_each_vertex(&mut |v| {
                 if dead.is_none() {
                     if let Some(a) = atoms.iter().position(|&x| x == v) {
                         if !live[a] {

@@ -51,6 +51,10 @@ pub enum ErrorKind {
         /// The limit.
         max: usize,
     },
+    /// Set algebra (`A - B`, `A & B`, `^A`) that does not parse: an operand missing, an
+    /// unbalanced algebra group, an operator inside an operand, too deep or too many
+    /// operands.
+    Algebra(crate::algebra::AlgebraError),
     /// More vertex positions after unrolling than [`crate::Limits::max_positions`].
     TooManyPositions {
         /// The expression's positions.
@@ -101,6 +105,11 @@ impl Error {
                 format!("Repetition count over the limit of {max}")
             }
             ErrorKind::TooDeep { max } => format!("Groups nested deeper than {max}"),
+            ErrorKind::Algebra(e) => {
+                let mut m = e.to_string();
+                m[..1].make_ascii_uppercase();
+                format!("{m} ({})", e.help())
+            }
             ErrorKind::TooManyPositions { positions, max } => format!(
                 "The expression unrolls to {positions} vertex positions, over the limit of {max}"
             ),

@@ -17,6 +17,7 @@
 use super::ast::{Expr, Lpe, SymbolPattern, VertexPattern, Warning, WarningKind};
 use super::error::{Error, ErrorKind};
 use super::symbol::{LabelKind, Registered, Symbol, STOP_LABEL};
+use crate::algebra::{self, Algebra, ParseError};
 use crate::ast::Repetition;
 use crate::Limits;
 
@@ -38,42 +39,84 @@ pub fn parse(src: &str, registered: &Registered) -> std::result::Result<Lpe, Err
 }
 
 /// Parses with explicit limits (`max_repeat`, `max_depth`, `max_positions` apply).
+/// Set algebra over whole expressions (`A - B`, `A & B`, `^A`) is found first by the
+/// dialect-independent [`crate::algebra`] layer; each operand is then an OSL expression,
+/// its errors and warnings at their bytes in the whole text.
 pub fn parse_with(
     src: &str,
     registered: &Registered,
     limits: &Limits,
 ) -> std::result::Result<Lpe, Error> {
+    if src.is_empty() {
+        return Err(Error {
+            kind: ErrorKind::Empty,
+            pos: 0,
+        });
+    }
+    let whole = 0..src.len();
+    let mut warnings = Vec::new();
+    let tree = if algebra::has_algebra(src, whole.clone()) {
+        algebra::parse(src, whole, limits.max_depth, &mut |span| {
+            parse_operand(src, span, registered, limits, &mut warnings).map(Algebra::Leaf)
+        })
+        .map_err(|e| match e {
+            ParseError::Operand(e) => e,
+            ParseError::Algebra(e) => Error {
+                pos: e.span().start,
+                kind: ErrorKind::Algebra(e),
+            },
+        })?
+    } else {
+        Algebra::Leaf(parse_operand(
+            src,
+            whole,
+            registered,
+            limits,
+            &mut warnings,
+        )?)
+    };
+    let lpe = Lpe {
+        warnings,
+        ..Lpe::from_algebra(tree)
+    };
+    let positions = lpe.positions();
+    if positions > limits.max_positions as u64 {
+        return Err(Error {
+            kind: ErrorKind::TooManyPositions {
+                positions,
+                max: limits.max_positions,
+            },
+            pos: 0,
+        });
+    }
+    Ok(lpe)
+}
+
+/// One expression, `src[span]`: the parser reads the text up to the span's end from its
+/// start, so positions (and "end of line") are those of the whole text.
+fn parse_operand(
+    src: &str,
+    span: std::ops::Range<usize>,
+    registered: &Registered,
+    limits: &Limits,
+    warnings: &mut Vec<Warning>,
+) -> std::result::Result<Expr, Error> {
     let mut p = Parser {
-        src,
-        pos: 0,
+        src: &src[..span.end],
+        pos: span.start,
         reg: registered,
         eater: registered.basic_labels(),
         limits,
         depth: 0,
         warnings: Vec::new(),
     };
-    if src.is_empty() {
-        return Err(p.err(ErrorKind::Empty, 0));
-    }
     let expr = match p.seq(false)? {
         // A whole expression of `{0}` items: OSL builds a rule with no states.
-        Expr::Empty => return Err(p.err(ErrorKind::ZeroRepeat, 0)),
+        Expr::Empty => return Err(p.err(ErrorKind::ZeroRepeat, span.start)),
         e => e,
     };
-    let positions = expr.positions();
-    if positions > limits.max_positions as u64 {
-        return Err(p.err(
-            ErrorKind::TooManyPositions {
-                positions,
-                max: limits.max_positions,
-            },
-            0,
-        ));
-    }
-    Ok(Lpe {
-        expr,
-        warnings: p.warnings,
-    })
+    warnings.append(&mut p.warnings);
+    Ok(expr)
 }
 
 /// Adds an alternative, flattening nested alternations (`(a|b)|c`, `[[ab]c]`): the

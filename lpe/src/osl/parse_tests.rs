@@ -541,10 +541,97 @@ fn printing_parses_back_to_the_same_tree() {
         "C<RD12345>[]L",
         "<Cx>'|a b|'[^'foo'D]",
         "C<(RD)>(DL){1,3}",
+        "C.*L - (C.*DL & ^CGL)",
+        "^(CL|O) - [LO]",
     ] {
         let a = parse(src, &none()).unwrap();
         let text = a.to_string();
         let b = parse(&text, &none()).unwrap_or_else(|e| panic!("{src} -> {text}: {e}"));
-        assert_eq!(a.expr, b.expr, "{src} -> {text}");
+        assert_eq!((a.expr, a.algebra), (b.expr, b.algebra), "{src} -> {text}");
     }
+}
+
+#[test]
+fn set_algebra_over_whole_expressions() {
+    use crate::algebra::Algebra;
+    let l = parse("C.*L - C.*DL & ^CL", &none()).unwrap();
+    let leaf = |s: &str| Algebra::Leaf(p(s));
+    assert_eq!(
+        l.algebra,
+        Some(Algebra::and(
+            Algebra::minus(leaf("C.*L"), leaf("C.*DL")),
+            Algebra::complement(leaf("CL"))
+        ))
+    );
+    assert_eq!(l.expr, p("C.*L"));
+    assert_eq!(l.operands().len(), 3);
+    // An alternation operand prints in parentheses, the rest as the dialect prints.
+    assert_eq!(
+        parse("CL - [LO]", &none()).unwrap().to_string(),
+        "<C.><L.> - (<L.>|<O.>)"
+    );
+    // Where OSL gives `-`, `^`, `&` a meaning they are not algebra: a label in `<>` or
+    // quotes, a negation; and a plain expression has no tree.
+    for src in ["C<R-D>L", "C'a-b'L", "C[^'x']L", "C<R&>L", "<R[^D]>"] {
+        assert_eq!(parse(src, &none()).unwrap().algebra, None, "{src}");
+    }
+    assert_eq!(
+        p("C<R-D>L"),
+        Expr::Concat(vec![
+            ev("C"),
+            v(&none(), vec![one("R"), one("-"), one("D")]),
+            ev("L")
+        ])
+    );
+    // Outside them OSL knows no such character, so an old error became algebra.
+    assert!(parse("C-L", &none()).unwrap().algebra.is_some());
+    assert_eq!(err("C^L"), (K::UnrecognizedBasicLabel("^".into()), 1));
+}
+
+#[test]
+fn set_algebra_errors_point_into_the_whole_text() {
+    use crate::algebra::AlgebraError as A;
+    assert_eq!(
+        err("C.*L -"),
+        (K::Algebra(A::MissingOperand { at: 6..6 }), 6)
+    );
+    assert_eq!(err("^"), (K::Algebra(A::MissingOperand { at: 0..1 }), 0));
+    assert_eq!(
+        err("C(.*L - .*DL)"),
+        (K::Algebra(A::InsideOperand { at: 6..7 }), 6)
+    );
+    assert_eq!(err("(CL - DL"), (K::Algebra(A::Unbalanced { at: 0..1 }), 0));
+    // An operand's own error, at its byte in the whole text.
+    assert_eq!(err("C.*L - C<RD"), (K::UnclosedGroup, 11));
+    assert_eq!(err("CL - C D"), (K::UnrecognizedBasicLabel(" ".into()), 6));
+    assert_eq!(err("CL & C{0}"), (K::ZeroRepeat, 5));
+    let e = parse("CL - C.*<RD", &none()).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "Reached end of line looking for > to end a group at char 11"
+    );
+    let e = parse("CL -", &none()).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "Set algebra operand missing (`&`, `-` take an expression on each side, `^` one \
+         after it: `A - B`, `^A`) at char 4"
+    );
+    // Warnings of every operand, at their bytes in the whole text.
+    let l = parse("CL - C[^RD]L & CD{3,1}L", &none()).unwrap();
+    let at: Vec<usize> = l.warnings.iter().map(|w| w.pos).collect();
+    assert_eq!(at, [6, 17]);
+    // Positions count over every operand together.
+    let limits = Limits {
+        max_positions: 10,
+        ..Limits::default()
+    };
+    let e = parse_with("CD{4}L - CD{4}L", &none(), &limits).unwrap_err();
+    assert_eq!(
+        e.kind,
+        K::TooManyPositions {
+            positions: 12,
+            max: 10
+        }
+    );
+    assert!(parse_with("CD{4}L - CDL", &none(), &limits).is_ok());
 }

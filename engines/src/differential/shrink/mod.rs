@@ -1,6 +1,7 @@
 //! Greedy minimization of a disagreement: simpler expressions, fewer set members,
 //! shorter and less labelled paths, for as long as the engines still disagree.
 
+use lpe::algebra::{Algebra, SetExpr};
 use lpe::ast::{Atom, EventPos, Expr, Item, LabelPos, Repetition, TypePos};
 use lpe::{Lpe, Path};
 
@@ -123,16 +124,34 @@ pub fn minimize_by<L: Language>(
 /// disagreement that survives without the algebra is easier to read), then each operand
 /// simplified in place; for a plain expression, [`shrink_expr`].
 pub fn shrink_lpe(l: &Lpe) -> Vec<Lpe> {
-    let plain = |e: Expr| Lpe::new(lpe::Prefixes::NONE, e);
-    let Some(tree) = &l.algebra else {
-        return shrink_expr(&l.expr).into_iter().map(plain).collect();
+    shrink_set_expr(l, shrink_expr, |t| {
+        Lpe::from_algebra(lpe::Prefixes::NONE, t)
+    })
+}
+
+/// [`shrink_lpe`] in any dialect: `shrink` simplifies one operand, `build` makes a
+/// dialect expression of a tree (a lone leaf is a plain expression).
+pub fn shrink_set_expr<L: SetExpr>(
+    l: &L,
+    shrink: impl Fn(&L::Operand) -> Vec<L::Operand>,
+    build: impl Fn(Algebra<L::Operand>) -> L,
+) -> Vec<L> {
+    let Some(tree) = l.algebra() else {
+        return shrink(l.first())
+            .into_iter()
+            .map(|e| build(Algebra::Leaf(e)))
+            .collect();
     };
-    let mut out: Vec<Lpe> = l.operands().into_iter().cloned().map(plain).collect();
+    let mut out: Vec<L> = l
+        .operands()
+        .into_iter()
+        .map(|e| build(Algebra::Leaf(e.clone())))
+        .collect();
     for (k, operand) in l.operands().into_iter().enumerate() {
-        for smaller in shrink_expr(operand) {
+        for smaller in shrink(operand) {
             let mut t = tree.clone();
             *t.leaves_mut()[k] = smaller;
-            out.push(Lpe::from_algebra(lpe::Prefixes::NONE, t));
+            out.push(build(t));
         }
     }
     out
