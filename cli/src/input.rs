@@ -129,27 +129,3 @@ pub fn osl_error(src: &str, e: &lpe::osl::Error) -> String {
     let col = src.get(..e.pos).map_or(e.pos, |s| s.chars().count());
     format!("error: {e}\n  {src}\n  {}^", " ".repeat(col))
 }
-
-/// `--dialect`: which surface syntax expressions are written in.
-#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Dialect {
-    /// RenderMan's (docs/language.md).
-    Renderman,
-    /// OSL's; not in this build yet.
-    Osl,
-}
-
-/// A dialect this build cannot parse.
-#[derive(Debug, thiserror::Error)]
-#[error("the {0} dialect is not available in this build (use --dialect renderman)")]
-pub struct DialectUnavailable(&'static str);
-
-impl Dialect {
-    /// `Ok` when this build parses the dialect.
-    pub fn check_available(self) -> Result<(), DialectUnavailable> {
-        match self {
-            Dialect::Renderman => Ok(()),
-            Dialect::Osl => Err(DialectUnavailable("osl")),
-        }
-    }
-}

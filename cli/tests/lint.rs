@@ -286,15 +286,179 @@ fn a_fifty_megabyte_rib_streams_in_bounded_memory() {
 }
 
 #[test]
-fn osl_dialect_is_refused_until_it_lands() {
+fn karma_stage_in_the_osl_dialect() {
+    let file = "tests/testdata/usd/karma_osl.usda";
+    let (code, v) = json(&["--dialect", "osl", file]);
+    assert_eq!(code, 1);
+    let vars = "/Render/Products/Vars";
+    assert_eq!(
+        findings(&v),
+        triples(&[
+            ("parse_error", "sss", &format!("{vars}/sss")),
+            ("empty", "never", &format!("{vars}/never")),
+            (
+                "equivalent",
+                "direct_diffuse_copy",
+                &format!("{vars}/direct_diffuse_copy")
+            ),
+            (
+                "unknown_light_group",
+                "diffuse_fill",
+                &format!("{vars}/diffuse_fill")
+            ),
+            ("gap", "beauty", "/Render/rendersettings"),
+        ])
+    );
+    let f = &v["findings"];
+    // OSL's own message, at the `*` OSL refuses inside `<...>`.
+    assert_eq!(f[0]["message"], "Repetitions not allowed inside '<...>'");
+    assert_eq!(f[0]["span"], serde_json::json!([5, 6]));
+    assert!(f[1]["message"]
+        .as_str()
+        .unwrap()
+        .contains("`<R[]>` matches no vertex"));
+    assert_eq!(f[2]["other"], "diffuse_direct");
+    assert_eq!(f[3]["help"], "did you mean 'fill'?");
+    // Every member needs a bounce: a camera straight into a light is lost.
+    assert_eq!(f[4]["witness"], "C,~ L,~");
+    let rest = f[4]["remainder"].as_str().unwrap();
+    assert!(rest.starts_with("<C.><[RT][DGS]>*<L.>|<O.> - (("), "{rest}");
+    // The remainder covers exactly the direct paths (worked out by hand: every member
+    // starts with one bounce), and the equivalence check confirms it.
+    let (code, out, _) = lpe_check(&["equiv", "--dialect", "osl", rest, "C[LO]"]);
+    assert_eq!((code, out.as_str()), (0, "equivalent\n"), "{rest}");
+    // `floor` is a Karma object tag of the stage, so `floor_bounce` is clean.
+    assert!(!findings(&v).iter().any(|f| f.1 == "floor_bounce"));
+    // The text report carries OSL's caret on the same byte.
+    let (_, out, _) = lpe_check(&["lint", "--dialect", "osl", file]);
+    assert!(
+        out.contains("Repetitions not allowed inside '<...>'\n  | C<TD.*[LO]\n  |      ^\n"),
+        "{out}"
+    );
+}
+
+#[test]
+fn set_algebra_members_make_a_clean_osl_partition() {
+    let (code, out, err) = lpe_check(&[
+        "lint",
+        "--dialect",
+        "osl",
+        "tests/testdata/usd/arnold_osl_algebra.usda",
+    ]);
+    assert_eq!(
+        (code, out.as_str()),
+        (0, "clean: 3 AOVs, 1 file, 1 partition checked (1 clean)\n"),
+        "{err}"
+    );
+    // Without the algebra member the key light's complement is a gap.
+    let (code, v) = json(&[
+        "--dialect",
+        "osl",
+        "--partition",
+        "lg_key,lg_env",
+        "tests/testdata/usd/arnold_osl_algebra.usda",
+    ]);
+    assert_eq!(code, 1);
+    let gap = v["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|f| f["kind"] == "gap")
+        .unwrap();
+    assert_eq!(gap["witness"], "C,~ L,~");
+}
+
+#[test]
+fn osl_lint_refuses_ini_files_and_renderman_refuses_register() {
+    // An ini file holds RenderMan macros and lobe mappings: nothing OSL can use.
     let (code, _, err) = lpe_check(&[
         "lint",
         "--dialect",
         "osl",
+        "tests/testdata/lint/rendermn.ini",
+        "tests/testdata/usd/karma_osl.usda",
+    ]);
+    assert_eq!(code, 2);
+    assert_eq!(
+        err,
+        "error: tests/testdata/lint/rendermn.ini: --ini holds RenderMan macros; it does not \
+         apply to --dialect osl\n"
+    );
+    let (code, _, err) = lpe_check(&[
+        "lint",
+        "--register",
+        "events=U",
         "tests/testdata/usd/clean_basic.usda",
     ]);
     assert_eq!(code, 2);
-    assert!(err.contains("osl dialect is not available"), "{err}");
+    assert!(err.contains("--register is for --dialect osl"), "{err}");
+    // `--register` goes with `--dialect osl`.
+    let (code, _, _) = lpe_check(&[
+        "lint",
+        "--dialect",
+        "osl",
+        "--register",
+        "scatters=Y",
+        "tests/testdata/usd/arnold_osl_algebra.usda",
+    ]);
+    assert_eq!(code, 0);
+}
+
+#[test]
+fn explain_an_osl_path() {
+    let (code, out, err) = lpe_check(&[
+        "explain",
+        "--dialect",
+        "osl",
+        "--usd",
+        "tests/testdata/usd/arnold_osl_algebra.usda",
+        "C,_ R,D R,G L,_,env",
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        out.starts_with("path C,_ R,D R,G L,_,env against 3 AOVs\n"),
+        "{out}"
+    );
+    // Not the key light: the set-algebra AOV takes it, with the env light group.
+    assert!(out.ends_with("lands in: lg_rest, lg_env\n"), "{out}");
+    let (code, out, _) = lpe_check(&[
+        "explain",
+        "--dialect",
+        "osl",
+        "--aov",
+        "spec=C<RG>L",
+        "--aov",
+        "twice=C<RD><RD>L",
+        "C,_ R,D R,G L,_",
+    ]);
+    assert_eq!(code, 1, "{out}");
+    // States read `s1`, `s2` in the order the path reaches them, `dead` after `R,G`.
+    let rows: Vec<(String, String, String)> = out
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| #"))
+        .map(|l| {
+            let c: Vec<&str> = l.split('|').map(str::trim).collect();
+            (c[2].to_string(), c[4].to_string(), c[5].to_string())
+        })
+        .collect();
+    let row = |v: &str, s: &str, r: &str| (v.to_string(), s.to_string(), r.to_string());
+    assert_eq!(
+        rows,
+        [
+            row("C,_", "s1", "spec, twice"),
+            row("R,D", "s2", "twice"),
+            row("R,G", "dead", "(none: dead)"),
+            row("L,_", "dead", "(none: dead)"),
+        ]
+    );
+    assert!(
+        out.ends_with("longest live prefix: C,_ R,D (2 of 4 vertices)\nclosest AOV: twice (dead at vertex 3)\n"),
+        "{out}"
+    );
+    // A path that is no OSL path is bad input, named.
+    let (code, _, err) = lpe_check(&["explain", "--dialect", "osl", "--aov", "a=CL", "C,'x"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("path `C,'x`"), "{err}");
 }
 
 #[test]

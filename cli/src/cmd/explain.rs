@@ -2,22 +2,24 @@
 //!
 //! AOVs come from `--aov NAME=EXPR`, `--display FILE.rib`, `--usd FILE.usda` and
 //! `--from FILE` (anything `lint` reads), in that order. Prints one row per vertex: the
-//! vertex, its class in the compiled set, the set's state after it (its `Debug` form,
-//! opaque) and the AOVs that can still match some continuation; then the AOVs the whole
+//! vertex, its class in the compiled set, the set's state after it (numbered in the order
+//! the path reaches them: `s0` the start, `dead` once no AOV can match) and the AOVs that
+//! can still match some continuation; then the AOVs the whole
 //! path lands in. A path landing nowhere also gets the longest prefix after which some
 //! AOV could still match, and the AOV that stayed reachable longest (the closest miss).
-//! Exit 0 when the path lands in some AOV, 1 when in none, 2 on bad input.
+//! Exit 0 when the path lands in some AOV, 1 when in none, 2 on bad input. With
+//! `--dialect osl` the AOVs and the path are OSL's (`C,_ R,D L,_`).
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use lpe::{AovSet, Lpe, Path};
+use lpe::{osl, AovSet, Class, Lpe, Path, State};
 use lpe_lint::read::{self, Limits};
 use lpe_lint::Document;
 use tabled::builder::Builder;
 use tabled::settings::Style;
 
-use crate::input::{bad_input, load_parser, Dialect};
+use crate::input::{bad_input, load_parser, osl_error, DialectArgs};
 
 /// Arguments of `lpe-check explain`.
 #[derive(clap::Args, Debug)]
@@ -39,28 +41,19 @@ pub struct Args {
     /// A rendermn.ini-style file with user macros and lobe mappings.
     #[arg(long)]
     pub ini: Option<PathBuf>,
-    /// Expression dialect.
-    #[arg(long, value_enum, default_value_t = Dialect::Renderman)]
-    pub dialect: Dialect,
+    /// `--dialect` (the path is then an OSL path, `C,_ R,D L,_`) and `--register`.
+    #[command(flatten)]
+    pub lang: DialectArgs,
 }
 
 /// Runs `lpe-check explain`.
 pub fn run(args: Args) -> ExitCode {
-    if let Err(e) = args.dialect.check_available() {
-        return bad_input(format!("error: {e}"));
-    }
-    let path: Path = match args.path.parse() {
-        Ok(p) => p,
-        Err(e) => return bad_input(format!("error: {e}")),
+    let result = match args.lang.is_osl() {
+        Ok(false) => run_renderman(&args),
+        Ok(true) => run_osl(&args),
+        Err(e) => Err(e.to_string()),
     };
-    let aovs = match load(&args) {
-        Ok(a) if a.is_empty() => {
-            return bad_input("error: no AOVs: give --aov, --display, --usd or --from")
-        }
-        Ok(a) => a,
-        Err(e) => return bad_input(format!("error: {e}")),
-    };
-    match explain(&aovs, &path) {
+    match result {
         Ok(e) => {
             print!("{}", e.text);
             ExitCode::from(u8::from(e.landed.is_empty()))
@@ -69,9 +62,33 @@ pub fn run(args: Args) -> ExitCode {
     }
 }
 
-/// The AOVs of the arguments, parsed.
-fn load(args: &Args) -> Result<Vec<(String, Lpe)>, String> {
+fn run_renderman(args: &Args) -> Result<Explanation, String> {
+    let path: Path = args.path.parse().map_err(|e| format!("{e}"))?;
     let parser = load_parser(args.ini.as_deref()).map_err(|e| e.to_string())?;
+    let aovs = load(args, |src| parser.parse(src).map_err(|e| e.to_string()))?;
+    explain(&aovs, &path).map_err(|e| e.to_string())
+}
+
+fn run_osl(args: &Args) -> Result<Explanation, String> {
+    let registered = args
+        .lang
+        .registered(args.ini.as_deref())
+        .map_err(|e| e.to_string())?;
+    let path: osl::Path = args
+        .path
+        .parse()
+        .map_err(|e| format!("path `{}`: {e}", args.path))?;
+    let aovs = load(args, |src| {
+        osl::parse(src, &registered).map_err(|e| osl_error(src, &e))
+    })?;
+    explain_osl(&aovs, &registered, &path).map_err(|e| e.to_string())
+}
+
+/// The AOVs of the arguments, each parsed by `parse` (its error with a caret).
+fn load<E>(
+    args: &Args,
+    parse: impl Fn(&str) -> Result<E, String>,
+) -> Result<Vec<(String, E)>, String> {
     let limits = Limits::default();
     let mut sources: Vec<(String, String, String)> = Vec::new();
     for a in &args.aovs {
@@ -94,11 +111,13 @@ fn load(args: &Args) -> Result<Vec<(String, Lpe)>, String> {
             }
         }
     }
+    if sources.is_empty() {
+        return Err("no AOVs: give --aov, --display, --usd or --from".into());
+    }
     sources
         .into_iter()
         .map(|(name, src, at)| {
-            parser
-                .parse(&src)
+            parse(&src)
                 .map(|l| (name.clone(), l))
                 .map_err(|e| format!("{at}: AOV `{name}`: {e}"))
         })
@@ -116,23 +135,57 @@ pub struct Explanation {
 /// Steps `path` through the set of `aovs` and through each AOV alone.
 pub fn explain(aovs: &[(String, Lpe)], path: &Path) -> Result<Explanation, lpe::CompileError> {
     let set = AovSet::compile(aovs)?;
-    // Per-AOV sets say which AOVs are still reachable: the joint state only says
-    // whether any is.
     let alone: Vec<AovSet> = aovs
         .iter()
         .map(|a| AovSet::compile(std::slice::from_ref(a)))
         .collect::<Result<_, _>>()?;
+    Ok(walk(aovs, &set, &alone, path.vertices(), AovSet::classify))
+}
+
+/// [`explain`] for OSL AOVs parsed under `registered`, on an OSL path.
+pub fn explain_osl(
+    aovs: &[(String, osl::Lpe)],
+    registered: &osl::Registered,
+    path: &osl::Path,
+) -> Result<Explanation, lpe::CompileError> {
+    let opts = lpe::Options::default();
+    let set = AovSet::compile_osl(aovs, registered, &opts)?;
+    let alone: Vec<AovSet> = aovs
+        .iter()
+        .map(|a| AovSet::compile_osl(std::slice::from_ref(a), registered, &opts))
+        .collect::<Result<_, _>>()?;
+    Ok(walk(
+        aovs,
+        &set,
+        &alone,
+        &path.vertices,
+        AovSet::classify_osl,
+    ))
+}
+
+/// The report of one path, `vertices`, through `set` and through each AOV `alone` (the
+/// joint state only says whether any AOV is still reachable). States are numbered in the
+/// order this path first reaches them, the start `s0`; `dead` once no AOV can match.
+fn walk<E, V: std::fmt::Display>(
+    aovs: &[(String, E)],
+    set: &AovSet,
+    alone: &[AovSet],
+    vertices: &[V],
+    classify: impl Fn(&AovSet, &V) -> Class,
+) -> Explanation {
     let mut states: Vec<_> = alone.iter().map(AovSet::start).collect();
     // How many vertices each AOV stayed reachable through.
     let mut alive_for = vec![0usize; aovs.len()];
     let mut s = set.start();
+    let mut seen: Vec<State> = vec![s];
     let mut table = Builder::default();
     table.push_record(["#", "vertex", "class", "state", "still reachable"]);
-    for (k, v) in path.vertices().iter().enumerate() {
-        s = set.step(s, v);
+    for (k, v) in vertices.iter().enumerate() {
+        let class = classify(set, v);
+        s = set.step_class(s, class);
         let mut reachable = Vec::new();
         for (i, a) in alone.iter().enumerate() {
-            states[i] = a.step(states[i], v);
+            states[i] = a.step_class(states[i], classify(a, v));
             if !a.is_dead(states[i]) {
                 alive_for[i] = k + 1;
                 reachable.push(aovs[i].0.as_str());
@@ -143,26 +196,33 @@ pub fn explain(aovs: &[(String, Lpe)], path: &Path) -> Result<Explanation, lpe::
         } else {
             reachable.join(", ")
         };
+        let state = if set.is_dead(s) {
+            "dead".to_string()
+        } else {
+            let id = seen.iter().position(|&x| x == s).unwrap_or_else(|| {
+                seen.push(s);
+                seen.len() - 1
+            });
+            format!("s{id}")
+        };
         table.push_record([
             (k + 1).to_string(),
             v.to_string(),
-            set.classify(v).index().to_string(),
-            format!("{s:?}"),
+            class.index().to_string(),
+            state,
             reach,
         ]);
     }
     let landed: Vec<usize> = set.matches(s).iter().collect();
+    let shown: Vec<String> = vertices.iter().map(ToString::to_string).collect();
     let mut text = format!(
-        "path {path} against {} AOVs\n{}\n",
+        "path {} against {} AOVs\n{}\n",
+        shown.join(" "),
         aovs.len(),
         table.build().with(Style::markdown())
     );
     if landed.is_empty() {
         let longest = alive_for.iter().copied().max().unwrap_or(0);
-        let prefix: Vec<String> = path.vertices()[..longest]
-            .iter()
-            .map(ToString::to_string)
-            .collect();
         text.push_str("lands in no AOV\n");
         if longest == 0 {
             text.push_str("no AOV can match any path starting with its first vertex\n");
@@ -171,15 +231,15 @@ pub fn explain(aovs: &[(String, Lpe)], path: &Path) -> Result<Explanation, lpe::
                 .iter()
                 .position(|&n| n == longest)
                 .expect("the maximum is in the list");
-            let how = if longest == path.len() {
+            let how = if longest == vertices.len() {
                 "still reachable after the last vertex: the path ends too early for it".to_string()
             } else {
                 format!("dead at vertex {}", longest + 1)
             };
             text.push_str(&format!(
                 "longest live prefix: {} ({longest} of {} vertices)\nclosest AOV: {} ({how})\n",
-                prefix.join(" "),
-                path.len(),
+                shown[..longest].join(" "),
+                vertices.len(),
                 aovs[closest].0
             ));
         }
@@ -187,7 +247,7 @@ pub fn explain(aovs: &[(String, Lpe)], path: &Path) -> Result<Explanation, lpe::
         let names: Vec<&str> = landed.iter().map(|&i| aovs[i].0.as_str()).collect();
         text.push_str(&format!("lands in: {}\n", names.join(", ")));
     }
-    Ok(Explanation { landed, text })
+    Explanation { landed, text }
 }
 
 #[cfg(test)]

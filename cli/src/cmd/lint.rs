@@ -17,7 +17,8 @@ use lpe::analysis;
 use lpe_lint::read::{self, Limits};
 use lpe_lint::{Document, Format, Location, PartitionDecl};
 
-use crate::input::{bad_input, Dialect};
+use crate::input::{bad_input, DialectArgs};
+use crate::lint::dialect::{Dialect, Osl, RenderMan};
 use crate::lint::json::FileStatus;
 use crate::lint::{self, json, text};
 use crate::witness::DISAGREE;
@@ -44,22 +45,23 @@ pub struct Args {
     /// AOV names that must partition the universe, comma-separated (repeatable).
     #[arg(long, value_name = "NAME,NAME,...")]
     pub partition: Vec<String>,
-    /// The universe partitions split.
-    #[arg(long, default_value = analysis::DEFAULT_UNIVERSE)]
-    pub universe: String,
+    /// The universe partitions split (default `C.*[<L.>O]`, OSL: `C<[RT][DGS]>*[LO]`).
+    #[arg(long)]
+    pub universe: Option<String>,
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,
-    /// Expression dialect.
-    #[arg(long, value_enum, default_value_t = Dialect::Renderman)]
-    pub dialect: Dialect,
+    /// `--dialect` (every file's AOVs are read in it) and `--register`.
+    #[command(flatten)]
+    pub lang: DialectArgs,
 }
 
 /// Runs `lpe-check lint`.
 pub fn run(args: Args) -> ExitCode {
-    if let Err(e) = args.dialect.check_available() {
-        return bad_input(format!("error: {e}"));
-    }
+    let osl = match args.lang.is_osl() {
+        Ok(osl) => osl,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
     let limits = Limits::default();
     let mut config = lpe::Config::default();
     let mut statuses = Vec::new();
@@ -70,6 +72,20 @@ pub fn run(args: Args) -> ExitCode {
         .map(PathBuf::as_path)
         .chain(args.files.iter().map(PathBuf::as_path))
         .partition(|p| read::format_of(p) == Some(Format::Ini));
+    // An ini file holds RenderMan macros and lobe mappings (and RenderMan AOVs'
+    // partitions): nothing an OSL expression can use.
+    let registered = if osl {
+        let ini = inis.first().copied();
+        match args.lang.registered(ini) {
+            Ok(r) => Some(r),
+            Err(e) => {
+                let file = ini.map_or(String::new(), |p| format!("{}: ", p.display()));
+                return bad_input(format!("error: {file}{e}"));
+            }
+        }
+    } else {
+        None
+    };
     for path in inis {
         let read = read::ini::read_into(path, &limits, &mut config);
         record(path, read, &mut statuses, &mut docs);
@@ -82,11 +98,6 @@ pub fn run(args: Args) -> ExitCode {
             &mut docs,
         );
     }
-    let parser = config.parser();
-    let universe = match parser.parse(&args.universe) {
-        Ok(u) => u,
-        Err(e) => return bad_input(format!("error: --universe: {e}")),
-    };
     let extra: Vec<PartitionDecl> = args
         .partition
         .iter()
@@ -97,34 +108,70 @@ pub fn run(args: Args) -> ExitCode {
             location: Location::Line { line: 0, column: 0 },
         })
         .collect();
-    let out = match lint::lint(&docs, &parser, &config.lobes, &universe, &extra) {
-        Ok(out) => out,
-        Err(e) => {
-            eprintln!("{e}");
-            return ExitCode::from(DISAGREE);
-        }
+    let ctx = Run {
+        docs: &docs,
+        extra: &extra,
+        statuses: &statuses,
+        universe: args.universe.as_deref(),
+        format: args.format,
     };
-    match args.format {
-        OutputFormat::Text => {
-            for s in &statuses {
-                if let Some(e) = &s.error {
-                    eprintln!("error: {e}");
-                }
-            }
-            print!("{}", text::render(&out));
+    match registered {
+        Some(registered) => ctx.lint(&Osl { registered }, analysis::DEFAULT_OSL_UNIVERSE),
+        None => {
+            let parser = config.parser();
+            let dialect = RenderMan {
+                parser: &parser,
+                lobes: &config.lobes,
+            };
+            ctx.lint(&dialect, analysis::DEFAULT_UNIVERSE)
         }
-        OutputFormat::Json => println!(
-            "{}",
-            serde_json::to_string_pretty(&json::render(&out, &statuses))
-                .expect("JSON values serialize")
-        ),
     }
-    let code = if statuses.iter().any(|s| s.error.is_some()) {
-        2
-    } else {
-        u8::from(!out.findings.is_empty())
-    };
-    ExitCode::from(code)
+}
+
+/// What every dialect's run shares once the files are read.
+struct Run<'a> {
+    docs: &'a [Document],
+    extra: &'a [PartitionDecl],
+    statuses: &'a [FileStatus],
+    universe: Option<&'a str>,
+    format: OutputFormat,
+}
+
+impl Run<'_> {
+    fn lint<D: Dialect>(&self, dialect: &D, default_universe: &str) -> ExitCode {
+        let universe = match dialect.parse(self.universe.unwrap_or(default_universe)) {
+            Ok(u) => u,
+            Err(e) => return bad_input(format!("error: --universe: {}", e.message)),
+        };
+        let out = match lint::lint(self.docs, dialect, &universe, self.extra) {
+            Ok(out) => out,
+            Err(e) => {
+                eprintln!("{e}");
+                return ExitCode::from(DISAGREE);
+            }
+        };
+        match self.format {
+            OutputFormat::Text => {
+                for s in self.statuses {
+                    if let Some(e) = &s.error {
+                        eprintln!("error: {e}");
+                    }
+                }
+                print!("{}", text::render(&out));
+            }
+            OutputFormat::Json => println!(
+                "{}",
+                serde_json::to_string_pretty(&json::render(&out, self.statuses))
+                    .expect("JSON values serialize")
+            ),
+        }
+        let code = if self.statuses.iter().any(|s| s.error.is_some()) {
+            2
+        } else {
+            u8::from(!out.findings.is_empty())
+        };
+        ExitCode::from(code)
+    }
 }
 
 fn record(

@@ -1,33 +1,32 @@
 //! Per-AOV checks of one file: parse errors, emptiness, equivalence, group labels, lobes.
 
-use lpe::analysis;
-use lpe::{AovSet, LobeCategory, LobeMap, Lpe, Parser};
+use lpe::LobeCategory;
 use lpe_lint::Document;
 
+use super::dialect::Dialect;
 use super::finding::{Finding, Kind};
-use super::labels::{self, Carrier};
+use super::labels::Carrier;
 use super::Linted;
 
 /// Parses the AOVs of `doc` into `linted` and appends the findings on them.
-pub fn check(
+pub fn check<D: Dialect>(
     doc: &Document,
-    linted: &mut [Linted],
-    parser: &Parser,
-    lobes: &LobeMap,
+    linted: &mut [Linted<D::Expr>],
+    dialect: &D,
     findings: &mut Vec<Finding>,
 ) {
     for l in linted.iter_mut() {
-        match parser.parse(&l.decl.source) {
+        match dialect.parse(&l.decl.source) {
             Ok(lpe) => l.lpe = Some(lpe),
             Err(e) => {
-                let mut f = finding(l, Kind::ParseError, e.message().to_string());
-                f.caret = Some((e.source_text().to_string(), e.span()));
-                f.help = e.help().map(str::to_string);
+                let mut f = finding(l, Kind::ParseError, e.message);
+                f.caret = Some((e.source, e.span));
+                f.help = e.help;
                 findings.push(f);
             }
         }
     }
-    let empty = empty_aovs(linted);
+    let empty = empty_aovs(linted, dialect);
     for (i, reason) in &empty {
         findings.push(finding(
             &linted[*i],
@@ -42,7 +41,7 @@ pub fn check(
         let b = linted[j].lpe.as_ref().expect("live AOVs parsed");
         let twin = live[..x].iter().copied().find(|&i| {
             let a = linted[i].lpe.as_ref().expect("live AOVs parsed");
-            a.prefixes == b.prefixes && analysis::compare(a, b).is_ok_and(|c| c.equivalent())
+            dialect.equivalent(a, b)
         });
         if let Some(i) = twin {
             let mut f = finding(
@@ -59,30 +58,30 @@ pub fn check(
     }
     for l in linted.iter() {
         if let Some(lpe) = &l.lpe {
-            group_findings(doc, l, lpe, findings);
-            lobe_findings(l, lpe, lobes, findings);
+            group_findings(doc, l, &dialect.labels(lpe), findings);
+            lobe_findings(l, &dialect.unfed_lobes(lpe), findings);
         }
     }
 }
 
 /// `(index, reason)` of the parsed AOVs that can match no path.
-fn empty_aovs(linted: &[Linted]) -> Vec<(usize, String)> {
-    let parsed: Vec<(usize, (String, Lpe))> = linted
+fn empty_aovs<D: Dialect>(linted: &[Linted<D::Expr>], dialect: &D) -> Vec<(usize, String)> {
+    let parsed: Vec<(usize, (String, D::Expr))> = linted
         .iter()
         .enumerate()
         .filter_map(|(i, l)| l.lpe.clone().map(|lpe| (i, (l.decl.name.clone(), lpe))))
         .collect();
-    let named: Vec<(String, Lpe)> = parsed.iter().map(|(_, n)| n.clone()).collect();
-    let warnings = match AovSet::compile(&named) {
-        Ok(set) => set.warnings().to_vec(),
+    let named: Vec<(String, D::Expr)> = parsed.iter().map(|(_, n)| n.clone()).collect();
+    let warnings = match dialect.warnings(&named) {
+        Some(w) => w,
         // Too many or too large together: each alone (its emptiness does not depend on
         // the others).
-        Err(_) => named
+        None => named
             .iter()
             .enumerate()
             .flat_map(|(k, n)| {
-                AovSet::compile(std::slice::from_ref(n))
-                    .map(|s| s.warnings().to_vec())
+                dialect
+                    .warnings(std::slice::from_ref(n))
                     .unwrap_or_default()
                     .into_iter()
                     .map(move |mut w| {
@@ -98,15 +97,20 @@ fn empty_aovs(linted: &[Linted]) -> Vec<(usize, String)> {
         .collect()
 }
 
-fn group_findings(doc: &Document, l: &Linted, lpe: &Lpe, findings: &mut Vec<Finding>) {
-    for (carrier, label) in labels::labels(lpe) {
+fn group_findings<E>(
+    doc: &Document,
+    l: &Linted<E>,
+    labels: &[(Carrier, String)],
+    findings: &mut Vec<Finding>,
+) {
+    for (carrier, label) in labels {
         let (known, kind, who) = match carrier {
             Carrier::Light => (&doc.light_groups, Kind::UnknownLightGroup, "light"),
             Carrier::Object => (&doc.object_groups, Kind::UnknownObjectGroup, "object"),
         };
         // A stage with no lights (objects) at all is a settings layer: nothing to check.
         let Some(known) = known else { continue };
-        if known.contains(&label) {
+        if known.contains(label) {
             continue;
         }
         let carried = if known.is_empty() {
@@ -127,16 +131,13 @@ fn group_findings(doc: &Document, l: &Linted, lpe: &Lpe, findings: &mut Vec<Find
             format!("no {who} in this stage carries group '{label}' ({carried})"),
         )
         .with_caret_on(&l.decl.source, &format!("'{label}'"));
-        f.help = closest(&label, known).map(|g| format!("did you mean '{g}'?"));
+        f.help = closest(label, known).map(|g| format!("did you mean '{g}'?"));
         findings.push(f);
     }
 }
 
-fn lobe_findings(l: &Linted, lpe: &Lpe, lobes: &LobeMap, findings: &mut Vec<Finding>) {
-    for (category, lobe) in labels::lobes(lpe) {
-        if lobes.is_fed(category, lobe) {
-            continue;
-        }
+fn lobe_findings<E>(l: &Linted<E>, unfed: &[(LobeCategory, u8)], findings: &mut Vec<Finding>) {
+    for &(category, lobe) in unfed {
         let letter = category.kind().letter();
         let key = category.ini_name();
         let what = match category {
@@ -156,7 +157,7 @@ fn lobe_findings(l: &Linted, lpe: &Lpe, lobes: &LobeMap, findings: &mut Vec<Find
     }
 }
 
-fn finding(l: &Linted, kind: Kind, message: String) -> Finding {
+fn finding<E>(l: &Linted<E>, kind: Kind, message: String) -> Finding {
     Finding::new(kind, &l.file, &l.decl.name, &l.decl.location, message)
 }
 

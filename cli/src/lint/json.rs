@@ -20,7 +20,7 @@ pub struct FileStatus {
 }
 
 /// The JSON report.
-pub fn render(out: &Outcome, files: &[FileStatus]) -> Value {
+pub fn render<E: std::fmt::Display>(out: &Outcome<E>, files: &[FileStatus]) -> Value {
     let files: Vec<Value> = files
         .iter()
         .map(|f| json!({"file": f.file, "format": f.format, "error": f.error}))

@@ -7,6 +7,7 @@
 //! ([`partition`]), each a [`Finding`]; [`text`] and [`json`] print them.
 
 pub mod aovs;
+pub mod dialect;
 pub mod finding;
 pub mod json;
 pub mod labels;
@@ -15,20 +16,22 @@ pub mod text;
 
 pub use finding::{Finding, Kind};
 
-use lpe::{Lpe, Parser};
+use lpe::Lpe;
 use lpe_lint::{AovDecl, Document, PartitionDecl};
+
+use dialect::Dialect;
 
 use crate::witness::Disagreement;
 
 /// One AOV as linted: its declaration and, when it parsed, its expression.
 #[derive(Clone, Debug)]
-pub struct Linted {
+pub struct Linted<E = Lpe> {
     /// The file, as given.
     pub file: String,
     /// The declaration.
     pub decl: AovDecl,
     /// The parsed expression, `None` after a parse error.
-    pub lpe: Option<Lpe>,
+    pub lpe: Option<E>,
 }
 
 /// A partition as checked.
@@ -45,10 +48,10 @@ pub struct CheckedPartition {
 }
 
 /// Everything lint found.
-#[derive(Clone, Debug, Default)]
-pub struct Outcome {
+#[derive(Clone, Debug)]
+pub struct Outcome<E = Lpe> {
     /// Every LPE AOV read, in file order.
-    pub aovs: Vec<Linted>,
+    pub aovs: Vec<Linted<E>>,
     /// Every partition.
     pub partitions: Vec<CheckedPartition>,
     /// The findings, per file in check order.
@@ -58,14 +61,17 @@ pub struct Outcome {
 /// Lints the documents read (ini documents contribute only partitions), then the
 /// `extra` partitions over the AOVs of every file. Partition witnesses are re-checked
 /// with the reference matcher; a failed re-check is an engine bug, returned as the error.
-pub fn lint(
+pub fn lint<D: Dialect>(
     docs: &[Document],
-    parser: &Parser,
-    lobes: &lpe::LobeMap,
-    universe: &Lpe,
+    dialect: &D,
+    universe: &D::Expr,
     extra: &[PartitionDecl],
-) -> Result<Outcome, Disagreement> {
-    let mut out = Outcome::default();
+) -> Result<Outcome<D::Expr>, Disagreement> {
+    let mut out = Outcome {
+        aovs: Vec::new(),
+        partitions: Vec::new(),
+        findings: Vec::new(),
+    };
     for doc in docs {
         let file = doc.file.display().to_string();
         let first = out.aovs.len();
@@ -74,19 +80,13 @@ pub fn lint(
             decl: decl.clone(),
             lpe: None,
         }));
-        aovs::check(
-            doc,
-            &mut out.aovs[first..],
-            parser,
-            lobes,
-            &mut out.findings,
-        );
+        aovs::check(doc, &mut out.aovs[first..], dialect, &mut out.findings);
         for p in &doc.partitions {
             let checked = partition::check(
                 &file,
                 p,
                 &out.aovs[first..],
-                parser,
+                dialect,
                 universe,
                 &mut out.findings,
             )?;
@@ -98,7 +98,7 @@ pub fn lint(
             "(command line)",
             p,
             &out.aovs,
-            parser,
+            dialect,
             universe,
             &mut out.findings,
         )?;

@@ -1,22 +1,21 @@
 //! Declared partitions: do the members split the universe (beauty), and if not, each
 //! overlap, the gap and stray paths with shortest witnesses, and the remainder AOV.
 
-use lpe::analysis;
-use lpe::{Lpe, Parser};
 use lpe_lint::PartitionDecl;
 
+use super::dialect::Dialect;
 use super::finding::{Finding, Kind};
 use super::{CheckedPartition, Linted};
 use crate::cmd;
 use crate::witness::Disagreement;
 
 /// Checks one partition over `aovs` (members are looked up by name, first match).
-pub fn check(
+pub fn check<D: Dialect>(
     file: &str,
     decl: &PartitionDecl,
-    aovs: &[Linted],
-    parser: &Parser,
-    universe: &Lpe,
+    aovs: &[Linted<D::Expr>],
+    dialect: &D,
+    universe: &D::Expr,
     findings: &mut Vec<Finding>,
 ) -> Result<CheckedPartition, Disagreement> {
     let new = |kind, message| Finding::new(kind, file, &decl.name, &decl.location, message);
@@ -45,7 +44,7 @@ pub fn check(
     if !complete || named.is_empty() {
         return Ok(out);
     }
-    let Ok(p) = analysis::partition(&named, universe) else {
+    let Ok(p) = dialect.partition(&named, universe) else {
         return Ok(out);
     };
     // The partition command's report re-checks every witness with the reference matcher.
@@ -70,7 +69,7 @@ pub fn check(
             format!("some paths of {universe} land in no member: that light is lost"),
         );
         f.witness = Some(path.to_string());
-        f.remainder = remainder(&named, universe, parser);
+        f.remainder = dialect.remainder(&named, universe);
         if f.remainder.is_none() {
             f.help = Some(
                 "add an AOV that matches the witness path (no remainder expression \
@@ -90,15 +89,4 @@ pub fn check(
         findings.push(f);
     }
     Ok(out)
-}
-
-/// The remainder AOV of `lpe::analysis` (`UNIVERSE - (a|b|c)`) as printed, when the
-/// printed text parses and the partition check confirms that adding it as one more member
-/// leaves no gap; else `None`.
-pub fn remainder(members: &[(String, Lpe)], universe: &Lpe, parser: &Parser) -> Option<String> {
-    let printed = analysis::remainder(members, universe).to_string();
-    let mut closed = members.to_vec();
-    closed.push(("remainder".into(), parser.parse(&printed).ok()?));
-    let p = analysis::partition(&closed, universe).ok()?;
-    p.gap.is_none().then_some(printed)
 }

@@ -5,7 +5,7 @@ use lpe_lint::Location;
 use super::{Finding, Outcome};
 
 /// The text report.
-pub fn render(out: &Outcome) -> String {
+pub fn render<E: std::fmt::Display>(out: &Outcome<E>) -> String {
     let mut s = String::new();
     for f in &out.findings {
         s.push_str(&block(f));
