@@ -7,6 +7,8 @@
 //! partition (`lpe:partition` in USD, `# lpe:partition` comments in RIB and ini, or
 //! `--partition`), each overlap, the gap and stray paths with shortest witnesses and the
 //! remainder AOV. ini files (positional or `--ini`) configure the parsing of every file.
+//! `--dialect osl [--register …]` reads every AOV as OSL's dialect (ini files are then an
+//! error: their macros and lobe mappings are RenderMan's).
 //! Exit 0 clean, 1 findings, 2 an unreadable file or bad argument, 3 a witness the
 //! reference matcher refused. docs/lint.md has the JSON schema.
 
