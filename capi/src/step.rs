@@ -155,15 +155,14 @@ pub extern "C" fn lpe_step_n(
     }
     // SAFETY: the caller passes `count` readable classes (checked non-null).
     let classes = unsafe { std::slice::from_raw_parts(classes, count) };
-    if classes.iter().any(|c| c.to_class(set).is_none()) {
-        return lpe_status::LPE_ERR_RANGE;
-    }
     guard(lpe_status::LPE_ERR_PANIC, || {
+        // One pass: the steps go to a local, written back only if every class is valid.
         let mut s = state.to_state();
         for c in classes {
-            if let Some(c) = c.to_class(set) {
-                s = set.set.step_class(s, c);
-            }
+            let Some(c) = c.to_class(set) else {
+                return lpe_status::LPE_ERR_RANGE;
+            };
+            s = set.set.step_class(s, c);
         }
         *state = lpe_state::from_state(s);
         lpe_status::LPE_OK
