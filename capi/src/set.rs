@@ -227,7 +227,12 @@ fn read_sources<'a>(
 }
 
 /// A parse error of AOV `i`, at byte `position` of its expression.
-fn parse_error(i: usize, name: &str, message: impl std::fmt::Display, position: usize) -> lpe_error {
+fn parse_error(
+    i: usize,
+    name: &str,
+    message: impl std::fmt::Display,
+    position: usize,
+) -> lpe_error {
     lpe_error::new(
         lpe_status::LPE_ERR_PARSE,
         format!("AOV `{name}`: {message}"),

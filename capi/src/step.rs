@@ -24,9 +24,7 @@ pub struct lpe_state {
 impl lpe_state {
     #[inline(always)]
     fn from_state(s: State) -> lpe_state {
-        lpe_state {
-            opaque: s.to_u32(),
-        }
+        lpe_state { opaque: s.to_u32() }
     }
 
     #[inline(always)]

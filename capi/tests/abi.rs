@@ -11,8 +11,8 @@ use lpe_capi::error::{
 use lpe_capi::set::*;
 use lpe_capi::status::lpe_status_message;
 use lpe_capi::step::{
-    lpe_cache_free, lpe_cache_new, lpe_is_dead, lpe_matches, lpe_matches_with, lpe_start,
-    lpe_step, lpe_step_n, lpe_step_with,
+    lpe_cache_free, lpe_cache_new, lpe_is_dead, lpe_matches, lpe_matches_with, lpe_start, lpe_step,
+    lpe_step_n, lpe_step_with,
 };
 use lpe_capi::{lpe_class, lpe_error, lpe_set, lpe_state, lpe_status, lpe_vertex};
 
@@ -532,14 +532,25 @@ fn osl_compile_errors_name_the_aov_the_byte_and_the_registration() {
         .err()
         .unwrap();
     assert_eq!((st, aov, pos), (lpe_status::LPE_ERR_PARSE, -1, 9), "{msg}");
-    assert!(msg.contains("osl_registered") && msg.contains("colors=Y"), "{msg}");
+    assert!(
+        msg.contains("osl_registered") && msg.contains("colors=Y"),
+        "{msg}"
+    );
     // OSL's own message for an unclosed group, at the end of the expression.
-    let (st, msg, aov, pos) =
-        compile_in(LPE_DIALECT_OSL, &["ok", "bad"], &["CDL", "C<RD"], None, None)
-            .err()
-            .unwrap();
+    let (st, msg, aov, pos) = compile_in(
+        LPE_DIALECT_OSL,
+        &["ok", "bad"],
+        &["CDL", "C<RD"],
+        None,
+        None,
+    )
+    .err()
+    .unwrap();
     assert_eq!((st, aov, pos), (lpe_status::LPE_ERR_PARSE, 1, 4), "{msg}");
-    assert!(msg.contains("bad") && msg.contains("looking for >"), "{msg}");
+    assert!(
+        msg.contains("bad") && msg.contains("looking for >"),
+        "{msg}"
+    );
     // A registered label parses only when registered.
     assert!(compile_in(LPE_DIALECT_OSL, &["u"], &["CDY+U"], None, None).is_err());
     let registered = CString::new("events=U;scatters=Y").unwrap();

@@ -35,7 +35,15 @@ fn bad_input_exits_2() {
         &["diff", "--external", "'unclosed"],
         &["diff", "--external", "true", "--dialect", "osl"],
         // A registration is OSL's, and only for a given case.
-        &["diff", "--external", "true", "--register", "events=U", "--expr", "C.L"],
+        &[
+            "diff",
+            "--external",
+            "true",
+            "--register",
+            "events=U",
+            "--expr",
+            "C.L",
+        ],
         &[
             "diff",
             "--external",
@@ -160,9 +168,15 @@ fn osl_runs_send_each_registration_and_replay_it() {
         .find_map(|l| l.trim().strip_prefix("replay: lpe-check "))
         .expect("a replay line");
     let words = shell_words::split(replay).unwrap();
-    let at = words.iter().position(|w| w == "--register").expect("{replay}");
+    let at = words
+        .iter()
+        .position(|w| w == "--register")
+        .expect("{replay}");
     assert_eq!(words[at + 1], registered);
-    assert!(words.windows(2).any(|w| w == ["--dialect", "osl"]), "{replay}");
+    assert!(
+        words.windows(2).any(|w| w == ["--dialect", "osl"]),
+        "{replay}"
+    );
     let words: Vec<&str> = words.iter().map(|s| s.as_str()).collect();
     let (code, again, _) = lpe_check(&words);
     assert_eq!(code, 3, "{again}");

@@ -359,11 +359,12 @@ fn parse_all<L: Wire>(lang: &L, exprs: &[String]) -> Result<Vec<L::Expr>, Answer
         .iter()
         .enumerate()
         .map(|(i, e)| {
-            lang.parse_expr(e).map_err(|(position, message)| Answer::Rejected {
-                aov: Some(i),
-                position: Some(position),
-                message,
-            })
+            lang.parse_expr(e)
+                .map_err(|(position, message)| Answer::Rejected {
+                    aov: Some(i),
+                    position: Some(position),
+                    message,
+                })
         })
         .collect()
 }

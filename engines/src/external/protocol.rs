@@ -263,9 +263,7 @@ mod tests {
                     name: "a0".into(),
                     expr: "CDY+U".into(),
                 }],
-                registered: Some(Registration::from(
-                    &"events=U;scatters=Y".parse().unwrap(),
-                )),
+                registered: Some(Registration::from(&"events=U;scatters=Y".parse().unwrap())),
             },
         };
         assert_eq!(
