@@ -436,7 +436,10 @@ fn osl_items(setup: &Setup, cases: &Cases) -> (usize, Vec<Item<Osl>>) {
             paths,
         ),
         Cases::Generated(run) => {
-            let cfg = generate::osl::Config::default().with_max_vertices(run.max_size);
+            // As for RenderMan: OSL's own matcher has no set algebra.
+            let cfg = generate::osl::Config::default()
+                .with_max_vertices(run.max_size)
+                .without_set_algebra();
             generated(run, |i| {
                 let c = generate_osl_case(run.seed, i, &cfg, run.paths);
                 (c.lang, texts(&c.exprs), texts(&c.paths))
@@ -672,4 +675,47 @@ fn replay<L: Wire>(setup: &Setup, lang: &L, exprs: &[String], path: &str) -> Str
     }
     words.extend(["--path".into(), path.to_string()]);
     shell_words::join(words)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Set algebra is this toolkit's extension: a generated run for an external matcher
+    /// holds none, in either dialect (the in-process `diff` generates it).
+    #[test]
+    fn generated_external_cases_hold_no_set_algebra() {
+        let run = Run {
+            cases: 400,
+            seed: 3,
+            first: 0,
+            max_size: 10,
+            paths: 1,
+            max_failures: 1,
+        };
+        let setup = Setup {
+            command: String::new(),
+            dialect: Dialect::Osl,
+            registered: Registered::none(),
+            timeout: Duration::from_secs(1),
+            max_restarts: 0,
+        };
+        let (_, items) = osl_items(&setup, &Cases::Generated(run.clone()));
+        let mut exprs = 0;
+        for (_, lang, texts, _) in &items {
+            for t in texts {
+                let l = lpe::osl::parse(t, &lang.registered).unwrap();
+                assert!(l.algebra.is_none(), "{t}");
+                exprs += 1;
+            }
+        }
+        // Without the filter about one in twelve would hold algebra.
+        assert!(exprs >= 400, "{exprs}");
+        let (_, items) = renderman_items(&Cases::Generated(run));
+        for (_, _, texts, _) in &items {
+            for t in texts {
+                assert!(lpe::parse(t).unwrap().algebra.is_none(), "{t}");
+            }
+        }
+    }
 }
