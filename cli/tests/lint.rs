@@ -295,6 +295,7 @@ fn karma_stage_in_the_osl_dialect() {
         findings(&v),
         triples(&[
             ("parse_error", "sss", &format!("{vars}/sss")),
+            ("empty", "not_key", &format!("{vars}/not_key")),
             ("empty", "never", &format!("{vars}/never")),
             (
                 "equivalent",
@@ -313,15 +314,23 @@ fn karma_stage_in_the_osl_dialect() {
     // OSL's own message, at the `*` OSL refuses inside `<...>`.
     assert_eq!(f[0]["message"], "Repetitions not allowed inside '<...>'");
     assert_eq!(f[0]["span"], serde_json::json!([5, 6]));
-    assert!(f[1]["message"]
-        .as_str()
-        .unwrap()
-        .contains("`<R[]>` matches no vertex"));
-    assert_eq!(f[2]["other"], "diffuse_direct");
-    assert_eq!(f[3]["help"], "did you mean 'fill'?");
+    // Every path to the key light also ends in a light: nothing is left.
+    let message = |k: usize| f[k]["message"].as_str().unwrap().to_string();
+    assert!(
+        message(1).contains("set algebra leaves no path"),
+        "{}",
+        message(1)
+    );
+    assert!(
+        message(2).contains("`<R[]>` matches no vertex"),
+        "{}",
+        message(2)
+    );
+    assert_eq!(f[3]["other"], "diffuse_direct");
+    assert_eq!(f[4]["help"], "did you mean 'fill'?");
     // Every member needs a bounce: a camera straight into a light is lost.
-    assert_eq!(f[4]["witness"], "C,~ L,~");
-    let rest = f[4]["remainder"].as_str().unwrap();
+    assert_eq!(f[5]["witness"], "C,~ L,~");
+    let rest = f[5]["remainder"].as_str().unwrap();
     assert!(rest.starts_with("<C.><[RT][DGS]>*<L.>|<O.> - (("), "{rest}");
     // The remainder covers exactly the direct paths (worked out by hand: every member
     // starts with one bounce), and the equivalence check confirms it.

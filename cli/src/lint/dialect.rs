@@ -14,6 +14,7 @@ use super::labels::{self, Carrier};
 use crate::witness::Checked;
 
 /// A parse error as a finding shows it.
+#[derive(Debug)]
 pub struct ParseFailure {
     /// The message, without position.
     pub message: String,
@@ -33,8 +34,8 @@ pub trait Dialect {
     /// Parses one AOV's source.
     fn parse(&self, src: &str) -> Result<Self::Expr, ParseFailure>;
 
-    /// The emptiness warnings of `aovs` compiled as one set; `None` if they do not
-    /// compile together.
+    /// The emptiness warnings of `aovs` compiled as one set (set-algebra AOVs included:
+    /// `analysis::warnings`); `None` if they do not compile together.
     fn warnings(&self, aovs: &[(String, Self::Expr)]) -> Option<Vec<Warning>>;
 
     /// Whether two AOVs render the same image.
@@ -84,7 +85,7 @@ impl Dialect for RenderMan<'_> {
     }
 
     fn warnings(&self, aovs: &[(String, Lpe)]) -> Option<Vec<Warning>> {
-        AovSet::compile(aovs).ok().map(|s| s.warnings().to_vec())
+        AovSet::compile(aovs).ok().map(|s| analysis::warnings(&s))
     }
 
     fn equivalent(&self, a: &Lpe, b: &Lpe) -> bool {
@@ -120,16 +121,21 @@ pub struct Osl {
 impl Dialect for Osl {
     type Expr = osl::Lpe;
 
+    /// A leading `lpe:` (how RIB channels and some USD RenderVars mark an expression) is
+    /// the pipeline's, not OSL's: it is skipped, and the caret still points into the
+    /// whole source.
     fn parse(&self, src: &str) -> Result<osl::Lpe, ParseFailure> {
-        osl::parse(src, &self.registered).map_err(|e| {
-            let len = src[e.pos.min(src.len())..]
+        let skip = if src.starts_with("lpe:") { 4 } else { 0 };
+        osl::parse(&src[skip..], &self.registered).map_err(|e| {
+            let at = skip + e.pos;
+            let len = src[at.min(src.len())..]
                 .chars()
                 .next()
                 .map_or(0, char::len_utf8);
             ParseFailure {
                 message: e.message(),
                 source: src.to_string(),
-                span: e.pos..e.pos + len,
+                span: at..at + len,
                 help: None,
             }
         })
@@ -138,7 +144,7 @@ impl Dialect for Osl {
     fn warnings(&self, aovs: &[(String, osl::Lpe)]) -> Option<Vec<Warning>> {
         AovSet::compile_osl(aovs, &self.registered, &Options::default())
             .ok()
-            .map(|s| s.warnings().to_vec())
+            .map(|s| analysis::warnings(&s))
     }
 
     fn equivalent(&self, a: &osl::Lpe, b: &osl::Lpe) -> bool {
@@ -216,6 +222,25 @@ mod tests {
 
     fn labels(s: &str) -> Vec<(Carrier, String)> {
         osl_labels(&osl::parse(s, &Registered::none()).unwrap())
+    }
+
+    #[test]
+    fn an_lpe_prefix_is_skipped_and_carets_point_into_the_whole_source() {
+        let osl = Osl {
+            registered: Registered::none(),
+        };
+        assert_eq!(
+            osl.parse("lpe:C<RD>L").unwrap(),
+            osl.parse("C<RD>L").unwrap()
+        );
+        let e = osl.parse("lpe:C<RD").unwrap_err();
+        assert_eq!(
+            (e.message.as_str(), e.span),
+            ("Reached end of line looking for > to end a group", 8..8)
+        );
+        let e = osl.parse("lpe:C<R*>L").unwrap_err();
+        assert_eq!(e.span, 7..8);
+        assert_eq!(e.source, "lpe:C<R*>L");
     }
 
     #[test]
