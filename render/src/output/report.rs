@@ -165,7 +165,7 @@ impl Report {
                 .map(|a| AovEntry {
                     name: a.name.clone(),
                     source: a.source.clone(),
-                    expression: a.lpe.to_string(),
+                    expression: a.expr.to_string(),
                 })
                 .collect(),
             invariants,
