@@ -117,7 +117,11 @@ const SAME_MEANING: [(&str, &str, &str); 9] = [
     ("mirror", "C<RS8>.*[<L.>O]", "C<RS>.*[LO]"),
     ("refraction", "C<TS8>.*[<L.>O]", "C<TS>.*[LO]"),
     ("subsurface", "C<TD>.*[<L.>O]", "C<TD>.*[LO]"),
-    ("caustic", "C<RD>(<RS8>|<TS8>)+[<L.>O]", "C<RD>[<RS><TS>]+[LO]"),
+    (
+        "caustic",
+        "C<RD>(<RS8>|<TS8>)+[<L.>O]",
+        "C<RD>[<RS><TS>]+[LO]",
+    ),
     ("floor", "C<RD'floor'>.*[<L.>O]", "C<RD'floor'>.*[LO]"),
     ("key", "C.*<L.'key'>", "C.*<L.'key'>"),
     ("ember_seen", "C<O.'ember'>", "C<O.'ember'>"),
@@ -163,11 +167,17 @@ fn glossy_and_delta_split_what_renderman_calls_specular() {
     let b = render(&s, &osl, &small(24, 4));
     let (spec, glossy, delta) = (a.film.layer(1), b.film.layer(1), b.film.layer(2));
     for (what, layer) in [("glossy", &glossy), ("delta", &delta)] {
-        assert!(layer.iter().any(|v| v.element_sum() > 0.0), "{what} is black");
+        assert!(
+            layer.iter().any(|v| v.element_sum() > 0.0),
+            "{what} is black"
+        );
     }
     for p in 0..spec.len() {
         let err = (glossy[p] + delta[p] - spec[p]).abs().max_element();
-        assert!(err <= 1e-9 * spec[p].abs().max_element().max(1.0), "pixel {p}");
+        assert!(
+            err <= 1e-9 * spec[p].abs().max_element().max(1.0),
+            "pixel {p}"
+        );
     }
 }
 
@@ -241,7 +251,16 @@ fn bad_osl_input_is_an_error_with_its_position() {
         ),
     ];
     for (mut args, want) in cases {
-        args.extend(["--dialect", "osl", "--res", "4x4", "--spp", "1", "--out", out_s]);
+        args.extend([
+            "--dialect",
+            "osl",
+            "--res",
+            "4x4",
+            "--spp",
+            "1",
+            "--out",
+            out_s,
+        ]);
         let (code, err) = run(&args);
         assert_eq!(code, 2, "{args:?}: {err}");
         assert!(err.contains(want), "{args:?}: expected `{want}` in:\n{err}");
@@ -271,10 +290,7 @@ fn the_cli_renders_the_osl_basic_set_by_default() {
     ]);
     assert_eq!(code, 0, "{err}");
     assert!(err.contains("7 AOVs (osl dialect)"), "{err}");
-    assert!(
-        err.contains("[pass] OSL basic AOVs sum to beauty"),
-        "{err}"
-    );
+    assert!(err.contains("[pass] OSL basic AOVs sum to beauty"), "{err}");
     assert!(
         err.contains("[pass] formal partition check: OSL basic AOVs"),
         "{err}"
