@@ -55,6 +55,9 @@ enum Command {
         /// Rounds, each rendering both configurations back to back.
         #[arg(long, default_value_t = 15, value_parser = positive_usize)]
         rounds: usize,
+        /// The dialect of the 32 AOVs: `osl` starts from the OSL basic set.
+        #[arg(long, default_value_t = lpe::Dialect::RenderMan)]
+        dialect: lpe::Dialect,
     },
     /// Accuracy vs time: MSE, relMSE, log-log slope and efficiency per technique and
     /// AOV on scenes with known answers; CSV, Markdown and plots in --out.
@@ -131,7 +134,8 @@ fn main() -> ExitCode {
             res,
             threads,
             rounds,
-        }) => bench::run(&scene, spp, res, Some(threads), rounds),
+            dialect,
+        }) => bench::run(dialect, &scene, spp, res, Some(threads), rounds),
         Some(Command::Converge {
             quick,
             out,
