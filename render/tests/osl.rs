@@ -296,6 +296,9 @@ fn the_cli_renders_the_osl_basic_set_by_default() {
         "{err}"
     );
     let report = std::fs::read_to_string(out.join("report.md")).unwrap();
-    assert!(report.contains("C<R[GS]>.+[LO]"), "{report}");
+    assert!(report.contains("AOVs in the osl dialect"), "{report}");
+    assert!(report.contains("`C<R[GS]>.+[LO]`"), "{report}");
+    let json = std::fs::read_to_string(out.join("report.json")).unwrap();
+    assert!(json.contains("\"dialect\": \"osl\""), "{json}");
     std::fs::remove_dir_all(&dir).ok();
 }
