@@ -302,3 +302,45 @@ fn the_cli_renders_the_osl_basic_set_by_default() {
     assert!(json.contains("\"dialect\": \"osl\""), "{json}");
     std::fs::remove_dir_all(&dir).ok();
 }
+
+#[test]
+fn usd_render_vars_are_read_in_osl_and_errors_name_the_prim() {
+    // Karma is OSL-based: Solaris's RenderVars are OSL expressions.
+    let fixture = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+        .join("../tests/testdata/usd/solaris_karma.usda");
+    let dir = std::env::temp_dir().join(format!("lpe-render-osl-usd-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = dir.join("out");
+    let args = |stage: &str| {
+        vec![
+            "--dialect".to_string(),
+            "osl".into(),
+            "--usd".into(),
+            stage.to_string(),
+            "--res=6x6".into(),
+            "--spp=1".into(),
+            format!("--out={}", out.display()),
+        ]
+    };
+    let a = args(fixture.to_str().unwrap());
+    let (code, err) = run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("3 AOVs (osl dialect)"), "{err}");
+
+    let text = std::fs::read_to_string(&fixture).unwrap();
+    let bad_text = text.replace("C<RD>.*<L.'fil'>", "C<RD>.*<L.'fil'>E");
+    assert_ne!(bad_text, text);
+    let bad = dir.join("bad.usda");
+    std::fs::write(&bad, bad_text).unwrap();
+    let a = args(bad.to_str().unwrap());
+    let (code, err) = run(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(code, 2, "{err}");
+    assert!(
+        err.contains(
+            "bad.usda:</Render/Products/Vars/diffuse_fill>.sourceName: AOV `diffuse_fill` \
+             (OSL dialect): Unrecognized basic label: E at char 16"
+        ),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
