@@ -111,7 +111,7 @@ fn the_osl_check_suite_passes_with_everything_checked() {
 /// Lambert D2 (`Diffuse`), diffuse transmission D3 (`Subsurface`), GGX S2 (`Specular`),
 /// S3 (`RoughSpecular`) and S4 (`Clearcoat`), and the dielectric S8 (`Glass`); the
 /// RenderMan side tells glossy from delta by those lobe numbers.
-const SAME_MEANING: [(&str, &str, &str); 9] = [
+const SAME_MEANING: [(&str, &str, &str); 10] = [
     ("diffuse", "C<RD>[<L.>O]", "C<RD>[LO]"),
     ("glossy", "C(<RS2>|<RS3>|<RS4>).*[<L.>O]", "C<RG>.*[LO]"),
     ("mirror", "C<RS8>.*[<L.>O]", "C<RS>.*[LO]"),
@@ -125,6 +125,8 @@ const SAME_MEANING: [(&str, &str, &str); 9] = [
     ("floor", "C<RD'floor'>.*[<L.>O]", "C<RD'floor'>.*[LO]"),
     ("key", "C.*<L.'key'>", "C.*<L.'key'>"),
     ("ember_seen", "C<O.'ember'>", "C<O.'ember'>"),
+    // The camera and the emitters scatter NONE (`x` inside `<...>`).
+    ("none_slots", "C<RD>[<L.>O]", "<Cx><RD>[<Lx><Ox>]"),
 ];
 
 #[test]
