@@ -62,6 +62,8 @@ impl<C: Copy> Vertices<C> {
         let label = |l: &Option<String>| if labels { l.clone() } else { None };
         let camera = m.classify_scene(&SceneVertex::Camera);
         // User lobes are RenderMan's: OSL has no pseudo paths (docs/language.md §18.12).
+        // Their vertices are RenderMan ones, whose class on an OSL set lpe leaves
+        // unspecified, so they are not even asked for.
         let user_lobes = m.dialect() == Dialect::RenderMan;
         let mut scatter = Vec::new();
         let mut glow = Vec::new();
