@@ -99,7 +99,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             let mut hits = 0;
             for path in black_box(&c_classes) {
-                let mut s = lpe_state { opaque: [0; 4] };
+                let mut s = lpe_state { opaque: 0 };
                 lpe_start(set, &mut s);
                 for &c in path {
                     step(set, &mut s, c);
@@ -115,7 +115,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             let mut hits = 0;
             for path in black_box(&c_classes) {
-                let mut s = lpe_state { opaque: [0; 4] };
+                let mut s = lpe_state { opaque: 0 };
                 lpe_start(set, &mut s);
                 step_n(set, &mut s, path.as_ptr(), path.len());
                 let mut count = 0;

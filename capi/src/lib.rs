@@ -10,11 +10,17 @@
 //! - no Rust panic crosses the boundary: each body runs under `catch_unwind`, a panic
 //!   becomes `LPE_ERR_PANIC`;
 //! - a compiled `lpe_set` is immutable: share it across threads freely; `lpe_state`
-//!   and `lpe_class` are plain values the caller copies.
+//!   (a 32-bit id) and `lpe_class` are plain values the caller copies; an `lpe_cache`
+//!   (optional, for sets stepped as a lazy DFA) belongs to one thread at a time.
+//!
+//! Both dialects: `LPE_DIALECT_RENDERMAN` sets classify vertices by type, event, lobe
+//! and label (`lpe_classify`, `lpe_classify_text`); `LPE_DIALECT_OSL` sets, compiled
+//! under the registration in `lpe_options.osl_registered`, classify a vertex from its
+//! symbols (`lpe_classify_osl`). Stepping is the same for both.
 //!
 //! Modules: [`status`] (codes and the panic guard), [`error`] (the error object of a
 //! failed compile), [`set`] (compile, names, warnings, free), [`classify`] (vertices
-//! to classes), [`step`] (states: start, step, matches, is_dead).
+//! to classes), [`step`] (states: start, step, matches, is_dead; caches).
 
 #![allow(non_camel_case_types)]
 // Every pointer argument is checked for null and documented in the header; marking the
@@ -31,4 +37,4 @@ pub use classify::{lpe_class, lpe_vertex};
 pub use error::lpe_error;
 pub use set::{lpe_options, lpe_set};
 pub use status::lpe_status;
-pub use step::lpe_state;
+pub use step::{lpe_cache, lpe_state};

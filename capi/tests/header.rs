@@ -31,6 +31,10 @@ fn the_checked_in_header_is_current() {
         "extern \"C\" {",
         "lpe_step(",
         "#include <stdint.h>",
+        // A state is one register-sized value.
+        "uint32_t opaque;\n} lpe_state;",
+        "lpe_classify_osl(",
+        "const char *osl_registered;",
     ] {
         assert!(generated.contains(needle), "{needle}");
     }
