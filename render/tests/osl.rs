@@ -55,7 +55,10 @@ fn the_osl_basic_set_sums_to_beauty_and_is_proven_a_partition() {
             ]
         );
         let r = render(&s, &aovs, &small(24, 4));
-        assert!(!r.plan.user_lobes, "{name}: OSL has no user-lobe pseudo paths");
+        assert!(
+            !r.plan.user_lobes,
+            "{name}: OSL has no user-lobe pseudo paths"
+        );
         let sum = invariants::partition(&r.film, &aovs, &aovs.partitions[0]);
         assert_eq!(sum.passed, Some(true), "{name}: {}", sum.detail);
         // Not a vacuous sum: every basic AOV the scene can feed is non-zero.
