@@ -20,21 +20,26 @@
 //!
 //! Modules: [`status`] (codes and the panic guard), [`error`] (the error object of a
 //! failed compile), [`set`] (compile, names, warnings, free), [`classify`] (vertices
-//! to classes), [`step`] (states: start, step, matches, is_dead; caches).
+//! to classes), [`step`] (states: start, step, matches, is_dead; caches), [`view`] (the
+//! step view the header's inline `lpe_view_step` reads), [`bench`] (a benchmark-only
+//! export, not in the header).
 
 #![allow(non_camel_case_types)]
 // Every pointer argument is checked for null and documented in the header; marking the
 // functions `unsafe` would add nothing for C callers.
 #![allow(clippy::not_unsafe_ptr_arg_deref)]
 
+pub mod bench;
 pub mod classify;
 pub mod error;
 pub mod set;
 pub mod status;
 pub mod step;
+pub mod view;
 
 pub use classify::{lpe_class, lpe_vertex};
 pub use error::lpe_error;
 pub use set::{lpe_options, lpe_set};
 pub use status::lpe_status;
 pub use step::{lpe_cache, lpe_state};
+pub use view::lpe_step_view;
