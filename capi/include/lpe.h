@@ -330,7 +330,15 @@ static inline lpe_status lpe_view_step(const lpe_step_view *view, lpe_state *sta
       return LPE_OK;
     }
   }
-  return lpe_step(view != NULL ? view->set : NULL, state, cls);
+  if (view == NULL || state == NULL) {
+    return lpe_step(view != NULL ? view->set : NULL, state, cls);
+  }
+  // The call steps a copy: were the caller's state's address passed out, the compiler
+  // would keep that state in memory, a store and a reload on every step of the loop.
+  lpe_state next = *state;
+  lpe_status status = lpe_step(view->set, &next, cls);
+  *state = next;
+  return status;
 }
 
 // `lpe_is_dead(view->set, state, dead)` inline: the same status and answer in every case.
