@@ -2,9 +2,11 @@
  * lpe: light path expressions for renderers, the C ABI (C99 and C++).
  *
  * Scene load: lpe_set_compile() once (RenderMan or OSL dialect), lpe_classify() (OSL:
- * lpe_classify_osl()) per material lobe, light and camera. Per path: lpe_start(),
- * lpe_step() per vertex, lpe_matches() at an emitter, lpe_is_dead() to stop early. A
- * compiled lpe_set is immutable and thread-safe; lpe_state (32 bits) and lpe_class
+ * lpe_classify_osl()) per material lobe, light and camera, lpe_set_step_view() once.
+ * Per path: start from the view's start, lpe_view_step() per vertex (inline: the table
+ * load in your loop, no call while the set's DFA answers; lpe_step() is the call),
+ * lpe_matches() at an emitter, lpe_view_is_dead() to stop early. A compiled lpe_set is
+ * immutable and thread-safe, and so is its step view; lpe_state (32 bits) and lpe_class
  * are plain values; an lpe_cache serves one thread. Every function checks its pointers and
  * ranges and returns an lpe_status; no Rust panic crosses this boundary.
  * Link: liblpe_capi.a (plus -lpthread -ldl -lm) or liblpe_capi.so.

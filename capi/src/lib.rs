@@ -1,6 +1,8 @@
 //! The C ABI of lpe: compile an AOV set once, classify each kind of scene vertex once,
 //! then per path `lpe_start`, one `lpe_step` per vertex, `lpe_matches` at an emitter and
-//! `lpe_is_dead` to stop early. The header is `capi/include/lpe.h`, generated from
+//! `lpe_is_dead` to stop early; or, with the set's step view (`lpe_set_step_view`), the
+//! header's inline `lpe_view_step` and `lpe_view_is_dead`, which load from the set's DFA
+//! table in the caller's loop and give the calls' answers. The header is `capi/include/lpe.h`, generated from
 //! these items by cbindgen (a test fails when the checked-in header is stale).
 //!
 //! Conventions every function keeps:
