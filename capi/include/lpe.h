@@ -319,15 +319,22 @@ enum lpe_status lpe_set_step_view(const struct lpe_set *set, struct lpe_step_vie
 #ifndef LPE_H_INLINE
 #define LPE_H_INLINE
 
+// The table load is the common case: laid out straight, the call out of line.
+#if defined(__GNUC__) || defined(__clang__)
+#define LPE_LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define LPE_LIKELY(x) (x)
+#endif
+
 // `lpe_step(view->set, state, cls)` with the table load inlined into the caller's loop:
 // the same status and the same state in every case (a lazy set, a class or state out of
 // range, a NULL argument fall back to the call). `view` from `lpe_set_step_view`.
 static inline lpe_status lpe_view_step(const lpe_step_view *view, lpe_state *state,
                                        lpe_class cls) {
-  if (view != NULL && state != NULL && cls.id < view->class_count) {
+  if (LPE_LIKELY(view != NULL && state != NULL && cls.id < view->class_count)) {
     // Wraps like the library's u32 add, so a state of another set misses the same way.
     uint32_t i = (uint32_t)(state->opaque + cls.id);
-    if (i < view->table_len) {
+    if (LPE_LIKELY(i < view->table_len)) {
       state->opaque = view->table[i];
       return LPE_OK;
     }
