@@ -698,7 +698,7 @@ fn the_step_view_is_the_dfa_table_lpe_step_reads() {
     states.push(0);
     let stride = view.class_count.next_power_of_two();
     assert_eq!(table.len(), states.len() * stride);
-    assert!(states.iter().all(|&s| s as usize % stride == 0));
+    assert!(states.iter().all(|&s| (s as usize).is_multiple_of(stride)));
     for &s in &states {
         for c in 0..view.class_count as u32 {
             let mut t = lpe_state { opaque: s };
