@@ -2,9 +2,11 @@
  * lpe: light path expressions for renderers, the C ABI (C99 and C++).
  *
  * Scene load: lpe_set_compile() once (RenderMan or OSL dialect), lpe_classify() (OSL:
- * lpe_classify_osl()) per material lobe, light and camera. Per path: lpe_start(),
- * lpe_step() per vertex, lpe_matches() at an emitter, lpe_is_dead() to stop early. A
- * compiled lpe_set is immutable and thread-safe; lpe_state (32 bits) and lpe_class
+ * lpe_classify_osl()) per material lobe, light and camera, lpe_set_step_view() once.
+ * Per path: start from the view's start, lpe_view_step() per vertex (inline: the table
+ * load in your loop, no call while the set's DFA answers; lpe_step() is the call),
+ * lpe_matches() at an emitter, lpe_view_is_dead() to stop early. A compiled lpe_set is
+ * immutable and thread-safe, and so is its step view; lpe_state (32 bits) and lpe_class
  * are plain values; an lpe_cache serves one thread. Every function checks its pointers and
  * ranges and returns an lpe_status; no Rust panic crosses this boundary.
  * Link: liblpe_capi.a (plus -lpthread -ldl -lm) or liblpe_capi.so.
@@ -110,6 +112,31 @@ typedef struct lpe_state {
   // Do not read or write: the library's representation.
   uint32_t opaque;
 } lpe_state;
+
+// What stepping a set reads, for the header's inline `lpe_view_step` and
+// `lpe_view_is_dead`: fill it once per set with `lpe_set_step_view`, keep it beside the
+// set (a local copy in the loop is best), and step with it where you would call
+// `lpe_step`. Read-only: it points into the set, stays valid until `lpe_set_free`, and
+// never changes, so threads share it as they share the set. Only states of this set
+// (from `start`, `lpe_start` or a step of it) and its classes mean anything; anything
+// else gets `lpe_step`'s answer, never a crash.
+typedef struct lpe_step_view {
+  // The set; the inline functions call `lpe_step` on it for what the table does not
+  // answer.
+  const struct lpe_set *set;
+  // The DFA's transitions: for a class `c` below `class_count` and a state `s`, when
+  // `i = (uint32_t)(s.opaque + c.id)` is below `table_len`, `table[i]` is the state
+  // `lpe_step` steps `s` to. NULL for a lazy set (over `lpe_options.dfa_budget`).
+  const uint32_t *table;
+  // Entries in `table` (0 for a lazy set: every step falls back to `lpe_step`).
+  size_t table_len;
+  // `lpe_set_class_count`: a class at or above it is `lpe_step`'s `LPE_ERR_RANGE`.
+  size_t class_count;
+  // `lpe_start`'s state.
+  struct lpe_state start;
+  // Whether state 0 is dead: `lpe_is_dead` answers `opaque == 0 && zero_is_dead`.
+  bool zero_is_dead;
+} lpe_step_view;
 
 #ifdef __cplusplus
 extern "C" {
@@ -279,8 +306,58 @@ enum lpe_status lpe_matches_with(const struct lpe_set *set,
 // the path once it is.
 enum lpe_status lpe_is_dead(const struct lpe_set *set, const struct lpe_state *state, bool *dead);
 
+// Fills `*view` with `set`'s step view (see `lpe_step_view`); `LPE_ERR_NULL` if either
+// is NULL.
+enum lpe_status lpe_set_step_view(const struct lpe_set *set, struct lpe_step_view *view);
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus
 
 #endif  /* LPE_H */
+
+#ifndef LPE_H_INLINE
+#define LPE_H_INLINE
+
+// The table load is the common case: laid out straight, the call out of line.
+#if defined(__GNUC__) || defined(__clang__)
+#define LPE_LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define LPE_LIKELY(x) (x)
+#endif
+
+// `lpe_step(view->set, state, cls)` with the table load inlined into the caller's loop:
+// the same status and the same state in every case (a lazy set, a class or state out of
+// range, a NULL argument fall back to the call). `view` from `lpe_set_step_view`.
+static inline lpe_status lpe_view_step(const lpe_step_view *view, lpe_state *state,
+                                       lpe_class cls) {
+  if (LPE_LIKELY(view != NULL && state != NULL && cls.id < view->class_count)) {
+    // Wraps like the library's u32 add, so a state of another set misses the same way.
+    uint32_t i = (uint32_t)(state->opaque + cls.id);
+    if (LPE_LIKELY(i < view->table_len)) {
+      state->opaque = view->table[i];
+      return LPE_OK;
+    }
+  }
+  if (view == NULL || state == NULL) {
+    return lpe_step(view != NULL ? view->set : NULL, state, cls);
+  }
+  // The call steps a copy: were the caller's state's address passed out, the compiler
+  // would keep that state in memory, a store and a reload on every step of the loop.
+  lpe_state next = *state;
+  lpe_status status = lpe_step(view->set, &next, cls);
+  *state = next;
+  return status;
+}
+
+// `lpe_is_dead(view->set, state, dead)` inline: the same status and answer in every case.
+static inline lpe_status lpe_view_is_dead(const lpe_step_view *view, const lpe_state *state,
+                                          bool *dead) {
+  if (view == NULL || view->set == NULL || state == NULL || dead == NULL) {
+    return lpe_is_dead(view != NULL ? view->set : NULL, state, dead);
+  }
+  *dead = state->opaque == 0 && view->zero_is_dead;
+  return LPE_OK;
+}
+
+#endif  /* LPE_H_INLINE */

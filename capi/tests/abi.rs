@@ -14,7 +14,8 @@ use lpe_capi::step::{
     lpe_cache_free, lpe_cache_new, lpe_is_dead, lpe_matches, lpe_matches_with, lpe_start, lpe_step,
     lpe_step_n, lpe_step_with,
 };
-use lpe_capi::{lpe_class, lpe_error, lpe_set, lpe_state, lpe_status, lpe_vertex};
+use lpe_capi::view::lpe_set_step_view;
+use lpe_capi::{lpe_class, lpe_error, lpe_set, lpe_state, lpe_status, lpe_step_view, lpe_vertex};
 
 struct Set(*mut lpe_set);
 
@@ -647,4 +648,98 @@ fn a_state_is_four_bytes_and_caches_check_their_arguments() {
     );
     assert_eq!(w[0], 1);
     lpe_cache_free(cache);
+}
+
+/// Every state `lpe_step` reaches from the start, breadth first.
+fn reachable_states(set: &Set) -> Vec<u32> {
+    let mut s = lpe_state { opaque: 0 };
+    assert_eq!(lpe_start(set.0, &mut s), lpe_status::LPE_OK);
+    let mut seen = vec![s.opaque];
+    let mut at = 0;
+    while at < seen.len() {
+        for c in 0..lpe_set_class_count(set.0) as u32 {
+            let mut t = lpe_state { opaque: seen[at] };
+            assert_eq!(
+                lpe_step(set.0, &mut t, lpe_class { id: c }),
+                lpe_status::LPE_OK
+            );
+            if !seen.contains(&t.opaque) {
+                seen.push(t.opaque);
+            }
+        }
+        at += 1;
+    }
+    seen
+}
+
+#[test]
+fn the_step_view_is_the_dfa_table_lpe_step_reads() {
+    let exprs = ["C<RD>+<L.'key'>", "C.*S.*L", "^(C.*D.*L)"];
+    let set = compile(&["a", "b", "c"], &exprs, None).unwrap();
+    let mut view = std::mem::MaybeUninit::<lpe_step_view>::uninit();
+    assert_eq!(
+        lpe_set_step_view(set.0, view.as_mut_ptr()),
+        lpe_status::LPE_OK
+    );
+    // SAFETY: filled by the call above.
+    let view = unsafe { view.assume_init() };
+    assert_eq!(view.set, set.0 as *const lpe_set);
+    assert_eq!(view.class_count, lpe_set_class_count(set.0));
+    let mut start = lpe_state { opaque: 7 };
+    lpe_start(set.0, &mut start);
+    assert_eq!(view.start, start);
+    // SAFETY: the view's table has `table_len` entries while the set lives.
+    let table = unsafe { std::slice::from_raw_parts(view.table, view.table_len) };
+    // One row of a power-of-two stride per state, state ids being row offsets: the states
+    // reached, and the dead state 0, which a DFA always has (the complement keeps these
+    // paths from reaching it).
+    let mut states = reachable_states(&set);
+    assert!(!states.contains(&0));
+    states.push(0);
+    let stride = view.class_count.next_power_of_two();
+    assert_eq!(table.len(), states.len() * stride);
+    assert!(states.iter().all(|&s| (s as usize).is_multiple_of(stride)));
+    for &s in &states {
+        for c in 0..view.class_count as u32 {
+            let mut t = lpe_state { opaque: s };
+            lpe_step(set.0, &mut t, lpe_class { id: c });
+            assert_eq!(table[(s + c) as usize], t.opaque, "state {s} class {c}");
+        }
+    }
+    // A DFA's state 0 is dead, whatever the AOVs.
+    let mut dead = false;
+    lpe_is_dead(set.0, &lpe_state { opaque: 0 }, &mut dead);
+    assert!(dead && view.zero_is_dead);
+
+    // A lazy set has no table; with a complement its state 0 is not dead.
+    let lazy = lpe_options {
+        dfa_budget: 0,
+        ..lpe_options_default()
+    };
+    let set = compile_in(
+        LPE_DIALECT_RENDERMAN,
+        &["c"],
+        &exprs[2..],
+        None,
+        Some(&lazy),
+    )
+    .unwrap();
+    let mut view = std::mem::MaybeUninit::<lpe_step_view>::uninit();
+    assert_eq!(
+        lpe_set_step_view(set.0, view.as_mut_ptr()),
+        lpe_status::LPE_OK
+    );
+    // SAFETY: filled by the call above.
+    let view = unsafe { view.assume_init() };
+    assert!(view.table.is_null() && view.table_len == 0);
+    assert!(!view.zero_is_dead);
+
+    assert_eq!(
+        lpe_set_step_view(null(), &mut { view }),
+        lpe_status::LPE_ERR_NULL
+    );
+    assert_eq!(
+        lpe_set_step_view(set.0, null_mut()),
+        lpe_status::LPE_ERR_NULL
+    );
 }
