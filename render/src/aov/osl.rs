@@ -155,12 +155,14 @@ fn check_renderman_lobes(source: &str) -> Result<(), OslAovError> {
 /// Whether an expression can tell a labelled vertex from an unlabelled one. `lpe-render`
 /// puts labels only in custom slots, and never a built-in label (the integrator refuses
 /// such group names), so a pattern with no custom slot and OSL's eater accepts a vertex
-/// exactly when it accepts it without its label.
+/// exactly when it accepts it without its label. Every operand of set algebra counts.
 pub fn names_labels(lpe: &osl::Lpe) -> bool {
     let mut any = false;
-    lpe.expr.for_each_vertex(&mut |v| {
-        any |= v.symbols.len() > 2 || v.eater.is_none();
-    });
+    for e in lpe.operands() {
+        e.for_each_vertex(&mut |v| {
+            any |= v.symbols.len() > 2 || v.eater.is_none();
+        });
+    }
     any
 }
 
@@ -270,5 +272,12 @@ mod tests {
         for l in ["key", "floor", "x", "U", "E"] {
             assert!(!is_builtin_label(l), "{l}");
         }
+    }
+
+    #[test]
+    fn a_label_in_any_operand_of_set_algebra_counts() {
+        let l = |src: &str| parse_default(src).unwrap();
+        assert!(!names_labels(&l("C.*[LO] - C<RD>.*[LO]")));
+        assert!(names_labels(&l("C.*[LO] - C.*<L.'key'>")));
     }
 }
