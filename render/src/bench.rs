@@ -43,33 +43,7 @@ pub fn bench(
     settings: &Settings,
     rounds: usize,
 ) -> Result<Bench, BenchError> {
-    let mut aovs = AovList::defaults(scene, parser)?;
-    // Pad with distinct, plausible AOVs up to 32.
-    let extra = [
-        ("caustics", "lpe:caustics"),
-        ("diffuseLegacy", "lpe:diffuse"),
-        ("specularLegacy", "lpe:specular"),
-        ("emissionLegacy", "lpe:emission"),
-        ("twoBounce", "C.{2}[<L.>O]"),
-        ("threeBounce", "C.{3}[<L.>O]"),
-        ("diffuseOnly", "C<RD>+[<L.>O]"),
-        ("specThenDiffuse", "C<RS>.*<RD>.*[<L.>O]"),
-    ];
-    for (n, s) in extra {
-        if aovs.aovs.len() >= 32 {
-            break;
-        }
-        aovs.push(n, s, parser)?;
-    }
-    let mut k = 0;
-    while aovs.aovs.len() < 32 {
-        aovs.push(
-            &format!("bounces{k}"),
-            &format!("C.{{{},}}[<L.>O]", 4 + k),
-            parser,
-        )?;
-        k += 1;
-    }
+    let aovs = aovs32(scene, parser)?;
     let none = AovList::default();
     let (mut tb, mut ta) = (f64::INFINITY, f64::INFINITY);
     let (mut cpu_ratios, mut wall_ratios) = (Vec::new(), Vec::new());
@@ -96,6 +70,37 @@ pub fn bench(
         aov_count: aovs.aovs.len(),
         paths,
     })
+}
+
+/// The bench's AOV list: the defaults, padded with distinct, plausible AOVs up to 32.
+pub fn aovs32(scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
+    let mut aovs = AovList::defaults(scene, parser)?;
+    let extra = [
+        ("caustics", "lpe:caustics"),
+        ("diffuseLegacy", "lpe:diffuse"),
+        ("specularLegacy", "lpe:specular"),
+        ("emissionLegacy", "lpe:emission"),
+        ("twoBounce", "C.{2}[<L.>O]"),
+        ("threeBounce", "C.{3}[<L.>O]"),
+        ("diffuseOnly", "C<RD>+[<L.>O]"),
+        ("specThenDiffuse", "C<RS>.*<RD>.*[<L.>O]"),
+    ];
+    for (n, s) in extra {
+        if aovs.aovs.len() >= 32 {
+            break;
+        }
+        aovs.push(n, s, parser)?;
+    }
+    let mut k = 0;
+    while aovs.aovs.len() < 32 {
+        aovs.push(
+            &format!("bounces{k}"),
+            &format!("C.{{{},}}[<L.>O]", 4 + k),
+            parser,
+        )?;
+        k += 1;
+    }
+    Ok(aovs)
 }
 
 fn median(xs: &mut [f64]) -> f64 {

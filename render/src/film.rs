@@ -325,10 +325,9 @@ pub struct SampleValues<K> {
     /// Per AOV routed per contribution (and user-lobe signals): this sample's value.
     aov: Vec<DVec3>,
     touched: AovMask,
-    /// This sample's beauty values by final state, in arrival order, for the plain AOVs.
+    /// Beauty values by final state for the plain AOVs: the pixel's committed samples
+    /// (f64 film) and this sample's.
     arrivals: ByState<K>,
-    /// The pixel's plain-AOV sums by final state, committed samples only (f64 film).
-    pending: ByState<K>,
     /// All light-transport contributions were finite.
     finite: bool,
     /// AOV-only values dropped as non-finite, over every sample this accumulator saw.
@@ -342,7 +341,6 @@ impl<K: Copy + PartialEq> SampleValues<K> {
             aov: vec![DVec3::ZERO; aovs],
             touched: AovMask::EMPTY,
             arrivals: ByState::default(),
-            pending: ByState::default(),
             finite: true,
             aov_rejected: 0,
         }
@@ -457,19 +455,20 @@ impl FilmRow<'_> {
         let (layers, accumulation, stride) = (self.layers, self.accumulation, self.stride);
         let pixel = &mut self.pixels[x * stride..(x + 1) * stride];
         let add = |pixel: &mut [DVec3], layer, x| accumulation.add(pixel, layers, layer, x);
-        if !rejected {
+        if rejected {
+            acc.arrivals.drop_sample();
+        } else {
             add(pixel, 0, acc.beauty);
             if accumulation == Accumulation::F64 {
-                acc.pending.merge_from(&mut acc.arrivals);
+                acc.arrivals.commit_sample();
             } else {
                 let (aov, touched) = (&mut acc.aov, &mut acc.touched);
-                acc.arrivals.expand(&w.plain, matches, |i, v| {
+                acc.arrivals.expand_sample(&w.plain, matches, |i, v| {
                     aov[i] += v;
                     touched.insert(i);
                 });
             }
         }
-        acc.arrivals.clear();
         for i in acc.touched.iter() {
             let f = &w.flags[i];
             if !rejected || f.noinfinitecheck {
@@ -498,7 +497,7 @@ impl FilmRow<'_> {
     ) {
         let (layers, accumulation, stride) = (self.layers, self.accumulation, self.stride);
         let pixel = &mut self.pixels[x * stride..(x + 1) * stride];
-        acc.pending.expand(&w.plain, matches, |i, v| {
+        acc.arrivals.expand(&w.plain, matches, |i, v| {
             accumulation.add(pixel, layers, 1 + i, v)
         });
     }

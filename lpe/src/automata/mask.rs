@@ -47,6 +47,16 @@ impl AovMask {
     }
 }
 
+impl std::ops::BitAnd for AovMask {
+    type Output = AovMask;
+
+    /// The AOVs in both masks.
+    #[inline]
+    fn bitand(self, o: AovMask) -> AovMask {
+        AovMask(std::array::from_fn(|w| self.0[w] & o.0[w]))
+    }
+}
+
 impl FromIterator<usize> for AovMask {
     /// The mask of these AOV indices (indices `>= MAX_AOVS` are ignored).
     fn from_iter<I: IntoIterator<Item = usize>>(iter: I) -> AovMask {
@@ -129,5 +139,13 @@ mod tests {
         assert!(m.contains(200) && m.contains(3) && !m.contains(4));
         assert_eq!(m.iter().collect::<Vec<_>>(), [3, 200]);
         assert_eq!(m.count(), 2);
+    }
+
+    #[test]
+    fn and_keeps_the_aovs_of_both_masks_in_every_word() {
+        let a: AovMask = [0, 63, 64, 130, 255].into_iter().collect();
+        let b: AovMask = [63, 64, 129, 255, 7].into_iter().collect();
+        assert_eq!((a & b).iter().collect::<Vec<_>>(), [63, 64, 255]);
+        assert!((a & AovMask::EMPTY).is_empty());
     }
 }
