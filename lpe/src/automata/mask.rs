@@ -41,7 +41,9 @@ impl AovMask {
         self.0.iter().map(|w| w.count_ones() as usize).sum()
     }
 
-    /// The matching AOVs, in increasing order.
+    /// The matching AOVs, in increasing order. Inlined: out of line, the iterator is
+    /// returned through memory and every caller's loop waits on reloading it.
+    #[inline]
     pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
         bits::ones(self.0)
     }

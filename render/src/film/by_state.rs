@@ -205,6 +205,9 @@ mod tests {
             ],
             "entries stay apart, in arrival order"
         );
-        assert!(expanded(&mut t, &[0, 1]).is_empty(), "expand_sample forgets them");
+        assert!(
+            expanded(&mut t, &[0, 1]).is_empty(),
+            "expand_sample forgets them"
+        );
     }
 }
