@@ -1,10 +1,13 @@
 /*
  * lpe: light path expressions for renderers, the C ABI (C99 and C++).
  *
- * Scene load: lpe_set_compile() once, lpe_classify() per material lobe, light and
- * camera. Per path: lpe_start(), lpe_step() per vertex, lpe_matches() at an emitter,
- * lpe_is_dead() to stop early. A compiled lpe_set is immutable and thread-safe;
- * lpe_state and lpe_class are plain values. Every function checks its pointers and
+ * Scene load: lpe_set_compile() once (RenderMan or OSL dialect), lpe_classify() (OSL:
+ * lpe_classify_osl()) per material lobe, light and camera, lpe_set_step_view() once.
+ * Per path: start from the view's start, lpe_view_step() per vertex (inline: the table
+ * load in your loop, no call while the set's DFA answers; lpe_step() is the call),
+ * lpe_matches() at an emitter, lpe_view_is_dead() to stop early. A compiled lpe_set is
+ * immutable and thread-safe, and so is its step view; lpe_state (32 bits) and lpe_class
+ * are plain values; an lpe_cache serves one thread. Every function checks its pointers and
  * ranges and returns an lpe_status; no Rust panic crosses this boundary.
  * Link: liblpe_capi.a (plus -lpthread -ldl -lm) or liblpe_capi.so.
  */
@@ -21,8 +24,8 @@
 // Expressions in RenderMan's LPE dialect (docs/language.md).
 #define LPE_DIALECT_RENDERMAN 0
 
-// Expressions in OSL's LPE dialect. Not in this build yet: compiling answers
-// `LPE_ERR_UNSUPPORTED`.
+// Expressions in OSL's LPE dialect (docs/language.md §18), parsed under the labels
+// `lpe_options.osl_registered` names; classify vertices with `lpe_classify_osl`.
 #define LPE_DIALECT_OSL 1
 
 // What a call did. `LPE_OK` is 0; every error is non-zero.
@@ -46,6 +49,11 @@ typedef enum lpe_status {
   // An internal failure (a caught panic): please report it with the input.
   LPE_ERR_PANIC = 8,
 } lpe_status;
+
+// A lazy-DFA cache of one set, for one thread at a time: `lpe_step_with` and
+// `lpe_matches_with` step through it. Holds nothing for a set with a DFA. Release it
+// with `lpe_cache_free`, before its set.
+typedef struct lpe_cache lpe_cache;
 
 // Why `lpe_set_compile` failed. Opaque: read it with the `lpe_error_*` functions and
 // release it with `lpe_error_free`.
@@ -78,21 +86,57 @@ typedef struct lpe_class {
 
 // Compile-time knobs; start from `lpe_options_default()`.
 typedef struct lpe_options {
-  // Most bytes the DFA may take; over it the set steps the bitset NFA. 0 forces the NFA.
+  // Most bytes the DFA may take; over it the set is a lazy DFA (determinized while
+  // stepping, into caches). 0 forces the lazy DFA.
   size_t dfa_budget;
+  // Bytes of transitions one lazy-DFA cache may hold (a set over `dfa_budget` only),
+  // cleared whole when full: per `lpe_cache`, and per thread for the thread-local
+  // cache `lpe_step` uses. 0 turns caching off (every step runs the bitset NFA).
+  size_t lazy_cache;
   // Most bytes the NFA may take; over it compiling fails with `LPE_ERR_COMPILE`.
   size_t nfa_budget;
   // The longest path (in vertices) the caller will ever step, or 0 for no bound.
   // With a bound, `e{n,m}` with `m >= max_path_len` compiles as `e{n,}`.
   uint32_t max_path_len;
+  // `LPE_DIALECT_OSL` only: the labels the renderer registers before parsing (OSL's
+  // `AccumAutomata::addEventType` / `addScatteringType`), as NUL-terminated text
+  // `events=U,V;scatters=Y` (either part optional, in any order; `-` or NULL for
+  // none). Registration changes how expressions parse and match. Read during
+  // `lpe_set_compile` only. Must be NULL for `LPE_DIALECT_RENDERMAN`.
+  const char *osl_registered;
 } lpe_options;
 
 // Where one path is. Opaque, plain data: copy it freely (to branch a path), keep one
 // per path, only pass states this library returned for the same set.
 typedef struct lpe_state {
   // Do not read or write: the library's representation.
-  uint64_t opaque[4];
+  uint32_t opaque;
 } lpe_state;
+
+// What stepping a set reads, for the header's inline `lpe_view_step` and
+// `lpe_view_is_dead`: fill it once per set with `lpe_set_step_view`, keep it beside the
+// set (a local copy in the loop is best), and step with it where you would call
+// `lpe_step`. Read-only: it points into the set, stays valid until `lpe_set_free`, and
+// never changes, so threads share it as they share the set. Only states of this set
+// (from `start`, `lpe_start` or a step of it) and its classes mean anything; anything
+// else gets `lpe_step`'s answer, never a crash.
+typedef struct lpe_step_view {
+  // The set; the inline functions call `lpe_step` on it for what the table does not
+  // answer.
+  const struct lpe_set *set;
+  // The DFA's transitions: for a class `c` below `class_count` and a state `s`, when
+  // `i = (uint32_t)(s.opaque + c.id)` is below `table_len`, `table[i]` is the state
+  // `lpe_step` steps `s` to. NULL for a lazy set (over `lpe_options.dfa_budget`).
+  const uint32_t *table;
+  // Entries in `table` (0 for a lazy set: every step falls back to `lpe_step`).
+  size_t table_len;
+  // `lpe_set_class_count`: a class at or above it is `lpe_step`'s `LPE_ERR_RANGE`.
+  size_t class_count;
+  // `lpe_start`'s state.
+  struct lpe_state start;
+  // Whether state 0 is dead: `lpe_is_dead` answers `opaque == 0 && zero_is_dead`.
+  bool zero_is_dead;
+} lpe_step_view;
 
 #ifdef __cplusplus
 extern "C" {
@@ -101,20 +145,26 @@ extern "C" {
 // The class of a vertex, into `*out`. Classify every kind of scene vertex once, at
 // load, and step with classes. `LPE_ERR_RANGE`: an unknown letter, a lobe out of
 // range, an event on `C`/`L`/`O`, a label on `C`; `LPE_ERR_UTF8`: a label that is not
-// UTF-8.
+// UTF-8; `LPE_ERR_UNSUPPORTED`: an OSL set (use `lpe_classify_osl`).
 enum lpe_status lpe_classify(const struct lpe_set *set,
                              const struct lpe_vertex *vertex,
                              struct lpe_class *out);
 
 // The class of one vertex written in path text form (docs/language.md §2.3), such as
 // `RD2'floor'`, `L'key'` or `C`, into `*out`. `LPE_ERR_PARSE` if it is not exactly one
-// vertex.
+// vertex; `LPE_ERR_UNSUPPORTED` on an OSL set (use `lpe_classify_osl`).
 enum lpe_status lpe_classify_text(const struct lpe_set *set,
                                   const char *vertex,
                                   struct lpe_class *out);
 
-// The class of an OSL vertex (`count` symbols: event, scattering, custom labels; a NULL
-// entry is OSL's NONE). Not in this build yet: answers `LPE_ERR_UNSUPPORTED`.
+// The class of an OSL vertex, into `*out`: `count` symbols, in OSL's order: the event
+// (`"C"`, `"R"`, `"T"`, `"L"`, `"O"`, `"B"`, `"V"` or a registered one), the scattering
+// (`"D"`, `"G"`, `"S"`, `"s"` or a registered one), then the custom labels. Each is
+// NUL-terminated UTF-8; a NULL entry is OSL's NONE, so an OSL renderer passes its
+// ustrings' `c_str()` as they are. Classify every kind of scene vertex once, at load,
+// and step with classes; a vertex of fewer than two symbols matches nothing, as in OSL.
+// `LPE_ERR_RANGE`: `count` is 0; `LPE_ERR_UTF8`: a symbol that is not UTF-8;
+// `LPE_ERR_UNSUPPORTED`: a RenderMan set (use `lpe_classify`).
 enum lpe_status lpe_classify_osl(const struct lpe_set *set,
                                  const char *const *symbols,
                                  size_t count,
@@ -139,23 +189,28 @@ int64_t lpe_error_position(const struct lpe_error *error);
 // Releases an error. NULL is ignored.
 void lpe_error_free(struct lpe_error *error);
 
-// The defaults: 16 MiB DFA and NFA budgets, no path length bound.
+// The defaults: 16 MiB DFA and NFA budgets, a 2 MiB lazy-DFA cache, no path length
+// bound, nothing registered.
 struct lpe_options lpe_options_default(void);
 
 // Compiles `count` AOVs into one set.
 //
 // - `names[i]`, `exprs[i]`: NUL-terminated UTF-8, the AOV's name and expression (bit `i`
 //   of every match mask is AOV `i`). Both arrays may be NULL only when `count` is 0.
-// - `dialect`: `LPE_DIALECT_RENDERMAN` (`LPE_DIALECT_OSL` answers
-//   `LPE_ERR_UNSUPPORTED` in this build).
-// - `ini_text`: the contents of a rendermn.ini (user macros), or NULL.
-// - `options`: NULL for the defaults.
+// - `dialect`: `LPE_DIALECT_RENDERMAN` or `LPE_DIALECT_OSL`.
+// - `ini_text`: RenderMan only: the contents of a rendermn.ini (user macros, lobe
+//   mappings), or NULL. Must be NULL for OSL.
+// - `options`: NULL for the defaults. For OSL, `options->osl_registered` names the
+//   registered labels.
 // - `out`: receives the set, or NULL on failure.
 // - `error`: if not NULL, receives an error object on failure (free it with
 //   `lpe_error_free`); NULL on success.
 //
-// Returns `LPE_OK`, or `LPE_ERR_NULL`, `LPE_ERR_UTF8`, `LPE_ERR_PARSE`, `LPE_ERR_INI`,
-// `LPE_ERR_COMPILE`, `LPE_ERR_RANGE` (unknown dialect), `LPE_ERR_UNSUPPORTED`.
+// Returns `LPE_OK`, or `LPE_ERR_NULL`, `LPE_ERR_UTF8`, `LPE_ERR_PARSE` (an expression,
+// or the `osl_registered` text: then `lpe_error_aov` is -1 and `lpe_error_position` the
+// byte in that text), `LPE_ERR_INI`, `LPE_ERR_COMPILE`, `LPE_ERR_RANGE` (unknown
+// dialect), `LPE_ERR_UNSUPPORTED` (a rendermn.ini with OSL, a registration with
+// RenderMan).
 enum lpe_status lpe_set_compile(const char *const *names,
                                 const char *const *exprs,
                                 size_t count,
@@ -197,12 +252,27 @@ int64_t lpe_set_warning_aov(const struct lpe_set *set, size_t i);
 // other number gives "unknown status"). Never NULL.
 const char *lpe_status_message(uint32_t status);
 
+// A cache for stepping `set` (sized by `lpe_options.lazy_cache`), or NULL if `set` is
+// NULL. One per thread: a cache is not thread-safe, the set is.
+struct lpe_cache *lpe_cache_new(const struct lpe_set *set);
+
+// Releases a cache. NULL is ignored.
+void lpe_cache_free(struct lpe_cache *cache);
+
 // The state before any vertex (step the camera first), into `*out`.
 enum lpe_status lpe_start(const struct lpe_set *set, struct lpe_state *out);
 
 // Steps `*state` over one vertex of class `cls`, in place. `LPE_ERR_RANGE` if `cls` is
-// not a class of `set` (the state is then unchanged). No allocation, no lock.
+// not a class of `set` (the state is then unchanged). No allocation, no lock; a lazy
+// set steps through this thread's cache.
 enum lpe_status lpe_step(const struct lpe_set *set, struct lpe_state *state, struct lpe_class cls);
+
+// `lpe_step` through the caller's cache (from `lpe_cache_new` for this set; a cache of
+// another set is reset for this one). `LPE_ERR_NULL` if `cache` is NULL.
+enum lpe_status lpe_step_with(const struct lpe_set *set,
+                              struct lpe_cache *cache,
+                              struct lpe_state *state,
+                              struct lpe_class cls);
 
 // Steps `*state` over `count` vertices of the given classes, in place: the same as
 // `count` calls of `lpe_step`, one call for a whole path segment (the per-call overhead
@@ -223,12 +293,71 @@ enum lpe_status lpe_matches(const struct lpe_set *set,
                             size_t word_count,
                             size_t *match_count);
 
+// `lpe_matches` through the caller's cache (see `lpe_step_with`). `LPE_ERR_NULL` if
+// `cache` is NULL.
+enum lpe_status lpe_matches_with(const struct lpe_set *set,
+                                 struct lpe_cache *cache,
+                                 const struct lpe_state *state,
+                                 uint64_t *words,
+                                 size_t word_count,
+                                 size_t *match_count);
+
 // Whether no continuation of the path can match any AOV, into `*dead`: stop tracking
 // the path once it is.
 enum lpe_status lpe_is_dead(const struct lpe_set *set, const struct lpe_state *state, bool *dead);
+
+// Fills `*view` with `set`'s step view (see `lpe_step_view`); `LPE_ERR_NULL` if either
+// is NULL.
+enum lpe_status lpe_set_step_view(const struct lpe_set *set, struct lpe_step_view *view);
 
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus
 
 #endif  /* LPE_H */
+
+#ifndef LPE_H_INLINE
+#define LPE_H_INLINE
+
+// The table load is the common case: laid out straight, the call out of line.
+#if defined(__GNUC__) || defined(__clang__)
+#define LPE_LIKELY(x) __builtin_expect(!!(x), 1)
+#else
+#define LPE_LIKELY(x) (x)
+#endif
+
+// `lpe_step(view->set, state, cls)` with the table load inlined into the caller's loop:
+// the same status and the same state in every case (a lazy set, a class or state out of
+// range, a NULL argument fall back to the call). `view` from `lpe_set_step_view`.
+static inline lpe_status lpe_view_step(const lpe_step_view *view, lpe_state *state,
+                                       lpe_class cls) {
+  if (LPE_LIKELY(view != NULL && state != NULL && cls.id < view->class_count)) {
+    // Wraps like the library's u32 add, so a state of another set misses the same way.
+    uint32_t i = (uint32_t)(state->opaque + cls.id);
+    if (LPE_LIKELY(i < view->table_len)) {
+      state->opaque = view->table[i];
+      return LPE_OK;
+    }
+  }
+  if (view == NULL || state == NULL) {
+    return lpe_step(view != NULL ? view->set : NULL, state, cls);
+  }
+  // The call steps a copy: were the caller's state's address passed out, the compiler
+  // would keep that state in memory, a store and a reload on every step of the loop.
+  lpe_state next = *state;
+  lpe_status status = lpe_step(view->set, &next, cls);
+  *state = next;
+  return status;
+}
+
+// `lpe_is_dead(view->set, state, dead)` inline: the same status and answer in every case.
+static inline lpe_status lpe_view_is_dead(const lpe_step_view *view, const lpe_state *state,
+                                          bool *dead) {
+  if (view == NULL || view->set == NULL || state == NULL || dead == NULL) {
+    return lpe_is_dead(view != NULL ? view->set : NULL, state, dead);
+  }
+  *dead = state->opaque == 0 && view->zero_is_dead;
+  return LPE_OK;
+}
+
+#endif  /* LPE_H_INLINE */

@@ -2,7 +2,8 @@
 
 use std::ffi::c_char;
 
-use lpe::{Class, Event, EventKind, Path, Vertex, VertexType};
+use lpe::osl::{self, Symbol};
+use lpe::{Class, Dialect, Event, EventKind, Path, Vertex, VertexType};
 
 use crate::set::{lpe_set, text};
 use crate::status::{guard, lpe_status};
@@ -82,7 +83,7 @@ fn vertex_of(v: &lpe_vertex) -> Result<Vertex, lpe_status> {
 /// The class of a vertex, into `*out`. Classify every kind of scene vertex once, at
 /// load, and step with classes. `LPE_ERR_RANGE`: an unknown letter, a lobe out of
 /// range, an event on `C`/`L`/`O`, a label on `C`; `LPE_ERR_UTF8`: a label that is not
-/// UTF-8.
+/// UTF-8; `LPE_ERR_UNSUPPORTED`: an OSL set (use `lpe_classify_osl`).
 #[no_mangle]
 pub extern "C" fn lpe_classify(
     set: *const lpe_set,
@@ -97,6 +98,9 @@ pub extern "C" fn lpe_classify(
     ) else {
         return lpe_status::LPE_ERR_NULL;
     };
+    if set.set.dialect() != Dialect::RenderMan {
+        return lpe_status::LPE_ERR_UNSUPPORTED;
+    }
     guard(lpe_status::LPE_ERR_PANIC, || match vertex_of(vertex) {
         Ok(v) => {
             *out = lpe_class::from_class(set.set.classify(&v));
@@ -108,7 +112,7 @@ pub extern "C" fn lpe_classify(
 
 /// The class of one vertex written in path text form (docs/language.md §2.3), such as
 /// `RD2'floor'`, `L'key'` or `C`, into `*out`. `LPE_ERR_PARSE` if it is not exactly one
-/// vertex.
+/// vertex; `LPE_ERR_UNSUPPORTED` on an OSL set (use `lpe_classify_osl`).
 #[no_mangle]
 pub extern "C" fn lpe_classify_text(
     set: *const lpe_set,
@@ -119,6 +123,9 @@ pub extern "C" fn lpe_classify_text(
     let (Some(set), Some(out)) = (unsafe { set.as_ref() }, unsafe { out.as_mut() }) else {
         return lpe_status::LPE_ERR_NULL;
     };
+    if set.set.dialect() != Dialect::RenderMan {
+        return lpe_status::LPE_ERR_UNSUPPORTED;
+    }
     let src = match text(vertex) {
         Ok(s) => s,
         Err(e) => return e,
@@ -150,8 +157,14 @@ fn vertex_from_text(src: &str) -> Option<Vertex> {
     (path.len() == expected).then(|| path.vertices()[at].clone())
 }
 
-/// The class of an OSL vertex (`count` symbols: event, scattering, custom labels; a NULL
-/// entry is OSL's NONE). Not in this build yet: answers `LPE_ERR_UNSUPPORTED`.
+/// The class of an OSL vertex, into `*out`: `count` symbols, in OSL's order: the event
+/// (`"C"`, `"R"`, `"T"`, `"L"`, `"O"`, `"B"`, `"V"` or a registered one), the scattering
+/// (`"D"`, `"G"`, `"S"`, `"s"` or a registered one), then the custom labels. Each is
+/// NUL-terminated UTF-8; a NULL entry is OSL's NONE, so an OSL renderer passes its
+/// ustrings' `c_str()` as they are. Classify every kind of scene vertex once, at load,
+/// and step with classes; a vertex of fewer than two symbols matches nothing, as in OSL.
+/// `LPE_ERR_RANGE`: `count` is 0; `LPE_ERR_UTF8`: a symbol that is not UTF-8;
+/// `LPE_ERR_UNSUPPORTED`: a RenderMan set (use `lpe_classify`).
 #[no_mangle]
 pub extern "C" fn lpe_classify_osl(
     set: *const lpe_set,
@@ -159,10 +172,44 @@ pub extern "C" fn lpe_classify_osl(
     count: usize,
     out: *mut lpe_class,
 ) -> lpe_status {
-    if set.is_null() || out.is_null() || (symbols.is_null() && count > 0) {
+    // SAFETY: NULL or valid pointers from the caller.
+    let (Some(set), Some(out)) = (unsafe { set.as_ref() }, unsafe { out.as_mut() }) else {
+        return lpe_status::LPE_ERR_NULL;
+    };
+    if symbols.is_null() {
         return lpe_status::LPE_ERR_NULL;
     }
-    lpe_status::LPE_ERR_UNSUPPORTED
+    if count == 0 {
+        return lpe_status::LPE_ERR_RANGE;
+    }
+    if set.set.dialect() != Dialect::Osl {
+        return lpe_status::LPE_ERR_UNSUPPORTED;
+    }
+    // SAFETY: the caller passes `count` readable pointers (checked non-null).
+    let symbols = unsafe { std::slice::from_raw_parts(symbols, count) };
+    let vertex = match osl_vertex_of(symbols) {
+        Ok(v) => v,
+        Err(s) => return s,
+    };
+    guard(lpe_status::LPE_ERR_PANIC, || {
+        *out = lpe_class::from_class(set.set.classify_osl(&vertex));
+        lpe_status::LPE_OK
+    })
+}
+
+/// The OSL vertex of C symbols, NULL being NONE.
+fn osl_vertex_of(symbols: &[*const c_char]) -> Result<osl::Vertex, lpe_status> {
+    symbols
+        .iter()
+        .map(|&p| {
+            if p.is_null() {
+                Ok(Symbol::None)
+            } else {
+                text(p).map(Symbol::label)
+            }
+        })
+        .collect::<Result<_, _>>()
+        .map(osl::Vertex::new)
 }
 
 #[cfg(test)]

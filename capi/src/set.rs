@@ -2,6 +2,7 @@
 
 use std::ffi::{c_char, CStr, CString};
 
+use lpe::osl::{self, Registered};
 use lpe::{AovSet, Config, Lpe, Options};
 
 use crate::error::lpe_error;
@@ -9,21 +10,32 @@ use crate::status::{guard, lpe_status};
 
 /// Expressions in RenderMan's LPE dialect (docs/language.md).
 pub const LPE_DIALECT_RENDERMAN: u32 = 0;
-/// Expressions in OSL's LPE dialect. Not in this build yet: compiling answers
-/// `LPE_ERR_UNSUPPORTED`.
+/// Expressions in OSL's LPE dialect (docs/language.md §18), parsed under the labels
+/// `lpe_options.osl_registered` names; classify vertices with `lpe_classify_osl`.
 pub const LPE_DIALECT_OSL: u32 = 1;
 
 /// Compile-time knobs; start from `lpe_options_default()`.
 #[repr(C)]
 #[derive(Clone, Copy, Debug)]
 pub struct lpe_options {
-    /// Most bytes the DFA may take; over it the set steps the bitset NFA. 0 forces the NFA.
+    /// Most bytes the DFA may take; over it the set is a lazy DFA (determinized while
+    /// stepping, into caches). 0 forces the lazy DFA.
     pub dfa_budget: usize,
+    /// Bytes of transitions one lazy-DFA cache may hold (a set over `dfa_budget` only),
+    /// cleared whole when full: per `lpe_cache`, and per thread for the thread-local
+    /// cache `lpe_step` uses. 0 turns caching off (every step runs the bitset NFA).
+    pub lazy_cache: usize,
     /// Most bytes the NFA may take; over it compiling fails with `LPE_ERR_COMPILE`.
     pub nfa_budget: usize,
     /// The longest path (in vertices) the caller will ever step, or 0 for no bound.
     /// With a bound, `e{n,m}` with `m >= max_path_len` compiles as `e{n,}`.
     pub max_path_len: u32,
+    /// `LPE_DIALECT_OSL` only: the labels the renderer registers before parsing (OSL's
+    /// `AccumAutomata::addEventType` / `addScatteringType`), as NUL-terminated text
+    /// `events=U,V;scatters=Y` (either part optional, in any order; `-` or NULL for
+    /// none). Registration changes how expressions parse and match. Read during
+    /// `lpe_set_compile` only. Must be NULL for `LPE_DIALECT_RENDERMAN`.
+    pub osl_registered: *const c_char,
 }
 
 /// A compiled AOV set: immutable, safe to share between threads. Release it with
@@ -35,14 +47,17 @@ pub struct lpe_set {
     warnings: Vec<CString>,
 }
 
-/// The defaults: 16 MiB DFA and NFA budgets, no path length bound.
+/// The defaults: 16 MiB DFA and NFA budgets, a 2 MiB lazy-DFA cache, no path length
+/// bound, nothing registered.
 #[no_mangle]
 pub extern "C" fn lpe_options_default() -> lpe_options {
     let o = Options::default();
     lpe_options {
         dfa_budget: o.dfa_budget,
+        lazy_cache: o.lazy_cache,
         nfa_budget: o.nfa_budget,
         max_path_len: o.max_path_len.unwrap_or(0),
+        osl_registered: std::ptr::null(),
     }
 }
 
@@ -61,16 +76,20 @@ pub(crate) fn text<'a>(p: *const c_char) -> Result<&'a str, lpe_status> {
 ///
 /// - `names[i]`, `exprs[i]`: NUL-terminated UTF-8, the AOV's name and expression (bit `i`
 ///   of every match mask is AOV `i`). Both arrays may be NULL only when `count` is 0.
-/// - `dialect`: `LPE_DIALECT_RENDERMAN` (`LPE_DIALECT_OSL` answers
-///   `LPE_ERR_UNSUPPORTED` in this build).
-/// - `ini_text`: the contents of a rendermn.ini (user macros), or NULL.
-/// - `options`: NULL for the defaults.
+/// - `dialect`: `LPE_DIALECT_RENDERMAN` or `LPE_DIALECT_OSL`.
+/// - `ini_text`: RenderMan only: the contents of a rendermn.ini (user macros, lobe
+///   mappings), or NULL. Must be NULL for OSL.
+/// - `options`: NULL for the defaults. For OSL, `options->osl_registered` names the
+///   registered labels.
 /// - `out`: receives the set, or NULL on failure.
 /// - `error`: if not NULL, receives an error object on failure (free it with
 ///   `lpe_error_free`); NULL on success.
 ///
-/// Returns `LPE_OK`, or `LPE_ERR_NULL`, `LPE_ERR_UTF8`, `LPE_ERR_PARSE`, `LPE_ERR_INI`,
-/// `LPE_ERR_COMPILE`, `LPE_ERR_RANGE` (unknown dialect), `LPE_ERR_UNSUPPORTED`.
+/// Returns `LPE_OK`, or `LPE_ERR_NULL`, `LPE_ERR_UTF8`, `LPE_ERR_PARSE` (an expression,
+/// or the `osl_registered` text: then `lpe_error_aov` is -1 and `lpe_error_position` the
+/// byte in that text), `LPE_ERR_INI`, `LPE_ERR_COMPILE`, `LPE_ERR_RANGE` (unknown
+/// dialect), `LPE_ERR_UNSUPPORTED` (a rendermn.ini with OSL, a registration with
+/// RenderMan).
 #[no_mangle]
 pub extern "C" fn lpe_set_compile(
     names: *const *const c_char,
@@ -119,26 +138,123 @@ fn compile(
     ini_text: *const c_char,
     options: *const lpe_options,
 ) -> Result<lpe_set, lpe_error> {
-    let err = |status, message: &str, aov| lpe_error::new(status, message.into(), aov, None);
-    let fail = |status, message: &str, aov| Err(err(status, message, aov));
-    match dialect {
-        LPE_DIALECT_RENDERMAN => {}
-        LPE_DIALECT_OSL => {
-            return fail(
-                lpe_status::LPE_ERR_UNSUPPORTED,
-                "the OSL dialect is not in this build",
-                None,
-            )
-        }
-        _ => return fail(lpe_status::LPE_ERR_RANGE, "unknown dialect", None),
+    if dialect != LPE_DIALECT_RENDERMAN && dialect != LPE_DIALECT_OSL {
+        return Err(plain(lpe_status::LPE_ERR_RANGE, "unknown dialect", None));
     }
     if count > 0 && (names.is_null() || exprs.is_null()) {
-        return fail(lpe_status::LPE_ERR_NULL, "`names` or `exprs` is NULL", None);
+        return Err(plain(
+            lpe_status::LPE_ERR_NULL,
+            "`names` or `exprs` is NULL",
+            None,
+        ));
     }
+    // SAFETY: NULL or a readable `lpe_options`.
+    let given = unsafe { options.as_ref() }.copied();
+    let opts = given.map_or_else(Options::default, |o| Options {
+        dfa_budget: o.dfa_budget,
+        lazy_cache: o.lazy_cache,
+        nfa_budget: o.nfa_budget,
+        max_path_len: (o.max_path_len > 0).then_some(o.max_path_len),
+    });
+    let registered = given.map_or(std::ptr::null(), |o| o.osl_registered);
+    let sources = read_sources(names, exprs, count)?;
+    let set = if dialect == LPE_DIALECT_OSL {
+        if !ini_text.is_null() {
+            return Err(plain(
+                lpe_status::LPE_ERR_UNSUPPORTED,
+                "a rendermn.ini applies to LPE_DIALECT_RENDERMAN only",
+                None,
+            ));
+        }
+        compile_osl(&sources, registered, &opts)?
+    } else {
+        if !registered.is_null() {
+            return Err(plain(
+                lpe_status::LPE_ERR_UNSUPPORTED,
+                "`osl_registered` applies to LPE_DIALECT_OSL only",
+                None,
+            ));
+        }
+        compile_renderman(&sources, ini_text, &opts)?
+    };
+    let warnings = set
+        .warnings()
+        .iter()
+        .map(|w| CString::new(w.to_string()).unwrap_or_default())
+        .collect();
+    Ok(lpe_set {
+        class_count: set.class_count(),
+        names: sources.into_iter().map(|s| s.c_name).collect(),
+        warnings,
+        set,
+    })
+}
+
+/// An error with no byte position.
+fn plain(status: lpe_status, message: &str, aov: Option<usize>) -> lpe_error {
+    lpe_error::new(status, message.into(), aov, None)
+}
+
+/// One AOV as the caller passed it.
+struct Source<'a> {
+    c_name: CString,
+    name: &'a str,
+    expr: &'a str,
+}
+
+/// The `count` names and expressions, checked for NULL and UTF-8.
+fn read_sources<'a>(
+    names: *const *const c_char,
+    exprs: *const *const c_char,
+    count: usize,
+) -> Result<Vec<Source<'a>>, lpe_error> {
+    let mut out = Vec::with_capacity(count.min(1024));
+    for i in 0..count {
+        // SAFETY: the caller passes arrays of `count` pointers (checked non-null).
+        let (name_p, expr_p) = unsafe { (*names.add(i), *exprs.add(i)) };
+        let name =
+            text(name_p).map_err(|s| plain(s, "an AOV name is NULL or not UTF-8", Some(i)))?;
+        let expr =
+            text(expr_p).map_err(|s| plain(s, "an expression is NULL or not UTF-8", Some(i)))?;
+        out.push(Source {
+            // SAFETY: `name_p` is a valid C string (read above).
+            c_name: unsafe { CStr::from_ptr(name_p) }.to_owned(),
+            name,
+            expr,
+        });
+    }
+    Ok(out)
+}
+
+/// A parse error of AOV `i`, at byte `position` of its expression.
+fn parse_error(
+    i: usize,
+    name: &str,
+    message: impl std::fmt::Display,
+    position: usize,
+) -> lpe_error {
+    lpe_error::new(
+        lpe_status::LPE_ERR_PARSE,
+        format!("AOV `{name}`: {message}"),
+        Some(i),
+        Some(position),
+    )
+}
+
+fn compile_error(e: lpe::CompileError) -> lpe_error {
+    lpe_error::new(lpe_status::LPE_ERR_COMPILE, e.to_string(), None, None)
+}
+
+fn compile_renderman(
+    sources: &[Source],
+    ini_text: *const c_char,
+    opts: &Options,
+) -> Result<AovSet, lpe_error> {
     let config = if ini_text.is_null() {
         Config::default()
     } else {
-        let ini = text(ini_text).map_err(|s| err(s, "the rendermn.ini text is not UTF-8", None))?;
+        let ini =
+            text(ini_text).map_err(|s| plain(s, "the rendermn.ini text is not UTF-8", None))?;
         Config::from_ini(ini).map_err(|e| {
             lpe_error::new(
                 lpe_status::LPE_ERR_INI,
@@ -149,49 +265,41 @@ fn compile(
         })?
     };
     let parser = config.parser();
-    let mut aovs: Vec<(String, Lpe)> = Vec::with_capacity(count.min(1024));
-    let mut c_names = Vec::with_capacity(count.min(1024));
-    for i in 0..count {
-        // SAFETY: the caller passes arrays of `count` pointers (checked non-null above).
-        let (name_p, expr_p) = unsafe { (*names.add(i), *exprs.add(i)) };
-        let name = text(name_p).map_err(|s| err(s, "an AOV name is NULL or not UTF-8", Some(i)))?;
-        let src =
-            text(expr_p).map_err(|s| err(s, "an expression is NULL or not UTF-8", Some(i)))?;
-        let lpe = parser.parse(src).map_err(|e| {
+    let mut aovs: Vec<(String, Lpe)> = Vec::with_capacity(sources.len());
+    for (i, s) in sources.iter().enumerate() {
+        let lpe = parser
+            .parse(s.expr)
+            .map_err(|e| parse_error(i, s.name, e.one_line(), e.span().start))?;
+        aovs.push((s.name.to_string(), lpe));
+    }
+    AovSet::compile_with(&aovs, opts).map_err(compile_error)
+}
+
+fn compile_osl(
+    sources: &[Source],
+    registered: *const c_char,
+    opts: &Options,
+) -> Result<AovSet, lpe_error> {
+    let registered: Registered = if registered.is_null() {
+        Registered::none()
+    } else {
+        let t = text(registered)
+            .map_err(|s| plain(s, "the `osl_registered` text is not UTF-8", None))?;
+        t.parse().map_err(|e: lpe::osl::RegisteredError| {
             lpe_error::new(
                 lpe_status::LPE_ERR_PARSE,
-                format!("AOV `{name}`: {}", e.one_line()),
-                Some(i),
-                Some(e.span().start),
+                format!("osl_registered: {e}"),
+                None,
+                Some(e.pos),
             )
-        })?;
-        // SAFETY: `name_p` is a valid C string (read above).
-        c_names.push(unsafe { CStr::from_ptr(name_p) }.to_owned());
-        aovs.push((name.to_string(), lpe));
-    }
-    // SAFETY: NULL or a readable `lpe_options`.
-    let opts = match unsafe { options.as_ref() } {
-        None => Options::default(),
-        Some(o) => Options {
-            dfa_budget: o.dfa_budget,
-            nfa_budget: o.nfa_budget,
-            max_path_len: (o.max_path_len > 0).then_some(o.max_path_len),
-            ..Options::default()
-        },
+        })?
     };
-    let set = AovSet::compile_with(&aovs, &opts)
-        .map_err(|e| lpe_error::new(lpe_status::LPE_ERR_COMPILE, e.to_string(), None, None))?;
-    let warnings = set
-        .warnings()
-        .iter()
-        .map(|w| CString::new(w.to_string()).unwrap_or_default())
-        .collect();
-    Ok(lpe_set {
-        class_count: set.class_count(),
-        names: c_names,
-        warnings,
-        set,
-    })
+    let mut aovs: Vec<(String, osl::Lpe)> = Vec::with_capacity(sources.len());
+    for (i, s) in sources.iter().enumerate() {
+        let lpe = osl::parse(s.expr, &registered).map_err(|e| parse_error(i, s.name, &e, e.pos))?;
+        aovs.push((s.name.to_string(), lpe));
+    }
+    AovSet::compile_osl(&aovs, &registered, opts).map_err(compile_error)
 }
 
 /// Releases a set. NULL is ignored. No state or class of it may be used after.

@@ -1,11 +1,12 @@
-//! Per-path states: start, step, matches, is_dead.
+//! Per-path states: start, step, matches, is_dead; and caller-owned lazy-DFA caches.
 //!
-//! `lpe_state` is a fixed-size opaque value (32 bytes, 8-aligned) holding lpe's `State`
-//! by copy. lpe's state representation may change (a register-sized DFA id, a wide NFA
-//! state); C callers never look inside, so only the compile-time size check below has
-//! to hold, and the step stays one call with no allocation.
+//! `lpe_state` is lpe's `State`, a 32-bit id, by value: stepping is one call with no
+//! allocation, and a state fits a register. A set over its DFA budget is a lazy DFA,
+//! determinized into a cache while stepping: `lpe_step` and `lpe_matches` use a cache
+//! per thread (kept by the library), `lpe_step_with` and `lpe_matches_with` one the
+//! caller owns (`lpe_cache_new`), which saves the thread-local lookup per step.
 
-use lpe::State;
+use lpe::{AovMask, Cache, Class, State};
 
 use crate::classify::lpe_class;
 use crate::set::lpe_set;
@@ -17,27 +18,51 @@ use crate::status::{guard, lpe_status};
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct lpe_state {
     /// Do not read or write: the library's representation.
-    pub opaque: [u64; 4],
+    pub opaque: u32,
 }
-
-const _: () = assert!(std::mem::size_of::<State>() <= std::mem::size_of::<lpe_state>());
-const _: () = assert!(std::mem::align_of::<State>() <= std::mem::align_of::<lpe_state>());
 
 impl lpe_state {
     #[inline(always)]
     fn from_state(s: State) -> lpe_state {
-        let mut out = lpe_state { opaque: [0; 4] };
-        // SAFETY: `State` is plain `Copy` data that fits (size and alignment asserted
-        // above); the bytes past it stay zero.
-        unsafe { std::ptr::write(out.opaque.as_mut_ptr().cast::<State>(), s) };
-        out
+        lpe_state { opaque: s.to_u32() }
     }
 
     #[inline(always)]
     fn to_state(self) -> State {
-        // SAFETY: the bytes were written by `from_state` (callers pass only states this
-        // library returned); size and alignment asserted above.
-        unsafe { std::ptr::read(self.opaque.as_ptr().cast::<State>()) }
+        State::from_u32(self.opaque)
+    }
+}
+
+/// A lazy-DFA cache of one set, for one thread at a time: `lpe_step_with` and
+/// `lpe_matches_with` step through it. Holds nothing for a set with a DFA. Release it
+/// with `lpe_cache_free`, before its set.
+pub struct lpe_cache {
+    cache: Cache,
+}
+
+/// A cache for stepping `set` (sized by `lpe_options.lazy_cache`), or NULL if `set` is
+/// NULL. One per thread: a cache is not thread-safe, the set is.
+#[no_mangle]
+pub extern "C" fn lpe_cache_new(set: *const lpe_set) -> *mut lpe_cache {
+    // SAFETY: NULL or a set this library returned.
+    let Some(set) = (unsafe { set.as_ref() }) else {
+        return std::ptr::null_mut();
+    };
+    guard(std::ptr::null_mut(), || {
+        Box::into_raw(Box::new(lpe_cache {
+            cache: set.set.cache(),
+        }))
+    })
+}
+
+/// Releases a cache. NULL is ignored.
+#[no_mangle]
+pub extern "C" fn lpe_cache_free(cache: *mut lpe_cache) {
+    if !cache.is_null() {
+        guard((), || {
+            // SAFETY: a cache this library returned, freed once.
+            drop(unsafe { Box::from_raw(cache) });
+        });
     }
 }
 
@@ -55,12 +80,42 @@ pub extern "C" fn lpe_start(set: *const lpe_set, out: *mut lpe_state) -> lpe_sta
 }
 
 /// Steps `*state` over one vertex of class `cls`, in place. `LPE_ERR_RANGE` if `cls` is
-/// not a class of `set` (the state is then unchanged). No allocation, no lock.
+/// not a class of `set` (the state is then unchanged). No allocation, no lock; a lazy
+/// set steps through this thread's cache.
 #[no_mangle]
 pub extern "C" fn lpe_step(
     set: *const lpe_set,
     state: *mut lpe_state,
     cls: lpe_class,
+) -> lpe_status {
+    step_one(set, state, cls, |set, s, c| set.set.step_class(s, c))
+}
+
+/// `lpe_step` through the caller's cache (from `lpe_cache_new` for this set; a cache of
+/// another set is reset for this one). `LPE_ERR_NULL` if `cache` is NULL.
+#[no_mangle]
+pub extern "C" fn lpe_step_with(
+    set: *const lpe_set,
+    cache: *mut lpe_cache,
+    state: *mut lpe_state,
+    cls: lpe_class,
+) -> lpe_status {
+    // SAFETY: NULL or a cache this library returned, used by one thread at a time.
+    let Some(cache) = (unsafe { cache.as_mut() }) else {
+        return lpe_status::LPE_ERR_NULL;
+    };
+    step_one(set, state, cls, |set, s, c| {
+        set.set.step_with(&mut cache.cache, s, c)
+    })
+}
+
+/// One checked step of `*state` by `step`.
+#[inline(always)]
+fn step_one(
+    set: *const lpe_set,
+    state: *mut lpe_state,
+    cls: lpe_class,
+    step: impl FnOnce(&lpe_set, State, Class) -> State,
 ) -> lpe_status {
     // SAFETY: NULL or valid pointers from the caller.
     let (Some(set), Some(state)) = (unsafe { set.as_ref() }, unsafe { state.as_mut() }) else {
@@ -70,7 +125,7 @@ pub extern "C" fn lpe_step(
         return lpe_status::LPE_ERR_RANGE;
     };
     guard(lpe_status::LPE_ERR_PANIC, || {
-        *state = lpe_state::from_state(set.set.step_class(state.to_state(), c));
+        *state = lpe_state::from_state(step(set, state.to_state(), c));
         lpe_status::LPE_OK
     })
 }
@@ -98,15 +153,14 @@ pub extern "C" fn lpe_step_n(
     }
     // SAFETY: the caller passes `count` readable classes (checked non-null).
     let classes = unsafe { std::slice::from_raw_parts(classes, count) };
-    if classes.iter().any(|c| c.to_class(set).is_none()) {
-        return lpe_status::LPE_ERR_RANGE;
-    }
     guard(lpe_status::LPE_ERR_PANIC, || {
+        // One pass: the steps go to a local, written back only if every class is valid.
         let mut s = state.to_state();
         for c in classes {
-            if let Some(c) = c.to_class(set) {
-                s = set.set.step_class(s, c);
-            }
+            let Some(c) = c.to_class(set) else {
+                return lpe_status::LPE_ERR_RANGE;
+            };
+            s = set.set.step_class(s, c);
         }
         *state = lpe_state::from_state(s);
         lpe_status::LPE_OK
@@ -125,6 +179,40 @@ pub extern "C" fn lpe_matches(
     word_count: usize,
     match_count: *mut usize,
 ) -> lpe_status {
+    matches_by(set, state, words, word_count, match_count, |set, s| {
+        set.set.matches(s)
+    })
+}
+
+/// `lpe_matches` through the caller's cache (see `lpe_step_with`). `LPE_ERR_NULL` if
+/// `cache` is NULL.
+#[no_mangle]
+pub extern "C" fn lpe_matches_with(
+    set: *const lpe_set,
+    cache: *mut lpe_cache,
+    state: *const lpe_state,
+    words: *mut u64,
+    word_count: usize,
+    match_count: *mut usize,
+) -> lpe_status {
+    // SAFETY: NULL or a cache this library returned, used by one thread at a time.
+    let Some(cache) = (unsafe { cache.as_mut() }) else {
+        return lpe_status::LPE_ERR_NULL;
+    };
+    matches_by(set, state, words, word_count, match_count, |set, s| {
+        set.set.matches_with(&mut cache.cache, s)
+    })
+}
+
+/// The checked arguments of a matches call, the mask from `mask` written out.
+fn matches_by(
+    set: *const lpe_set,
+    state: *const lpe_state,
+    words: *mut u64,
+    word_count: usize,
+    match_count: *mut usize,
+    mask: impl FnOnce(&lpe_set, State) -> AovMask,
+) -> lpe_status {
     // SAFETY: NULL or valid pointers from the caller.
     let (Some(set), Some(state)) = (unsafe { set.as_ref() }, unsafe { state.as_ref() }) else {
         return lpe_status::LPE_ERR_NULL;
@@ -137,7 +225,7 @@ pub extern "C" fn lpe_matches(
         return lpe_status::LPE_ERR_RANGE;
     }
     guard(lpe_status::LPE_ERR_PANIC, || {
-        let mask = set.set.matches(state.to_state());
+        let mask = mask(set, state.to_state());
         if word_count > 0 {
             // SAFETY: the caller passes `word_count` writable words (checked non-null).
             let out = unsafe { std::slice::from_raw_parts_mut(words, word_count) };

@@ -10,8 +10,12 @@ use lpe_capi::error::{
 };
 use lpe_capi::set::*;
 use lpe_capi::status::lpe_status_message;
-use lpe_capi::step::{lpe_is_dead, lpe_matches, lpe_start, lpe_step, lpe_step_n};
-use lpe_capi::{lpe_class, lpe_error, lpe_set, lpe_state, lpe_status, lpe_vertex};
+use lpe_capi::step::{
+    lpe_cache_free, lpe_cache_new, lpe_is_dead, lpe_matches, lpe_matches_with, lpe_start, lpe_step,
+    lpe_step_n, lpe_step_with,
+};
+use lpe_capi::view::lpe_set_step_view;
+use lpe_capi::{lpe_class, lpe_error, lpe_set, lpe_state, lpe_status, lpe_step_view, lpe_vertex};
 
 struct Set(*mut lpe_set);
 
@@ -31,11 +35,20 @@ fn cstrings(xs: &[&str]) -> (Vec<CString>, Vec<*const c_char>) {
     (owned, ptrs)
 }
 
-fn compile(
+/// What a failed compile reports: status, message, AOV index, byte position.
+type Failure = (lpe_status, String, i64, i64);
+
+fn compile(names: &[&str], exprs: &[&str], ini: Option<&str>) -> Result<Set, Failure> {
+    compile_in(LPE_DIALECT_RENDERMAN, names, exprs, ini, None)
+}
+
+fn compile_in(
+    dialect: u32,
     names: &[&str],
     exprs: &[&str],
     ini: Option<&str>,
-) -> Result<Set, (lpe_status, String, i64, i64)> {
+    options: Option<&lpe_options>,
+) -> Result<Set, Failure> {
     let (_n, np) = cstrings(names);
     let (_e, ep) = cstrings(exprs);
     let ini = ini.map(|s| CString::new(s).unwrap());
@@ -45,9 +58,9 @@ fn compile(
         np.as_ptr(),
         ep.as_ptr(),
         names.len(),
-        LPE_DIALECT_RENDERMAN,
+        dialect,
         ini.as_ref().map_or(null(), |c| c.as_ptr()),
-        null(),
+        options.map_or(null(), |o| o as *const lpe_options),
         &mut out,
         &mut err,
     );
@@ -83,7 +96,7 @@ fn class(set: &Set, text: &str) -> lpe_class {
 }
 
 fn route(set: &Set, path: &[&str]) -> (Vec<u64>, usize) {
-    let mut s = lpe_state { opaque: [7; 4] };
+    let mut s = lpe_state { opaque: 7 };
     assert_eq!(lpe_start(set.0, &mut s), lpe_status::LPE_OK);
     let classes: Vec<lpe_class> = path.iter().map(|v| class(set, v)).collect();
     let mut whole = s;
@@ -156,7 +169,7 @@ fn fields_and_text_classify_alike_and_dead_paths_are_seen() {
     assert_eq!(lpe_classify(set.0, &v, &mut by_fields), lpe_status::LPE_OK);
     assert_eq!(by_fields, class(&set, "RD2'floor'"));
     assert_ne!(by_fields, class(&set, "RD2'wall'"));
-    let mut s = lpe_state { opaque: [0; 4] };
+    let mut s = lpe_state { opaque: 0 };
     lpe_start(set.0, &mut s);
     let mut dead = true;
     assert_eq!(lpe_is_dead(set.0, &s, &mut dead), lpe_status::LPE_OK);
@@ -189,7 +202,7 @@ fn fields_and_text_classify_alike_and_dead_paths_are_seen() {
 #[test]
 fn bad_arguments_are_errors_not_crashes() {
     let set = compile(&["a"], &["C.L"], None).unwrap();
-    let mut s = lpe_state { opaque: [0; 4] };
+    let mut s = lpe_state { opaque: 0 };
     let mut c = lpe_class { id: 0 };
     assert_eq!(lpe_start(null(), &mut s), lpe_status::LPE_ERR_NULL);
     assert_eq!(lpe_start(set.0, null_mut()), lpe_status::LPE_ERR_NULL);
@@ -245,6 +258,7 @@ fn bad_arguments_are_errors_not_crashes() {
     assert_eq!(lpe_set_len(null()), 0);
     assert!(lpe_set_name(null(), 0).is_null());
     assert_eq!(lpe_set_warning_aov(set.0, 0), -1);
+    // An OSL vertex on a RenderMan set is the wrong dialect, not a crash.
     let syms = [null::<c_char>()];
     assert_eq!(
         lpe_classify_osl(set.0, syms.as_ptr(), 1, &mut c),
@@ -261,7 +275,7 @@ fn bad_arguments_are_errors_not_crashes() {
     let names: Vec<&str> = names.iter().map(|s| s.as_str()).collect();
     let big = compile(&names, &vec!["C.L"; 65], None).unwrap();
     assert_eq!(lpe_set_mask_words(big.0), 2);
-    let mut bs = lpe_state { opaque: [0; 4] };
+    let mut bs = lpe_state { opaque: 0 };
     lpe_start(big.0, &mut bs);
     assert_eq!(
         lpe_matches(big.0, &bs, w.as_mut_ptr(), 1, null_mut()),
@@ -277,19 +291,6 @@ fn bad_arguments_are_errors_not_crashes() {
     assert_eq!(
         lpe_set_compile(null(), null(), 0, 9, null(), null(), &mut out, null_mut()),
         lpe_status::LPE_ERR_RANGE
-    );
-    assert_eq!(
-        lpe_set_compile(
-            null(),
-            null(),
-            0,
-            LPE_DIALECT_OSL,
-            null(),
-            null(),
-            &mut out,
-            null_mut()
-        ),
-        lpe_status::LPE_ERR_UNSUPPORTED
     );
 }
 
@@ -343,7 +344,7 @@ fn one_set_serves_many_threads() {
             let set = &set;
             scope.spawn(move || {
                 for n in 1..200 {
-                    let mut s = lpe_state { opaque: [0; 4] };
+                    let mut s = lpe_state { opaque: 0 };
                     lpe_start(set.0, &mut s);
                     lpe_step(set.0, &mut s, c);
                     let bounce = if (n + t) % 2 == 0 { rd } else { rs };
@@ -358,4 +359,387 @@ fn one_set_serves_many_threads() {
             });
         }
     });
+}
+
+/// OSL's own unit test, one row per (rule, path): expression, registration, path in
+/// accum_test notation, and OSL's verdict.
+struct AccumRow {
+    expr: String,
+    registered: String,
+    path: String,
+    matches: bool,
+}
+
+fn accum_rows() -> Vec<AccumRow> {
+    let file = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../tests/testdata/osl/accum_test.tsv"
+    );
+    let text = std::fs::read_to_string(file).expect("accum_test.tsv");
+    let rows: Vec<AccumRow> = text
+        .lines()
+        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
+        .map(|l| {
+            let cols: Vec<&str> = l.split('\t').collect();
+            assert_eq!(cols.len(), 4, "{l}");
+            AccumRow {
+                expr: cols[0].into(),
+                registered: cols[1].into(),
+                path: cols[2].into(),
+                matches: match cols[3] {
+                    "MATCH" => true,
+                    "NOMATCH" => false,
+                    other => panic!("verdict {other}"),
+                },
+            }
+        })
+        .collect();
+    assert_eq!(rows.len(), 130);
+    rows
+}
+
+/// How a test steps an OSL set through the C ABI.
+#[derive(Clone, Copy, Debug)]
+enum Stepping {
+    /// `lpe_step` and `lpe_matches` (a lazy set uses the thread-local cache).
+    Plain,
+    /// `lpe_step_with` and `lpe_matches_with` through an `lpe_cache`.
+    OwnCache,
+}
+
+/// Steps an OSL path given in accum_test notation (no quotes in that file: vertices split
+/// on spaces, symbols on commas, `~` for NONE), each vertex classified from its symbols
+/// as C strings, and returns the match mask's first word.
+fn route_osl(set: &Set, path: &str, stepping: Stepping) -> u64 {
+    let cache = lpe_cache_new(set.0);
+    assert!(!cache.is_null());
+    let mut s = lpe_state { opaque: 12345 };
+    assert_eq!(lpe_start(set.0, &mut s), lpe_status::LPE_OK);
+    for vertex in path.split(' ') {
+        let owned: Vec<Option<CString>> = vertex
+            .split(',')
+            .map(|sym| (sym != "~").then(|| CString::new(sym).unwrap()))
+            .collect();
+        let ptrs: Vec<*const c_char> = owned
+            .iter()
+            .map(|o| o.as_ref().map_or(null(), |c| c.as_ptr()))
+            .collect();
+        let mut c = lpe_class { id: u32::MAX };
+        assert_eq!(
+            lpe_classify_osl(set.0, ptrs.as_ptr(), ptrs.len(), &mut c),
+            lpe_status::LPE_OK,
+            "{vertex}"
+        );
+        let st = match stepping {
+            Stepping::Plain => lpe_step(set.0, &mut s, c),
+            Stepping::OwnCache => lpe_step_with(set.0, cache, &mut s, c),
+        };
+        assert_eq!(st, lpe_status::LPE_OK);
+    }
+    let mut w = [u64::MAX];
+    let st = match stepping {
+        Stepping::Plain => lpe_matches(set.0, &s, w.as_mut_ptr(), 1, null_mut()),
+        Stepping::OwnCache => lpe_matches_with(set.0, cache, &s, w.as_mut_ptr(), 1, null_mut()),
+    };
+    assert_eq!(st, lpe_status::LPE_OK);
+    lpe_cache_free(cache);
+    w[0]
+}
+
+fn osl_options(registered: &CString, dfa_budget: Option<usize>, lazy_cache: usize) -> lpe_options {
+    let mut o = lpe_options_default();
+    o.osl_registered = registered.as_ptr();
+    if let Some(b) = dfa_budget {
+        o.dfa_budget = b;
+    }
+    o.lazy_cache = lazy_cache;
+    o
+}
+
+#[test]
+fn osl_accum_test_rows_answer_osl_and_the_reference_through_the_c_abi() {
+    let default_cache = lpe_options_default().lazy_cache;
+    // The eager DFA; the lazy DFA (budget 0) through the thread-local cache, through a
+    // cache of the caller's, and with caching off (every step on the bitset NFA).
+    let modes = [
+        (None, default_cache, Stepping::Plain),
+        (Some(0), default_cache, Stepping::Plain),
+        (Some(0), default_cache, Stepping::OwnCache),
+        (Some(0), 0, Stepping::OwnCache),
+    ];
+    let rows = accum_rows();
+    for (budget, cache, stepping) in modes {
+        let mut matched = 0;
+        for row in &rows {
+            let registered = CString::new(row.registered.as_str()).unwrap();
+            let opts = osl_options(&registered, budget, cache);
+            let set = compile_in(LPE_DIALECT_OSL, &["rule"], &[&row.expr], None, Some(&opts))
+                .unwrap_or_else(|e| panic!("{}: {e:?}", row.expr));
+            let got = route_osl(&set, &row.path, stepping) == 1;
+            let reg: lpe::osl::Registered = row.registered.parse().unwrap();
+            let lpe = lpe::osl::parse(&row.expr, &reg).unwrap();
+            let path: lpe::osl::Path = row.path.parse().unwrap();
+            let reference = reference::osl::is_match(&lpe, &path);
+            assert_eq!(
+                (got, reference),
+                (row.matches, row.matches),
+                "{} on {} ({budget:?}, {stepping:?}): C ABI, reference, OSL",
+                row.expr,
+                row.path
+            );
+            matched += usize::from(got);
+        }
+        // Both verdicts occur in the file, so neither constant answer passes.
+        assert!(matched > 0 && matched < rows.len(), "{matched}");
+    }
+}
+
+#[test]
+fn an_osl_set_of_several_rules_routes_each_path_to_its_rules() {
+    let registered = CString::new("events=U;scatters=Y").unwrap();
+    let opts = osl_options(&registered, None, lpe_options_default().lazy_cache);
+    // OSL's basic set plus two rules on the registered labels and a custom label.
+    let mut names: Vec<&str> = lpe::osl::BASIC.iter().map(|(n, _)| *n).collect();
+    let mut exprs: Vec<&str> = lpe::osl::BASIC.iter().map(|(_, e)| *e).collect();
+    names.extend(["user", "floor"]);
+    exprs.extend(["CDY+U", "C<.D'floor'>L"]);
+    let set = compile_in(LPE_DIALECT_OSL, &names, &exprs, None, Some(&opts)).unwrap();
+    // Expected AOVs worked out by hand from each rule.
+    for (path, want) in [
+        ("C,_ R,D L,_", &["directDiffuse"][..]),
+        ("C,_ R,D,floor L,_", &["directDiffuse", "floor"]),
+        ("C,_ R,D R,G L,_", &["indirectDiffuse"]),
+        ("C,_ T,S L,_", &["transmissive"]),
+        ("C,_ L,_", &["emissive"]),
+        ("C,_ R,D R,Y U,_", &["user"]),
+        ("C,_ R,D U,_", &[]),
+        // A NONE scattering: no AOV's `<R...>`-style pattern takes it.
+        ("C,_ R,~ L,_", &[]),
+    ] {
+        let mask = route_osl(&set, path, Stepping::Plain);
+        let got: Vec<&str> = (0..names.len())
+            .filter(|i| mask >> i & 1 == 1)
+            .map(|i| names[i])
+            .collect();
+        assert_eq!(got, want, "{path}");
+    }
+}
+
+#[test]
+fn osl_compile_errors_name_the_aov_the_byte_and_the_registration() {
+    let registered = CString::new("events=U;colors=Y").unwrap();
+    let opts = osl_options(&registered, None, 0);
+    let (st, msg, aov, pos) = compile_in(LPE_DIALECT_OSL, &["a"], &["CDL"], None, Some(&opts))
+        .err()
+        .unwrap();
+    assert_eq!((st, aov, pos), (lpe_status::LPE_ERR_PARSE, -1, 9), "{msg}");
+    assert!(
+        msg.contains("osl_registered") && msg.contains("colors=Y"),
+        "{msg}"
+    );
+    // OSL's own message for an unclosed group, at the end of the expression.
+    let (st, msg, aov, pos) = compile_in(
+        LPE_DIALECT_OSL,
+        &["ok", "bad"],
+        &["CDL", "C<RD"],
+        None,
+        None,
+    )
+    .err()
+    .unwrap();
+    assert_eq!((st, aov, pos), (lpe_status::LPE_ERR_PARSE, 1, 4), "{msg}");
+    assert!(
+        msg.contains("bad") && msg.contains("looking for >"),
+        "{msg}"
+    );
+    // A registered label parses only when registered.
+    assert!(compile_in(LPE_DIALECT_OSL, &["u"], &["CDY+U"], None, None).is_err());
+    let registered = CString::new("events=U;scatters=Y").unwrap();
+    let opts = osl_options(&registered, None, 0);
+    assert!(compile_in(LPE_DIALECT_OSL, &["u"], &["CDY+U"], None, Some(&opts)).is_ok());
+    // Each dialect's configuration belongs to that dialect only.
+    let (st, msg, _, _) = compile_in(LPE_DIALECT_OSL, &["a"], &["CDL"], Some(""), None)
+        .err()
+        .unwrap();
+    assert_eq!(st, lpe_status::LPE_ERR_UNSUPPORTED, "{msg}");
+    let (st, msg, _, _) = compile_in(LPE_DIALECT_RENDERMAN, &["a"], &["C.L"], None, Some(&opts))
+        .err()
+        .unwrap();
+    assert_eq!(st, lpe_status::LPE_ERR_UNSUPPORTED, "{msg}");
+}
+
+#[test]
+fn osl_classify_checks_its_arguments_and_the_dialect() {
+    let set = compile_in(LPE_DIALECT_OSL, &["d"], &["C<RD>L"], None, None).unwrap();
+    let mut c = lpe_class { id: 0 };
+    let r = CString::new("R").unwrap();
+    let d = CString::new("D").unwrap();
+    let syms = [r.as_ptr(), d.as_ptr()];
+    assert_eq!(
+        lpe_classify_osl(set.0, syms.as_ptr(), 2, &mut c),
+        lpe_status::LPE_OK
+    );
+    assert!(c.id < lpe_set_class_count(set.0) as u32);
+    assert_eq!(
+        lpe_classify_osl(set.0, syms.as_ptr(), 0, &mut c),
+        lpe_status::LPE_ERR_RANGE
+    );
+    assert_eq!(
+        lpe_classify_osl(set.0, null(), 2, &mut c),
+        lpe_status::LPE_ERR_NULL
+    );
+    assert_eq!(
+        lpe_classify_osl(null(), syms.as_ptr(), 2, &mut c),
+        lpe_status::LPE_ERR_NULL
+    );
+    let bad_utf8 = [0xffu8, 0];
+    let bad = [r.as_ptr(), bad_utf8.as_ptr().cast::<c_char>()];
+    assert_eq!(
+        lpe_classify_osl(set.0, bad.as_ptr(), 2, &mut c),
+        lpe_status::LPE_ERR_UTF8
+    );
+    // RenderMan vertices on an OSL set are the wrong dialect.
+    assert_eq!(
+        lpe_classify_text(set.0, r.as_ptr(), &mut c),
+        lpe_status::LPE_ERR_UNSUPPORTED
+    );
+    let v = lpe_vertex {
+        vertex_type: b'R',
+        event: b'D',
+        lobe: 1,
+        label: null(),
+    };
+    assert_eq!(
+        lpe_classify(set.0, &v, &mut c),
+        lpe_status::LPE_ERR_UNSUPPORTED
+    );
+}
+
+#[test]
+fn a_state_is_four_bytes_and_caches_check_their_arguments() {
+    assert_eq!(std::mem::size_of::<lpe_state>(), 4);
+    assert!(lpe_cache_new(null()).is_null());
+    lpe_cache_free(null_mut());
+    let set = compile(&["a"], &["C.L"], None).unwrap();
+    let mut s = lpe_state { opaque: 0 };
+    lpe_start(set.0, &mut s);
+    let c = class(&set, "C");
+    assert_eq!(
+        lpe_step_with(set.0, null_mut(), &mut s, c),
+        lpe_status::LPE_ERR_NULL
+    );
+    let mut w = [0u64];
+    assert_eq!(
+        lpe_matches_with(set.0, null_mut(), &s, w.as_mut_ptr(), 1, null_mut()),
+        lpe_status::LPE_ERR_NULL
+    );
+    // A cache of another set is reset for this one, never misread.
+    let other = compile(&["b"], &["C<RS>L"], None).unwrap();
+    let cache = lpe_cache_new(other.0);
+    for v in ["C", "RD", "L"] {
+        assert_eq!(
+            lpe_step_with(set.0, cache, &mut s, class(&set, v)),
+            lpe_status::LPE_OK
+        );
+    }
+    assert_eq!(
+        lpe_matches_with(set.0, cache, &s, w.as_mut_ptr(), 1, null_mut()),
+        lpe_status::LPE_OK
+    );
+    assert_eq!(w[0], 1);
+    lpe_cache_free(cache);
+}
+
+/// Every state `lpe_step` reaches from the start, breadth first.
+fn reachable_states(set: &Set) -> Vec<u32> {
+    let mut s = lpe_state { opaque: 0 };
+    assert_eq!(lpe_start(set.0, &mut s), lpe_status::LPE_OK);
+    let mut seen = vec![s.opaque];
+    let mut at = 0;
+    while at < seen.len() {
+        for c in 0..lpe_set_class_count(set.0) as u32 {
+            let mut t = lpe_state { opaque: seen[at] };
+            assert_eq!(
+                lpe_step(set.0, &mut t, lpe_class { id: c }),
+                lpe_status::LPE_OK
+            );
+            if !seen.contains(&t.opaque) {
+                seen.push(t.opaque);
+            }
+        }
+        at += 1;
+    }
+    seen
+}
+
+#[test]
+fn the_step_view_is_the_dfa_table_lpe_step_reads() {
+    let exprs = ["C<RD>+<L.'key'>", "C.*S.*L", "^(C.*D.*L)"];
+    let set = compile(&["a", "b", "c"], &exprs, None).unwrap();
+    let mut view = std::mem::MaybeUninit::<lpe_step_view>::uninit();
+    assert_eq!(
+        lpe_set_step_view(set.0, view.as_mut_ptr()),
+        lpe_status::LPE_OK
+    );
+    // SAFETY: filled by the call above.
+    let view = unsafe { view.assume_init() };
+    assert_eq!(view.set, set.0 as *const lpe_set);
+    assert_eq!(view.class_count, lpe_set_class_count(set.0));
+    let mut start = lpe_state { opaque: 7 };
+    lpe_start(set.0, &mut start);
+    assert_eq!(view.start, start);
+    // SAFETY: the view's table has `table_len` entries while the set lives.
+    let table = unsafe { std::slice::from_raw_parts(view.table, view.table_len) };
+    // One row of a power-of-two stride per state, state ids being row offsets: the states
+    // reached, and the dead state 0, which a DFA always has (the complement keeps these
+    // paths from reaching it).
+    let mut states = reachable_states(&set);
+    assert!(!states.contains(&0));
+    states.push(0);
+    let stride = view.class_count.next_power_of_two();
+    assert_eq!(table.len(), states.len() * stride);
+    assert!(states.iter().all(|&s| (s as usize).is_multiple_of(stride)));
+    for &s in &states {
+        for c in 0..view.class_count as u32 {
+            let mut t = lpe_state { opaque: s };
+            lpe_step(set.0, &mut t, lpe_class { id: c });
+            assert_eq!(table[(s + c) as usize], t.opaque, "state {s} class {c}");
+        }
+    }
+    // A DFA's state 0 is dead, whatever the AOVs.
+    let mut dead = false;
+    lpe_is_dead(set.0, &lpe_state { opaque: 0 }, &mut dead);
+    assert!(dead && view.zero_is_dead);
+
+    // A lazy set has no table; with a complement its state 0 is not dead.
+    let lazy = lpe_options {
+        dfa_budget: 0,
+        ..lpe_options_default()
+    };
+    let set = compile_in(
+        LPE_DIALECT_RENDERMAN,
+        &["c"],
+        &exprs[2..],
+        None,
+        Some(&lazy),
+    )
+    .unwrap();
+    let mut view = std::mem::MaybeUninit::<lpe_step_view>::uninit();
+    assert_eq!(
+        lpe_set_step_view(set.0, view.as_mut_ptr()),
+        lpe_status::LPE_OK
+    );
+    // SAFETY: filled by the call above.
+    let view = unsafe { view.assume_init() };
+    assert!(view.table.is_null() && view.table_len == 0);
+    assert!(!view.zero_is_dead);
+
+    assert_eq!(
+        lpe_set_step_view(null(), &mut { view }),
+        lpe_status::LPE_ERR_NULL
+    );
+    assert_eq!(
+        lpe_set_step_view(set.0, null_mut()),
+        lpe_status::LPE_ERR_NULL
+    );
 }

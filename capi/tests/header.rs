@@ -31,6 +31,14 @@ fn the_checked_in_header_is_current() {
         "extern \"C\" {",
         "lpe_step(",
         "#include <stdint.h>",
+        // A state is one register-sized value.
+        "uint32_t opaque;\n} lpe_state;",
+        "lpe_classify_osl(",
+        "const char *osl_registered;",
+        // The inline step, under a guard of its own (it follows LPE_H's #endif).
+        "#ifndef LPE_H_INLINE",
+        "static inline lpe_status lpe_view_step(",
+        "static inline lpe_status lpe_view_is_dead(",
     ] {
         assert!(generated.contains(needle), "{needle}");
     }

@@ -34,6 +34,36 @@ fn bad_input_exits_2() {
         &["diff", "--external", "/nonexistent/adapter"][..],
         &["diff", "--external", "'unclosed"],
         &["diff", "--external", "true", "--dialect", "osl"],
+        // A registration is OSL's, and only for a given case.
+        &[
+            "diff",
+            "--external",
+            "true",
+            "--register",
+            "events=U",
+            "--expr",
+            "C.L",
+        ],
+        &[
+            "diff",
+            "--external",
+            "true",
+            "--dialect",
+            "osl",
+            "--register",
+            "events=U",
+        ],
+        &[
+            "diff",
+            "--external",
+            "true",
+            "--dialect",
+            "osl",
+            "--expr",
+            "CDL",
+            "--path",
+            "C,",
+        ],
         &[
             "diff",
             "--external",
@@ -86,4 +116,92 @@ fn agreement_exits_0_and_the_planted_bug_3_with_a_replay_that_replays() {
         again.contains("external: no AOV") && again.contains("reference: a0"),
         "{again}"
     );
+}
+
+/// The OSL test adapter (cli/tests/adapters/osl_proxy.py) over this build's lpe-check.
+fn osl_proxy(flags: &str) -> String {
+    format!(
+        "python3 cli/tests/adapters/osl_proxy.py {} {flags}",
+        env!("CARGO_BIN_EXE_lpe-check")
+    )
+}
+
+#[test]
+fn osl_runs_send_each_registration_and_replay_it() {
+    if !python() {
+        return;
+    }
+    let clean = osl_proxy("");
+    let (code, out, err) = lpe_check(&[
+        "diff",
+        "--external",
+        &clean,
+        "--dialect",
+        "osl",
+        "--cases",
+        "40",
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("osl dialect") && out.contains("agrees with every engine"));
+    // An adapter that drops `registered` from `compile` parses and matches as if nothing
+    // were registered: found, minimized, and replayed with the case's registration.
+    let forgetful = osl_proxy("--forget-registration");
+    let (code, out, _) = lpe_check(&[
+        "diff",
+        "--external",
+        &forgetful,
+        "--dialect",
+        "osl",
+        "--cases",
+        "300",
+        "--max-failures",
+        "1",
+    ]);
+    assert_eq!(code, 3, "{out}");
+    let registered = out
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("registered: "))
+        .expect("the disagreement names its registration");
+    assert_ne!(registered, "-", "{out}");
+    let replay = out
+        .lines()
+        .find_map(|l| l.trim().strip_prefix("replay: lpe-check "))
+        .expect("a replay line");
+    let words = shell_words::split(replay).unwrap();
+    let at = words
+        .iter()
+        .position(|w| w == "--register")
+        .expect("{replay}");
+    assert_eq!(words[at + 1], registered);
+    assert!(
+        words.windows(2).any(|w| w == ["--dialect", "osl"]),
+        "{replay}"
+    );
+    let words: Vec<&str> = words.iter().map(|s| s.as_str()).collect();
+    let (code, again, _) = lpe_check(&words);
+    assert_eq!(code, 3, "{again}");
+    assert!(again.contains("1 disagreement(s)"), "{again}");
+    // The same case, asked of the clean adapter, agrees: the registration made the
+    // difference.
+    let mut fixed = words.clone();
+    let cmd = fixed.iter().position(|w| *w == forgetful).unwrap();
+    fixed[cmd] = &clean;
+    let (code, out, _) = lpe_check(&fixed);
+    assert_eq!(code, 0, "{out}");
+}
+
+#[test]
+fn a_renderman_only_matcher_refuses_an_osl_run_with_exit_2() {
+    if !python() {
+        return;
+    }
+    let (code, _, err) = lpe_check(&[
+        "diff",
+        "--external",
+        "python3 examples/python/naive_matcher.py",
+        "--dialect",
+        "osl",
+    ]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("refused the hello"), "{err}");
 }

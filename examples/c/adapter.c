@@ -1,7 +1,9 @@
 /* The external-matcher protocol (docs/protocol.md) over lpe's C ABI: what a renderer
  * team writes to put its own matcher under `lpe-check diff --external`. Here the matcher
- * is lpe itself, reached only through lpe.h, so the run tests the whole C path:
- * compile, classify (from path text), start, step, matches.
+ * is lpe itself, reached only through lpe.h, so the run tests the whole C path in both
+ * dialects: compile (OSL: under the registered labels), classify (RenderMan: from
+ * vertex text; OSL: from each vertex's symbols, as an OSL renderer would), start,
+ * step through a cache of the adapter's own, matches.
  *
  * The JSON reading is minimal on purpose: the requests come from lpe-check, one object
  * per line, so a small recursive reader of strings, numbers, arrays and objects does.
@@ -178,7 +180,7 @@ static void clear(strings *s) {
 
 typedef struct {
     char *id, *op, *dialect;
-    strings names, exprs, paths;
+    strings names, exprs, paths, events, scatters;
 } request;
 
 static void aov_member(reader *r, const char *key, void *ctx) {
@@ -190,6 +192,14 @@ static void aov_member(reader *r, const char *key, void *ctx) {
 
 static void aov_item(reader *r, void *ctx) { read_object(r, aov_member, ctx); }
 static void path_item(reader *r, void *ctx) { push(&((request *)ctx)->paths, read_string(r)); }
+static void string_item(reader *r, void *ctx) { push(ctx, read_string(r)); }
+
+static void registered_member(reader *r, const char *key, void *ctx) {
+    request *q = ctx;
+    if (!strcmp(key, "events")) read_array(r, string_item, &q->events);
+    else if (!strcmp(key, "scatters")) read_array(r, string_item, &q->scatters);
+    else skip_value(r);
+}
 
 static void request_member(reader *r, const char *key, void *ctx) {
     request *q = ctx;
@@ -206,40 +216,83 @@ static void request_member(reader *r, const char *key, void *ctx) {
     else if (!strcmp(key, "dialect")) { free(q->dialect); q->dialect = read_string(r); }
     else if (!strcmp(key, "aovs")) read_array(r, aov_item, q);
     else if (!strcmp(key, "paths")) read_array(r, path_item, q);
+    else if (!strcmp(key, "registered")) read_object(r, registered_member, q);
     else skip_value(r);
 }
 
 /* ---- matching through the C ABI -------------------------------------------------- */
 
 static lpe_set *set = NULL;
+static lpe_cache *cache = NULL; /* this thread's lazy-DFA cache for `set` */
 static lpe_options options;
+static int osl = 0; /* the dialect of `hello`: 1 for OSL */
 
-/* Steps a path written as text (vertices separated by spaces; labels in quotes may hold
- * spaces) and prints the names of the AOVs it lands in as a JSON array. 0 on a bad
- * vertex. */
+/* The next RenderMan vertex of `*p` (vertices separated by spaces; labels in quotes may
+ * hold spaces) into `vertex`, classified. 0 on a bad vertex. */
+static int renderman_vertex(const char **p, char *vertex, lpe_class *c) {
+    size_t n = 0;
+    int quoted = 0;
+    while (**p && (quoted || **p != ' ')) {
+        if (**p == '\'') quoted = !quoted;
+        vertex[n++] = *(*p)++;
+    }
+    vertex[n] = 0;
+    return lpe_classify_text(set, vertex, c) == LPE_OK;
+}
+
+/* The next OSL vertex of `*p` (symbols separated by commas: `~` is NONE, a label is bare
+ * or in quotes with '' for a quote), its symbols decoded into `buf`, classified from
+ * them. 0 on a bad vertex. */
+static int osl_vertex(const char **p, char *buf, const char **symbols, lpe_class *c) {
+    size_t count = 0;
+    for (;;) {
+        const char *q = *p;
+        if (*q == '~') {
+            symbols[count++] = NULL; /* NONE, as OSL's null ustring */
+            q++;
+        } else {
+            symbols[count++] = buf;
+            if (*q == '\'') {
+                for (q++;; q++) {
+                    if (!*q) return 0;
+                    if (*q == '\'' && q[1] != '\'') break;
+                    if (*q == '\'') q++;
+                    *buf++ = *q;
+                }
+                q++;
+            } else {
+                if (!*q || *q == ',' || *q == ' ') return 0;
+                while (*q && !strchr(" ,~'", *q)) *buf++ = *q++;
+            }
+            *buf++ = 0;
+        }
+        *p = q;
+        if (**p != ',') break;
+        (*p)++;
+    }
+    if (**p && **p != ' ') return 0;
+    return lpe_classify_osl(set, symbols, count, c) == LPE_OK;
+}
+
+/* Steps a path written in the dialect's text form and prints the names of the AOVs it
+ * lands in as a JSON array. 0 on a bad vertex. */
 static int match_path(const char *path, uint64_t *mask, size_t words) {
     lpe_state s;
     if (lpe_start(set, &s) != LPE_OK) return 0;
-    char *vertex = malloc(strlen(path) + 1);
+    size_t len = strlen(path);
+    char *buf = malloc(2 * len + 2);
+    const char **symbols = malloc((len + 1) * sizeof *symbols);
     const char *p = path;
-    while (*p) {
-        while (*p == ' ') p++;
-        if (!*p) break;
-        size_t n = 0;
-        int quoted = 0;
-        while (*p && (quoted || *p != ' ')) {
-            if (*p == '\'') quoted = !quoted;
-            vertex[n++] = *p++;
-        }
-        vertex[n] = 0;
+    int ok = 1;
+    while (ok && *p) {
+        if (*p == ' ') { p++; continue; }
         lpe_class c;
-        if (lpe_classify_text(set, vertex, &c) != LPE_OK || lpe_step(set, &s, c) != LPE_OK) {
-            free(vertex);
-            return 0;
-        }
+        ok = (osl ? osl_vertex(&p, buf, symbols, &c) : renderman_vertex(&p, buf, &c)) &&
+             lpe_step_with(set, cache, &s, c) == LPE_OK;
     }
-    free(vertex);
-    if (lpe_matches(set, &s, mask, words, NULL) != LPE_OK) return 0;
+    free(buf);
+    free(symbols);
+    if (!ok || lpe_matches_with(set, cache, &s, mask, words, NULL) != LPE_OK) return 0;
     putchar('[');
     int first = 1;
     for (size_t i = 0; i < lpe_set_len(set); i++) {
@@ -253,23 +306,54 @@ static int match_path(const char *path, uint64_t *mask, size_t words) {
     return 1;
 }
 
+/* The `registered` lists as lpe_options.osl_registered text, `events=A,B;scatters=Y`
+ * (NULL when nothing is registered); the caller frees it. */
+static char *registration(const request *q) {
+    if (!q->events.n && !q->scatters.n) return NULL;
+    size_t len = sizeof "events=;scatters=";
+    for (size_t i = 0; i < q->events.n; i++) len += strlen(q->events.items[i]) + 1;
+    for (size_t i = 0; i < q->scatters.n; i++) len += strlen(q->scatters.items[i]) + 1;
+    char *out = malloc(len), *o = out;
+    const strings *lists[2] = {&q->events, &q->scatters};
+    const char *keys[2] = {"events=", "scatters="};
+    for (int k = 0; k < 2; k++) {
+        if (!lists[k]->n) continue;
+        if (o != out) *o++ = ';';
+        o += sprintf(o, "%s", keys[k]);
+        for (size_t i = 0; i < lists[k]->n; i++)
+            o += sprintf(o, "%s%s", i ? "," : "", lists[k]->items[i]);
+    }
+    *o = 0;
+    return out;
+}
+
 static void answer(request *q) {
     const char *id = q->id ? q->id : "null";
     if (!q->op) {
         printf("{\"id\":%s,\"ok\":false,\"unsupported\":\"no op\"}\n", id);
     } else if (!strcmp(q->op, "hello")) {
-        if (q->dialect && !strcmp(q->dialect, "renderman"))
+        int renderman = q->dialect && !strcmp(q->dialect, "renderman");
+        osl = q->dialect && !strcmp(q->dialect, "osl");
+        if (renderman || osl)
             printf("{\"id\":%s,\"ok\":true,\"protocol\":1,\"name\":\"lpe C ABI adapter\"}\n", id);
         else
-            printf("{\"id\":%s,\"ok\":false,\"unsupported\":\"only the renderman dialect\"}\n", id);
+            printf("{\"id\":%s,\"ok\":false,\"unsupported\":\"dialects: renderman, osl\"}\n", id);
     } else if (!strcmp(q->op, "compile")) {
+        lpe_cache_free(cache);
         lpe_set_free(set);
+        cache = NULL;
         set = NULL;
         lpe_error *err = NULL;
         size_t n = q->names.n < q->exprs.n ? q->names.n : q->exprs.n;
+        lpe_options opts = options;
+        char *registered = osl ? registration(q) : NULL;
+        opts.osl_registered = registered;
         lpe_status st = lpe_set_compile((const char *const *)q->names.items,
                                         (const char *const *)q->exprs.items, n,
-                                        LPE_DIALECT_RENDERMAN, NULL, &options, &set, &err);
+                                        osl ? LPE_DIALECT_OSL : LPE_DIALECT_RENDERMAN, NULL,
+                                        &opts, &set, &err);
+        free(registered);
+        if (st == LPE_OK) cache = lpe_cache_new(set);
         if (st == LPE_OK) {
             printf("{\"id\":%s,\"ok\":true}\n", id);
         } else if (st == LPE_ERR_PARSE) {
@@ -326,6 +410,8 @@ int main(int argc, char **argv) {
         clear(&q.names);
         clear(&q.exprs);
         clear(&q.paths);
+        clear(&q.events);
+        clear(&q.scatters);
         reader r = {line, 1};
         read_object(&r, request_member, &q);
         if (!r.ok) {
@@ -336,6 +422,7 @@ int main(int argc, char **argv) {
         answer(&q);
         if (q.op && !strcmp(q.op, "quit")) break;
     }
+    lpe_cache_free(cache);
     lpe_set_free(set);
     return 0;
 }

@@ -1,6 +1,7 @@
 /* The renderer loop of the lpe crate docs (lpe::matcher), in C: compile the AOVs once,
- * classify every material lobe, light and the camera once, then per path one
- * lpe_step per vertex and lpe_matches at every light sample.
+ * classify every material lobe, light and the camera once, take the set's step view,
+ * then per path one inline lpe_view_step per vertex and lpe_matches at every light
+ * sample.
  *
  * Build (see .ci/run):  cc -std=c99 -Icapi/include examples/c/render_loop.c \
  *                          target/release/liblpe_capi.a -lpthread -ldl -lm
@@ -56,19 +57,23 @@ int main(void) {
     lpe_class glass_specular = classify(set, 'T', 'S', 8, "glass");
     lpe_class key_light = classify(set, 'L', 0, 0, "key");
 
-    /* Per path: one step per vertex; the state is a plain value, copied to branch off a
-     * light sample at each bounce (next-event estimation). */
+    /* The step view: the header's inline step reads the set's table through it. */
+    lpe_step_view view;
+    check(lpe_set_step_view(set, &view), "lpe_set_step_view");
+
+    /* Per path: one step per vertex (inline, no call while the set's DFA answers); the
+     * state is a plain value, copied to branch off a light sample at each bounce
+     * (next-event estimation). */
     lpe_class bounces[] = {floor_diffuse, glass_specular};
-    lpe_state s;
-    check(lpe_start(set, &s), "lpe_start");
-    check(lpe_step(set, &s, camera), "lpe_step");
+    lpe_state s = view.start;
+    check(lpe_view_step(&view, &s, camera), "lpe_view_step");
     for (int b = 0; b < 2; b++) {
-        check(lpe_step(set, &s, bounces[b]), "lpe_step");
+        check(lpe_view_step(&view, &s, bounces[b]), "lpe_view_step");
         bool dead = false;
-        check(lpe_is_dead(set, &s, &dead), "lpe_is_dead");
+        check(lpe_view_is_dead(&view, &s, &dead), "lpe_view_is_dead");
         if (dead) break; /* no AOV can match any continuation */
         lpe_state sample = s;
-        check(lpe_step(set, &sample, key_light), "lpe_step");
+        check(lpe_view_step(&view, &sample, key_light), "lpe_view_step");
         print_hits(set, &sample, b + 1);
     }
 
@@ -83,7 +88,8 @@ int main(void) {
     lpe_error_free(err);
     /* Out-of-range classes are refused, the state left alone. */
     lpe_class nowhere = {(uint32_t)lpe_set_class_count(set)};
-    printf("foreign class: %s\n", lpe_status_message((uint32_t)lpe_step(set, &s, nowhere)));
+    printf("foreign class: %s\n",
+           lpe_status_message((uint32_t)lpe_view_step(&view, &s, nowhere)));
     lpe_set_free(set);
     return 0;
 }

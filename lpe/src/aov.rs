@@ -467,6 +467,26 @@ impl AovSet {
         }
     }
 
+    /// The eager DFA's transitions, for callers that inline the step into their own
+    /// loop (the C ABI's `lpe_step_view`): for any state `s` and class `c`, when
+    /// `i = s.to_u32().wrapping_add(c.index() as u32)` is below the table's length,
+    /// [`AovSet::step_class`]`(s, c)` is `State::from_u32(table[i])`; otherwise (always
+    /// on a lazy set, whose table is empty) step with [`AovSet::step_class`]. Immutable
+    /// for the set's life.
+    ///
+    /// ```
+    /// use lpe::{AovSet, Vertex};
+    ///
+    /// let set = AovSet::compile(&[("d".to_string(), lpe::parse("C<RD>L").unwrap())]).unwrap();
+    /// let (s, c) = (set.start(), set.classify(&Vertex::camera()));
+    /// let i = s.to_u32().wrapping_add(c.index() as u32) as usize;
+    /// assert_eq!(set.step_table()[i], set.step_class(s, c).to_u32());
+    /// ```
+    #[inline]
+    pub fn step_table(&self) -> &[u32] {
+        self.dfa.table()
+    }
+
     /// The AOVs that match a path ending in state `s`.
     #[inline]
     pub fn matches(&self, s: State) -> AovMask {

@@ -1,6 +1,6 @@
 //! `lpe-render bench`: what LPE tracking costs.
 
-use lpe::{LobeMap, Parser};
+use lpe::{Dialect, LobeMap, Parser};
 
 use crate::aov::{AovError, AovList};
 use crate::integrator::RenderError;
@@ -17,7 +17,7 @@ use crate::integrator::{render, Settings};
 use crate::scene::Scene;
 
 /// `lpe-render bench`: cost of LPE tracking, the same scene and samples rendered with
-/// beauty only (matcher off) and with 32 AOVs, back to back in each round (alternating
+/// beauty only (matcher off) and with 32 AOVs (in either dialect), back to back in each round (alternating
 /// which goes first, so neither always runs on a warmer cache). The overhead is the
 /// median over rounds of the paired ratio of process CPU times, which resists load that
 /// drifts during the run better than comparing separate best times, and does not count
@@ -36,25 +36,56 @@ pub struct Bench {
     pub paths: u64,
 }
 
-pub fn bench(
-    scene: &Scene,
-    lobes: &LobeMap,
-    parser: &Parser,
-    settings: &Settings,
-    rounds: usize,
-) -> Result<Bench, BenchError> {
-    let mut aovs = AovList::defaults(scene, parser)?;
-    // Pad with distinct, plausible AOVs up to 32.
-    let extra = [
-        ("caustics", "lpe:caustics"),
-        ("diffuseLegacy", "lpe:diffuse"),
-        ("specularLegacy", "lpe:specular"),
-        ("emissionLegacy", "lpe:emission"),
-        ("twoBounce", "C.{2}[<L.>O]"),
-        ("threeBounce", "C.{3}[<L.>O]"),
-        ("diffuseOnly", "C<RD>+[<L.>O]"),
-        ("specThenDiffuse", "C<RS>.*<RD>.*[<L.>O]"),
-    ];
+/// Distinct, plausible AOVs the bench pads its list with, per dialect.
+const RENDERMAN_EXTRA: [(&str, &str); 8] = [
+    ("caustics", "lpe:caustics"),
+    ("diffuseLegacy", "lpe:diffuse"),
+    ("specularLegacy", "lpe:specular"),
+    ("emissionLegacy", "lpe:emission"),
+    ("twoBounce", "C.{2}[<L.>O]"),
+    ("threeBounce", "C.{3}[<L.>O]"),
+    ("diffuseOnly", "C<RD>+[<L.>O]"),
+    ("specThenDiffuse", "C<RS>.*<RD>.*[<L.>O]"),
+];
+const OSL_EXTRA: [(&str, &str); 25] = [
+    ("glossy", "C<.G>.*[LO]"),
+    ("delta", "C<.S>.*[LO]"),
+    ("directGlossy", "C<RG>[LO]"),
+    ("indirectGlossy", "C<RG>.+[LO]"),
+    ("directDelta", "C<RS>[LO]"),
+    ("indirectDelta", "C<RS>.+[LO]"),
+    ("glossyTransmission", "C<TG>.*[LO]"),
+    ("deltaTransmission", "C<TS>.*[LO]"),
+    ("caustics", "C<.D>.*<.[GS]>.*[LO]"),
+    ("key", "C.*<L.'key'>"),
+    ("fill", "C.*<L.'fill'>"),
+    ("rim", "C.*<L.'rim'>"),
+    ("lights", "C.*L"),
+    ("objects", "C.*O"),
+    ("floor", "C<.D'floor'>.*[LO]"),
+    ("glass", "C<.S'glass'>.*[LO]"),
+    ("directKey", "C<RD><L.'key'>"),
+    ("indirectKey", "C<RD>.+<L.'key'>"),
+    ("twoBounce", "C.{2}[LO]"),
+    ("threeBounce", "C.{3}[LO]"),
+    ("diffuseOnly", "C<RD>+[LO]"),
+    ("specThenDiffuse", "C<R[GS]>.*<RD>.*[LO]"),
+    ("diffuseThenGlossy", "C<RD>.*<RG>.*[LO]"),
+    ("noDelta", "C[^S]*[LO]"),
+    ("fourBouncesOrMore", "C.{4,}[LO]"),
+];
+
+/// The bench's 32 AOVs in `dialect`: the defaults, the extras above, then
+/// `bounces{k}`, paths of at least `4 + k` bounces.
+pub fn aovs(dialect: Dialect, scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
+    let (mut aovs, extra, emitter) = match dialect {
+        Dialect::RenderMan => (
+            AovList::defaults(scene, parser)?,
+            &RENDERMAN_EXTRA[..],
+            "[<L.>O]",
+        ),
+        Dialect::Osl => (AovList::basic_osl(parser)?, &OSL_EXTRA[..], "[LO]"),
+    };
     for (n, s) in extra {
         if aovs.aovs.len() >= 32 {
             break;
@@ -65,11 +96,34 @@ pub fn bench(
     while aovs.aovs.len() < 32 {
         aovs.push(
             &format!("bounces{k}"),
-            &format!("C.{{{},}}[<L.>O]", 4 + k),
+            &format!("C.{{{},}}{emitter}", 4 + k),
             parser,
         )?;
         k += 1;
     }
+    Ok(aovs)
+}
+
+pub fn bench(
+    scene: &Scene,
+    lobes: &LobeMap,
+    parser: &Parser,
+    settings: &Settings,
+    rounds: usize,
+) -> Result<Bench, BenchError> {
+    bench_in(Dialect::RenderMan, scene, lobes, parser, settings, rounds)
+}
+
+/// [`bench`] with the 32 AOVs of [`aovs`] in `dialect`.
+pub fn bench_in(
+    dialect: Dialect,
+    scene: &Scene,
+    lobes: &LobeMap,
+    parser: &Parser,
+    settings: &Settings,
+    rounds: usize,
+) -> Result<Bench, BenchError> {
+    let aovs = aovs(dialect, scene, parser)?;
     let none = AovList::default();
     let (mut tb, mut ta) = (f64::INFINITY, f64::INFINITY);
     let (mut cpu_ratios, mut wall_ratios) = (Vec::new(), Vec::new());
@@ -101,4 +155,47 @@ pub fn bench(
 fn median(xs: &mut [f64]) -> f64 {
     xs.sort_by(f64::total_cmp);
     xs[xs.len() / 2]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use lpe::osl::Registered;
+    use lpe::{AovSet, Config, Options};
+
+    /// The bench measures the eager DFA step in both dialects: a padding AOV that blew
+    /// the set up (OSL sets attempt the DFA within 1 MiB) would time the lazy DFA, or
+    /// fail to compile, instead.
+    #[test]
+    fn the_bench_sets_have_32_distinct_aovs_and_an_eager_dfa() {
+        let cfg = Config::default();
+        let parser = Parser::new(cfg.limits.clone(), cfg.macros.clone());
+        for name in ["cornell", "still-life"] {
+            let scene = Scene::load(name, &cfg.lobes).unwrap();
+            for dialect in Dialect::ALL {
+                let list = aovs(dialect, &scene, &parser).unwrap();
+                assert_eq!(list.aovs.len(), 32, "{name} {dialect}");
+                assert_eq!(list.dialect, dialect);
+                let mut names: Vec<&str> = list.aovs.iter().map(|a| a.name.as_str()).collect();
+                names.sort_unstable();
+                names.dedup();
+                assert_eq!(names.len(), 32, "{name} {dialect}: duplicate names");
+                let set = match dialect {
+                    Dialect::RenderMan => AovSet::compile(&list.named()),
+                    Dialect::Osl => AovSet::compile_osl(
+                        &list.named_osl(),
+                        &Registered::none(),
+                        &Options::default(),
+                    ),
+                }
+                .unwrap();
+                assert!(set.uses_dfa(), "{name} {dialect}: lazy");
+                assert!(
+                    set.warnings().is_empty(),
+                    "{name} {dialect}: {:?}",
+                    set.warnings()
+                );
+            }
+        }
+    }
 }

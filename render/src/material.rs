@@ -12,6 +12,7 @@ use glam::{Vec2, Vec3};
 use lpe::{Event, LobeCategory, LobeMap};
 use std::f32::consts::{FRAC_1_PI, PI};
 
+use crate::aov::vertex::Scattering;
 use crate::sampling::{cosine_hemisphere, luminance};
 
 /// The BSDF model of a lobe.
@@ -66,6 +67,15 @@ impl Lobe {
     /// Whether the lobe is a Dirac delta (cannot be evaluated, only sampled).
     pub fn is_delta(&self) -> bool {
         matches!(self.model, Model::Dielectric { .. })
+    }
+
+    /// How the lobe scatters, in OSL's terms: `D`, `G` or `S` (delta).
+    pub fn scattering(&self) -> Scattering {
+        match self.model {
+            Model::Lambert { .. } | Model::DiffuseTransmission { .. } => Scattering::Diffuse,
+            Model::Ggx { .. } => Scattering::Glossy,
+            Model::Dielectric { .. } => Scattering::Delta,
+        }
     }
 
     /// Whether the lobe can scatter to the other side of the surface.

@@ -164,6 +164,7 @@ fn exr_reads_back_with_the_expected_layers_and_values() {
         seed: 5,
         threads: 2,
         matcher: integrator::ENGINE.into(),
+        dialect: "renderman".into(),
         timing: lpe_render::output::Timing {
             render_seconds: r.seconds,
             total_seconds: r.seconds,

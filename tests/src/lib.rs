@@ -90,3 +90,17 @@ pub fn vertex_pool() -> Vec<Vertex> {
     }
     pool
 }
+
+/// RenderMan `(name, expression)` pairs compiled with the default options but a DFA
+/// budget of `dfa_budget` bytes (0: no DFA).
+pub fn compile_with_dfa_budget(srcs: &[(&str, &str)], dfa_budget: usize) -> lpe::AovSet {
+    let aovs: Vec<_> = srcs
+        .iter()
+        .map(|(n, s)| (n.to_string(), lpe::parse(s).unwrap()))
+        .collect();
+    let opts = lpe::Options {
+        dfa_budget,
+        ..lpe::Options::default()
+    };
+    lpe::AovSet::compile_with(&aovs, &opts).unwrap()
+}

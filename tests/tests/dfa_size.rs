@@ -6,18 +6,10 @@
 //! rounded up to a power of two `u32`s, one 32-byte `AovMask` per state) and from its
 //! budget accounting (`stride * 4 + 32 + 2 * words * 8 + 32` bytes per state built).
 
-use lpe::{parse, AovMask, AovSet, Options};
+use lpe::{AovMask, AovSet, Options};
 
 fn set(expr: &str, dfa_budget: usize) -> AovSet {
-    let aovs = vec![("a".to_string(), parse(expr).unwrap())];
-    AovSet::compile_with(
-        &aovs,
-        &Options {
-            dfa_budget,
-            ..Options::default()
-        },
-    )
-    .unwrap()
+    lpe_tests::compile_with_dfa_budget(&[("a", expr)], dfa_budget)
 }
 
 fn default_set(expr: &str) -> AovSet {

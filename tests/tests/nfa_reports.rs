@@ -3,21 +3,10 @@
 //! emptiness warnings of a set whose NFA spans more than one 64-bit word, and the bytes
 //! it holds.
 
-use lpe::{parse, AovSet, Options, Path};
+use lpe::{AovSet, Options, Path};
 
 fn set(srcs: &[(&str, &str)], dfa_budget: usize) -> AovSet {
-    let aovs: Vec<_> = srcs
-        .iter()
-        .map(|(n, s)| (n.to_string(), parse(s).unwrap()))
-        .collect();
-    AovSet::compile_with(
-        &aovs,
-        &Options {
-            dfa_budget,
-            ..Options::default()
-        },
-    )
-    .unwrap()
+    lpe_tests::compile_with_dfa_budget(srcs, dfa_budget)
 }
 
 /// The same set stepped on its DFA and on its NFA (a DFA budget of 0).

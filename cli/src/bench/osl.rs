@@ -7,7 +7,7 @@
 //! and mirror lobes `S`, user lobes `U`, `_` on camera and emitters), then its
 //! lpegroup or light group as a custom label.
 
-use std::time::Duration;
+use std::time::{Duration, Instant};
 
 use lpe::osl::{self, Registered, Symbol};
 use lpe::{AovMask, AovSet, Class, EventKind, Options, Path, VertexType};
@@ -16,6 +16,10 @@ use super::{best_times, chunked, row, run_classes, BenchError, Disagreement, Fla
 
 /// The workload name, as given to `--workload`.
 pub const WORKLOAD: &str = "osl-basic";
+
+/// OSL's ReDoS expression (OSL's matcher builds 90 192 DFA states from its 475 NFA
+/// states).
+const REDOS: &str = "C(R('a'+|G[^S]{2}[^OC]){2,}|(L|T*[sBO]{2,})+)";
 
 /// The OSL vertex a renderer feeds for `v`.
 pub fn vertex(v: &lpe::Vertex) -> osl::Vertex {
@@ -90,6 +94,26 @@ pub fn run(
         dfa_budget: 0,
         ..Options::default()
     })?;
+    // OSL's ReDoS expression, which OSL's own matcher takes minutes to compile: the
+    // best of `reps` compiles.
+    let redos_aovs = vec![(
+        "redos".to_string(),
+        osl::parse(REDOS, &reg).unwrap_or_else(|e| panic!("`{REDOS}`: {e}")),
+    )];
+    let mut redos_compile = Duration::MAX;
+    let mut redos = None;
+    for _ in 0..reps.max(1) {
+        let t = Instant::now();
+        let set = AovSet::compile_osl(&redos_aovs, &reg, &Options::default()).map_err(|error| {
+            BenchError::Compile {
+                workload: WORKLOAD,
+                error,
+            }
+        })?;
+        redos_compile = redos_compile.min(t.elapsed());
+        redos = Some(set);
+    }
+    let redos = redos.expect("compiled at least once");
     let rm_aovs = super::workload::all()
         .into_iter()
         .find(|w| w.name == "basic")
@@ -101,10 +125,14 @@ pub fn run(
     })?;
 
     let mut bad = Vec::new();
-    for (name, set) in [("fast", &fast), ("nfa", &nfa)] {
+    for (name, set, aovs) in [
+        ("fast", &fast, &aovs),
+        ("lazy", &nfa, &aovs),
+        ("redos", &redos, &redos_aovs),
+    ] {
         let wrong = osl_paths[..checked]
             .iter()
-            .filter(|p| set.match_osl_path(p) != reference_mask(&aovs, p))
+            .filter(|p| set.match_osl_path(p) != reference_mask(aovs, p))
             .count();
         if wrong > 0 {
             bad.push(Disagreement {
@@ -117,11 +145,13 @@ pub fn run(
 
     let fast_classes = chunked(&osl_paths, |c| classify(&fast, c));
     let nfa_classes = chunked(&osl_paths, |c| classify(&nfa, c));
+    let redos_classes = chunked(&osl_paths, |c| classify(&redos, c));
     let rm_classes = chunked(paths, |c| super::classify(&rm, c));
     let mut jobs: Vec<Job<'_>> = vec![
         Box::new(|c| run_classes(&rm, &rm_classes[c])),
         Box::new(|c| run_classes(&fast, &fast_classes[c])),
         Box::new(|c| run_classes(&nfa, &nfa_classes[c])),
+        Box::new(|c| run_classes(&redos, &redos_classes[c])),
     ];
     let times = best_times(reps, fast_classes.len(), &mut jobs);
     drop(jobs);
@@ -135,18 +165,27 @@ pub fn run(
     rows.push(r);
     for (engine, set, t) in [
         ("fast, on classes", &fast, times[1]),
-        ("bitset NFA, on classes", &nfa, times[2]),
+        ("lazy DFA (dfa_budget 0), on classes", &nfa, times[2]),
     ] {
         let mut r = row(WORKLOAD, engine);
         r.ns_per_vertex = Some(ns(t));
         r.memory = Some(set.memory_bytes());
         let shape = match set.dfa_states() {
             Some(n) => format!("DFA, {n} states, {} classes", set.class_count()),
-            None => format!("NFA, {} positions", set.nfa_positions()),
+            None => format!("lazy DFA, {} positions", set.nfa_positions()),
         };
         r.note = format!("{shape}; {:.2}x the RenderMan basic set", ns(t) / rm_ns);
         rows.push(r);
     }
+    let mut r = row(WORKLOAD, "OSL's ReDoS expression, fast, on classes");
+    r.ns_per_vertex = Some(ns(times[3]));
+    r.compile = Some(redos_compile);
+    r.memory = Some(redos.memory_bytes());
+    r.note = match redos.dfa_states() {
+        Some(n) => format!("DFA, {n} states"),
+        None => format!("lazy DFA, {} positions", redos.nfa_positions()),
+    };
+    rows.push(r);
     Ok((rows, bad))
 }
 

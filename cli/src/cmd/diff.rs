@@ -19,7 +19,7 @@ use std::time::Instant;
 use engines::differential::{run_cases, run_osl_cases, Language, Run, Totals};
 use lpe::Dialect;
 
-use crate::input::{bad_input, select_engines};
+use crate::input::{bad_input, select_engines, DialectArgs};
 
 /// Arguments of `lpe-check diff`.
 #[derive(clap::Args, Debug)]
@@ -45,9 +45,10 @@ pub struct Args {
     /// Stop after this many disagreements.
     #[arg(long, default_value_t = 3)]
     pub max_failures: usize,
-    /// The expression language: `renderman` or `osl`.
-    #[arg(long, default_value_t = Dialect::RenderMan)]
-    pub dialect: Dialect,
+    /// `--dialect renderman|osl`; `--register` (OSL, with --external --expr only: a
+    /// generated case registers its own labels) for a replayed case.
+    #[command(flatten)]
+    pub lang: DialectArgs,
     /// An external matcher to test: a command line (split like a shell does) speaking
     /// the JSON Lines protocol of docs/protocol.md on stdin/stdout.
     #[arg(long, value_name = "CMD ARGS")]
@@ -83,6 +84,12 @@ impl Args {
 
 /// Runs `lpe-check diff`.
 pub fn run(args: Args) -> ExitCode {
+    if args.lang.register.is_some() && args.expr.is_empty() {
+        return bad_input(
+            "error: --register is for a given case (--external with --expr); \
+             generated OSL cases register their own labels",
+        );
+    }
     if args.external.is_some() {
         return super::external::run(&args);
     }
@@ -96,7 +103,7 @@ pub fn run(args: Args) -> ExitCode {
     }
     let names: Vec<&str> = engines.iter().map(|e| e.name()).collect();
     let start = Instant::now();
-    match args.dialect {
+    match args.lang.dialect {
         Dialect::RenderMan => report(&args, &names, run_cases(&args.run(), &engines), start),
         Dialect::Osl => report(&args, &names, run_osl_cases(&args.run(), &engines), start),
     }
@@ -107,7 +114,7 @@ fn report<L: Language>(args: &Args, names: &[&str], t: Totals<L>, start: Instant
     let secs = start.elapsed().as_secs_f64().max(1e-9);
     println!(
         "{} dialect, engines: {}; seed {}, cases {}..{}, max size {}, {} paths per case",
-        args.dialect,
+        args.lang.dialect,
         names.join(", "),
         args.seed,
         args.first,
@@ -151,7 +158,7 @@ fn report<L: Language>(args: &Args, names: &[&str], t: Totals<L>, start: Instant
     for (index, c) in &t.failures {
         println!(
             "\ncase {index} (regenerate: lpe-check diff --dialect {} --seed {} --first {index} --cases 1 --max-size {} --paths {}):\n{c}",
-            args.dialect, args.seed, args.max_size, args.paths
+            args.lang.dialect, args.seed, args.max_size, args.paths
         );
     }
     ExitCode::from(3)

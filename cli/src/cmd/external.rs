@@ -3,7 +3,8 @@
 //! Prints each finding in full (a minimized disagreement with each side's answer and a
 //! replay command, or a protocol fault with its request), then a summary of all of them.
 //! Exit 0: agreement; 3: any finding; 2: bad input (the command cannot start, refuses
-//! the hello, or the dialect is not available).
+//! the hello, e.g. for a dialect it does not speak; a bad argument). `--dialect osl`
+//! generates OSL cases, each with its own registration, sent with every `compile`.
 
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
@@ -18,11 +19,14 @@ pub fn run(args: &Args) -> ExitCode {
     let Some(command) = args.external.clone() else {
         return bad_input("error: --external needs a command");
     };
-    if args.dialect == lpe::Dialect::Osl {
-        return bad_input(
-            "error: --external --dialect osl is not supported yet; use --dialect renderman",
-        );
-    }
+    let registered = match args.lang.is_osl() {
+        Ok(true) => match args.lang.registered(None) {
+            Ok(r) => r,
+            Err(e) => return bad_input(format!("error: {e}")),
+        },
+        Ok(false) => lpe::osl::Registered::none(),
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
     let engines = match select_engines(&args.engine) {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),
@@ -31,7 +35,14 @@ pub fn run(args: &Args) -> ExitCode {
         return bad_input("error: --path needs --expr");
     }
     for p in &args.path {
-        if let Err(e) = p.parse::<lpe::Path>() {
+        let parsed = match args.lang.dialect {
+            lpe::Dialect::RenderMan => p.parse::<lpe::Path>().map(drop).map_err(|e| e.to_string()),
+            lpe::Dialect::Osl => p
+                .parse::<lpe::osl::Path>()
+                .map(drop)
+                .map_err(|e| e.to_string()),
+        };
+        if let Err(e) = parsed {
             return bad_input(format!("error: --path {p:?}: {e}"));
         }
     }
@@ -45,7 +56,8 @@ pub fn run(args: &Args) -> ExitCode {
     };
     let setup = Setup {
         command,
-        dialect: "renderman".into(),
+        dialect: args.lang.dialect,
+        registered,
         timeout: Duration::from_millis(args.timeout_ms),
         max_restarts: args.max_restarts,
     };
@@ -57,9 +69,10 @@ pub fn run(args: &Args) -> ExitCode {
     let secs = start.elapsed().as_secs_f64().max(1e-9);
     let names: Vec<&str> = engines.iter().map(|e| e.name()).collect();
     println!(
-        "external: {} ({}); engines: {}",
+        "external: {} ({}, {} dialect); engines: {}",
         setup.command,
         report.name.as_deref().unwrap_or("unnamed"),
+        setup.dialect,
         names.join(", ")
     );
     if let Cases::Generated(run) = &cases {

@@ -10,7 +10,10 @@ use std::fmt;
 use std::time::Duration;
 
 use super::process::{Line, Process, Wait};
-use super::protocol::{self, AovSource, Body, Reply, Request, Violation, PROTOCOL_VERSION};
+use super::protocol::{
+    self, AovSource, Body, Registration, Reply, Request, Violation, PROTOCOL_MINOR,
+    PROTOCOL_VERSION,
+};
 
 /// What went wrong on one request.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -197,16 +200,22 @@ impl Client {
         self.timeout = timeout.max(HELLO_TIMEOUT);
         let reply = self.request(Body::Hello {
             protocol: PROTOCOL_VERSION,
+            minor: PROTOCOL_MINOR,
             dialect: self.dialect.clone(),
         });
         self.timeout = timeout;
         reply
     }
 
-    /// Compiles a set: [`Reply::Done`], [`Reply::Rejected`] or [`Reply::Unsupported`].
-    pub fn compile(&mut self, aovs: Vec<AovSource>) -> Result<Reply, Fault> {
+    /// Compiles a set (OSL: under `registered`): [`Reply::Done`], [`Reply::Rejected`]
+    /// or [`Reply::Unsupported`].
+    pub fn compile(
+        &mut self,
+        aovs: Vec<AovSource>,
+        registered: Option<Registration>,
+    ) -> Result<Reply, Fault> {
         self.ensure()?;
-        self.request(Body::Compile { aovs })
+        self.request(Body::Compile { aovs, registered })
     }
 
     /// Matches paths against the last compiled set: [`Reply::Matches`] or

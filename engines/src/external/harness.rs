@@ -12,12 +12,14 @@
 use std::fmt;
 use std::time::Duration;
 
-use lpe::generate::Config as GenConfig;
-use lpe::{Lpe, Path};
+use lpe::generate::{self, Config as GenConfig};
+use lpe::osl::Registered;
+use lpe::Dialect;
 
 use super::client::{Client, Fault, FaultKind, StartError};
+use super::dialect::Wire;
 use super::protocol::{AovSource, Body, Reply, Violation};
-use crate::differential::{generate_case, minimize_by, RenderMan, Run};
+use crate::differential::{generate_case, generate_osl_case, minimize_by, Osl, RenderMan, Run};
 use crate::engine::Engine;
 
 /// One side's verdict on a set and a path.
@@ -85,6 +87,8 @@ pub struct Disagreement {
     pub aovs: Vec<AovSource>,
     /// The minimized path, in text form.
     pub path: String,
+    /// What the case's expressions share (OSL: `registered: …`), or empty.
+    pub context: String,
     /// The external answer on them.
     pub external: Answer,
     /// Each engine's answer on them (`None`: it could not build the set).
@@ -148,6 +152,9 @@ impl fmt::Display for Finding {
                     }
                     None => writeln!(f, "the external matcher disagrees (minimized):")?,
                 }
+                if !d.context.is_empty() {
+                    writeln!(f, "  {}", d.context)?;
+                }
                 for a in &d.aovs {
                     writeln!(f, "  aov {}: {}", a.name, a.expr)?;
                 }
@@ -175,8 +182,10 @@ impl fmt::Display for Finding {
 pub struct Setup {
     /// The external command line (split like a shell does).
     pub command: String,
-    /// `renderman` or `osl`.
-    pub dialect: String,
+    /// The dialect of the expressions and paths.
+    pub dialect: Dialect,
+    /// OSL: the labels registered for [`Cases::Given`] (generated cases carry their own).
+    pub registered: Registered,
     /// Per-request timeout.
     pub timeout: Duration,
     /// Stop after this many processes restarted after faults.
@@ -247,10 +256,11 @@ fn sources(exprs: &[String]) -> Vec<AovSource> {
 }
 
 /// The two requests that ask about one set: `compile`, then `match` of all its paths.
-fn requests(aovs: &[AovSource], paths: &[String]) -> [Body; 2] {
+fn requests<L: Wire>(lang: &L, aovs: &[AovSource], paths: &[String]) -> [Body; 2] {
     [
         Body::Compile {
             aovs: aovs.to_vec(),
+            registered: lang.registration(),
         },
         Body::Match {
             paths: paths.to_vec(),
@@ -260,12 +270,13 @@ fn requests(aovs: &[AovSource], paths: &[String]) -> [Body; 2] {
 
 /// The external side of one set, asked in one round trip: one answer per path (a
 /// rejection repeated), or `Ok(None)`: unsupported.
-fn ask(
+fn ask<L: Wire>(
     client: &mut Client,
+    lang: &L,
     aovs: &[AovSource],
     paths: &[String],
 ) -> Result<Option<Vec<Answer>>, Fault> {
-    let (replies, fault) = client.pipeline(requests(aovs, paths).into());
+    let (replies, fault) = client.pipeline(requests(lang, aovs, paths).into());
     match fault {
         Some(f) => Err(f),
         None => interpret(aovs, paths, &replies),
@@ -318,17 +329,18 @@ fn interpret(
 
 /// Our side: each engine's answer per path (`None`: could not build), or the parse
 /// error shared by every engine.
-fn ours(
+fn ours<L: Wire>(
+    lang: &L,
     engines: &[&dyn Engine],
-    parsed: &Result<Vec<Lpe>, Answer>,
-    paths: &[Path],
+    parsed: &Result<Vec<L::Expr>, Answer>,
+    paths: &[L::Path],
 ) -> Vec<(&'static str, Vec<Option<Answer>>)> {
     engines
         .iter()
         .map(|e| {
             let answers = match parsed {
                 Err(rejected) => vec![Some(rejected.clone()); paths.len()],
-                Ok(exprs) => match e.compile(exprs) {
+                Ok(exprs) => match lang.compile(*e, exprs) {
                     Ok(m) => paths
                         .iter()
                         .map(|p| Some(Answer::Matches(m.which(p))))
@@ -342,52 +354,108 @@ fn ours(
 }
 
 /// Parses expression texts as the CLI does, the first error as a rejection.
-fn parse_all(exprs: &[String]) -> Result<Vec<Lpe>, Answer> {
+fn parse_all<L: Wire>(lang: &L, exprs: &[String]) -> Result<Vec<L::Expr>, Answer> {
     exprs
         .iter()
         .enumerate()
         .map(|(i, e)| {
-            lpe::parse(e).map_err(|err| Answer::Rejected {
-                aov: Some(i),
-                position: Some(err.span().start),
-                message: err.message().to_string(),
-            })
+            lang.parse_expr(e)
+                .map_err(|(position, message)| Answer::Rejected {
+                    aov: Some(i),
+                    position: Some(position),
+                    message,
+                })
         })
         .collect()
 }
 
-/// A case: its index (generated runs), expressions and paths, as text.
-type Item = (Option<u64>, Vec<String>, Vec<String>);
+/// A case: its index (generated runs), dialect context, expressions and paths as text.
+type Item<L> = (Option<u64>, L, Vec<String>, Vec<String>);
 
 /// Cases per pipelined batch.
 const BATCH: usize = 64;
 
 /// Runs the cases against the external matcher.
 pub fn run(setup: &Setup, cases: &Cases, engines: &[&dyn Engine]) -> Result<Report, StartError> {
-    let mut client = Client::start(&setup.command, &setup.dialect, setup.timeout)?;
-    let mut report = Report {
-        name: client.name.clone(),
-        ..Report::default()
-    };
-    let (max_failures, list): (usize, Vec<Item>) = match cases {
-        Cases::Given { exprs, paths } => (usize::MAX, vec![(None, exprs.clone(), paths.clone())]),
+    let client = Client::start(&setup.command, setup.dialect.name(), setup.timeout)?;
+    Ok(match setup.dialect {
+        Dialect::RenderMan => run_items(setup, client, engines, renderman_items(cases)),
+        Dialect::Osl => run_items(setup, client, engines, osl_items(setup, cases)),
+    })
+}
+
+/// A given case's single item; the stop count (no limit for a given case).
+fn given<L>(lang: L, exprs: &[String], paths: &[String]) -> (usize, Vec<Item<L>>) {
+    (
+        usize::MAX,
+        vec![(None, lang, exprs.to_vec(), paths.to_vec())],
+    )
+}
+
+/// The generated items `first..first + cases` of `run`, by `generate(index)`.
+fn generated<L>(
+    run: &Run,
+    mut generate: impl FnMut(u64) -> (L, Vec<String>, Vec<String>),
+) -> (usize, Vec<Item<L>>) {
+    let list = (run.first..run.first.saturating_add(run.cases))
+        .map(|i| {
+            let (lang, exprs, paths) = generate(i);
+            (Some(i), lang, exprs, paths)
+        })
+        .collect();
+    (run.max_failures, list)
+}
+
+fn texts<T: ToString>(xs: &[T]) -> Vec<String> {
+    xs.iter().map(T::to_string).collect()
+}
+
+fn renderman_items(cases: &Cases) -> (usize, Vec<Item<RenderMan>>) {
+    match cases {
+        Cases::Given { exprs, paths } => given(RenderMan, exprs, paths),
         Cases::Generated(run) => {
             // Set algebra is this toolkit's extension: other matchers do not speak it.
             let cfg = GenConfig::default()
                 .with_max_atoms(run.max_size)
                 .without_set_algebra();
-            let list = (run.first..run.first.saturating_add(run.cases))
-                .map(|i| {
-                    let c = generate_case(run.seed, i, &cfg, run.paths);
-                    (
-                        Some(i),
-                        c.exprs.iter().map(|e| e.to_string()).collect(),
-                        c.paths.iter().map(|p| p.to_string()).collect(),
-                    )
-                })
-                .collect();
-            (run.max_failures, list)
+            generated(run, |i| {
+                let c = generate_case(run.seed, i, &cfg, run.paths);
+                (c.lang, texts(&c.exprs), texts(&c.paths))
+            })
         }
+    }
+}
+
+fn osl_items(setup: &Setup, cases: &Cases) -> (usize, Vec<Item<Osl>>) {
+    match cases {
+        Cases::Given { exprs, paths } => given(
+            Osl {
+                registered: setup.registered.clone(),
+            },
+            exprs,
+            paths,
+        ),
+        Cases::Generated(run) => {
+            let cfg = generate::osl::Config::default().with_max_vertices(run.max_size);
+            generated(run, |i| {
+                let c = generate_osl_case(run.seed, i, &cfg, run.paths);
+                (c.lang, texts(&c.exprs), texts(&c.paths))
+            })
+        }
+    }
+}
+
+/// Runs the items against the external matcher, stopping after `max_failures`
+/// disagreements.
+fn run_items<L: Wire>(
+    setup: &Setup,
+    mut client: Client,
+    engines: &[&dyn Engine],
+    (max_failures, list): (usize, Vec<Item<L>>),
+) -> Report {
+    let mut report = Report {
+        name: client.name.clone(),
+        ..Report::default()
     };
     let mut queue: std::collections::VecDeque<_> = list.into();
     'batches: while !queue.is_empty() {
@@ -399,15 +467,15 @@ pub fn run(setup: &Setup, cases: &Cases, engines: &[&dyn Engine]) -> Result<Repo
             break;
         }
         // One round trip per batch: every case's compile and match, pipelined.
-        let batch: Vec<Item> = queue.drain(..queue.len().min(BATCH)).collect();
+        let batch: Vec<Item<L>> = queue.drain(..queue.len().min(BATCH)).collect();
         let bodies: Vec<Body> = batch
             .iter()
-            .flat_map(|(_, exprs, paths)| requests(&sources(exprs), paths))
+            .flat_map(|(_, lang, exprs, paths)| requests(lang, &sources(exprs), paths))
             .collect();
         let (replies, fault) = client.pipeline(bodies);
         let answered = replies.len() / 2;
         let mut fault = fault;
-        for (k, (case, exprs, paths)) in batch.iter().enumerate() {
+        for (k, (case, lang, exprs, paths)) in batch.iter().enumerate() {
             if report.disagreements() >= max_failures {
                 report.stopped = Some(format!("{max_failures} disagreement(s) found"));
                 break 'batches;
@@ -427,6 +495,7 @@ pub fn run(setup: &Setup, cases: &Cases, engines: &[&dyn Engine]) -> Result<Repo
                 &mut client,
                 engines,
                 *case,
+                lang,
                 exprs,
                 paths,
                 external,
@@ -436,29 +505,30 @@ pub fn run(setup: &Setup, cases: &Cases, engines: &[&dyn Engine]) -> Result<Repo
     }
     report.restarts = client.restarts;
     client.quit();
-    Ok(report)
+    report
 }
 
 /// Compares the external answers on one case with every engine's; a disagreement is
 /// minimized and recorded.
 #[allow(clippy::too_many_arguments)]
-fn judge(
+fn judge<L: Wire>(
     setup: &Setup,
     client: &mut Client,
     engines: &[&dyn Engine],
     case: Option<u64>,
+    lang: &L,
     exprs: &[String],
     path_texts: &[String],
     external: Result<Option<Vec<Answer>>, Fault>,
     report: &mut Report,
 ) {
     let aovs = sources(exprs);
-    let parsed = parse_all(exprs);
+    let parsed = parse_all(lang, exprs);
     // Generated paths always parse; given ones are checked by the caller.
-    let paths: Vec<Path> = path_texts
+    let paths: Vec<L::Path> = path_texts
         .iter()
-        .map(|p| p.parse())
-        .collect::<Result<_, _>>()
+        .map(|p| lang.parse_path(p))
+        .collect::<Option<_>>()
         .unwrap_or_default();
     let external = match external {
         Ok(Some(answers)) => answers,
@@ -475,7 +545,7 @@ fn judge(
             return;
         }
     };
-    let ours = ours(engines, &parsed, &paths);
+    let ours = ours(lang, engines, &parsed, &paths);
     if ours.iter().all(|(_, a)| a.iter().all(Option::is_none)) {
         report.uncompared += 1;
         return;
@@ -499,7 +569,15 @@ fn judge(
                 // and the automata engines pay for large counts on every one. All engines
                 // answer on the result.
                 let judge = &engines[culprit..=culprit];
-                let (e, p) = minimize(setup, client, judge, exprs.clone(), path.clone(), report);
+                let (e, p) = minimize(
+                    setup,
+                    client,
+                    lang,
+                    judge,
+                    exprs.clone(),
+                    path.clone(),
+                    report,
+                );
                 (
                     sources(&e.iter().map(|x| x.to_string()).collect::<Vec<_>>()),
                     p.to_string(),
@@ -509,20 +587,21 @@ fn judge(
         };
         // Ask both sides again on the minimized case, for the report.
         let min_exprs: Vec<String> = aovs_min.iter().map(|a| a.expr.clone()).collect();
-        let min_parsed = parse_all(&min_exprs);
-        let min_paths: Vec<Path> = path_min.parse().into_iter().collect();
-        let external = match ask(client, &aovs_min, std::slice::from_ref(&path_min)) {
+        let min_parsed = parse_all(lang, &min_exprs);
+        let min_paths: Vec<L::Path> = lang.parse_path(&path_min).into_iter().collect();
+        let external = match ask(client, lang, &aovs_min, std::slice::from_ref(&path_min)) {
             Ok(Some(mut a)) if !a.is_empty() => a.swap_remove(0),
             _ => ext.clone(),
         };
-        let engines_answers = ours_on_one(engines, &min_parsed, &min_paths);
+        let engines_answers = ours_on_one(lang, engines, &min_parsed, &min_paths);
         report
             .findings
             .push(Finding::Disagreement(Box::new(Disagreement {
                 case,
-                replay: replay(setup, &min_exprs, &path_min),
+                replay: replay(setup, lang, &min_exprs, &path_min),
                 aovs: aovs_min,
                 path: path_min,
+                context: lang.context(),
                 external,
                 engines: engines_answers,
                 original,
@@ -531,12 +610,13 @@ fn judge(
     }
 }
 
-fn ours_on_one(
+fn ours_on_one<L: Wire>(
+    lang: &L,
     engines: &[&dyn Engine],
-    parsed: &Result<Vec<Lpe>, Answer>,
-    paths: &[Path],
+    parsed: &Result<Vec<L::Expr>, Answer>,
+    paths: &[L::Path],
 ) -> Vec<(&'static str, Option<Answer>)> {
-    ours(engines, parsed, paths)
+    ours(lang, engines, parsed, paths)
         .into_iter()
         .map(|(n, mut a)| (n, if a.is_empty() { None } else { a.swap_remove(0) }))
         .collect()
@@ -545,21 +625,22 @@ fn ours_on_one(
 /// Shrinks a disagreement, re-asking the external process at every candidate. Faults
 /// met on the way are findings too; the candidate that caused one does not count as a
 /// disagreement.
-fn minimize(
+fn minimize<L: Wire>(
     setup: &Setup,
     client: &mut Client,
+    lang: &L,
     engines: &[&dyn Engine],
-    exprs: Vec<Lpe>,
-    path: Path,
+    exprs: Vec<L::Expr>,
+    path: L::Path,
     report: &mut Report,
-) -> (Vec<Lpe>, Path) {
-    minimize_by(&RenderMan, exprs, path, |exprs, path| {
+) -> (Vec<L::Expr>, L::Path) {
+    minimize_by(lang, exprs, path, |exprs, path| {
         if client.restarts > setup.max_restarts {
             return false;
         }
         let texts: Vec<String> = exprs.iter().map(|e| e.to_string()).collect();
         let aovs = sources(&texts);
-        let ext = match ask(client, &aovs, &[path.to_string()]) {
+        let ext = match ask(client, lang, &aovs, &[path.to_string()]) {
             Ok(Some(mut a)) if a.len() == 1 => a.swap_remove(0),
             Ok(_) => return false,
             Err(fault) => {
@@ -568,23 +649,24 @@ fn minimize(
             }
         };
         let parsed = Ok(exprs.to_vec());
-        ours(engines, &parsed, std::slice::from_ref(path))
+        ours(lang, engines, &parsed, std::slice::from_ref(path))
             .iter()
             .any(|(_, a)| a[0].as_ref().is_some_and(|o| !o.agrees(&ext)))
     })
 }
 
 /// The one-line command that replays a case.
-fn replay(setup: &Setup, exprs: &[String], path: &str) -> String {
+fn replay<L: Wire>(setup: &Setup, lang: &L, exprs: &[String], path: &str) -> String {
     let mut words = vec![
         "lpe-check".to_string(),
         "diff".into(),
         "--external".into(),
         setup.command.clone(),
     ];
-    if setup.dialect != "renderman" {
-        words.extend(["--dialect".into(), setup.dialect.clone()]);
+    if lang.dialect() != Dialect::RenderMan {
+        words.extend(["--dialect".into(), lang.dialect().name().to_string()]);
     }
+    words.extend(lang.replay_args());
     for e in exprs {
         words.extend(["--expr".into(), e.clone()]);
     }

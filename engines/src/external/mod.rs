@@ -13,6 +13,7 @@
 //!   [`crate::differential::shrink`]), a replay command per finding.
 
 pub mod client;
+pub mod dialect;
 pub mod harness;
 pub mod process;
 pub mod protocol;
@@ -20,4 +21,4 @@ pub mod protocol;
 pub use client::{Client, Fault, FaultKind, StartError};
 pub use harness::{run, Answer, Cases, Disagreement, Finding, Report, Setup};
 pub use process::MAX_LINE;
-pub use protocol::{AovSource, Reply, PROTOCOL_VERSION};
+pub use protocol::{AovSource, Registration, Reply, PROTOCOL_MINOR, PROTOCOL_VERSION};

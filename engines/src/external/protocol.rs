@@ -8,8 +8,13 @@
 
 use serde::{Deserialize, Serialize};
 
-/// The protocol version this harness speaks.
+/// The protocol version this harness speaks: a matcher must answer `hello` with it.
 pub const PROTOCOL_VERSION: u32 = 1;
+
+/// The minor version, sent in `hello` as `minor`: it grows when requests gain fields a
+/// matcher of an older minor version may ignore. 1: OSL `compile` requests carry the
+/// registered labels.
+pub const PROTOCOL_MINOR: u32 = 1;
 
 /// One request line.
 #[derive(Clone, Debug, Serialize)]
@@ -30,6 +35,8 @@ pub enum Body {
     Hello {
         /// [`PROTOCOL_VERSION`].
         protocol: u32,
+        /// [`PROTOCOL_MINOR`].
+        minor: u32,
         /// `renderman` or `osl`.
         dialect: String,
     },
@@ -37,6 +44,9 @@ pub enum Body {
     Compile {
         /// The AOVs, in order.
         aovs: Vec<AovSource>,
+        /// OSL only (absent for RenderMan): the labels to register before parsing.
+        #[serde(skip_serializing_if = "Option::is_none")]
+        registered: Option<Registration>,
     },
     /// Which AOVs of the compiled set each path lands in.
     Match {
@@ -54,6 +64,25 @@ pub struct AovSource {
     pub name: String,
     /// Its expression, in the dialect's notation.
     pub expr: String,
+}
+
+/// The user labels an OSL matcher registers before it parses a set's expressions (OSL's
+/// `AccumAutomata::addEventType` and `addScatteringType`, in this order).
+#[derive(Clone, Debug, Serialize, PartialEq, Eq, Default)]
+pub struct Registration {
+    /// Extra event types.
+    pub events: Vec<String>,
+    /// Extra scattering types.
+    pub scatters: Vec<String>,
+}
+
+impl From<&lpe::osl::Registered> for Registration {
+    fn from(r: &lpe::osl::Registered) -> Registration {
+        Registration {
+            events: r.events.clone(),
+            scatters: r.scatters.clone(),
+        }
+    }
 }
 
 impl Request {
@@ -158,7 +187,7 @@ pub fn read_reply(request: &Request, line: &str) -> Result<Reply, Violation> {
             return Ok(Reply::Unsupported(what));
         }
         return match (raw.error, &request.body) {
-            (Some(e), Body::Compile { aovs }) => match e.aov {
+            (Some(e), Body::Compile { aovs, .. }) => match e.aov {
                 Some(i) if i >= aovs.len() => Err(Violation::Unknown(format!(
                     "error names AOV {i} of a set of {}",
                     aovs.len()
@@ -220,11 +249,38 @@ mod tests {
                     name: "a0".into(),
                     expr: "C'a b'L".into(),
                 }],
+                registered: None,
             },
         };
         assert_eq!(
             r.to_line(),
             r#"{"id":7,"op":"compile","aovs":[{"name":"a0","expr":"C'a b'L"}]}"#
+        );
+        let osl = Request {
+            id: 9,
+            body: Body::Compile {
+                aovs: vec![AovSource {
+                    name: "a0".into(),
+                    expr: "CDY+U".into(),
+                }],
+                registered: Some(Registration::from(&"events=U;scatters=Y".parse().unwrap())),
+            },
+        };
+        assert_eq!(
+            osl.to_line(),
+            r#"{"id":9,"op":"compile","aovs":[{"name":"a0","expr":"CDY+U"}],"registered":{"events":["U"],"scatters":["Y"]}}"#
+        );
+        let hello = Request {
+            id: 0,
+            body: Body::Hello {
+                protocol: PROTOCOL_VERSION,
+                minor: PROTOCOL_MINOR,
+                dialect: "osl".into(),
+            },
+        };
+        assert_eq!(
+            hello.to_line(),
+            r#"{"id":0,"op":"hello","protocol":1,"minor":1,"dialect":"osl"}"#
         );
         let q = Request {
             id: 8,
@@ -278,6 +334,7 @@ mod tests {
                     name: "x".into(),
                     expr: "C(".into(),
                 }],
+                registered: None,
             },
         };
         assert_eq!(
@@ -299,6 +356,7 @@ mod tests {
             id: 0,
             body: Body::Hello {
                 protocol: 1,
+                minor: PROTOCOL_MINOR,
                 dialect: "renderman".into(),
             },
         };

@@ -254,6 +254,12 @@ impl Dfa {
         self.table.get(i).copied()
     }
 
+    /// The whole table: `table()[state + class]` is [`Dfa::next`] where in range.
+    #[inline]
+    pub(crate) fn table(&self) -> &[u32] {
+        &self.table
+    }
+
     /// The AOVs matching in `state`; `None` out of range, as for [`Dfa::next`].
     #[inline]
     pub(crate) fn matches(&self, state: u32) -> Option<AovMask> {

@@ -1,11 +1,14 @@
 //! The AOV list: from `--aov NAME=LPE`, RenderMan `DisplayChannel` lines, or the
 //! defaults (the seven basic AOVs, the per-lobe set, per-light-group splits), plus the
-//! partitions of beauty the defaults are known to form.
+//! partitions of beauty the defaults are known to form. A list is in one dialect:
+//! RenderMan's, or OSL's (`--dialect osl`, whose defaults are the OSL basic set).
+
+use std::fmt;
 
 use lpe::macros::{BASIC, OTHER, PER_LOBE};
-use lpe::{EventKind, Lpe, Parser, Prefix};
+use lpe::{osl, Dialect, EventKind, Lpe, Parser, Prefix};
 use lpe_lint::read::rib::{display_channel, Channel};
-use lpe_lint::RibProblem;
+use lpe_lint::{AovDecl, Location, RibProblem};
 
 use crate::scene::Scene;
 
@@ -22,6 +25,11 @@ pub enum AovError {
     Parse {
         name: String,
         error: Box<lpe::Error>,
+    },
+    #[error("AOV `{name}` (OSL dialect): {error}")]
+    OslParse {
+        name: String,
+        error: Box<super::osl::OslAovError>,
     },
     #[error("--aov `{arg}`: expected NAME=LPE, e.g. diffuse=lpe:C<RD>[<L.>O]")]
     BadArgument { arg: String },
@@ -70,12 +78,63 @@ impl AovFlags {
     }
 }
 
+/// A parsed AOV expression, in the dialect its list reads.
+#[derive(Clone, Debug)]
+pub enum AovExpr {
+    RenderMan(Lpe),
+    Osl(osl::Lpe),
+}
+
+impl AovExpr {
+    pub fn dialect(&self) -> Dialect {
+        match self {
+            AovExpr::RenderMan(_) => Dialect::RenderMan,
+            AovExpr::Osl(_) => Dialect::Osl,
+        }
+    }
+
+    /// The RenderMan expression, if the AOV is one.
+    pub fn renderman(&self) -> Option<&Lpe> {
+        match self {
+            AovExpr::RenderMan(l) => Some(l),
+            AovExpr::Osl(_) => None,
+        }
+    }
+
+    /// The OSL expression, if the AOV is one.
+    pub fn osl(&self) -> Option<&osl::Lpe> {
+        match self {
+            AovExpr::Osl(l) => Some(l),
+            AovExpr::RenderMan(_) => None,
+        }
+    }
+
+    /// Whether the expression can tell vertices apart by their labels (else the
+    /// integrator classifies them without).
+    pub fn names_labels(&self) -> bool {
+        match self {
+            AovExpr::RenderMan(l) => l.operands().iter().any(|e| !e.labels().is_empty()),
+            AovExpr::Osl(l) => super::osl::names_labels(l),
+        }
+    }
+}
+
+impl fmt::Display for AovExpr {
+    /// The canonical form (RenderMan) or the expanded OSL text.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            AovExpr::RenderMan(l) => l.fmt(f),
+            AovExpr::Osl(l) => l.fmt(f),
+        }
+    }
+}
+
 /// One AOV: its layer name, the source as given, and the parsed expression.
 #[derive(Clone, Debug)]
 pub struct Aov {
     pub name: String,
     pub source: String,
-    pub lpe: Lpe,
+    pub expr: AovExpr,
     pub flags: AovFlags,
 }
 
@@ -91,6 +150,8 @@ pub struct Partition {
 
 #[derive(Clone, Debug, Default)]
 pub struct AovList {
+    /// The dialect every AOV of the list is parsed in.
+    pub dialect: Dialect,
     pub aovs: Vec<Aov>,
     pub partitions: Vec<Partition>,
     /// Why a default partition was not checked (e.g. lobes outside the per-lobe set).
@@ -98,8 +159,17 @@ pub struct AovList {
 }
 
 impl AovList {
-    /// Parses and appends one AOV; names must be unique and usable as EXR layer and
-    /// file names.
+    /// An empty list reading AOVs in `dialect`.
+    pub fn new(dialect: Dialect) -> AovList {
+        AovList {
+            dialect,
+            ..AovList::default()
+        }
+    }
+
+    /// Parses and appends one AOV in the list's dialect (an OSL AOV with the parser's
+    /// limits and nothing registered; its warnings join the notes); names must be unique
+    /// and usable as EXR layer and file names.
     pub fn push(&mut self, name: &str, source: &str, parser: &Parser) -> Result<usize, AovError> {
         if name.is_empty()
             || !name
@@ -111,29 +181,58 @@ impl AovList {
         if name == "beauty" || self.aovs.iter().any(|a| a.name == name) {
             return Err(AovError::DuplicateName { name: name.into() });
         }
-        let lpe = parser.parse(source).map_err(|error| AovError::Parse {
-            name: name.into(),
-            error: Box::new(error),
-        })?;
+        let (flags, expr) = match self.dialect {
+            Dialect::RenderMan => {
+                let lpe = parser.parse(source).map_err(|error| AovError::Parse {
+                    name: name.into(),
+                    error: Box::new(error),
+                })?;
+                (AovFlags::of(&lpe), AovExpr::RenderMan(lpe))
+            }
+            Dialect::Osl => {
+                let lpe = super::osl::parse(source, parser.limits(), parser.macros()).map_err(
+                    |error| AovError::OslParse {
+                        name: name.into(),
+                        error: Box::new(error),
+                    },
+                )?;
+                for w in &lpe.warnings {
+                    self.notes.push(format!("AOV `{name}`: warning: {w}"));
+                }
+                // OSL has no prefixes: every OSL AOV accumulates like a plain one.
+                (AovFlags::default(), AovExpr::Osl(lpe))
+            }
+        };
         self.aovs.push(Aov {
             name: name.to_string(),
             source: source.to_string(),
-            flags: AovFlags::of(&lpe),
-            lpe,
+            expr,
+            flags,
         });
         Ok(self.aovs.len() - 1)
     }
 
-    /// `(name, expression)` pairs, as `lpe::AovSet::compile` takes them.
+    /// `(name, expression)` pairs of the RenderMan AOVs, as `lpe::AovSet::compile` takes
+    /// them (none in an OSL list).
     pub fn named(&self) -> Vec<(String, Lpe)> {
         self.aovs
             .iter()
-            .map(|a| (a.name.clone(), a.lpe.clone()))
+            .filter_map(|a| Some((a.name.clone(), a.expr.renderman()?.clone())))
             .collect()
     }
 
+    /// `(name, expression)` pairs of the OSL AOVs, as `lpe::AovSet::compile_osl` takes
+    /// them (none in a RenderMan list).
+    pub fn named_osl(&self) -> Vec<(String, osl::Lpe)> {
+        self.aovs
+            .iter()
+            .filter_map(|a| Some((a.name.clone(), a.expr.osl()?.clone())))
+            .collect()
+    }
+
+    /// The RenderMan expressions (none in an OSL list).
     pub fn lpes(&self) -> Vec<Lpe> {
-        self.aovs.iter().map(|a| a.lpe.clone()).collect()
+        self.named().into_iter().map(|(_, l)| l).collect()
     }
 
     pub fn index(&self, name: &str) -> Option<usize> {
@@ -155,17 +254,48 @@ impl AovList {
         Ok(list)
     }
 
+    /// The OSL basic set (`lpe::osl::BASIC`, under RenderMan's basic names), declared as
+    /// the partition of beauty it is.
+    pub fn basic_osl(parser: &Parser) -> Result<AovList, AovError> {
+        let mut list = AovList::new(Dialect::Osl);
+        let members = lpe::osl::BASIC
+            .iter()
+            .map(|(n, src)| list.push(n, src, parser))
+            .collect::<Result<_, _>>()?;
+        list.partitions.push(Partition {
+            name: "OSL basic AOVs".into(),
+            members,
+            universal: true,
+        });
+        Ok(list)
+    }
+
     /// The AOV list for a render: the defaults, plus for the furnace the per-bounce AOVs
     /// `furnace_bounceK = C<RD>{K}O`.
     pub fn for_render(scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
-        let mut list = AovList::defaults(scene, parser)?;
+        AovList::for_render_in(Dialect::RenderMan, scene, parser)
+    }
+
+    /// [`AovList::for_render`] in `dialect`: under OSL the defaults are the OSL basic
+    /// set alone (OSL cannot say "a light of no group": a quoted negation needs a label
+    /// to be present, so there is no default light-group split), and the furnace's
+    /// bounce 0 is `CO` (OSL refuses a `{0}` item after the first).
+    pub fn for_render_in(
+        dialect: Dialect,
+        scene: &Scene,
+        parser: &Parser,
+    ) -> Result<AovList, AovError> {
+        let mut list = match dialect {
+            Dialect::RenderMan => AovList::defaults(scene, parser)?,
+            Dialect::Osl => AovList::basic_osl(parser)?,
+        };
         if crate::verify::known::furnace_params(scene).is_some() {
             for k in 0..=crate::verify::known::FURNACE_BOUNCES {
-                list.push(
-                    &format!("furnace_bounce{k}"),
-                    &format!("C<RD>{{{k}}}O"),
-                    parser,
-                )?;
+                let source = match (dialect, k) {
+                    (Dialect::Osl, 0) => "CO".to_string(),
+                    _ => format!("C<RD>{{{k}}}O"),
+                };
+                list.push(&format!("furnace_bounce{k}"), &source, parser)?;
             }
         }
         Ok(list)
@@ -265,8 +395,8 @@ pub fn split_aov_arg(arg: &str) -> Result<(&str, &str), AovError> {
 /// AOVs read from `DisplayChannel` lines.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct DisplayChannels {
-    /// `(name, source)` of each LPE channel, in file order.
-    pub channels: Vec<(String, String)>,
+    /// Each LPE channel (name, source, where it is), in file order.
+    pub channels: Vec<AovDecl>,
     /// Channels skipped because their source is not an LPE, with file and line.
     pub warnings: Vec<String>,
 }
@@ -285,7 +415,16 @@ pub fn parse_display_channels(text: &str, file: &str) -> Result<DisplayChannels,
         })?;
         match channel {
             None => {}
-            Some(Channel::Lpe { name, source, .. }) => out.push((name, source)),
+            Some(Channel::Lpe {
+                name,
+                source,
+                column,
+            }) => out.push(AovDecl {
+                name,
+                source,
+                location: Location::Line { line: n + 1, column },
+                source_type: None,
+            }),
             Some(Channel::NoSource { name }) => warnings.push(at(format!(
                 "channel `{name}` has no \"string source\": skipped"
             ))),
@@ -311,7 +450,7 @@ pub fn usd_render_vars(stage: &lpe_lint::Document) -> DisplayChannels {
         Some(order) => {
             for name in order {
                 match lpe_var(name) {
-                    Some(a) => out.channels.push((a.name.clone(), a.source.clone())),
+                    Some(a) => out.channels.push(a.clone()),
                     None => out.warnings.push(format!(
                         "orderedVars names `{name}`, not an LPE RenderVar: skipped"
                     )),
@@ -327,11 +466,7 @@ pub fn usd_render_vars(stage: &lpe_lint::Document) -> DisplayChannels {
             }
         }
         None => {
-            out.channels = stage
-                .aovs
-                .iter()
-                .map(|a| (a.name.clone(), a.source.clone()))
-                .collect();
+            out.channels = stage.aovs.clone();
         }
     }
     out
@@ -354,11 +489,15 @@ DisplayChannel "color beauty2" "string source" ["color Ci"]
             channels: ch,
             warnings: warn,
         } = parse_display_channels(text, "d.rib").unwrap();
+        let read: Vec<(&str, &str, String)> = ch
+            .iter()
+            .map(|c| (c.name.as_str(), c.source.as_str(), c.location.to_string()))
+            .collect();
         assert_eq!(
-            ch,
+            read,
             vec![
-                ("directDiffuse".into(), "lpe:C<RD>[<L.>O]".into()),
-                ("key".into(), "lpe:C.*<L.'key'>".into()),
+                ("directDiffuse", "lpe:C<RD>[<L.>O]", "3:62".to_string()),
+                ("key", "lpe:C.*<L.'key'>", "4:59".to_string()),
             ]
         );
         assert_eq!(warn.len(), 2);

@@ -14,6 +14,8 @@
 //! regex-automata engine (`oracle`).
 
 use lpe::{Lpe, Path, Vertex, VertexType};
+
+use super::vertex::SceneClassifier;
 use std::hash::{Hash, Hasher};
 use std::sync::{Mutex, RwLock};
 
@@ -23,10 +25,11 @@ pub use lpe::{AovMask, PathMatcher, MAX_AOVS};
 
 /// What the integrator needs of a matcher: one shared by every render worker, whose
 /// states compare (the film sums a pixel's contributions per final state and asks
-/// [`PathMatcher::matches`] once per state). Every `PathMatcher` with such states is one.
-pub trait RenderMatcher: PathMatcher<State: PartialEq> + Sync {}
+/// [`PathMatcher::matches`] once per state), and which classifies the renderer's
+/// vertices in its dialect ([`SceneClassifier`]). Every such matcher is one.
+pub trait RenderMatcher: PathMatcher<State: PartialEq> + SceneClassifier + Sync {}
 
-impl<M: PathMatcher<State: PartialEq> + Sync> RenderMatcher for M {}
+impl<M: PathMatcher<State: PartialEq> + SceneClassifier + Sync> RenderMatcher for M {}
 
 /// Why a whole-path matcher could not be built.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]

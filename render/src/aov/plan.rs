@@ -37,7 +37,7 @@ impl Plan {
         let any = |f: &dyn Fn(&crate::aov::Aov) -> bool| aovs.aovs.iter().any(f);
         Plan {
             matching: !aovs.aovs.is_empty(),
-            labels: any(&|a| a.lpe.operands().iter().any(|e| !e.labels().is_empty())),
+            labels: any(&|a| a.expr.names_labels()),
             user_lobes: true,
             unshadowed: any(&|a| a.flags.unoccluded || a.flags.shadows),
             transmission: scene.materials.iter().any(|m| m.transmits()),

@@ -31,8 +31,18 @@ pub enum InputError {
         path: PathBuf,
         source: lpe::ini::IniError,
     },
-    #[error("{}: {source}", path.display())]
-    DisplayAov { path: PathBuf, source: AovError },
+    #[error("{}:{at}: {source}", path.display())]
+    DisplayAov {
+        path: PathBuf,
+        at: Box<lpe_lint::Location>,
+        source: AovError,
+    },
+    /// `--ini` with `--dialect osl`: its macros and lobe mappings are RenderMan's.
+    #[error(
+        "--ini holds RenderMan macros and lobe mappings; it does not apply to --dialect osl \
+         (OSL vertices scatter D, G or S by the lobe's model, whatever its lobe number)"
+    )]
+    IniWithOsl,
     #[error(transparent)]
     Usd(#[from] lpe_lint::ReadError),
     #[error("{width}x{height} with {aovs} AOVs needs {:.1} GiB of film; at most 8 GiB", *bytes as f64 / (1u64 << 30) as f64)]

@@ -6,6 +6,7 @@ use lpe_render::scene::Scene;
 use crate::args::InputError;
 
 pub fn run(
+    dialect: lpe::Dialect,
     scene: &str,
     spp: u32,
     res: (usize, usize),
@@ -22,7 +23,8 @@ pub fn run(
         threads,
         ..Settings::default()
     };
-    let b = lpe_render::bench::bench(&scene, &config.lobes, &parser, &settings, rounds)?;
+    let b =
+        lpe_render::bench::bench_in(dialect, &scene, &config.lobes, &parser, &settings, rounds)?;
     println!(
         "bench `{}` {}x{} {} spp, {} thread(s), {rounds} rounds, matcher: {}",
         scene.name,
@@ -38,7 +40,7 @@ pub fn run(
             &["configuration", "best CPU s", "paths per CPU s"],
             [
                 ("beauty only".to_string(), b.beauty_seconds),
-                (format!("{} AOVs", b.aov_count), b.aov_seconds),
+                (format!("{} AOVs ({dialect})", b.aov_count), b.aov_seconds),
             ]
             .map(|(what, t)| vec![
                 what,

@@ -36,6 +36,10 @@ enum Command {
     Check {
         #[arg(long, value_parser = positive_usize)]
         threads: Option<usize>,
+        /// `osl`: the checks that depend on the dialect, with the OSL basic set (its
+        /// sums to beauty, its formal partition, the same images as RenderMan's).
+        #[arg(long, default_value_t = lpe::Dialect::RenderMan)]
+        dialect: lpe::Dialect,
     },
     /// Measure the cost of LPE tracking: 32 AOVs vs beauty only, same run.
     Bench {
@@ -51,6 +55,9 @@ enum Command {
         /// Rounds, each rendering both configurations back to back.
         #[arg(long, default_value_t = 15, value_parser = positive_usize)]
         rounds: usize,
+        /// The dialect of the 32 AOVs: `osl` starts from the OSL basic set.
+        #[arg(long, default_value_t = lpe::Dialect::RenderMan)]
+        dialect: lpe::Dialect,
     },
     /// Accuracy vs time: MSE, relMSE, log-log slope and efficiency per technique and
     /// AOV on scenes with known answers; CSV, Markdown and plots in --out.
@@ -99,9 +106,15 @@ pub struct RenderArgs {
     /// when it has them; each becomes an EXR layer named after the RenderVar prim.
     #[arg(long, value_name = "FILE")]
     pub usd: Option<PathBuf>,
-    /// rendermn.ini with user macros and lobe mappings.
+    /// rendermn.ini with user macros and lobe mappings (RenderMan dialect only).
     #[arg(long, value_name = "FILE")]
     pub ini: Option<PathBuf>,
+    /// The language of every AOV (--aov, --display, --usd): `renderman` or `osl`.
+    /// OSL: no prefixes, macros, lobe numbers or user lobes; vertices are `C`, `R`/`T`
+    /// with `D` (diffuse), `G` (glossy) or `S` (delta), `L`, `O`, labelled with the
+    /// object's lpegroup or the light's group; the defaults are the OSL basic set.
+    #[arg(long, default_value_t = lpe::Dialect::RenderMan)]
+    pub dialect: lpe::Dialect,
     /// Output directory.
     #[arg(long, default_value = "out")]
     pub out: PathBuf,
@@ -114,14 +127,15 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         None => render::run(&cli.render),
-        Some(Command::Check { threads }) => check::run(threads),
+        Some(Command::Check { threads, dialect }) => check::run(dialect, threads),
         Some(Command::Bench {
             scene,
             spp,
             res,
             threads,
             rounds,
-        }) => bench::run(&scene, spp, res, Some(threads), rounds),
+            dialect,
+        }) => bench::run(dialect, &scene, spp, res, Some(threads), rounds),
         Some(Command::Converge {
             quick,
             out,

@@ -3,6 +3,7 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use lpe::Dialect;
 use lpe_render::aov::{
     parse_display_channels, split_aov_arg, usd_render_vars, AovList, DisplayChannels,
 };
@@ -38,10 +39,11 @@ fn push_channels(
     for w in read.warnings {
         eprintln!("warning: {w}");
     }
-    for (name, source) in read.channels {
-        aovs.push(&name, &source, parser)
+    for c in read.channels {
+        aovs.push(&c.name, &c.source, parser)
             .map_err(|source| InputError::DisplayAov {
                 path: path.to_path_buf(),
+                at: Box::new(c.location.clone()),
                 source,
             })?;
     }
@@ -60,11 +62,14 @@ pub fn print_invariants(list: &[Invariant]) -> bool {
 
 pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
     let t0 = Instant::now();
+    if args.dialect == Dialect::Osl && args.ini.is_some() {
+        return Err(InputError::IniWithOsl);
+    }
     let config = load_config(args.ini.as_ref())?;
     let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
     let scene = Scene::load(&args.scene, &config.lobes)?;
 
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::new(args.dialect);
     if let Some(path) = &args.display {
         let text = std::fs::read_to_string(path).map_err(|source| InputError::Read {
             path: path.clone(),
@@ -86,7 +91,7 @@ pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
         aovs.push(name, source, &parser)?;
     }
     if args.display.is_none() && args.usd.is_none() && args.aovs.is_empty() {
-        aovs = AovList::for_render(&scene, &parser)?;
+        aovs = AovList::for_render_in(args.dialect, &scene, &parser)?;
     }
     for (lobe, names) in config.lobes.user_collisions(&integrator::USER_SIGNALS) {
         aovs.notes.push(format!(
@@ -118,12 +123,13 @@ pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
     };
     let threads = args.threads.unwrap_or_else(rayon::current_num_threads);
     eprintln!(
-        "lpe-render: scene `{}`, {}x{}, {} spp, {} AOVs, {} threads, matcher: {}",
+        "lpe-render: scene `{}`, {}x{}, {} spp, {} AOVs ({} dialect), {} threads, matcher: {}",
         scene.name,
         settings.width,
         settings.height,
         settings.spp,
         aovs.aovs.len(),
+        aovs.dialect,
         threads,
         integrator::ENGINE
     );

@@ -1,11 +1,12 @@
 //! Contributions: every vertex the scene can produce, classified once for the matcher,
 //! and the hand-over of each contribution (its path's AOV mask) to the film.
 
-use lpe::{LobeCategory, LobeMap, Vertex, VertexType};
+use lpe::{Dialect, LobeCategory, LobeMap, Vertex, VertexType};
 
 use super::estimator::PathState;
 use super::{Integrator, USER_SIGNALS};
 use crate::aov::matcher::{AovMask, PathMatcher, RenderMatcher};
+use crate::aov::vertex::{SceneClassifier, SceneVertex};
 use crate::film::{Contribution, SampleValues, Strategy};
 use crate::geometry::Hit;
 use crate::material::Material;
@@ -52,14 +53,18 @@ pub(super) struct Vertices<C> {
 }
 
 impl<C: Copy> Vertices<C> {
-    pub(super) fn new<M: PathMatcher<Class = C>>(
+    pub(super) fn new<M: PathMatcher<Class = C> + SceneClassifier>(
         scene: &Scene,
         m: &M,
         lobes: &LobeMap,
         labels: bool,
     ) -> Self {
         let label = |l: &Option<String>| if labels { l.clone() } else { None };
-        let camera = m.classify(&Vertex::camera());
+        let camera = m.classify_scene(&SceneVertex::Camera);
+        // User lobes are RenderMan's: OSL has no pseudo paths (docs/language.md §18.12).
+        // Their vertices are RenderMan ones, whose class on an OSL set lpe leaves
+        // unspecified, so they are not even asked for.
+        let user_lobes = m.dialect() == Dialect::RenderMan;
         let mut scatter = Vec::new();
         let mut glow = Vec::new();
         let mut user = Vec::new();
@@ -71,14 +76,22 @@ impl<C: Copy> Vertices<C> {
                     m2.lobes
                         .iter()
                         .map(|l| {
-                            [VertexType::R, VertexType::T]
-                                .map(|t| m.classify(&Vertex::scatter(t, l.event, group.as_deref())))
+                            [VertexType::R, VertexType::T].map(|side| {
+                                m.classify_scene(&SceneVertex::Scatter {
+                                    side,
+                                    event: l.event,
+                                    scattering: l.scattering(),
+                                    group: group.as_deref(),
+                                })
+                            })
                         })
                         .collect()
                 })
                 .unwrap_or_default(),
             );
-            glow.push(m.classify(&Vertex::emissive(group.as_deref())));
+            glow.push(m.classify_scene(&SceneVertex::Emissive {
+                group: group.as_deref(),
+            }));
             let pseudo = |sig: UserSignal| {
                 let ev = lobes.event(LobeCategory::User, sig.name());
                 let s = m.step(
@@ -87,7 +100,7 @@ impl<C: Copy> Vertices<C> {
                 );
                 m.matches(m.step(s, m.classify(&Vertex::light(None))))
             };
-            user.push(if mat.is_some() {
+            user.push(if mat.is_some() && user_lobes {
                 UserSignal::ALL.iter().map(|&s| (s, pseudo(s))).collect()
             } else {
                 Vec::new()
@@ -96,12 +109,20 @@ impl<C: Copy> Vertices<C> {
         let light = scene
             .lights
             .iter()
-            .map(|l| m.classify(&Vertex::light(label(&l.group).as_deref())))
+            .map(|l| {
+                m.classify_scene(&SceneVertex::Light {
+                    group: label(&l.group).as_deref(),
+                })
+            })
             .collect();
         let light_seen = scene
             .lights
             .iter()
-            .map(|l| m.classify(&Vertex::emissive(label(&l.group).as_deref())))
+            .map(|l| {
+                m.classify_scene(&SceneVertex::Emissive {
+                    group: label(&l.group).as_deref(),
+                })
+            })
             .collect();
         Vertices {
             scatter,

@@ -1,17 +1,20 @@
 //! Render dispatch: the one place that picks the matcher a render uses.
 
-use lpe::LobeMap;
+use lpe::{Dialect, LobeMap};
 
 use super::{Integrator, Render, RenderError, Settings};
 use crate::aov::matcher::{Reference, ReferenceMatcher, RenderMatcher};
+use crate::aov::osl::is_builtin_label;
 use crate::aov::AovList;
 use crate::scene::Scene;
 
 /// Renders `scene` with `aovs`.
 ///
 /// ENGINE: the one place that picks the matcher: the fast matcher (`lpe::AovSet`),
-/// or, for a set it refuses to compile (over its size limits), the memoized reference
-/// matcher with a warning on stderr. Both give the same image; only the time differs.
+/// or, for a RenderMan set it refuses to compile (over its size limits), the memoized
+/// reference matcher with a warning on stderr. Both give the same image; only the time
+/// differs. An OSL list compiles with `AovSet::compile_osl` (nothing registered), whose
+/// lazy DFA takes what the eager one cannot; a set it still refuses is an error.
 pub fn render(
     scene: &Scene,
     aovs: &AovList,
@@ -30,6 +33,18 @@ pub fn render_announcing(
     settings: &Settings,
     on_plan: &mut dyn FnMut(&crate::aov::plan::Plan),
 ) -> Result<Render, RenderError> {
+    if aovs.dialect == Dialect::Osl {
+        check_osl_labels(scene)?;
+        let set = lpe::AovSet::compile_osl(
+            &aovs.named_osl(),
+            &lpe::osl::Registered::none(),
+            &lpe::Options::default(),
+        )
+        .map_err(|e| RenderError::Compile {
+            reason: e.to_string(),
+        })?;
+        return render_with(&set, scene, aovs, lobes, settings, on_plan);
+    }
     match lpe::AovSet::compile(&aovs.named()) {
         Ok(set) => render_with(&set, scene, aovs, lobes, settings, on_plan),
         Err(e) => {
@@ -39,6 +54,32 @@ pub fn render_announcing(
             let matcher = ReferenceMatcher::memoized(Reference::new(&aovs.lpes())?);
             render_with(&matcher, scene, aovs, lobes, settings, on_plan)
         }
+    }
+}
+
+/// Under OSL a scene label is a custom label, which OSL's eater skips only if it is not
+/// a built-in label: a light group `S` would stop `L` from matching its lights. Refused.
+fn check_osl_labels(scene: &Scene) -> Result<(), RenderError> {
+    let objects = scene.objects.iter().filter_map(|o| {
+        Some((
+            format!("object `{}` lpegroup", o.name),
+            o.lpegroup.as_ref()?,
+        ))
+    });
+    let lights = scene
+        .lights
+        .iter()
+        .enumerate()
+        .filter_map(|(i, l)| Some((format!("light {i} group"), l.group.as_ref()?)));
+    match objects
+        .chain(lights)
+        .find(|(_, label)| is_builtin_label(label))
+    {
+        Some((owner, label)) => Err(RenderError::OslBuiltinLabel {
+            owner,
+            label: label.clone(),
+        }),
+        None => Ok(()),
     }
 }
 

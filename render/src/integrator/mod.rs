@@ -68,6 +68,13 @@ pub enum RenderError {
     /// The fast matcher refused the AOV set (only where no fallback is wanted).
     #[error("the fast matcher cannot compile this AOV set: {reason}")]
     Compile { reason: String },
+    /// Under `--dialect osl`, a scene label that is one of OSL's built-in labels.
+    #[error(
+        "{owner} `{label}` is a built-in OSL label: under --dialect osl scene labels are \
+         custom labels, and OSL's eater would not skip this one (so `L` or `R` would miss \
+         its vertices); rename it"
+    )]
+    OslBuiltinLabel { owner: String, label: String },
 }
 
 /// Which strategies estimate direct lighting (`converge` compares them).

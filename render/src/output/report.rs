@@ -38,6 +38,8 @@ pub struct Report {
     pub seed: u64,
     pub threads: usize,
     pub matcher: String,
+    /// The dialect the AOVs are written in (`renderman` or `osl`).
+    pub dialect: String,
     pub timing: Timing,
     pub effects_plan: Vec<String>,
     /// The same plan as flags, for tools.
@@ -57,8 +59,9 @@ impl Report {
         let t = &self.timing;
         s += &format!("# lpe-render report: `{}`\n\n", self.scene);
         s += &format!(
-            "{}x{} pixels, {} samples per pixel, seed {}, {} threads, matcher: {}.\n\n",
-            self.width, self.height, self.spp, self.seed, self.threads, self.matcher
+            "{}x{} pixels, {} samples per pixel, seed {}, {} threads, matcher: {}, AOVs in the \
+             {} dialect.\n\n",
+            self.width, self.height, self.spp, self.seed, self.threads, self.matcher, self.dialect
         );
         s += "## Timing\n\n";
         s += &markdown(
@@ -149,6 +152,7 @@ impl Report {
             seed: settings.seed,
             threads,
             matcher: crate::integrator::ENGINE.into(),
+            dialect: aovs.dialect.to_string(),
             timing: Timing {
                 render_seconds: render.seconds,
                 total_seconds: 0.0,
@@ -165,7 +169,7 @@ impl Report {
                 .map(|a| AovEntry {
                     name: a.name.clone(),
                     source: a.source.clone(),
-                    expression: a.lpe.to_string(),
+                    expression: a.expr.to_string(),
                 })
                 .collect(),
             invariants,

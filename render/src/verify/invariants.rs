@@ -11,6 +11,7 @@ use crate::aov::{AovList, Partition};
 use crate::film::Film;
 use crate::integrator::Render;
 use crate::scene::Scene;
+use lpe::Dialect;
 
 /// One checked property and its measured error.
 #[derive(Clone, Debug, Serialize)]
@@ -151,10 +152,16 @@ pub fn finite(film: &Film, aovs: &AovList) -> Invariant {
     )
 }
 
-/// The formal partition check (`lpe::analysis::partition`): decides from the automata,
-/// before any sample is traced, whether each declared partition (or, with none declared,
-/// the whole AOV set) partitions beauty's universe `C.*[<L.>O]`, with a shortest witness
-/// path if not. This is a statement about every possible path, not about this scene.
+/// The formal partition check (`lpe::analysis::partition`, or `partition_osl` for an
+/// OSL list): decides from the automata, before any sample is traced, whether each
+/// declared partition (or, with none declared, the whole AOV set) partitions beauty's
+/// universe, with a shortest witness path if not. This is a statement about every
+/// possible path, not about this scene.
+///
+/// The universe is `C.*[<L.>O]` for RenderMan and `DEFAULT_OSL_UNIVERSE`,
+/// `C<[RT][DGS]>*[LO]`, for OSL: every OSL path the renderer produces is in it (camera
+/// `C,~`; events `R`/`T` scattering `D`, `G` or `S`; an `L` or `O` emitter; custom
+/// labels never built-in ones), so a partition of it partitions the renderer's paths.
 pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
     // Requested AOVs with no declared partition need not partition beauty: say whether
     // they do, but only a declared (universal) partition that fails is a failure.
@@ -168,44 +175,40 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
             .collect()
     };
     let universe = lpe::analysis::default_universe();
+    let registered = lpe::osl::Registered::none();
+    let osl_universe = lpe::analysis::default_osl_universe(&registered);
     sets.into_iter()
         .map(|(name, members, universal)| {
-            let named: Vec<(String, lpe::Lpe)> = members
+            let names: Vec<&str> = members
                 .iter()
-                .map(|&i| (aovs.aovs[i].name.clone(), aovs.aovs[i].lpe.clone()))
+                .map(|&i| aovs.aovs[i].name.as_str())
                 .collect();
-            let aov_name = |i: usize| named[i].0.as_str();
-            let (passed, detail) = match lpe::analysis::partition(&named, &universe) {
-                Ok(r) if r.is_clean() => (
+            let checked = match aovs.dialect {
+                Dialect::RenderMan => {
+                    lpe::analysis::partition(&pick(aovs.named(), &members), &universe)
+                        .map(|r| (universe.to_string(), failures(&r, &names)))
+                }
+                Dialect::Osl => lpe::analysis::partition_osl(
+                    &pick(aovs.named_osl(), &members),
+                    &osl_universe,
+                    &registered,
+                )
+                .map(|r| {
+                    let u = lpe::analysis::DEFAULT_OSL_UNIVERSE.to_string();
+                    (u, failures(&r, &names))
+                }),
+            };
+            let (passed, detail) = match checked {
+                Ok((u, why)) if why.is_empty() => (
                     Some(true),
-                    format!("every path of {universe} matches exactly one AOV"),
+                    format!("every path of {u} matches exactly one AOV"),
                 ),
-                Ok(r) => {
-                    let mut why = Vec::new();
-                    if let Some(g) = &r.gap {
-                        why.push(format!("gap: `{g}` matches none"));
-                    }
-                    if let Some((i, j, p)) = r.overlaps.first() {
-                        why.push(format!(
-                            "overlap: `{p}` matches both {} and {}",
-                            aov_name(*i),
-                            aov_name(*j)
-                        ));
-                    }
-                    if let Some((i, p)) = r.outside.first() {
-                        why.push(format!(
-                            "{} also matches `{p}`, outside the universe",
-                            aov_name(*i)
-                        ));
-                    }
-                    if universal {
-                        (Some(false), why.join("; "))
-                    } else {
-                        // Expected: e.g. the per-lobe set covers only the lobes this scene
-                        // uses (the render-time sum checks that); report, do not fail.
-                        let why = why.join("; ");
-                        (None, format!("not a partition of every path ({why})"))
-                    }
+                Ok((_, why)) if universal => (Some(false), why.join("; ")),
+                Ok((_, why)) => {
+                    // Expected: e.g. the per-lobe set covers only the lobes this scene
+                    // uses (the render-time sum checks that); report, do not fail.
+                    let why = why.join("; ");
+                    (None, format!("not a partition of every path ({why})"))
                 }
                 Err(e) => (None, format!("not checked: {e}")),
             };
@@ -219,6 +222,33 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
             }
         })
         .collect()
+}
+
+/// The members of a partition out of a list's `(name, expression)` pairs (a list is in
+/// one dialect, so its `named*` pairs are indexed like its AOVs).
+fn pick<T: Clone>(all: Vec<T>, members: &[usize]) -> Vec<T> {
+    members.iter().map(|&i| all[i].clone()).collect()
+}
+
+/// What keeps a partition check from being clean, with witnesses (empty: clean).
+fn failures<P: std::fmt::Display>(r: &lpe::analysis::Partition<P>, names: &[&str]) -> Vec<String> {
+    let mut why = Vec::new();
+    if let Some(g) = &r.gap {
+        why.push(format!("gap: `{g}` matches none"));
+    }
+    if let Some((i, j, p)) = r.overlaps.first() {
+        why.push(format!(
+            "overlap: `{p}` matches both {} and {}",
+            names[*i], names[*j]
+        ));
+    }
+    if let Some((i, p)) = r.outside.first() {
+        why.push(format!(
+            "{} also matches `{p}`, outside the universe",
+            names[*i]
+        ));
+    }
+    why
 }
 
 /// z-test of a layer's pixel means against a constant expectation. In the furnace every

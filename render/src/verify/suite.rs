@@ -1,7 +1,7 @@
 //! `lpe-render check`: every invariant on small renders of the built-in scenes.
 
 use super::VerifyError;
-use lpe::Parser;
+use lpe::{Dialect, Parser};
 
 use super::invariants::{self as check, invariants, Invariant, ALPHA};
 use super::stats::critical_z;
@@ -26,6 +26,19 @@ pub fn check_suite(
     threads: Option<usize>,
     log: &mut dyn FnMut(&str),
 ) -> Result<Vec<Invariant>, VerifyError> {
+    check_suite_in(Dialect::RenderMan, threads, log)
+}
+
+/// `lpe-render check --dialect D`. RenderMan: the whole suite. OSL: what depends on the
+/// dialect: the OSL basic set's sums to beauty (and the furnace's closed form) on the
+/// built-in scenes, the OSL and RenderMan basic sets' same-named AOVs bit-identical, and
+/// the formal partition check over the OSL universe. The estimator, prefix and
+/// determinism checks are the RenderMan suite's: the dialect changes no sample.
+pub fn check_suite_in(
+    dialect: Dialect,
+    threads: Option<usize>,
+    log: &mut dyn FnMut(&str),
+) -> Result<Vec<Invariant>, VerifyError> {
     let cfg = lpe::Config::default();
     let parser = Parser::new(cfg.limits.clone(), cfg.macros.clone());
     let load = |n: &str| Scene::load(n, &cfg.lobes);
@@ -38,7 +51,7 @@ pub fn check_suite(
         ("furnace", 32, 64),
     ] {
         let scene = load(name)?;
-        let aovs = AovList::for_render(&scene, &parser)?;
+        let aovs = AovList::for_render_in(dialect, &scene, &parser)?;
         let r = render(&scene, &aovs, &cfg.lobes, &small(width, spp, threads))?;
         log(&format!(
             "{name}: {width}x{width}, {spp} spp, {:.2}s",
@@ -48,6 +61,21 @@ pub fn check_suite(
             i.name = format!("{name}: {}", i.name);
             i
         }));
+    }
+    if dialect == Dialect::Osl {
+        let scene = load("still-life")?;
+        let osl = AovList::basic_osl(&parser)?;
+        let renderman = AovList::basic(&parser)?;
+        let a = render(&scene, &osl, &cfg.lobes, &small(24, 4, threads))?;
+        let b = render(&scene, &renderman, &cfg.lobes, &small(24, 4, threads))?;
+        out.push(identical(
+            "still-life: OSL basic AOVs bit-identical with RenderMan's of the same name",
+            &a,
+            &b,
+            &pairs_all(&osl),
+        ));
+        out.extend(check::formal_partition(&osl));
+        return Ok(out);
     }
 
     // shadows = unoccluded - occluded, per pixel in expectation.
