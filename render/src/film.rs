@@ -201,7 +201,6 @@ impl Film {
             .par_chunks_mut(self.width * stride)
             .enumerate()
             .map(move |(y, pixels)| {
-                warm(pixels);
                 (
                     y,
                     FilmRow {
@@ -209,6 +208,7 @@ impl Film {
                         stride,
                         layers,
                         accumulation,
+                        scratch: vec![DVec3::ZERO; stride],
                     },
                 )
             })
@@ -325,10 +325,9 @@ pub struct SampleValues<K> {
     /// Per AOV routed per contribution (and user-lobe signals): this sample's value.
     aov: Vec<DVec3>,
     touched: AovMask,
-    /// This sample's beauty values by final state, in arrival order, for the plain AOVs.
+    /// Beauty values by final state for the plain AOVs: the pixel's committed samples
+    /// (f64 film) and this sample's.
     arrivals: ByState<K>,
-    /// The pixel's plain-AOV sums by final state, committed samples only (f64 film).
-    pending: ByState<K>,
     /// All light-transport contributions were finite.
     finite: bool,
     /// AOV-only values dropped as non-finite, over every sample this accumulator saw.
@@ -342,7 +341,6 @@ impl<K: Copy + PartialEq> SampleValues<K> {
             aov: vec![DVec3::ZERO; aovs],
             touched: AovMask::EMPTY,
             arrivals: ByState::default(),
-            pending: ByState::default(),
             finite: true,
             aov_rejected: 0,
         }
@@ -423,53 +421,51 @@ impl<K: Copy + PartialEq> SampleValues<K> {
     }
 }
 
-/// Reads one value per cache line of a row about to be rendered, in address order:
-/// the hardware streams the row into the cache at once, where the scattered writes of
-/// its pixels' AOV layers (792 bytes a pixel with 32 AOVs) would each wait for memory.
-fn warm(pixels: &[DVec3]) {
-    // 24-byte values, 64-byte lines: every second value (48 bytes on) touches each line.
-    let sum = pixels.iter().step_by(2).fold(0.0, |a, v| a + v.x);
-    std::hint::black_box(sum);
-}
-
 /// One row of the film, handed to one worker.
+///
+/// A pixel is summed in a scratch copy (one pixel's storage: 792 bytes with 32 AOVs,
+/// in L1) and written to the film once, in address order, when it is finished: the
+/// scattered layer additions of its samples and states never wait for the film's
+/// memory, and the film is written as one stream instead of read and written back.
 pub struct FilmRow<'a> {
     pixels: &'a mut [DVec3],
     stride: usize,
     layers: usize,
     accumulation: Accumulation,
+    /// The pixel being rendered, all zero between pixels.
+    scratch: Vec<DVec3>,
 }
 
 impl FilmRow<'_> {
-    /// Adds a finished sample to pixel `x` of this row and clears it (`matches`: the
+    /// Adds a finished sample to the pixel being rendered and clears it (`matches`: the
     /// AOVs a final state matches); returns whether the sample was rejected as
     /// non-finite. On the f64 film the plain AOVs' share waits, summed per state, for
     /// [`FilmRow::finish_pixel`]; the f32 films add it to the pixel with the sample, as a
     /// renderer with an f32 film would.
     pub fn commit<K: Copy + PartialEq>(
         &mut self,
-        x: usize,
         acc: &mut SampleValues<K>,
         w: &Weighting,
         matches: impl Fn(K) -> AovMask,
     ) -> bool {
         let rejected = !(acc.finite && acc.beauty.is_finite());
-        let (layers, accumulation, stride) = (self.layers, self.accumulation, self.stride);
-        let pixel = &mut self.pixels[x * stride..(x + 1) * stride];
+        let (layers, accumulation) = (self.layers, self.accumulation);
+        let pixel = &mut self.scratch[..];
         let add = |pixel: &mut [DVec3], layer, x| accumulation.add(pixel, layers, layer, x);
-        if !rejected {
+        if rejected {
+            acc.arrivals.drop_sample();
+        } else {
             add(pixel, 0, acc.beauty);
             if accumulation == Accumulation::F64 {
-                acc.pending.merge_from(&mut acc.arrivals);
+                acc.arrivals.commit_sample();
             } else {
                 let (aov, touched) = (&mut acc.aov, &mut acc.touched);
-                acc.arrivals.expand(&w.plain, matches, |i, v| {
+                acc.arrivals.expand_sample(&w.plain, matches, |i, v| {
                     aov[i] += v;
                     touched.insert(i);
                 });
             }
         }
-        acc.arrivals.clear();
         for i in acc.touched.iter() {
             let f = &w.flags[i];
             if !rejected || f.noinfinitecheck {
@@ -487,8 +483,9 @@ impl FilmRow<'_> {
         rejected
     }
 
-    /// Adds the plain AOVs' per-state sums of pixel `x`'s committed samples to its
-    /// layers and empties them: call once all of the pixel's samples are committed.
+    /// Adds the plain AOVs' per-state sums of the pixel's committed samples to its
+    /// layers, empties them and writes the pixel to `x`, replacing what was there: call
+    /// once per pixel, after all of its samples are committed.
     pub fn finish_pixel<K: Copy + PartialEq>(
         &mut self,
         x: usize,
@@ -497,10 +494,12 @@ impl FilmRow<'_> {
         matches: impl Fn(K) -> AovMask,
     ) {
         let (layers, accumulation, stride) = (self.layers, self.accumulation, self.stride);
-        let pixel = &mut self.pixels[x * stride..(x + 1) * stride];
-        acc.pending.expand(&w.plain, matches, |i, v| {
+        let pixel = &mut self.scratch[..];
+        acc.arrivals.expand(&w.plain, matches, |i, v| {
             accumulation.add(pixel, layers, 1 + i, v)
         });
+        self.pixels[x * stride..(x + 1) * stride].copy_from_slice(&self.scratch);
+        self.scratch.fill(DVec3::ZERO);
     }
 }
 
@@ -540,7 +539,7 @@ mod tests {
     fn commit_only_sample(film: &mut Film, v: &mut SampleValues<AovMask>, w: &Weighting) {
         let mut rows: Vec<_> = film.rows_mut().collect();
         let row = &mut rows[0].1;
-        assert!(!row.commit(0, v, w, |m| m));
+        assert!(!row.commit(v, w, |m| m));
         row.finish_pixel(0, v, w, |m| m);
     }
 
@@ -983,7 +982,7 @@ mod tests {
                     for (contribution, state) in sample {
                         v.add(&w, contribution, *state, |m| m);
                     }
-                    rejected.push(row.commit(0, &mut v, &w, |m| m));
+                    rejected.push(row.commit(&mut v, &w, |m| m));
                 }
                 row.finish_pixel(0, &mut v, &w, |m| m);
             }
@@ -996,6 +995,39 @@ mod tests {
             assert!((1..=w.len())
                 .filter(|&l| l != 1 && l != 6)
                 .all(|l| film.pixel(0, 0, l) == DVec3::ZERO));
+        }
+    }
+
+    #[test]
+    fn each_pixel_of_a_row_gets_only_its_own_samples() {
+        // Pixel 0 gets a plain-AOV sample (AOV 0) and a routed one (AOV 5); pixel 1 a
+        // sample matching only AOV 0. Nothing of pixel 0 may leak into pixel 1, and
+        // pixel 1 must not overwrite pixel 0.
+        let w = weighting(None);
+        let mask = |ids: &[usize]| -> AovMask { ids.iter().copied().collect() };
+        let unit = c(ONLY_STRATEGY, false); // (0.5, 1, 2)
+        for a in Accumulation::ALL {
+            let mut film = Film::new(2, 1, 1, w.overwrite(), a);
+            let mut v = SampleValues::new(w.len());
+            {
+                let mut rows: Vec<_> = film.rows_mut().collect();
+                let row = &mut rows[0].1;
+                v.add(&w, &unit, mask(&[0, 5]), |m| m);
+                assert!(!row.commit(&mut v, &w, |m| m));
+                row.finish_pixel(0, &mut v, &w, |m| m);
+                v.add(&w, &unit, mask(&[0]), |m| m);
+                v.add(&w, &unit, mask(&[0]), |m| m);
+                assert!(!row.commit(&mut v, &w, |m| m));
+                row.finish_pixel(1, &mut v, &w, |m| m);
+            }
+            let unit = DVec3::new(0.5, 1.0, 2.0);
+            for (layer, want) in [(0, [1.0, 2.0]), (1, [1.0, 2.0]), (1 + 5, [1.0, 0.0])] {
+                assert_eq!(
+                    film.layer(layer),
+                    want.map(|x| unit * x),
+                    "{a:?} layer {layer}"
+                );
+            }
         }
     }
 

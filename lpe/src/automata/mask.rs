@@ -41,9 +41,21 @@ impl AovMask {
         self.0.iter().map(|w| w.count_ones() as usize).sum()
     }
 
-    /// The matching AOVs, in increasing order.
+    /// The matching AOVs, in increasing order. Inlined: out of line, the iterator is
+    /// returned through memory and every caller's loop waits on reloading it.
+    #[inline]
     pub fn iter(&self) -> impl Iterator<Item = usize> + '_ {
         bits::ones(self.0)
+    }
+}
+
+impl std::ops::BitAnd for AovMask {
+    type Output = AovMask;
+
+    /// The AOVs in both masks.
+    #[inline]
+    fn bitand(self, o: AovMask) -> AovMask {
+        AovMask(std::array::from_fn(|w| self.0[w] & o.0[w]))
     }
 }
 
@@ -129,5 +141,13 @@ mod tests {
         assert!(m.contains(200) && m.contains(3) && !m.contains(4));
         assert_eq!(m.iter().collect::<Vec<_>>(), [3, 200]);
         assert_eq!(m.count(), 2);
+    }
+
+    #[test]
+    fn and_keeps_the_aovs_of_both_masks_in_every_word() {
+        let a: AovMask = [0, 63, 64, 130, 255].into_iter().collect();
+        let b: AovMask = [63, 64, 129, 255, 7].into_iter().collect();
+        assert_eq!((a & b).iter().collect::<Vec<_>>(), [63, 64, 255]);
+        assert!((a & AovMask::EMPTY).is_empty());
     }
 }

@@ -50,7 +50,7 @@ impl<M: RenderMatcher> Integrator<'_, M> {
                             let mut rng = Rng::for_sample(s.seed, index, sample as u64);
                             self.sample(x, y, &mut rng, &mut acc);
                             rejected +=
-                                row.commit(x, &mut acc.values, &self.weighting, matches) as u64;
+                                row.commit(&mut acc.values, &self.weighting, matches) as u64;
                         }
                         row.finish_pixel(x, &mut acc.values, &self.weighting, matches);
                     }
