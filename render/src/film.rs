@@ -945,8 +945,9 @@ mod tests {
     fn plain_aovs_get_every_committed_sample_of_the_pixel_by_final_state() {
         // Three samples of one pixel, states standing for their own masks: AOV 0 is
         // plain (summed per state), AOV 5 (`noclamp;`, no clamp set) is routed per
-        // contribution, both with beauty's values. The third sample is not finite:
-        // rejected from beauty and both AOVs, on every film.
+        // contribution, both with beauty's values. The second sample is not finite:
+        // rejected from beauty and both AOVs, on every film, and none of it may reach
+        // the sample committed after it.
         let w = weighting(None);
         let mask = |ids: &[usize]| -> AovMask { ids.iter().copied().collect() };
         let (s0, s5, s05) = (mask(&[0]), mask(&[5]), mask(&[0, 5]));
@@ -961,7 +962,6 @@ mod tests {
         };
         let samples: [Vec<(Contribution, AovMask)>; 3] = [
             vec![(nee(0.25), s0), (nee(0.5), s5)],
-            vec![(c(ONLY_STRATEGY, false), s05)],
             vec![(
                 Contribution {
                     beta: Vec3::splat(f32::NAN),
@@ -969,6 +969,7 @@ mod tests {
                 },
                 s0,
             )],
+            vec![(c(ONLY_STRATEGY, false), s05)],
         ];
         for a in Accumulation::ALL {
             let mut film = Film::new(1, 1, 3, w.overwrite(), a);
@@ -985,7 +986,7 @@ mod tests {
                 }
                 row.finish_pixel(0, &mut v, &w, |m| m);
             }
-            assert_eq!(rejected, [false, false, true], "{a:?}");
+            assert_eq!(rejected, [false, true, false], "{a:?}");
             // (0.5, 1, 2) per unit weight: 1/4 + 1 for AOV 0, 1/2 + 1 for AOV 5.
             let third = |x: f64| DVec3::new(0.5, 1.0, 2.0) * x / 3.0;
             assert_eq!(film.pixel(0, 0, 0), third(1.75), "{a:?}");

@@ -249,3 +249,127 @@ fn batch_steps_answer_per_path() {
         }
     }
 }
+
+/// `C<RD>L` stepped lazily along `C RD L` through `cache`: the final state.
+fn step_cdl(set: &AovSet, cache: &mut lpe::Cache) -> State {
+    let p: Path = "C RD L".parse().unwrap();
+    p.vertices()
+        .iter()
+        .fold(set.start(), |s, v| set.step_with(cache, s, set.classify(v)))
+}
+
+#[test]
+fn a_cache_holds_as_many_rows_as_its_budget_pays_for() {
+    // `C<RD>L` has 4 classes (camera, `RD`, light, the rest): a stride of 4, so a row is
+    // 4 * 4 + 40 = 56 bytes (Options::lazy_cache). `C RD L` makes 4 rows: the start and
+    // the states after `C` and `RD` (stepped from), the state after `L` (matched in).
+    let exprs = [parse("C<RD>L").unwrap()];
+    let compile = |budget| AovSet::compile_with(&named(&exprs), &lazy(budget)).unwrap();
+    assert_eq!(compile(0).class_count(), 4);
+    for (budget, clears, rows) in [(4 * 56, 0, 4), (4 * 56 - 1, 1, 1), (3 * 56, 1, 1)] {
+        let set = compile(budget);
+        let mut cache = set.cache();
+        let s = step_cdl(&set, &mut cache);
+        assert_eq!(set.matches_with(&mut cache, s), AovMask::from_iter([0]));
+        assert_eq!(
+            (cache.clears(), cache.rows()),
+            (clears, rows),
+            "{budget} bytes"
+        );
+        if clears == 0 {
+            // u32s: a row index per id up to 4 (5), 4 rows of 4 transitions, the 4 ids
+            // with a row; and 4 masks of 32 bytes.
+            assert_eq!(cache.memory_bytes(), (5 + 16 + 4) * 4 + 4 * 32);
+        }
+        // Dead, start, and the three states `C RD L` reaches.
+        assert_eq!(set.lazy_states(), Some(5));
+    }
+    // A budget of 0 caches nothing: every step runs the NFA.
+    let set = compile(0);
+    let mut cache = set.cache();
+    let s = step_cdl(&set, &mut cache);
+    assert_eq!(set.matches_with(&mut cache, s), AovMask::from_iter([0]));
+    assert_eq!(
+        (cache.rows(), cache.clears(), cache.memory_bytes()),
+        (0, 0, 0)
+    );
+}
+
+#[test]
+fn a_state_the_set_never_gave_out_leaves_no_row_behind() {
+    // Id 2 is the next one the registry gives out (0 dead, 1 start): stepped before the
+    // set reaches it, it reads as dead, and must not be cached as dead, or the path
+    // that later gets id 2 (`C`) would step from the stale row.
+    let exprs = [parse("C<RD>L").unwrap()];
+    let set = AovSet::compile_with(&named(&exprs), &lazy(1 << 20)).unwrap();
+    let mut cache = set.cache();
+    let next = State::from_u32(2);
+    assert_eq!(set.lazy_states(), Some(2));
+    let p: Path = "C RD L".parse().unwrap();
+    let rd = set.classify(&p.vertices()[1]);
+    assert!(set.matches_with(&mut cache, next).is_empty());
+    assert!(set.is_dead(set.step_with(&mut cache, next, rd)));
+    let s = step_cdl(&set, &mut cache);
+    assert_eq!(
+        set.matches_with(&mut cache, s),
+        AovMask::from_iter([0]),
+        "{p}"
+    );
+}
+
+#[test]
+fn a_cache_never_changes_a_step() {
+    // Every sequence of up to 4 classes (the camera's mid-sequence too, so that rows
+    // store transitions of every class), stepped through a cache and on a set with
+    // caching off. The two registries intern the same subsets in the same order, so
+    // equal answers mean equal ids; a hit that reads another row's or another class's
+    // entry gives another id.
+    let exprs = [parse("C<RD>L").unwrap(), parse("C<RD>+[LO]").unwrap()];
+    let uncached = AovSet::compile_with(&named(&exprs), &lazy(0)).unwrap();
+    let mut classes: Vec<Class> = vertex_pool().iter().map(|v| uncached.classify(v)).collect();
+    classes.sort();
+    classes.dedup();
+    assert_eq!(classes.len(), uncached.class_count());
+    for budget in [1, 1 << 20] {
+        let cached = AovSet::compile_with(&named(&exprs), &lazy(budget)).unwrap();
+        let mut cache = cached.cache();
+        let mut seqs: Vec<Vec<Class>> = vec![Vec::new()];
+        for _ in 0..4 {
+            let longer: Vec<Vec<Class>> = seqs
+                .iter()
+                .flat_map(|s| classes.iter().map(move |&c| [s.as_slice(), &[c]].concat()))
+                .collect();
+            for seq in &longer {
+                let (mut a, mut b) = (cached.start(), uncached.start());
+                for &c in seq {
+                    a = cached.step_with(&mut cache, a, c);
+                    b = uncached.step_class(b, c);
+                    assert_eq!(a, b, "{seq:?}, {budget} bytes");
+                    assert_eq!(cached.matches_with(&mut cache, a), uncached.matches(b));
+                }
+            }
+            seqs = longer;
+        }
+    }
+}
+
+#[test]
+fn a_cache_of_another_set_is_not_read_for_matches() {
+    // The cache's rows are `C<RD>L`'s, where id 4 (after `C RD L`) matches. Handed to
+    // `C<RD><RD>L` for a match before any step, it must be reset, not read: there id 4
+    // is the state after `C RD RD`, which matches nothing.
+    let a = AovSet::compile_with(&named(&[parse("C<RD>L").unwrap()]), &lazy(1 << 20)).unwrap();
+    let b = AovSet::compile_with(&named(&[parse("C<RD><RD>L").unwrap()]), &lazy(1 << 20)).unwrap();
+    let mut cache = a.cache();
+    let s = step_cdl(&a, &mut cache);
+    assert_eq!(
+        (s.to_u32(), a.matches_with(&mut cache, s)),
+        (4, AovMask::from_iter([0]))
+    );
+    let p: Path = "C RD RD L".parse().unwrap();
+    let s = p.vertices()[..3]
+        .iter()
+        .fold(b.start(), |s, v| b.step(s, v));
+    assert_eq!(s.to_u32(), 4);
+    assert!(b.matches_with(&mut cache, s).is_empty());
+}

@@ -550,6 +550,8 @@ mod tests {
                 "a_long_label_2",
                 "a_much_longer_label_1",
                 "a_much_longer_label_2",
+                // Past 16 bytes the key holds the first and last 8 only.
+                "head_8by_A_tail_8by",
                 "",
                 "ab",
                 "abc",
@@ -567,7 +569,20 @@ mod tests {
         assert_eq!(t.get("a_much_longer_label_3"), None);
         assert_eq!(t.get("a_much_longer_labex_1"), None);
         assert_eq!(t.get("abcdffg"), None);
+        assert_eq!(t.get("head_8by_B_tail_8by"), None);
         assert_eq!(t.get("adc"), None);
         assert_eq!(LabelTable::new(Vec::new()).get("x"), None);
+    }
+
+    #[test]
+    fn memory_is_the_tables_worked_out_by_hand() {
+        // `C<RD'ab'>L`: one label, so 3 label symbols (none, 'ab', OTHER) per each of
+        // the 51 (type, event) pairs: 153 u32 classes = 612 bytes. Label slots: 2 of
+        // 24 bytes, plus the 2 bytes of "ab" = 50. Classes: C, <RD'ab'>, L, the rest:
+        // 4, each one 8-byte word of atoms (32) and three u32 options of witnesses (96).
+        let (a, _) = alphabet("C<RD'ab'>L");
+        assert_eq!((a.class_count(), std::mem::size_of::<Slot>()), (4, 24));
+        assert_eq!(a.slots_bytes(), 50);
+        assert_eq!(a.memory_bytes(), 612 + 50 + 32 + 96);
     }
 }
