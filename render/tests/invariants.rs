@@ -3,35 +3,18 @@
 //! (threads, AOV sets, effects plan), and prefix identities that follow from the
 //! definitions in `integrator.rs`.
 
-use lpe::{Config, Parser};
+mod common;
+
+use common::{parser, render, scene};
+use lpe::Config;
 use lpe_render::aov::AovList;
 use lpe_render::integrator;
-use lpe_render::integrator::{Render, Settings};
+use lpe_render::integrator::Settings;
 use lpe_render::scene::Scene;
 use lpe_render::verify;
 
-fn parser() -> Parser {
-    let c = Config::default();
-    Parser::new(c.limits.clone(), c.macros.clone())
-}
-
-fn scene(name: &str) -> Scene {
-    Scene::load(name, &Config::default().lobes).unwrap()
-}
-
 fn small(w: usize, spp: u32) -> Settings {
-    Settings {
-        width: w,
-        height: w,
-        spp,
-        seed: 5,
-        threads: Some(2),
-        ..Settings::default()
-    }
-}
-
-fn render(s: &Scene, aovs: &AovList, settings: &Settings) -> Render {
-    integrator::render(s, aovs, &Config::default().lobes, settings).unwrap()
+    common::small(w, spp, 5)
 }
 
 #[test]

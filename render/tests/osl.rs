@@ -3,36 +3,16 @@
 //! of the same meaning does (bit-identical layers from the same samples), and bad OSL
 //! input is an error with its position.
 
-use std::process::Command;
+mod common;
 
-use lpe::{Config, Dialect, Parser};
+use common::{parser, render, run, scene};
+use lpe::Dialect;
 use lpe_render::aov::AovList;
-use lpe_render::integrator::{self, Render, Settings};
-use lpe_render::scene::Scene;
+use lpe_render::integrator::Settings;
 use lpe_render::verify::{self, invariants};
 
-fn parser() -> Parser {
-    let c = Config::default();
-    Parser::new(c.limits.clone(), c.macros.clone())
-}
-
-fn scene(name: &str) -> Scene {
-    Scene::load(name, &Config::default().lobes).unwrap()
-}
-
 fn small(w: usize, spp: u32) -> Settings {
-    Settings {
-        width: w,
-        height: w,
-        spp,
-        seed: 7,
-        threads: Some(2),
-        ..Settings::default()
-    }
-}
-
-fn render(s: &Scene, aovs: &AovList, settings: &Settings) -> Render {
-    integrator::render(s, aovs, &Config::default().lobes, settings).unwrap()
+    common::small(w, spp, 7)
 }
 
 #[test]
@@ -185,17 +165,6 @@ fn glossy_and_delta_split_what_renderman_calls_specular() {
             "pixel {p}"
         );
     }
-}
-
-fn run(args: &[&str]) -> (i32, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lpe-render"))
-        .args(args)
-        .output()
-        .expect("binary runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8_lossy(&out.stderr).into_owned(),
-    )
 }
 
 #[test]
