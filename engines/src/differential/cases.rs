@@ -274,12 +274,19 @@ mod tests {
         assert!(regs.contains("-") && regs.len() > 3, "{regs:?}");
     }
 
-    #[test]
-    fn some_osl_cases_hold_set_algebra_that_matches_some_of_their_paths() {
-        let cfg = generate::osl::Config::default();
-        let cases: Vec<Case<Osl>> = (0..400).map(|i| generate_osl_case(3, i, &cfg, 4)).collect();
-        let algebra = |c: &&Case<Osl>| c.exprs.iter().any(|e| e.algebra.is_some());
-        let with_algebra: Vec<&Case<Osl>> = cases.iter().filter(algebra).collect();
+    /// About one expression in twelve holds set algebra (low weight, but every run of a
+    /// few hundred cases has dozens), and paths aimed at operands: some algebra
+    /// expression matches some of its paths (by the reference), so the algebra is not
+    /// only ever checked on non-matches.
+    fn assert_some_algebra_that_matches<L: Language>(
+        cases: &[Case<L>],
+        has_algebra: impl Fn(&L::Expr) -> bool,
+        reference_match: impl Fn(&L::Expr, &L::Path) -> bool,
+    ) {
+        let with_algebra: Vec<&Case<L>> = cases
+            .iter()
+            .filter(|c| c.exprs.iter().any(&has_algebra))
+            .collect();
         assert!(
             (16..=80).contains(&with_algebra.len()),
             "{}",
@@ -292,9 +299,16 @@ mod tests {
                     .iter()
                     .flat_map(|e| c.paths.iter().map(move |p| (e, p)))
             })
-            .filter(|(e, p)| e.algebra.is_some() && reference::osl::is_match(e, p))
+            .filter(|(e, p)| has_algebra(e) && reference_match(e, p))
             .count();
         assert!(hits >= 10, "{hits}");
+    }
+
+    #[test]
+    fn some_osl_cases_hold_set_algebra_that_matches_some_of_their_paths() {
+        let cfg = generate::osl::Config::default();
+        let cases: Vec<Case<Osl>> = (0..400).map(|i| generate_osl_case(3, i, &cfg, 4)).collect();
+        assert_some_algebra_that_matches(&cases, |e| e.algebra.is_some(), reference::osl::is_match);
         // Without set algebra when asked (for matchers that do not speak it).
         let plain = generate::osl::Config::default().without_set_algebra();
         assert!((0..400).all(|i| generate_osl_case(3, i, &plain, 1)
@@ -307,28 +321,6 @@ mod tests {
     fn some_cases_hold_set_algebra_and_their_paths_aim_at_operands() {
         let cfg = Config::default();
         let cases: Vec<Case> = (0..400).map(|i| generate_case(3, i, &cfg, 4)).collect();
-        let with_algebra: Vec<&Case> = cases
-            .iter()
-            .filter(|c| c.exprs.iter().any(|e| e.algebra.is_some()))
-            .collect();
-        // About one expression in twelve: low weight, but every run of a few hundred
-        // cases has dozens.
-        assert!(
-            (16..=80).contains(&with_algebra.len()),
-            "{}",
-            with_algebra.len()
-        );
-        // Paths aimed at operands: some algebra expression matches some of its paths
-        // (by the reference), so the algebra is not only ever checked on non-matches.
-        let hits = with_algebra
-            .iter()
-            .flat_map(|c| {
-                c.exprs
-                    .iter()
-                    .flat_map(|e| c.paths.iter().map(move |p| (e, p)))
-            })
-            .filter(|(e, p)| e.algebra.is_some() && reference::is_match(e, p))
-            .count();
-        assert!(hits >= 10, "{hits}");
+        assert_some_algebra_that_matches(&cases, |e| e.algebra.is_some(), reference::is_match);
     }
 }
