@@ -104,3 +104,49 @@ pub fn compile_with_dfa_budget(srcs: &[(&str, &str)], dfa_budget: usize) -> lpe:
     };
     lpe::AovSet::compile_with(&aovs, &opts).unwrap()
 }
+
+/// The states reachable from the start over `letters` and, for each, whether it can
+/// still reach a state whose `matches` is not empty. `None` past `cap` states.
+pub fn reachable_and_live(
+    set: &dyn lpe::PathMatcher<Class = lpe::Class, State = lpe::State>,
+    letters: &[lpe::Class],
+    cap: usize,
+) -> Option<(Vec<lpe::State>, Vec<bool>)> {
+    use std::collections::{HashMap, VecDeque};
+    let mut index: HashMap<lpe::State, usize> = HashMap::new();
+    let mut states = vec![set.start()];
+    index.insert(set.start(), 0);
+    let mut preds: Vec<Vec<usize>> = vec![Vec::new()];
+    let mut head = 0;
+    while head < states.len() {
+        let s = states[head];
+        for &c in letters {
+            let t = set.step(s, c);
+            let j = match index.get(&t) {
+                Some(&j) => j,
+                None => {
+                    if states.len() == cap {
+                        return None;
+                    }
+                    states.push(t);
+                    preds.push(Vec::new());
+                    index.insert(t, states.len() - 1);
+                    states.len() - 1
+                }
+            };
+            preds[j].push(head);
+        }
+        head += 1;
+    }
+    let mut live: Vec<bool> = states.iter().map(|&s| !set.matches(s).is_empty()).collect();
+    let mut queue: VecDeque<usize> = (0..states.len()).filter(|&i| live[i]).collect();
+    while let Some(j) = queue.pop_front() {
+        for &i in &preds[j] {
+            if !live[i] {
+                live[i] = true;
+                queue.push_back(i);
+            }
+        }
+    }
+    Some((states, live))
+}

@@ -21,7 +21,6 @@
 //!   splice of that prefix with the tail of another path matches any AOV.
 
 use std::cell::Cell;
-use std::collections::{HashMap, VecDeque};
 
 use lpe::strategy;
 use lpe::{
@@ -40,51 +39,6 @@ fn letters(set: &dyn PathMatcher<Class = Class, State = State>, pool: &[Vertex])
     out.sort();
     out.dedup();
     out
-}
-
-/// The states reachable from the start over `letters` and, for each, whether it can
-/// still reach a state whose `matches` is not empty. `None` past `cap` states.
-fn reachable_and_live(
-    set: &dyn PathMatcher<Class = Class, State = State>,
-    letters: &[Class],
-    cap: usize,
-) -> Option<(Vec<State>, Vec<bool>)> {
-    let mut index: HashMap<State, usize> = HashMap::new();
-    let mut states = vec![set.start()];
-    index.insert(set.start(), 0);
-    let mut preds: Vec<Vec<usize>> = vec![Vec::new()];
-    let mut head = 0;
-    while head < states.len() {
-        let s = states[head];
-        for &c in letters {
-            let t = set.step(s, c);
-            let j = match index.get(&t) {
-                Some(&j) => j,
-                None => {
-                    if states.len() == cap {
-                        return None;
-                    }
-                    states.push(t);
-                    preds.push(Vec::new());
-                    index.insert(t, states.len() - 1);
-                    states.len() - 1
-                }
-            };
-            preds[j].push(head);
-        }
-        head += 1;
-    }
-    let mut live: Vec<bool> = states.iter().map(|&s| !set.matches(s).is_empty()).collect();
-    let mut queue: VecDeque<usize> = (0..states.len()).filter(|&i| live[i]).collect();
-    while let Some(j) = queue.pop_front() {
-        for &i in &preds[j] {
-            if !live[i] {
-                live[i] = true;
-                queue.push_back(i);
-            }
-        }
-    }
-    Some((states, live))
 }
 
 #[derive(Default)]
@@ -115,7 +69,7 @@ fn check_exact(
     let class_count = set.class_count();
     let set: &dyn PathMatcher<Class = Class, State = State> = set;
     let letters = letters(set, pool);
-    let Some((states, live)) = reachable_and_live(set, &letters, cap) else {
+    let Some((states, live)) = lpe_tests::reachable_and_live(set, &letters, cap) else {
         return Ok(());
     };
     bump(&stats.explored);

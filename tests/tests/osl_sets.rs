@@ -108,7 +108,6 @@ fn renderman_sets_say_their_dialect_and_give_osl_vertices_no_class() {
 fn dead_states_of_osl_set_algebra_are_sound_and_dfa_dead_states_complete() {
     use lpe::generate::osl as gen;
     use lpe::rng::SplitMix64;
-    use std::collections::{HashMap, VecDeque};
 
     let cfg = gen::Config::default().with_max_vertices(5);
     let modes = [
@@ -157,33 +156,11 @@ fn dead_states_of_osl_set_algebra_are_sound_and_dfa_dead_states_complete() {
                 .map(|c| set.classify_osl(set.osl_class_vertex(c).unwrap()))
                 .collect();
             // Every state reachable over the letters, and which can reach a match.
-            let mut index = HashMap::from([(set.start(), 0usize)]);
-            let mut states = vec![set.start()];
-            let mut preds: Vec<Vec<usize>> = vec![Vec::new()];
-            let mut head = 0;
-            while head < states.len() && states.len() < 20_000 {
-                for &c in &letters {
-                    let t = set.step_class(states[head], c);
-                    let j = *index.entry(t).or_insert_with(|| {
-                        states.push(t);
-                        preds.push(Vec::new());
-                        states.len() - 1
-                    });
-                    preds[j].push(head);
-                }
-                head += 1;
-            }
-            let explored = head == states.len();
-            let mut live: Vec<bool> = states.iter().map(|&s| !set.matches(s).is_empty()).collect();
-            let mut queue: VecDeque<usize> = (0..states.len()).filter(|&i| live[i]).collect();
-            while let Some(j) = queue.pop_front() {
-                for &i in &preds[j] {
-                    if !live[i] {
-                        live[i] = true;
-                        queue.push_back(i);
-                    }
-                }
-            }
+            let (states, live, explored) =
+                match lpe_tests::reachable_and_live(&set, &letters, 20_000) {
+                    Some((states, live)) => (states, live, true),
+                    None => (Vec::new(), Vec::new(), false),
+                };
             let complete = *mode == "dfa" && explored;
             complete_checked += usize::from(complete);
             for (s, &l) in states.iter().zip(&live) {
