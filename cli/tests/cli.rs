@@ -247,6 +247,33 @@ fn osl_batch_reports_bad_lines_in_place() {
 }
 
 #[test]
+fn diff_help_says_register_is_for_a_given_case() {
+    let (code, out, _) = lpe_check(&["diff", "--help"], "");
+    assert_eq!(code, 0);
+    let line = out.lines().find(|l| l.contains("--register")).unwrap();
+    assert!(line.contains("with --external and --expr only"), "{line}");
+}
+
+#[test]
+fn osl_sources_may_carry_the_pipelines_lpe_mark() {
+    let osl = |args: &[&str]| lpe_check(args, "");
+    // Read as OSL, `lpe:` would be the custom labels l, p, e and a syntax error at `:`.
+    let (code, out, err) = osl(&["parse", "--dialect", "osl", "lpe:C[^RD]L"]);
+    assert_eq!((code, out.as_str()), (0, "<C.><.[^'R''D']><L.>\n"));
+    assert!(
+        err.contains("mixing labels of different type in [...] at char 5"),
+        "{err}"
+    );
+    let (code, _, err) = osl(&["match", "--dialect", "osl", "lpe:C<RD", "C,_"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("at char 8\n  lpe:C<RD\n          ^"), "{err}");
+    let (code, out, _) = osl(&["match", "--dialect", "osl", "lpe:C<RD>L", "C,_ R,D L,_"]);
+    assert_eq!((code, out.as_str()), (0, "match\n"));
+    let (code, out, _) = osl(&["equiv", "--dialect", "osl", "lpe:C<RD>L", "C<RD>L"]);
+    assert_eq!((code, out.as_str()), (0, "equivalent\n"));
+}
+
+#[test]
 fn osl_match_parse_equiv_and_partition_with_arguments() {
     let osl = |args: &[&str]| lpe_check(args, "");
     let (code, out, _) = osl(&[

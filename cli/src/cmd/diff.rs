@@ -23,6 +23,10 @@ use crate::input::{bad_input, select_engines, DialectArgs};
 
 /// Arguments of `lpe-check diff`.
 #[derive(clap::Args, Debug)]
+#[command(mut_arg("register", |a| a.help(
+    "OSL, with --external and --expr only (generated cases register their own labels): \
+     user labels registered before parsing, `events=U;scatters=Y`"
+)))]
 pub struct Args {
     /// Number of cases (expressions or AOV sets) to generate.
     #[arg(long, default_value_t = 10_000)]

@@ -62,7 +62,7 @@ fn run_osl(args: &Args) -> ExitCode {
         Ok(r) => r,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    let parse = |s: &str| osl::parse(s, &registered).map_err(|e| osl_error(s, &e));
+    let parse = |s: &str| osl::parse_source(s, &registered).map_err(|e| osl_error(s, &e));
     let (a, b) = match (parse(&args.a), parse(&args.b)) {
         (Ok(a), Ok(b)) => (a, b),
         (Err(e), _) | (_, Err(e)) => return bad_input(e),

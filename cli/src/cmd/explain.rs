@@ -79,7 +79,7 @@ fn run_osl(args: &Args) -> Result<Explanation, String> {
         .parse()
         .map_err(|e| format!("path `{}`: {e}", args.path))?;
     let aovs = load(args, |src| {
-        osl::parse(src, &registered).map_err(|e| osl_error(src, &e))
+        osl::parse_source(src, &registered).map_err(|e| osl_error(src, &e))
     })?;
     explain_osl(&aovs, &registered, &path).map_err(|e| e.to_string())
 }

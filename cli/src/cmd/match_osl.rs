@@ -34,7 +34,7 @@ pub fn run(args: &Args, engines: &[&'static dyn Engine]) -> ExitCode {
         return batch(|line| batch_line(engines, line));
     }
     let expr = args.expr.as_deref().unwrap_or_default();
-    let lpe = match osl::parse(expr, &registered) {
+    let lpe = match osl::parse_source(expr, &registered) {
         Ok(l) => l,
         Err(e) => return bad_input(osl_error(expr, &e)),
     };

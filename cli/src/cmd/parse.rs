@@ -52,7 +52,7 @@ fn run_osl(args: &Args) -> ExitCode {
         Ok(r) => r,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    match osl::parse(&args.expr, &registered) {
+    match osl::parse_source(&args.expr, &registered) {
         Ok(lpe) => {
             for w in &lpe.warnings {
                 eprintln!("warning: {w}");

@@ -69,7 +69,7 @@ fn run_osl(args: &Args) -> ExitCode {
         Ok(r) => r,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    let parse = |s: &str| osl::parse(s, &registered).map_err(|e| osl_error(s, &e));
+    let parse = |s: &str| osl::parse_source(s, &registered).map_err(|e| osl_error(s, &e));
     let universe_text = args
         .universe
         .as_deref()

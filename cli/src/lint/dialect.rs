@@ -122,12 +122,10 @@ impl Dialect for Osl {
     type Expr = osl::Lpe;
 
     /// A leading `lpe:` (how RIB channels and some USD RenderVars mark an expression) is
-    /// the pipeline's, not OSL's: it is skipped, and the caret still points into the
-    /// whole source.
+    /// skipped, and the caret still points into the whole source.
     fn parse(&self, src: &str) -> Result<osl::Lpe, ParseFailure> {
-        let skip = if src.starts_with("lpe:") { 4 } else { 0 };
-        osl::parse(&src[skip..], &self.registered).map_err(|e| {
-            let at = skip + e.pos;
+        osl::parse_source(src, &self.registered).map_err(|e| {
+            let at = e.pos;
             let len = src[at.min(src.len())..]
                 .chars()
                 .next()

@@ -46,6 +46,6 @@ pub const BASIC: [(&str, &str); 7] = [
 pub const DFA_ATTEMPT_BUDGET: usize = 1 << 20;
 pub(crate) use compile::Compiled;
 pub use error::{Error, ErrorKind};
-pub use parse::{parse, parse_with};
+pub use parse::{parse, parse_source, parse_with, SOURCE_MARK};
 pub use path::{Path, PathError, PathErrorKind, Vertex};
 pub use symbol::{LabelKind, Registered, RegisteredError, Symbol};

@@ -38,6 +38,39 @@ pub fn parse(src: &str, registered: &Registered) -> std::result::Result<Lpe, Err
     parse_with(src, registered, &Limits::default())
 }
 
+/// The mark display files and RenderVars put before an LPE source (`lpe:C<RD>L`). It is
+/// the pipeline's, not OSL's: OSL's parser would read `l`, `p`, `e` as custom labels.
+pub const SOURCE_MARK: &str = "lpe:";
+
+/// Parses an AOV source as pipelines write it: a leading [`SOURCE_MARK`] is skipped, and
+/// error and warning positions count from `src` as written.
+///
+/// ```
+/// use lpe::osl::{parse, parse_source, Registered};
+///
+/// let none = Registered::none();
+/// assert_eq!(parse_source("lpe:C<RD>L", &none).unwrap(), parse("C<RD>L", &none).unwrap());
+/// assert_eq!(parse_source("lpe:C<RD", &none).unwrap_err().pos, 8);
+/// ```
+pub fn parse_source(src: &str, registered: &Registered) -> std::result::Result<Lpe, Error> {
+    let Some(body) = src.strip_prefix(SOURCE_MARK) else {
+        return parse(src, registered);
+    };
+    let shift = SOURCE_MARK.len();
+    match parse(body, registered) {
+        Ok(mut lpe) => {
+            for w in &mut lpe.warnings {
+                w.pos += shift;
+            }
+            Ok(lpe)
+        }
+        Err(e) => Err(Error {
+            pos: e.pos + shift,
+            ..e
+        }),
+    }
+}
+
 /// Parses with explicit limits (`max_repeat`, `max_depth`, `max_positions` apply).
 /// Set algebra over whole expressions (`A - B`, `A & B`, `^A`) is found first by the
 /// dialect-independent [`crate::algebra`] layer; each operand is then an OSL expression,
