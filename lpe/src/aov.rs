@@ -261,8 +261,11 @@ pub struct AovSet {
     /// The eager DFA; empty (no states) for a lazy set, so that a step of a lazy set
     /// misses the table and takes the lazy path: the DFA step has no other branch.
     dfa: Dfa,
-    /// Over the DFA budget: the lazy DFA.
-    lazy: Option<Lazy>,
+    /// Over the DFA budget: the lazy DFA. Boxed because its registry's lock is interior
+    /// mutability: held inline it would make `&AovSet` a reference to mutable memory, and
+    /// the compiler would reload the DFA's table pointer and length after every call in
+    /// a caller's loop (the out-of-line miss path) instead of keeping them in registers.
+    lazy: Option<Box<Lazy>>,
     /// The DFA's start, or the registry's id of the NFA start (position 0 alone).
     start: State,
     /// NFA positions (the start included), kept for reporting once the NFA is dropped.
@@ -301,7 +304,7 @@ impl AovSet {
         );
         let nfa_positions = nfa.positions;
         let (dfa, lazy, start) = Self::engine(nfa, alphabet.class_count(), opts, visible.as_ref())?;
-        let empty_is_dead = Self::empty_is_dead(lazy.as_ref(), visible.as_ref());
+        let empty_is_dead = Self::empty_is_dead(lazy.as_deref(), visible.as_ref());
         Ok(AovSet {
             names,
             lpes,
@@ -372,7 +375,7 @@ impl AovSet {
         };
         let (dfa, lazy, start) =
             Self::engine(nfa, compiled.class_count(), &attempt, visible.as_ref())?;
-        let empty_is_dead = Self::empty_is_dead(lazy.as_ref(), visible.as_ref());
+        let empty_is_dead = Self::empty_is_dead(lazy.as_deref(), visible.as_ref());
         Ok(AovSet {
             names,
             lpes: Vec::new(),
@@ -397,7 +400,7 @@ impl AovSet {
         classes: usize,
         opts: &Options,
         visible: Option<&Visible>,
-    ) -> Result<(Dfa, Option<Lazy>, State), CompileError> {
+    ) -> Result<(Dfa, Option<Box<Lazy>>, State), CompileError> {
         let dfa = if opts.dfa_budget > 0 {
             // Past `MAX_EAGER_STATES`, a set the lazy DFA can step goes lazy rather than
             // spend its budget's worth of construction first; a wider one has no other
@@ -423,7 +426,7 @@ impl AovSet {
         let start = dfa.as_ref().map_or(State(1), |d| State(d.start()));
         let lazy = dfa
             .is_none()
-            .then(|| Lazy::new(nfa, classes, opts.lazy_cache, visible.cloned()));
+            .then(|| Box::new(Lazy::new(nfa, classes, opts.lazy_cache, visible.cloned())));
         Ok((dfa.unwrap_or_else(Dfa::empty), lazy, start))
     }
 
@@ -538,10 +541,15 @@ impl AovSet {
     /// The AOVs that match a path ending in state `s`.
     #[inline]
     pub fn matches(&self, s: State) -> AovMask {
-        match self.dfa.matches(s.0) {
+        let missed;
+        let m = match self.dfa.mask_ref(s.0) {
             Some(m) => m,
-            None => self.matches_miss(s),
-        }
+            None => {
+                missed = self.matches_miss(s);
+                &missed
+            }
+        };
+        *m
     }
 
     /// No continuation of the path can match any AOV. Exact on a DFA, where the dead
@@ -615,6 +623,7 @@ impl AovSet {
         }
     }
 
+    #[cold]
     #[inline(never)]
     fn matches_miss(&self, s: State) -> AovMask {
         match &self.lazy {
@@ -732,7 +741,7 @@ impl AovSet {
     /// NFA states a lazy set has determinized so far (dead and start included), across
     /// all threads; `None` for a set with a DFA.
     pub fn lazy_states(&self) -> Option<usize> {
-        self.lazy.as_ref().map(Lazy::registered)
+        self.lazy.as_deref().map(Lazy::registered)
     }
 
     /// NFA positions (the start included).

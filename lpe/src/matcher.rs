@@ -139,22 +139,22 @@ impl PathMatcher for NfaMatcher<'_> {
         NfaMatcher::classify(self, v)
     }
 
-    #[inline]
+    #[inline(always)]
     fn start(&self) -> NfaState {
         NfaMatcher::start(self)
     }
 
-    #[inline]
+    #[inline(always)]
     fn step(&self, s: NfaState, c: Class) -> NfaState {
         NfaMatcher::step(self, s, c)
     }
 
-    #[inline]
+    #[inline(always)]
     fn matches(&self, s: NfaState) -> AovMask {
         NfaMatcher::matches(self, s)
     }
 
-    #[inline]
+    #[inline(always)]
     fn is_dead(&self, s: NfaState) -> bool {
         NfaMatcher::is_dead(self, s)
     }

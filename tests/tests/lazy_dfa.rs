@@ -5,6 +5,7 @@
 //!   tiny cache, so every path's state crosses many clears);
 //! - one cache handed from one set to another answers for the new set;
 //! - threads stepping one set concurrently, each with its own cache, agree;
+//! - two sets stepped in lockstep through the State API's per-thread cache agree;
 //! - the wide-state NFA matcher and the hash-free interned classification agree;
 //! - a blow-up set goes lazy without a long eager attempt first;
 //! - `step_batch` (a wavefront of paths, one step each) answers per path.
@@ -131,6 +132,30 @@ fn a_cache_moved_to_another_set_answers_for_it() {
             sc.step_with(&mut cache, s, sc.classify(v))
         });
         assert_eq!(sc.matches_with(&mut cache, s), reference_mask(a, p), "{p}");
+    }
+}
+
+#[test]
+fn two_lazy_sets_share_one_threads_state_api_cache() {
+    // The State API keeps one cache per thread: stepping two lazy sets in lockstep on
+    // one thread hands it back and forth at every step, and neither may read the
+    // other's rows.
+    let exprs = exprs();
+    let (a, b) = exprs.split_at(5);
+    let sa = AovSet::compile_with(&named(a), &lazy(64 << 10)).unwrap();
+    let sb = AovSet::compile_with(&named(b), &lazy(64 << 10)).unwrap();
+    for p in random_paths(5, 300, 8) {
+        let (mut s, mut t) = (sa.start(), sb.start());
+        for v in p.vertices() {
+            s = sa.step_class(s, sa.classify(v));
+            t = sb.step_class(t, sb.classify(v));
+        }
+        assert_eq!(sa.matches(s), reference_mask(a, &p), "{p}");
+        assert_eq!(sb.matches(t), reference_mask(b, &p), "{p}");
+    }
+    // And one set alone, so that its steps hit the thread's cache.
+    for p in random_paths(6, 300, 8) {
+        assert_eq!(sa.match_path(&p), reference_mask(a, &p), "{p}");
     }
 }
 

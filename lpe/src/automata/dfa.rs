@@ -267,6 +267,12 @@ impl Dfa {
         self.masks.get(i).copied()
     }
 
+    /// [`Dfa::matches`] by reference.
+    #[inline]
+    pub(crate) fn mask_ref(&self, state: u32) -> Option<&AovMask> {
+        self.masks.get((state >> self.shift) as usize)
+    }
+
     /// No states: every step misses. What a lazy set carries in place of a DFA.
     pub(crate) fn empty() -> Dfa {
         Dfa {

@@ -41,8 +41,11 @@ const MIN_ROWS: usize = 2;
 static NEXT_OWNER: AtomicU64 = AtomicU64::new(1);
 
 thread_local! {
-    /// The cache of the `State` API, per thread.
-    static LOCAL: RefCell<Cache> = RefCell::new(Cache::empty());
+    /// The cache of the `State` API, per thread. Initialized as a constant, so that an
+    /// access is an address computation and a registration check that inline into the
+    /// step: with a lazy initializer, every step called out to the thread-local's
+    /// accessor, and the state went through memory on the way.
+    static LOCAL: RefCell<Cache> = const { RefCell::new(Cache::empty()) };
 }
 
 /// NFA states reached so far, by id. Id 0 is the empty subset (the dead state), id 1 the
@@ -205,6 +208,21 @@ impl Lazy {
     /// the set stepped last: a thread alternating between two lazy sets refills it.
     #[inline]
     pub(crate) fn step_local(&self, s: State, c: Class) -> State {
+        // The hit path alone inside the thread-local access, so that the access inlines
+        // into the step; with the miss path in it, it stayed a call, and the state went
+        // through memory into it.
+        let hit = LOCAL.with(|cache| {
+            let cache = cache.try_borrow().ok()?;
+            self.cached(&cache, s, c)
+        });
+        match hit {
+            Some(n) => n,
+            None => self.step_local_miss(s, c),
+        }
+    }
+
+    #[inline(never)]
+    fn step_local_miss(&self, s: State, c: Class) -> State {
         if self.cache_budget == 0 {
             return self.step_uncached(s, c);
         }
@@ -214,9 +232,36 @@ impl Lazy {
         })
     }
 
+    /// The transition from `s` on `c` if `cache` holds it: two loads.
+    #[inline(always)]
+    fn cached(&self, cache: &Cache, s: State, c: Class) -> Option<State> {
+        if cache.owner != self.owner {
+            return None;
+        }
+        let row = *cache.row_of.get(s.0 as usize)?;
+        if row == NONE {
+            return None;
+        }
+        let n = *cache.trans.get(row as usize + c.0 as usize)?;
+        (n != NONE).then_some(State(n))
+    }
+
     /// [`Lazy::matches`] through this thread's cache.
     #[inline]
     pub(crate) fn matches_local(&self, s: State) -> AovMask {
+        // As in `step_local`: the hit path alone inside the thread-local access.
+        let hit = LOCAL.with(|cache| {
+            let cache = cache.try_borrow().ok()?;
+            self.cached_mask(&cache, s)
+        });
+        match hit {
+            Some(m) => m,
+            None => self.matches_local_miss(s),
+        }
+    }
+
+    #[inline(never)]
+    fn matches_local_miss(&self, s: State) -> AovMask {
         if self.cache_budget == 0 {
             return self.matches_uncached(s);
         }
@@ -226,21 +271,26 @@ impl Lazy {
         })
     }
 
+    /// The AOVs matching in `s` if `cache` has a row for it.
+    #[inline(always)]
+    fn cached_mask(&self, cache: &Cache, s: State) -> Option<AovMask> {
+        if cache.owner != self.owner {
+            return None;
+        }
+        let row = *cache.row_of.get(s.0 as usize)?;
+        if row == NONE {
+            return None;
+        }
+        cache.masks.get((row >> self.shift) as usize).copied()
+    }
+
     /// One step through `cache`: two loads on a hit.
     #[inline]
     pub(crate) fn step(&self, cache: &mut Cache, s: State, c: Class) -> State {
-        if cache.owner == self.owner {
-            if let Some(&row) = cache.row_of.get(s.0 as usize) {
-                if row != NONE {
-                    if let Some(&n) = cache.trans.get(row as usize + c.0 as usize) {
-                        if n != NONE {
-                            return State(n);
-                        }
-                    }
-                }
-            }
+        match self.cached(cache, s, c) {
+            Some(n) => n,
+            None => self.fill(cache, s, c),
         }
-        self.fill(cache, s, c)
     }
 
     /// The miss path, out of line so that the hit path inlines into the caller's loop.
@@ -258,14 +308,10 @@ impl Lazy {
     /// The AOVs matching in `s`, through `cache`.
     #[inline]
     pub(crate) fn matches(&self, cache: &mut Cache, s: State) -> AovMask {
-        if cache.owner == self.owner {
-            if let Some(&row) = cache.row_of.get(s.0 as usize) {
-                if row != NONE {
-                    return cache.masks[(row >> self.shift) as usize];
-                }
-            }
+        match self.cached_mask(cache, s) {
+            Some(m) => m,
+            None => self.matches_fill(cache, s),
         }
-        self.matches_fill(cache, s)
     }
 
     #[inline(never)]
@@ -333,7 +379,7 @@ pub struct Cache {
 
 impl Cache {
     /// A cache for no set (the first step adopts one).
-    pub(crate) fn empty() -> Cache {
+    pub(crate) const fn empty() -> Cache {
         Cache {
             owner: 0,
             row_of: Vec::new(),

@@ -26,7 +26,7 @@ use crate::fxhash::FxMap;
 
 use crate::ast::{Atom, Expr, Repetition};
 use crate::automata::alphabet::AcceptTable;
-use crate::automata::mask::AovMask;
+use crate::automata::mask::{AovMask, NFA_STATE_WORDS};
 use crate::bits::{self, set};
 
 /// One node of an expression tree, as the Glushkov construction sees it: the seam that
@@ -422,47 +422,100 @@ impl Nfa {
     /// `next = Follow(cur) & Accept[class]`. `cur` and `next` hold [`Nfa::words`] words.
     #[inline]
     pub(crate) fn step(&self, cur: &[u64], class: usize, next: &mut [u64]) {
-        // Constant widths let the compiler unroll the word loops for the common sizes.
-        match self.words() {
-            1 => self.step_width(cur, class, next, 1),
-            2 => self.step_width(cur, class, next, 2),
-            3 => self.step_width(cur, class, next, 3),
-            4 => self.step_width(cur, class, next, 4),
-            w => self.step_width(cur, class, next, w),
+        let w = self.words();
+        if w <= NFA_STATE_WORDS && self.has_step_tables() {
+            let mut wide = [0u64; NFA_STATE_WORDS];
+            wide[..w].copy_from_slice(&cur[..w]);
+            next[..w].copy_from_slice(&self.step_wide(wide, class)[..w]);
+        } else {
+            self.step_rows(cur, class, next);
         }
     }
 
+    /// [`Nfa::step`] on a state of at most [`NFA_STATE_WORDS`] words held by value (words
+    /// past [`Nfa::words`] are ignored and come back zero). Inlined whole, with the word
+    /// count a constant in each arm and the state passed by value, so that in a caller's
+    /// loop the state stays in registers: out of line, it went through memory at every
+    /// step, a store-forwarding stall each way.
     #[inline(always)]
-    fn step_width(&self, cur: &[u64], class: usize, next: &mut [u64], w: usize) {
-        let (cur, next) = (&cur[..w], &mut next[..w]);
-        next.fill(0);
-        if !self.has_step_tables() {
-            // No tables (a very large set): the rows of the active positions.
-            for p in bits::ones(cur.iter().copied()) {
-                let row = self.rows.get(p * w..(p + 1) * w).unwrap_or(&[]);
-                for (n, r) in next.iter_mut().zip(row) {
-                    *n |= r;
+    pub(crate) fn step_wide(
+        &self,
+        cur: [u64; NFA_STATE_WORDS],
+        class: usize,
+    ) -> [u64; NFA_STATE_WORDS] {
+        let tabled = self.has_step_tables();
+        match self.words() {
+            1 if tabled => {
+                let [a] = self.step_tabled([cur[0]], class);
+                [a, 0, 0, 0]
+            }
+            2 if tabled => {
+                let [a, b] = self.step_tabled([cur[0], cur[1]], class);
+                [a, b, 0, 0]
+            }
+            3 if tabled => {
+                let [a, b, c] = self.step_tabled([cur[0], cur[1], cur[2]], class);
+                [a, b, c, 0]
+            }
+            4 if tabled => self.step_tabled(cur, class),
+            // The words go by value: a pointer to the caller's state would keep it in
+            // memory in the caller's loop.
+            _ => self.step_rows_wide(cur[0], cur[1], cur[2], cur[3], class),
+        }
+    }
+
+    /// [`Nfa::step_wide`] without tables, out of line.
+    #[inline(never)]
+    fn step_rows_wide(&self, w0: u64, w1: u64, w2: u64, w3: u64, class: usize) -> [u64; 4] {
+        let cur = [w0, w1, w2, w3];
+        let mut next = [0u64; NFA_STATE_WORDS];
+        let w = self.words();
+        // Never stepped on a wide state: a lazy set's NFA fits one.
+        if w <= NFA_STATE_WORDS {
+            self.step_rows(&cur[..w], class, &mut next[..w]);
+        }
+        next
+    }
+
+    /// One step through the per-byte tables on a state of `W` words: one row load per
+    /// byte, zero bytes and bytes past the last position included (their rows are
+    /// empty; a load is cheaper than a branch that mispredicts), in loops of constant
+    /// length that unroll, ORed into two accumulators so that the ORs of a wide state
+    /// do not form one long chain.
+    #[inline(always)]
+    fn step_tabled<const W: usize>(&self, cur: [u64; W], class: usize) -> [u64; W] {
+        // One bounds check for the whole table: each row index below is provably in it.
+        let follow = &self.follow[..8 * W * 256 * W];
+        let row = |chunk: usize, b: u64| -> &[u64] {
+            &follow[(chunk * 256 + (b & 0xff) as usize) * W..][..W]
+        };
+        let (mut even, mut odd) = ([0u64; W], [0u64; W]);
+        for (i, &word) in cur.iter().enumerate() {
+            for pair in 0..4 {
+                let lo = row(i * 8 + 2 * pair, word >> (16 * pair));
+                let hi = row(i * 8 + 2 * pair + 1, word >> (16 * pair + 8));
+                for k in 0..W {
+                    even[k] |= lo[k];
+                    odd[k] |= hi[k];
                 }
             }
-        } else {
-            // Bytes of the last word past the last position hold no position: their
-            // rows are empty, so the loop stops before them (half the loads for a set
-            // of 27 positions).
-            let last_bytes = (self.positions - 64 * (w - 1)).div_ceil(8);
-            for (i, &word) in cur.iter().enumerate() {
-                if word == 0 {
-                    continue;
-                }
-                // One row per byte, zero bytes included: a load is cheaper than a branch
-                // that mispredicts.
-                let bytes = if i + 1 == w { last_bytes } else { 8 };
-                for byte in 0..bytes {
-                    let b = (word >> (8 * byte)) as usize & 0xff;
-                    let row = &self.follow[((i * 8 + byte) * 256 + b) * w..][..w];
-                    for (n, r) in next.iter_mut().zip(row) {
-                        *n |= r;
-                    }
-                }
+        }
+        match self.accept.get(class * W..(class + 1) * W) {
+            Some(acc) => std::array::from_fn(|k| (even[k] | odd[k]) & acc[k]),
+            // A class of another set: no position accepts it.
+            None => [0; W],
+        }
+    }
+
+    /// [`Nfa::step`] without the per-byte tables: the rows of the active positions.
+    fn step_rows(&self, cur: &[u64], class: usize, next: &mut [u64]) {
+        let w = self.words();
+        let (cur, next) = (&cur[..w], &mut next[..w]);
+        next.fill(0);
+        for p in bits::ones(cur.iter().copied()) {
+            let row = self.rows.get(p * w..(p + 1) * w).unwrap_or(&[]);
+            for (n, r) in next.iter_mut().zip(row) {
+                *n |= r;
             }
         }
         match self.accept.get(class * w..(class + 1) * w) {
@@ -470,6 +523,23 @@ impl Nfa {
             // A class of another set: no position accepts it.
             None => next.fill(0),
         }
+    }
+
+    /// [`Nfa::matches`] on a state held by value, inlined for the reason
+    /// [`Nfa::step_wide`] is.
+    #[inline(always)]
+    pub(crate) fn matches_wide(&self, cur: [u64; NFA_STATE_WORDS]) -> AovMask {
+        let mut m = if cur[0] & 1 == 1 {
+            self.start_matches
+        } else {
+            AovMask::EMPTY
+        };
+        let hits: [u64; NFA_STATE_WORDS] =
+            std::array::from_fn(|k| cur[k] & self.finals.get(k).copied().unwrap_or(0));
+        for p in bits::ones(hits) {
+            m.insert(self.aov_of.get(p).map_or(usize::MAX, |&a| a as usize));
+        }
+        m
     }
 
     /// The AOVs that match when the path ends in state `cur`.
@@ -524,18 +594,24 @@ mod tests {
 
     #[test]
     fn steps_with_and_without_tables_agree() {
-        let sets: [&[&str]; 4] = [
+        let sets: [&[&str]; 7] = [
             &["C<RD>[<L.>O]", "C<RS>+<TD'glass'>?L", "CD*L"],
             &["C.*D.{20}[LO]", "C[^'a' S]{2,5}<L.'key'>"],
+            // Two, three and four words: each width of the inlined wide step.
+            &["C.*D.{70}[LO]", "C<RD'a'>*<TS'b'>L"],
+            &["C.{140}L", "C<RD'a'>*<TS'b'>L"],
+            &["C.*D.{200}[LO]", "C[^'a' S]{2,5}<L.'key'>"],
             // 302 positions: five-word states.
             &["C(.{100}){3}L", "C<RD'a'>*<TS'b'>L"],
             &["CR<CD>L", "C<L.'a'>", "C(U|S2)+O"],
         ];
         let mut rng = SplitMix64::new(7);
+        let mut widths = Vec::new();
         for srcs in sets {
             let (tabled, classes) = nfa(srcs, DEFAULT_NFA_BUDGET);
             let (rows_only, _) = nfa(srcs, 0);
             assert!(tabled.has_step_tables(), "{srcs:?}");
+            widths.push(tabled.words());
             assert!(!rows_only.has_step_tables(), "{srcs:?}");
             assert!(rows_only.follow.is_empty());
             assert_eq!(tabled.positions, rows_only.positions);
@@ -561,7 +637,20 @@ mod tests {
                 rows_only.step(&cur, class, &mut b);
                 assert_eq!(a, b, "{srcs:?}: state {cur:x?}, class {class}");
                 assert_eq!(tabled.matches(&a), rows_only.matches(&b));
+                if w <= NFA_STATE_WORDS {
+                    // The wide step and mask, with and without tables, on the same state
+                    // padded with words that must be ignored.
+                    let mut wide = [rng.next_u64(); NFA_STATE_WORDS];
+                    wide[..w].copy_from_slice(&cur);
+                    for nfa in [&tabled, &rows_only] {
+                        let next = nfa.step_wide(wide, class);
+                        assert_eq!(next[..w], a[..], "{srcs:?}: state {cur:x?}, class {class}");
+                        assert!(next[w..].iter().all(|&x| x == 0), "{next:x?}");
+                        assert_eq!(nfa.matches_wide(wide), tabled.matches(&cur));
+                    }
+                }
             }
         }
+        assert_eq!(widths, [1, 1, 2, 3, 4, 5, 1]);
     }
 }

@@ -29,32 +29,30 @@ impl NfaMatcher<'_> {
     }
 
     /// The state before any vertex: position 0 alone.
-    #[inline]
+    #[inline(always)]
     pub fn start(&self) -> NfaState {
         let mut s = [0u64; NFA_STATE_WORDS];
         s[0] = 1;
         NfaState(s)
     }
 
-    /// The state after one more vertex.
-    #[inline]
+    /// The state after one more vertex. Inlined whole, so that the state stays in the
+    /// caller's registers.
+    #[inline(always)]
     pub fn step(&self, s: NfaState, c: Class) -> NfaState {
-        let w = self.nfa.words();
-        let mut next = [0u64; NFA_STATE_WORDS];
-        self.nfa.step(&s.0[..w], c.index(), &mut next[..w]);
-        NfaState(next)
+        NfaState(self.nfa.step_wide(s.0, c.index()))
     }
 
     /// The AOVs matching a path ending in `s`.
-    #[inline]
+    #[inline(always)]
     pub fn matches(&self, s: NfaState) -> AovMask {
-        let hidden = self.nfa.matches(&s.0[..self.nfa.words()]);
+        let hidden = self.nfa.matches_wide(s.0);
         self.visible.map_or(hidden, |v| v.mask(hidden))
     }
 
     /// No active position, and no complement matching from there: no continuation can
     /// match.
-    #[inline]
+    #[inline(always)]
     pub fn is_dead(&self, s: NfaState) -> bool {
         self.empty_is_dead && s.0 == [0; NFA_STATE_WORDS]
     }
