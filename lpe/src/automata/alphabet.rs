@@ -20,7 +20,7 @@ use crate::fxhash::FxMap;
 use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
 use crate::automata::mask::{Class, LabelId};
 use crate::bits;
-use crate::path::{Event, Vertex, VertexType};
+use crate::path::{Event, EventKind, Vertex, VertexType};
 
 /// Number of `(type, event)` combinations: C, L, O, then R and T with 24 events each.
 pub(crate) const TYPE_EVENTS: usize = 3 + 2 * EVENTS;
@@ -89,7 +89,12 @@ fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
-    let event = |j: usize| Event::all().nth(j);
+    // The inverse of `event_index`: D1-4, S1-8, U1-12.
+    let event = |j: usize| match j {
+        0..4 => Event::new(EventKind::D, j as u8 + 1),
+        4..12 => Event::new(EventKind::S, j as u8 - 3),
+        _ => Event::new(EventKind::U, j as u8 - 11),
+    };
     match i {
         0 => (VertexType::C, None),
         1 => (VertexType::L, None),
@@ -256,14 +261,17 @@ impl Alphabet {
         // that starts its run of raw symbols.
         let blind: Vec<bool> = atoms.iter().map(|a| !mentions_label(a)).collect();
         let mut blind_sig = vec![0u64; words];
+        // One signature buffer for every raw symbol: only a new class allocates (a
+        // compile has a few hundred raw symbols and a handful of classes).
+        let mut sig = vec![0u64; words];
         for raw in 0..TYPE_EVENTS * label_syms {
             let sym = Self::sym_of(&labels, raw);
             let first = raw % label_syms == 0;
-            let mut sig = if first {
-                vec![0u64; words]
+            if first {
+                sig.fill(0);
             } else {
-                blind_sig.clone()
-            };
+                sig.copy_from_slice(&blind_sig);
+            }
             for (a, atom) in atoms.iter().enumerate() {
                 if (first || !blind[a]) && atom_accepts(atom, &sym, &labels) {
                     bits::set(&mut sig, a);
@@ -275,11 +283,15 @@ impl Alphabet {
                     bits::clear(&mut blind_sig, a);
                 }
             }
-            let next = by_signature.len() as u32;
-            let class = *by_signature.entry(sig.clone()).or_insert_with(|| {
-                class_atoms.push(sig);
-                next
-            });
+            let class = match by_signature.get(sig.as_slice()) {
+                Some(&class) => class,
+                None => {
+                    let class = class_atoms.len() as u32;
+                    by_signature.insert(sig.clone(), class);
+                    class_atoms.push(sig.clone());
+                    class
+                }
+            };
             raw_to_class.push(class);
         }
         let mut representatives = vec![[None; 3]; class_atoms.len()];
@@ -503,7 +515,6 @@ fn triple_accepts(t: &Triple, s: &Sym, labels: &LabelTable) -> bool {
 mod tests {
     use super::*;
     use crate::parse;
-    use crate::path::EventKind;
 
     fn alphabet(src: &str) -> (Alphabet, Vec<Atom>) {
         let e = parse(src).unwrap().expr;
