@@ -375,6 +375,12 @@ impl Alphabet {
         bits::get(&self.class_atoms[c], a)
     }
 
+    /// Whether some vertex of class `c` can stand in place `g` of a path: what
+    /// [`Alphabet::representative`] answers, without building the vertex (and its label).
+    pub(crate) fn occurs_in(&self, c: usize, g: Group) -> bool {
+        self.representatives[c][g.index()].is_some()
+    }
+
     /// A vertex of class `c` that can stand in place `g` of a path, if there is one.
     pub(crate) fn representative(&self, c: usize, g: Group) -> Option<Vertex> {
         let raw = self.representatives[c][g.index()]? as usize;
@@ -542,6 +548,27 @@ mod tests {
         let d = |l| Vertex::scatter(VertexType::R, Event::new(EventKind::D, 1).unwrap(), Some(l));
         assert_eq!(a.classify(&d("wall")), a.classify(&d("ceiling")));
         assert_ne!(a.classify(&d("wall")), a.classify(&d("floor")));
+    }
+
+    #[test]
+    fn occurs_in_names_the_places_a_class_can_take() {
+        // Classes of `C<RD>L`: the camera, RD, lights, and the rest (O, other
+        // scatterings). `O` ends a path; the rest's R/T vertices stand in the middle.
+        let (a, _) = alphabet("C<RD>L");
+        let d1 = Event::new(EventKind::D, 1).unwrap();
+        let places = |v: &Vertex| {
+            let c = a.classify(v).0 as usize;
+            let places = Group::ALL.map(|g| a.occurs_in(c, g));
+            assert_eq!(places, Group::ALL.map(|g| a.representative(c, g).is_some()));
+            places
+        };
+        assert_eq!(places(&Vertex::camera()), [true, false, false]);
+        assert_eq!(
+            places(&Vertex::scatter(VertexType::R, d1, None)),
+            [false, true, false]
+        );
+        assert_eq!(places(&Vertex::light(None)), [false, false, true]);
+        assert_eq!(places(&Vertex::emissive(None)), [false, true, true]);
     }
 
     #[test]
