@@ -221,11 +221,7 @@ fn set_to_hir(s: &VertexSet) -> Hir {
             let labels = (0..256usize)
                 .filter(|i| mask[i / 64] & (1 << (i % 64)) != 0)
                 .map(|i| LABEL_NONE + i as u8);
-            Hir::concat(vec![
-                byte_class(types),
-                byte_class(events),
-                byte_class(labels),
-            ])
+            vertex_hir(types, events, labels)
         })
         .collect();
     // An empty alternation never matches: the right meaning for an empty set.
@@ -233,5 +229,40 @@ fn set_to_hir(s: &VertexSet) -> Hir {
         Hir::fail()
     } else {
         Hir::alternation(branches)
+    }
+}
+
+/// One vertex: a byte from each field's set, in order. Runs of single-byte fields are one
+/// literal (`C` with no event is the literal `00 10`), as `Hir::concat` would make them,
+/// but built once instead of as classes that are then rewritten.
+fn vertex_hir(
+    types: impl Iterator<Item = u8> + Clone,
+    events: impl Iterator<Item = u8> + Clone,
+    labels: impl Iterator<Item = u8> + Clone,
+) -> Hir {
+    fn field(bytes: impl Iterator<Item = u8> + Clone, literal: &mut Vec<u8>, parts: &mut Vec<Hir>) {
+        let mut two = bytes.clone().take(2);
+        match (two.next(), two.next()) {
+            (Some(b), None) => literal.push(b),
+            _ => {
+                if !literal.is_empty() {
+                    parts.push(Hir::literal(std::mem::take(literal)));
+                }
+                parts.push(byte_class(bytes));
+            }
+        }
+    }
+    let mut parts = Vec::with_capacity(3);
+    let mut literal = Vec::with_capacity(3);
+    field(types, &mut literal, &mut parts);
+    field(events, &mut literal, &mut parts);
+    field(labels, &mut literal, &mut parts);
+    if !literal.is_empty() {
+        parts.push(Hir::literal(literal));
+    }
+    if parts.len() == 1 {
+        parts.pop().expect("one part")
+    } else {
+        Hir::concat(parts)
     }
 }
