@@ -76,7 +76,7 @@ pub struct Options {
     pub lazy_cache: usize,
     /// Most bytes the NFA may take. It needs one follow row per position
     /// (`positions^2 / 8` bytes; over the budget, compilation fails: about 11 000
-    /// positions at the default), and steps fast with per-byte tables of `16 KiB *
+    /// positions at the default), and steps fast with per-byte tables of up to `16 KiB *
     /// words^2` for states of `words` 64-bit words, built when they fit (about 2 000
     /// positions); without them it only serves to build the DFA. Default 16 MiB.
     pub nfa_budget: usize,

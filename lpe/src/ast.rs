@@ -166,8 +166,8 @@ impl Expr {
         }
     }
 
-    /// Visits every atom.
-    pub fn for_each_atom(&self, f: &mut impl FnMut(&Atom)) {
+    /// Visits every atom (borrowed from the expression, so a visitor may keep them).
+    pub fn for_each_atom<'a>(&'a self, f: &mut impl FnMut(&'a Atom)) {
         match self {
             Expr::Atom(a) => f(a),
             Expr::Concat(es) | Expr::Alt(es) => es.iter().for_each(|e| e.for_each_atom(f)),
@@ -177,7 +177,8 @@ impl Expr {
 
     /// Every label the expression mentions, anywhere (deduplicated, sorted).
     pub fn labels(&self) -> Vec<String> {
-        let mut out = Vec::new();
+        // Borrowed first, so that only the distinct labels are copied.
+        let mut out: Vec<&str> = Vec::new();
         self.for_each_atom(&mut |a| {
             let items: &[Item] = match a {
                 Atom::Item(i) => std::slice::from_ref(i),
@@ -185,19 +186,21 @@ impl Expr {
             };
             for item in items {
                 match item {
-                    Item::Label(l) => out.push(l.clone()),
+                    Item::Label(l) => out.push(l),
                     Item::Triple(t) => match &t.label {
                         LabelPos::Any => {}
-                        LabelPos::One(l) => out.push(l.clone()),
-                        LabelPos::Class { labels, .. } => out.extend(labels.iter().cloned()),
+                        LabelPos::One(l) => out.push(l),
+                        LabelPos::Class { labels, .. } => {
+                            out.extend(labels.iter().map(String::as_str))
+                        }
                     },
                     _ => {}
                 }
             }
         });
-        out.sort();
+        out.sort_unstable();
         out.dedup();
-        out
+        out.into_iter().map(str::to_string).collect()
     }
 
     /// Number of atom positions after unrolling counted repetition (`e{n,m}` counts `e`

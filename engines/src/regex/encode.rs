@@ -135,15 +135,17 @@ pub fn all_labels(labels: &Labels) -> LabelMask {
 /// A set of encoded vertices.
 #[derive(Clone, PartialEq, Eq)]
 pub struct VertexSet {
-    /// Label mask per `(type, event)`, indexed `type * EVENTS + event`.
-    cells: Vec<LabelMask>,
+    /// Label mask per `(type, event)`, indexed `type * EVENTS + event`. Inline (4 KB):
+    /// a translation builds several sets per atom, and a heap block each was most of
+    /// the engine's allocations under the fuzzers' AddressSanitizer.
+    cells: [LabelMask; TYPES * EVENTS],
 }
 
 impl VertexSet {
     /// The empty set.
     pub fn empty() -> VertexSet {
         VertexSet {
-            cells: vec![[0; 4]; TYPES * EVENTS],
+            cells: [[0; 4]; TYPES * EVENTS],
         }
     }
 

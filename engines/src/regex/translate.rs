@@ -174,38 +174,95 @@ pub(crate) fn byte_class(bytes: impl IntoIterator<Item = u8>) -> Hir {
     Hir::class(Class::Bytes(ClassBytes::new(ranges)))
 }
 
-/// A vertex set as an alternation of `type event-class label-class` triples: for each
-/// type, events with the same label mask share one branch.
+/// A vertex set as an alternation of `type-class event-class label-class` triples: the
+/// events of one type with the same label mask share one branch, and types with the same
+/// events and mask share it too (`.` is one branch, not one per type: each class is a few
+/// heap blocks, most of this engine's compile time under AddressSanitizer).
 fn set_to_hir(s: &VertexSet) -> Hir {
-    let mut branches = Vec::new();
+    // (label mask, event bits, type bits), event bit `ev` for event index `ev`.
+    let mut groups: Vec<(LabelMask, u32, u8)> = Vec::new();
     for ty in 0..TYPES {
-        let mut groups: Vec<(LabelMask, Vec<u8>)> = Vec::new();
+        let first = groups.len();
         for ev in 0..EVENTS {
             let mask = s.cell(ty, ev);
             if mask == [0; 4] {
                 continue;
             }
-            let byte = EVENT_NONE + ev as u8;
-            match groups.iter_mut().find(|(m, _)| *m == mask) {
-                Some((_, evs)) => evs.push(byte),
-                None => groups.push((mask, vec![byte])),
+            match groups[first..].iter_mut().find(|(m, _, _)| *m == mask) {
+                Some((_, evs, _)) => *evs |= 1 << ev,
+                None => groups.push((mask, 1 << ev, 1 << ty)),
             }
         }
-        for (mask, evs) in groups {
+        // This type's branches join an earlier type's with the same events and mask.
+        let mut k = first;
+        while k < groups.len() {
+            let (mask, evs, t) = groups[k];
+            match groups[..first]
+                .iter_mut()
+                .find(|(m, e, _)| *m == mask && *e == evs)
+            {
+                Some((_, _, types)) => {
+                    *types |= t;
+                    groups.remove(k);
+                }
+                None => k += 1,
+            }
+        }
+    }
+    let branches: Vec<Hir> = groups
+        .iter()
+        .map(|&(mask, evs, types)| {
+            let types = (0..TYPES)
+                .filter(|t| types & (1 << t) != 0)
+                .map(|t| type_byte(VertexType::ALL[t]));
+            let events = (0..EVENTS)
+                .filter(|e| evs & (1 << e) != 0)
+                .map(|e| EVENT_NONE + e as u8);
             let labels = (0..256usize)
                 .filter(|i| mask[i / 64] & (1 << (i % 64)) != 0)
                 .map(|i| LABEL_NONE + i as u8);
-            branches.push(Hir::concat(vec![
-                byte_class([type_byte(VertexType::ALL[ty])]),
-                byte_class(evs),
-                byte_class(labels),
-            ]));
-        }
-    }
+            vertex_hir(types, events, labels)
+        })
+        .collect();
     // An empty alternation never matches: the right meaning for an empty set.
     if branches.is_empty() {
         Hir::fail()
     } else {
         Hir::alternation(branches)
+    }
+}
+
+/// One vertex: a byte from each field's set, in order. Runs of single-byte fields are one
+/// literal (`C` with no event is the literal `00 10`), as `Hir::concat` would make them,
+/// but built once instead of as classes that are then rewritten.
+fn vertex_hir(
+    types: impl Iterator<Item = u8> + Clone,
+    events: impl Iterator<Item = u8> + Clone,
+    labels: impl Iterator<Item = u8> + Clone,
+) -> Hir {
+    fn field(bytes: impl Iterator<Item = u8> + Clone, literal: &mut Vec<u8>, parts: &mut Vec<Hir>) {
+        let mut two = bytes.clone().take(2);
+        match (two.next(), two.next()) {
+            (Some(b), None) => literal.push(b),
+            _ => {
+                if !literal.is_empty() {
+                    parts.push(Hir::literal(std::mem::take(literal)));
+                }
+                parts.push(byte_class(bytes));
+            }
+        }
+    }
+    let mut parts = Vec::with_capacity(3);
+    let mut literal = Vec::with_capacity(3);
+    field(types, &mut literal, &mut parts);
+    field(events, &mut literal, &mut parts);
+    field(labels, &mut literal, &mut parts);
+    if !literal.is_empty() {
+        parts.push(Hir::literal(literal));
+    }
+    if parts.len() == 1 {
+        parts.pop().expect("one part")
+    } else {
+        Hir::concat(parts)
     }
 }

@@ -20,7 +20,7 @@ use crate::fxhash::FxMap;
 use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
 use crate::automata::mask::{Class, LabelId};
 use crate::bits;
-use crate::path::{Event, Vertex, VertexType};
+use crate::path::{Event, EventKind, Vertex, VertexType};
 
 /// Number of `(type, event)` combinations: C, L, O, then R and T with 24 events each.
 pub(crate) const TYPE_EVENTS: usize = 3 + 2 * EVENTS;
@@ -89,7 +89,12 @@ fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
-    let event = |j: usize| Event::all().nth(j);
+    // The inverse of `event_index`: D1-4, S1-8, U1-12.
+    let event = |j: usize| match j {
+        0..4 => Event::new(EventKind::D, j as u8 + 1),
+        4..12 => Event::new(EventKind::S, j as u8 - 3),
+        _ => Event::new(EventKind::U, j as u8 - 11),
+    };
     match i {
         0 => (VertexType::C, None),
         1 => (VertexType::L, None),
@@ -256,14 +261,17 @@ impl Alphabet {
         // that starts its run of raw symbols.
         let blind: Vec<bool> = atoms.iter().map(|a| !mentions_label(a)).collect();
         let mut blind_sig = vec![0u64; words];
+        // One signature buffer for every raw symbol: only a new class allocates (a
+        // compile has a few hundred raw symbols and a handful of classes).
+        let mut sig = vec![0u64; words];
         for raw in 0..TYPE_EVENTS * label_syms {
             let sym = Self::sym_of(&labels, raw);
             let first = raw % label_syms == 0;
-            let mut sig = if first {
-                vec![0u64; words]
+            if first {
+                sig.fill(0);
             } else {
-                blind_sig.clone()
-            };
+                sig.copy_from_slice(&blind_sig);
+            }
             for (a, atom) in atoms.iter().enumerate() {
                 if (first || !blind[a]) && atom_accepts(atom, &sym, &labels) {
                     bits::set(&mut sig, a);
@@ -275,11 +283,15 @@ impl Alphabet {
                     bits::clear(&mut blind_sig, a);
                 }
             }
-            let next = by_signature.len() as u32;
-            let class = *by_signature.entry(sig.clone()).or_insert_with(|| {
-                class_atoms.push(sig);
-                next
-            });
+            let class = match by_signature.get(sig.as_slice()) {
+                Some(&class) => class,
+                None => {
+                    let class = class_atoms.len() as u32;
+                    by_signature.insert(sig.clone(), class);
+                    class_atoms.push(sig.clone());
+                    class
+                }
+            };
             raw_to_class.push(class);
         }
         let mut representatives = vec![[None; 3]; class_atoms.len()];
@@ -361,6 +373,12 @@ impl Alphabet {
     /// Does distinct atom `a` accept class `c`?
     pub(crate) fn accepts(&self, c: usize, a: usize) -> bool {
         bits::get(&self.class_atoms[c], a)
+    }
+
+    /// Whether some vertex of class `c` can stand in place `g` of a path: what
+    /// [`Alphabet::representative`] answers, without building the vertex (and its label).
+    pub(crate) fn occurs_in(&self, c: usize, g: Group) -> bool {
+        self.representatives[c][g.index()].is_some()
     }
 
     /// A vertex of class `c` that can stand in place `g` of a path, if there is one.
@@ -503,7 +521,6 @@ fn triple_accepts(t: &Triple, s: &Sym, labels: &LabelTable) -> bool {
 mod tests {
     use super::*;
     use crate::parse;
-    use crate::path::EventKind;
 
     fn alphabet(src: &str) -> (Alphabet, Vec<Atom>) {
         let e = parse(src).unwrap().expr;
@@ -531,6 +548,27 @@ mod tests {
         let d = |l| Vertex::scatter(VertexType::R, Event::new(EventKind::D, 1).unwrap(), Some(l));
         assert_eq!(a.classify(&d("wall")), a.classify(&d("ceiling")));
         assert_ne!(a.classify(&d("wall")), a.classify(&d("floor")));
+    }
+
+    #[test]
+    fn occurs_in_names_the_places_a_class_can_take() {
+        // Classes of `C<RD>L`: the camera, RD, lights, and the rest (O, other
+        // scatterings). `O` ends a path; the rest's R/T vertices stand in the middle.
+        let (a, _) = alphabet("C<RD>L");
+        let d1 = Event::new(EventKind::D, 1).unwrap();
+        let places = |v: &Vertex| {
+            let c = a.classify(v).0 as usize;
+            let places = Group::ALL.map(|g| a.occurs_in(c, g));
+            assert_eq!(places, Group::ALL.map(|g| a.representative(c, g).is_some()));
+            places
+        };
+        assert_eq!(places(&Vertex::camera()), [true, false, false]);
+        assert_eq!(
+            places(&Vertex::scatter(VertexType::R, d1, None)),
+            [false, true, false]
+        );
+        assert_eq!(places(&Vertex::light(None)), [false, false, true]);
+        assert_eq!(places(&Vertex::emissive(None)), [false, true, true]);
     }
 
     #[test]

@@ -71,7 +71,7 @@ pub(crate) fn empty_aovs(
             for c in 0..alphabet.class_count() {
                 if alphabet.accepts(c, a) {
                     for group in Group::ALL {
-                        if alphabet.representative(c, group).is_some() {
+                        if alphabet.occurs_in(c, group) {
                             g |= 1 << group.index();
                         }
                     }

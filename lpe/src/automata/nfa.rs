@@ -12,8 +12,9 @@
 //! where `Follow(state)` is the union of the follow sets of the active positions. It is
 //! tabulated per 8-bit chunk of the state (Navarro & Raffinot): one table row per
 //! `(chunk, byte value)`, so a step is one load-and-OR per byte of state, whatever the
-//! number of active positions. The tables cost `16 KiB * words^2` (`words` = 64-position
-//! words); [`crate::aov::Options::nfa_budget`] bounds them. A set too large for tables
+//! number of active positions. The tables cost `2 KiB * words` per chunk, one chunk per 8
+//! positions (at most `16 KiB * words^2`, `words` = 64-position words);
+//! [`crate::aov::Options::nfa_budget`] bounds them. A set too large for tables
 //! (thousands of positions) keeps only one follow row per position and ORs the rows of
 //! the active positions: slower, and used only to build its DFA.
 //!
@@ -348,8 +349,10 @@ impl Nfa {
             }
         }
         // Chunk tables: entry `b` is entry `b` without its lowest bit, plus that bit's row.
+        // Only chunks holding a position: a step reads no byte past the last position
+        // (a set of 12 positions needs 2 chunks of 256 rows, not 8).
         let chunks = if table_bytes(words) <= table_budget {
-            words * 8
+            positions.div_ceil(8)
         } else {
             0
         };

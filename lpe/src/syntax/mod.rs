@@ -73,7 +73,10 @@ pub struct Parser {
 /// assert_eq!(lpe.to_string(), "unoccluded;C<RD>[<L.>O]");
 /// ```
 pub fn parse(source: &str) -> Result<Lpe, Error> {
-    Parser::default().parse(source)
+    // One parser for every call: building the built-in macro table was half the heap
+    // blocks of parsing a short expression.
+    static DEFAULT: std::sync::OnceLock<Parser> = std::sync::OnceLock::new();
+    DEFAULT.get_or_init(Parser::default).parse(source)
 }
 
 fn is_ident(s: &str) -> bool {
