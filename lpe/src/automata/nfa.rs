@@ -487,10 +487,20 @@ impl Nfa {
     /// do not form one long chain.
     #[inline(always)]
     fn step_tabled<const W: usize>(&self, cur: [u64; W], class: usize) -> [u64; W] {
-        // One bounds check for the whole table: each row index below is provably in it.
-        let follow = &self.follow[..8 * W * 256 * W];
+        // The table holds only the chunks up to the last position. A chunk past it reads
+        // the last chunk's row of the zero byte (empty): its byte is masked to zero, so
+        // that bits past the last position (a state of another set) select nothing, as
+        // in `step_rows`. Chunk bases and masks do not depend on the state: they stay off
+        // the chain of dependent loads, whose byte mask was there already.
+        let follow = &self.follow[..];
+        let last = follow.len() / (256 * W) - 1;
         let row = |chunk: usize, b: u64| -> &[u64] {
-            &follow[(chunk * 256 + (b & 0xff) as usize) * W..][..W]
+            let (chunk, mask) = if chunk <= last {
+                (chunk, 0xff)
+            } else {
+                (last, 0)
+            };
+            &follow[(chunk * 256 + (b & mask) as usize) * W..][..W]
         };
         let (mut even, mut odd) = ([0u64; W], [0u64; W]);
         for (i, &word) in cur.iter().enumerate() {
