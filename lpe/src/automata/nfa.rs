@@ -348,17 +348,19 @@ impl Nfa {
             }
         }
         // Chunk tables: entry `b` is entry `b` without its lowest bit, plus that bit's row.
-        // Every chunk of every word, those past the last position too (their rows are
-        // empty): the inlined wide step then reads a row per byte with no check of where
-        // the positions end. Tables for the used chunks only made that step 1.6-1.9x
-        // slower (`lpe-check bench`, bitset NFA row), for 14 KiB saved on a one-word set.
+        // Every chunk of every word, those past the last position too: the inlined wide
+        // step then reads a row per byte with no check of where the positions end
+        // (tables for the used chunks only, with that check, made it 1.6-1.9x slower:
+        // `lpe-check bench`, bitset NFA row). The chunks past the last position hold no
+        // position, so their rows stay zero and are not filled: a compile, which the
+        // fuzz targets do per case, writes only the used chunks.
         let chunks = if table_bytes(words) <= table_budget {
             words * 8
         } else {
             0
         };
         let mut table = vec![0u64; chunks * 256 * words];
-        for chunk in 0..chunks {
+        for chunk in 0..chunks.min(positions.div_ceil(8)) {
             for b in 1..256usize {
                 let p = chunk * 8 + b.trailing_zeros() as usize;
                 let (dst, src) = (
