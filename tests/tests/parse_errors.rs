@@ -137,6 +137,185 @@ const CASES: &[Case] = &[
         says: "unexpected `,`",
         help: None,
     },
+    // Characters that are no token: the span covers the whole character, and the help
+    // fits the character.
+    Case {
+        src: "C#L",
+        kind: ErrorKind::Syntax,
+        span: 1..2,
+        says: "unexpected character `#`",
+        help: None,
+    },
+    Case {
+        src: "CD€L",
+        kind: ErrorKind::Syntax,
+        span: 2..5,
+        says: "unexpected character `€`",
+        help: None,
+    },
+    Case {
+        src: "C.;L",
+        kind: ErrorKind::Syntax,
+        span: 2..3,
+        says: "unexpected character `;`",
+        help: Some("prefixes go first, each followed by `;`: `shadows;C.*L`"),
+    },
+    Case {
+        src: "C.xL",
+        kind: ErrorKind::Syntax,
+        span: 2..3,
+        says: "unexpected character `x`",
+        help: Some("event letters are C R T L O D S U; a macro name must be the whole expression"),
+    },
+    Case {
+        src: "C._L",
+        kind: ErrorKind::Syntax,
+        span: 2..3,
+        says: "unexpected character `_`",
+        help: Some("event letters are C R T L O D S U; a macro name must be the whole expression"),
+    },
+    Case {
+        src: "C\"a\"L",
+        kind: ErrorKind::Syntax,
+        span: 1..2,
+        says: "unexpected character `\"`",
+        help: Some("labels are quoted with single quotes: `'name'`"),
+    },
+    // Errors at the end of the body have an empty span there.
+    Case {
+        src: "C.{2",
+        kind: ErrorKind::Quantifier,
+        span: 4..4,
+        says: "expected a number, `,` or `}` in `{n,m}`, found end of expression",
+        help: None,
+    },
+    Case {
+        src: "C[D",
+        kind: ErrorKind::Syntax,
+        span: 3..3,
+        says: "expected `]`, found end of expression",
+        help: None,
+    },
+    Case {
+        src: "C(",
+        kind: ErrorKind::Syntax,
+        span: 2..2,
+        says: "expected an event, found end of expression",
+        help: None,
+    },
+    Case {
+        src: "C(D",
+        kind: ErrorKind::Syntax,
+        span: 1..2,
+        says: "unclosed `(`",
+        help: None,
+    },
+    Case {
+        src: "C)L",
+        kind: ErrorKind::Syntax,
+        span: 1..2,
+        says: "unmatched `)`",
+        help: None,
+    },
+    Case {
+        src: "|CL",
+        kind: ErrorKind::Syntax,
+        span: 0..1,
+        says: "`|` needs an alternative on both sides",
+        help: None,
+    },
+    Case {
+        src: "C[D*]L",
+        kind: ErrorKind::Quantifier,
+        span: 3..4,
+        says: "quantifier inside `[...]`: put it after the `]`",
+        help: None,
+    },
+    // Triples: what stands in the wrong position, and how to write it.
+    Case {
+        src: "C<R'a'>L",
+        kind: ErrorKind::TriplePosition,
+        span: 3..6,
+        says: "the label belongs in the third position of `<type event label>`",
+        help: Some("write `<R.'a'>`"),
+    },
+    Case {
+        src: "C<DR>L",
+        kind: ErrorKind::TriplePosition,
+        span: 2..3,
+        says: "`D` is an event, but the first position of `<type event label>` is the vertex type",
+        help: Some("write `<RD>`"),
+    },
+    Case {
+        src: "C<D>L",
+        kind: ErrorKind::TriplePosition,
+        span: 2..3,
+        says: "`D` is an event",
+        help: Some("write `<.D>` for any R/T vertex with a D event"),
+    },
+    Case {
+        src: "C<'a'>L",
+        kind: ErrorKind::TriplePosition,
+        span: 2..5,
+        says: "a label in the type position of `<type event label>`",
+        help: Some("write `<..'a'>`"),
+    },
+    Case {
+        src: "C<RDR>L",
+        kind: ErrorKind::TriplePosition,
+        span: 4..5,
+        says: "`R` is a vertex type; in `<type event label>` the type comes first",
+        help: None,
+    },
+    Case {
+        src: "C<RDD>L",
+        kind: ErrorKind::TriplePosition,
+        span: 4..5,
+        says: "`D` in the label position of `<type event label>`",
+        help: None,
+    },
+    Case {
+        src: "C<RD*>L",
+        kind: ErrorKind::Quantifier,
+        span: 4..5,
+        says: "quantifier inside `<...>`: a triple is one vertex",
+        help: Some("put the quantifier after the `>`"),
+    },
+    Case {
+        src: "C<['a']>L",
+        kind: ErrorKind::TriplePosition,
+        span: 3..6,
+        says: "label `'a'` in a type class: the type position holds C R T L O",
+        help: Some("labels go in the third position: `<R.['a' 'b']>`"),
+    },
+    Case {
+        src: "C<R[R]>L",
+        kind: ErrorKind::TriplePosition,
+        span: 4..5,
+        says: "`R` in a event class: the event position holds D S U",
+        help: None,
+    },
+    Case {
+        src: "C<[]>L",
+        kind: ErrorKind::Empty,
+        span: 2..4,
+        says: "empty type class `[]`",
+        help: None,
+    },
+    Case {
+        src: "C<[R",
+        kind: ErrorKind::Syntax,
+        span: 2..3,
+        says: "unclosed `[`",
+        help: None,
+    },
+    Case {
+        src: "C<R",
+        kind: ErrorKind::Syntax,
+        span: 1..2,
+        says: "unclosed `<`",
+        help: None,
+    },
 ];
 
 #[test]
@@ -226,4 +405,54 @@ fn an_identifier_that_is_no_expression_is_an_unknown_macro() {
         "unknown macro `_foo` (and not a valid expression)"
     );
     assert_eq!(e.help(), Some("nearest macros: `key`, `keyLight`"));
+}
+
+#[test]
+fn limits_hold_exactly_at_their_bound() {
+    let with = |limits: Limits| Parser::new(limits, MacroTable::builtin());
+    // Nesting: groups and classes count while open, and only while open.
+    let depth = |max_depth| {
+        with(Limits {
+            max_depth,
+            ..Limits::default()
+        })
+    };
+    assert!(depth(2).parse("C((D))[D]L").is_ok());
+    assert!(depth(1).parse("C(D)(D)(D)[D][D][D]L").is_ok());
+    let e = depth(2).parse("C(((D)))L").unwrap_err();
+    assert_eq!((e.kind(), e.span()), (ErrorKind::Limit, 3..4), "{e}");
+    assert_eq!(e.message(), "nesting deeper than the limit of 2");
+    let e = depth(1).parse("C([D])L").unwrap_err();
+    assert_eq!((e.kind(), e.span()), (ErrorKind::Limit, 2..3), "{e}");
+    // Positions: a repetition is checked as soon as it is read, the whole body at the
+    // end.
+    let positions = |max_positions| {
+        with(Limits {
+            max_positions,
+            ..Limits::default()
+        })
+    };
+    assert!(positions(4).parse("CD{2}L").is_ok());
+    let e = positions(4).parse("CD{3}L").unwrap_err();
+    assert_eq!((e.kind(), e.span()), (ErrorKind::Limit, 0..6), "{e}");
+    assert_eq!(
+        e.message(),
+        "expression unrolls to 5 positions, over the limit of 4"
+    );
+    let e = positions(2).parse("CD{3}L").unwrap_err();
+    assert_eq!((e.kind(), e.span()), (ErrorKind::Limit, 1..5), "{e}");
+    assert!(positions(3).parse("CDL").is_ok());
+    let e = positions(3).parse("CDDL").unwrap_err();
+    assert_eq!((e.kind(), e.span()), (ErrorKind::Limit, 0..4), "{e}");
+    // Repetition counts.
+    let repeat = |max_repeat| {
+        with(Limits {
+            max_repeat,
+            ..Limits::default()
+        })
+    };
+    assert!(repeat(4).parse("C.{4}L").is_ok());
+    let e = repeat(4).parse("C.{1,5}L").unwrap_err();
+    assert_eq!((e.kind(), e.span()), (ErrorKind::Limit, 5..6), "{e}");
+    assert_eq!(e.message(), "repetition count 5 is over the limit of 4");
 }
