@@ -218,6 +218,13 @@ const CASES: &[Case] = &[
         help: None,
     },
     Case {
+        src: ")CL",
+        kind: ErrorKind::Syntax,
+        span: 0..1,
+        says: "unmatched `)`",
+        help: None,
+    },
+    Case {
         src: "|CL",
         kind: ErrorKind::Syntax,
         span: 0..1,
