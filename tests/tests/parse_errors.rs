@@ -1,7 +1,8 @@
 //! The RenderMan parser's errors in full: kind, the whole span (start and end, where the
 //! conformance suite checks only the start), the message and the help, each worked out
 //! by hand from the source text; plus the parser's accessors, the edit distance behind
-//! its suggestions, and the operand limit as macros expand.
+//! its suggestions, and each limit exactly at its bound (set-algebra operands as macros
+//! expand, nesting, positions, repetition counts).
 
 use lpe::algebra::MAX_OPERANDS;
 use lpe::macros::MacroTable;
