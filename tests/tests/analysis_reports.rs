@@ -169,6 +169,25 @@ fn a_one_sided_witness_stays_the_shortest_while_the_search_goes_on() {
 }
 
 #[test]
+fn the_shortest_one_sided_witness_is_kept_over_a_later_one_from_another_state() {
+    // The search reports each distinct end state once, so a later witness can only
+    // replace the first if two end states match the same side: here `C RS L` and
+    // `C RS RS L`, distinct because only the second may go on with `<RD>` after its
+    // light. `C RD L` matches both sides; neither side has more, so the search runs to
+    // its end and meets the longer witness after the shorter one.
+    let lpe = |s: &str| parse(s).unwrap();
+    let (common, wider) = (lpe("C<RD>L"), lpe("(C<RD>L)|(C<RS>L)|(C<RS><RS>L<RD>*)"));
+    let c = analysis::compare(&common, &wider).unwrap();
+    let w = c.second_only.expect("second_only");
+    assert_eq!((c.first_only, w.len()), (None, 3), "{w}");
+    assert!(!m(&common, &w) && m(&wider, &w), "{w}");
+    let c = analysis::compare(&wider, &common).unwrap();
+    let w = c.first_only.expect("first_only");
+    assert_eq!((w.len(), c.second_only), (3, None), "{w}");
+    assert!(m(&wider, &w) && !m(&common, &w), "{w}");
+}
+
+#[test]
 fn analyses_get_a_dfa_budget_above_the_renderers() {
     // `C.*D.{16}[LO]` remembers which of its last 17 bounces were diffuse: a DFA of
     // 2^17 = 131 072 states and more. Next to a 267-bounce chain the set has 290 NFA
