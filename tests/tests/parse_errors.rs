@@ -300,7 +300,7 @@ const CASES: &[Case] = &[
         src: "C<R[R]>L",
         kind: ErrorKind::TriplePosition,
         span: 4..5,
-        says: "`R` in a event class: the event position holds D S U",
+        says: "`R` in an event class: the event position holds D S U",
         help: None,
     },
     Case {

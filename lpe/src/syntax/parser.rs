@@ -455,8 +455,9 @@ impl<'a> ExprParser<'a> {
                     ErrorKind::TriplePosition,
                     t.span,
                     format!(
-                        "{} in a {what} class: the {what} position holds {holds}",
-                        t.tok.describe()
+                        "{} in {} {what} class: the {what} position holds {holds}",
+                        t.tok.describe(),
+                        if what.starts_with('e') { "an" } else { "a" },
                     ),
                 );
                 return Err(if matches!(t.tok, Tok::Label(_)) {
