@@ -523,10 +523,15 @@ mod tests {
     ];
 
     fn weighting(clamp: Option<f32>) -> Weighting {
+        weighting_of(&ROUTED, clamp)
+    }
+
+    /// One AOV `C.*L` per entry of `prefixes` ("plain": none).
+    fn weighting_of(prefixes: &[&str], clamp: Option<f32>) -> Weighting {
         let config = lpe::Config::default();
         let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
         let mut aovs = AovList::default();
-        for (i, prefixes) in ROUTED.iter().enumerate() {
+        for (i, prefixes) in prefixes.iter().enumerate() {
             let prefixes = if *prefixes == "plain" { "" } else { prefixes };
             aovs.push(&format!("a{i}"), &format!("{prefixes}C.*L"), &parser)
                 .unwrap();
@@ -1082,6 +1087,188 @@ mod tests {
                 "{a:?}"
             );
             assert_eq!(f.layer(0), vec![DVec3::ZERO; 2], "{a:?}");
+        }
+    }
+
+    #[test]
+    fn accumulation_names_tell_the_films_apart() {
+        // The verify reports label their rows with these names.
+        let names = Accumulation::ALL.map(Accumulation::name);
+        assert_eq!(names, ["f64", "f32 naive", "f32 compensated"]);
+    }
+
+    #[test]
+    fn weighting_is_empty_only_without_aovs() {
+        assert!(weighting_of(&[], None).is_empty());
+        assert!(!weighting_of(&["plain"], None).is_empty());
+    }
+
+    #[test]
+    fn compensated_total_is_the_pair_rounded_once() {
+        // 1 + 2^-24 lies halfway between the f32 neighbours 1 and 1 + 2^-23: the pair
+        // keeps (1, 2^-24), and the total rounds the tie to the even 1. Subtracting the
+        // compensation instead would read 1 - 2^-24, an f32 of its own.
+        let a = Accumulation::F32Compensated;
+        let mut px = vec![DVec3::ZERO; a.slots()];
+        a.add(&mut px, 1, 0, DVec3::ONE);
+        a.add(&mut px, 1, 0, DVec3::splat(2f64.powi(-24)));
+        assert_eq!(px, [DVec3::ONE, DVec3::splat(2f64.powi(-24))]);
+        assert_eq!(a.total(&px, 1, 0), DVec3::ONE);
+    }
+
+    /// Adds each `(contribution, mask)` as a sample of its own to a one-pixel film with
+    /// `spp` samples (states are their own masks); the film, whether each sample was
+    /// rejected, and the count of AOV-only values dropped.
+    fn film_of_samples(
+        w: &Weighting,
+        a: Accumulation,
+        spp: u32,
+        samples: &[&[(Contribution, AovMask)]],
+    ) -> (Film, Vec<bool>, u64) {
+        let mut film = Film::new(1, 1, spp, w.overwrite(), a);
+        let mut v = SampleValues::new(w.len());
+        let mut rejected = Vec::new();
+        {
+            let mut rows: Vec<_> = film.rows_mut().collect();
+            let row = &mut rows[0].1;
+            for sample in samples {
+                for (contribution, state) in *sample {
+                    v.add(w, contribution, *state, |m| m);
+                }
+                rejected.push(row.commit(&mut v, w, |m| m));
+            }
+            row.finish_pixel(0, &mut v, w, |m| m);
+        }
+        (film, rejected, v.aov_rejected)
+    }
+
+    #[test]
+    fn overwrite_aovs_keep_the_last_sample_that_reached_them() {
+        // AOV 0 plain, AOV 1 `overwrite;` (routed per contribution, beauty's values).
+        // Samples: (0.5, 1, 2), then (0.125, 0.25, 0.5), then a blocked light sample
+        // (MIS weight 0 in beauty: it reaches neither beauty nor AOV 1).
+        let w = weighting_of(&["plain", "overwrite;"], None);
+        let both: AovMask = [0usize, 1].into_iter().collect();
+        let eighth = Contribution {
+            beta: Vec3::splat(0.125),
+            ..c(ONLY_STRATEGY, false)
+        };
+        let blocked = c(
+            Strategy::Nee {
+                w: 0.25,
+                visible: false,
+            },
+            false,
+        );
+        for a in Accumulation::ALL {
+            let samples: [&[_]; 3] = [
+                &[(c(ONLY_STRATEGY, false), both)],
+                &[(eighth, both)],
+                &[(blocked, both)],
+            ];
+            let (film, rejected, _) = film_of_samples(&w, a, 3, &samples);
+            assert_eq!(rejected, [false; 3], "{a:?}");
+            let mean = DVec3::new(0.625, 1.25, 2.5) / 3.0;
+            assert_eq!(film.pixel(0, 0, 0), mean, "{a:?}");
+            assert_eq!(film.pixel(0, 0, 1), mean, "{a:?}");
+            assert_eq!(film.pixel(0, 0, 2), DVec3::new(0.125, 0.25, 0.5), "{a:?}");
+        }
+    }
+
+    #[test]
+    fn a_non_finite_holdout_contribution_rejects_the_sample() {
+        // A holdout path's contribution is in no beauty sum, yet its light transport
+        // (weight 1, infinite throughput) is not finite: the whole sample goes,
+        // including the `holdouts;` AOVs that would have received it. It is not an
+        // AOV-only value: nothing is counted in `aov_rejected`.
+        let w = weighting(None);
+        let all: AovMask = (0..w.len()).collect();
+        let inf = Contribution {
+            beta: Vec3::splat(f32::INFINITY),
+            ..c(ONLY_STRATEGY, true)
+        };
+        for a in Accumulation::ALL {
+            let (film, rejected, aov_rejected) = film_of_samples(&w, a, 1, &[&[(inf, all)]]);
+            assert_eq!(rejected, [true], "{a:?}");
+            assert_eq!(aov_rejected, 0, "{a:?}");
+            for layer in 0..=w.len() {
+                assert_eq!(film.pixel(0, 0, layer), DVec3::ZERO, "{a:?} layer {layer}");
+            }
+        }
+    }
+
+    #[test]
+    fn zero_weight_values_are_not_judged_and_aov_only_ones_are_dropped_alone() {
+        // A blocked light sample with an infinite local estimate: beauty weight 0, so
+        // its (NaN) beauty value neither counts nor rejects the sample. `shadows;` and
+        // `unoccluded;` weigh it 1: infinite AOV-only values, each dropped and counted
+        // (2 per sample). The MIS-weighted AOVs (`nothruput;`, `noclamp;`, ...) weigh
+        // it 0 and never look at it. Every layer stays zero.
+        let w = weighting(None);
+        let all: AovMask = (0..w.len()).collect();
+        let blocked_inf = Contribution {
+            local: Vec3::splat(f32::INFINITY),
+            ..c(
+                Strategy::Nee {
+                    w: 0.25,
+                    visible: false,
+                },
+                false,
+            )
+        };
+        for a in Accumulation::ALL {
+            let sample: &[_] = &[(blocked_inf, all)];
+            let (film, rejected, aov_rejected) = film_of_samples(&w, a, 2, &[sample, sample]);
+            assert_eq!(rejected, [false, false], "{a:?}");
+            assert_eq!(aov_rejected, 4, "{a:?}");
+            for layer in 0..=w.len() {
+                assert_eq!(film.pixel(0, 0, layer), DVec3::ZERO, "{a:?} layer {layer}");
+            }
+        }
+    }
+
+    #[test]
+    fn signals_add_up_unless_the_aov_overwrites() {
+        let w = weighting_of(&["plain", "overwrite;"], None);
+        let mut film = Film::new(1, 1, 1, w.overwrite(), Accumulation::F64);
+        let mut v = SampleValues::<AovMask>::new(w.len());
+        for i in 0..2 {
+            v.add_signal(&w, i, DVec3::new(1.0, 2.0, 3.0));
+            v.add_signal(&w, i, DVec3::splat(0.5));
+        }
+        commit_only_sample(&mut film, &mut v, &w);
+        assert_eq!(film.pixel(0, 0, 0), DVec3::ZERO);
+        assert_eq!(film.pixel(0, 0, 1), DVec3::new(1.5, 2.5, 3.5));
+        assert_eq!(film.pixel(0, 0, 2), DVec3::splat(0.5));
+    }
+
+    #[test]
+    fn f32_films_add_plain_aovs_sample_by_sample_like_beauty() {
+        // Samples 1, 2^-24, 2^-24 to a plain AOV matching every path. The naive f32
+        // film rounds after each sample: 1 + 2^-24 is a tie that rounds to the even 1,
+        // twice, so beauty and the AOV both read 1 (summing the AOV per state first
+        // would read 1 + 2^-23). The f64 and compensated films keep 1 + 2^-23.
+        let w = weighting_of(&["plain"], None);
+        let all: AovMask = [0usize].into_iter().collect();
+        let one = Contribution {
+            beta: Vec3::ONE,
+            local: Vec3::ONE,
+            strategy: ONLY_STRATEGY,
+            holdout: false,
+        };
+        let tiny = Contribution {
+            beta: Vec3::splat(2f32.powi(-24)),
+            ..one
+        };
+        for (a, want) in [
+            (Accumulation::F32, 1.0),
+            (Accumulation::F64, 1.0 + 2f64.powi(-23)),
+            (Accumulation::F32Compensated, 1.0 + 2f64.powi(-23)),
+        ] {
+            let samples: [&[_]; 3] = [&[(one, all)], &[(tiny, all)], &[(tiny, all)]];
+            let (film, _, _) = film_of_samples(&w, a, 1, &samples);
+            assert_eq!(film.pixel(0, 0, 0), DVec3::splat(want), "{a:?} beauty");
+            assert_eq!(film.pixel(0, 0, 1), DVec3::splat(want), "{a:?} AOV");
         }
     }
 }
