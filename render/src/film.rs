@@ -85,15 +85,14 @@ impl Accumulation {
         }
     }
 
-    /// The stored total of layer `layer` of one pixel.
+    /// The stored total of layer `layer` of one pixel: its sum, for the compensated film
+    /// too. Its pair is renormalized at every addition (`compensated_add`: the
+    /// compensation stays below half an ulp of the sum), so the pair rounded to one f32
+    /// is the sum itself; adding the compensation back would change nothing but turn an
+    /// overflowed sum's `(inf, NaN)` pair into NaN instead of inf.
     #[inline]
-    fn total(self, pixel: &[DVec3], layers: usize, layer: usize) -> DVec3 {
-        match self {
-            Accumulation::F32Compensated => {
-                (pixel[layer].as_vec3() + pixel[layers + layer].as_vec3()).as_dvec3()
-            }
-            _ => pixel[layer],
-        }
+    fn total(pixel: &[DVec3], layer: usize) -> DVec3 {
+        pixel[layer]
     }
 }
 
@@ -170,8 +169,7 @@ impl Film {
 
     fn total(&self, pixel: usize, layer: usize) -> DVec3 {
         let s = self.stride();
-        self.accumulation
-            .total(&self.data[pixel * s..(pixel + 1) * s], self.layers, layer)
+        Accumulation::total(&self.data[pixel * s..(pixel + 1) * s], layer)
     }
 
     /// The estimate at pixel `(x, y)` of `layer` (0 = beauty, `1 + i` = AOV `i`): the
@@ -1042,7 +1040,7 @@ mod tests {
         for x in xs {
             a.add(&mut px, 1, 0, DVec3::splat(x));
         }
-        a.total(&px, 1, 0).x
+        Accumulation::total(&px, 0).x
     }
 
     #[test]
@@ -1106,14 +1104,14 @@ mod tests {
     #[test]
     fn compensated_total_is_the_pair_rounded_once() {
         // 1 + 2^-24 lies halfway between the f32 neighbours 1 and 1 + 2^-23: the pair
-        // keeps (1, 2^-24), and the total rounds the tie to the even 1. Subtracting the
-        // compensation instead would read 1 - 2^-24, an f32 of its own.
+        // keeps (1, 2^-24), its sum already the tie rounded to the even 1, which is what
+        // the film reads (not 1 - 2^-24 or 1 + 2^-23).
         let a = Accumulation::F32Compensated;
         let mut px = vec![DVec3::ZERO; a.slots()];
         a.add(&mut px, 1, 0, DVec3::ONE);
         a.add(&mut px, 1, 0, DVec3::splat(2f64.powi(-24)));
         assert_eq!(px, [DVec3::ONE, DVec3::splat(2f64.powi(-24))]);
-        assert_eq!(a.total(&px, 1, 0), DVec3::ONE);
+        assert_eq!(Accumulation::total(&px, 0), DVec3::ONE);
     }
 
     /// Adds each `(contribution, mask)` as a sample of its own to a one-pixel film with
