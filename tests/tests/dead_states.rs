@@ -155,10 +155,10 @@ fn check_paths(
 
 /// An AOV of 66 positions that dies on the vertex after the camera unless that vertex
 /// is a `U12` lobe: placed first, it fills word 0 of an NFA state (and a little of word
-/// 1), so the drawn AOVs live in the higher words once it is dead.
+/// 1), so the drawn AOVs live in the higher words once it is dead. A chain, since
+/// positions always active together are merged (64 alternatives `<RU12>` would be one).
 fn padding() -> Lpe {
-    let alts = vec!["<RU12>"; 64].join("|");
-    parse(&format!("C({alts})L")).unwrap()
+    parse("C<RU12>{64}L").unwrap()
 }
 
 /// Every step runs the bitset NFA (no lazy cache).

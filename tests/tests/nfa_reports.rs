@@ -57,6 +57,44 @@ fn emptiness_is_decided_on_sets_wider_than_one_word() {
 }
 
 #[test]
+fn positions_always_active_together_are_kept_once() {
+    // `C<RD>DL` and `C<RD>DO` begin alike: the start, one C, one <RD>, one D, then an L
+    // and an O (each final position ends its own AOV): 6 positions, not 9.
+    let alike = [("l", "C<RD>DL"), ("o", "C<RD>DO")];
+    // `C<RD>DDL` and `C<RS>DDL`: the D positions read the same atom after different
+    // lobes, so they are active after different paths and stay apart (the second pair
+    // too, though their predecessors read alike): the start, C, <RD>, <RS>, four Ds,
+    // two Ls: 10.
+    let apart = [("rd", "C<RD>DDL"), ("rs", "C<RS>DDL")];
+    // Two `C<RD>D*L`: the loops merge too, since each loops alike after a merged <RD>:
+    // the start, C, <RD>, D, and the two Ls: 6.
+    let loops = [("a", "C<RD>D*L"), ("b", "C<RD>D*L")];
+    for (srcs, positions) in [(&alike, 6), (&apart, 10), (&loops, 6)] {
+        let [dfa, nfa] = both(srcs);
+        assert_eq!(nfa.nfa_positions(), positions, "{srcs:?}");
+        for p in [
+            "C RD1 TD2 L",
+            "C RD1 TD2 O",
+            "C RS1 TD2 L",
+            "C RS1 TD2 RD3 L",
+            "C RD1 L",
+            "C RD1 TD2 RD3 L",
+        ] {
+            let want: Vec<usize> = (0..2)
+                .filter(|&i| reference::is_match(&lpe::parse(srcs[i].1).unwrap(), &path(p)))
+                .collect();
+            for s in [&dfa, &nfa] {
+                assert_eq!(
+                    s.match_path(&path(p)).iter().collect::<Vec<_>>(),
+                    want,
+                    "{srcs:?} {p}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
 fn nfa_memory_is_tables_rows_classes_finals_and_ids() {
     // CDL: positions start, C, D, L (4, one word); classes camera, D scatter, light,
     // anything else (4). The NFA holds its per-byte follow tables (8 chunks * 256

@@ -2,7 +2,8 @@
 //! - [`mask`]: the shared ids ([`Class`](mask::Class), [`State`](mask::State),
 //!   [`AovMask`](mask::AovMask)), a leaf every other layer uses;
 //! - `alphabet`: vertices folded into the classes the compiled atoms can tell apart;
-//! - `nfa`: the bitset Glushkov NFA of all AOVs at once;
+//! - `nfa`: the bitset Glushkov NFA of all AOVs at once, with `coactive` merging the
+//!   positions that are always active together;
 //! - `dfa`: the minimized dense DFA built from it, when it fits its budget;
 //! - `visible`: the visible AOV masks of a set with set algebra, as formulas over the
 //!   hidden operand AOVs the NFA holds;
@@ -17,6 +18,7 @@
 //! [`crate::aov`] is the facade that builds and steps them.
 
 pub(crate) mod alphabet;
+pub(crate) mod coactive;
 pub(crate) mod dfa;
 pub(crate) mod emptiness;
 pub mod lazy;

@@ -17,8 +17,11 @@
 //! (thousands of positions) keeps only one follow row per position and ORs the rows of
 //! the active positions: slower, and used only to build its DFA.
 //!
-//! Many AOVs share one automaton: each keeps its own positions, and a final position
-//! names the AOV it ends ([`Nfa::matches`]).
+//! Many AOVs share one automaton, and a final position names the AOV it ends
+//! ([`Nfa::matches`]). Positions that are always active together (the `C<RD>` that
+//! begins several AOVs) are kept once (`coactive`), and positions no path can use are
+//! dropped, so a set's position count is what its automaton needs, not its source's
+//! atom count.
 
 use std::hash::Hash;
 
@@ -26,6 +29,7 @@ use crate::fxhash::FxMap;
 
 use crate::ast::{Atom, Expr, Repetition};
 use crate::automata::alphabet::AcceptTable;
+use crate::automata::coactive;
 use crate::automata::mask::{AovMask, NFA_STATE_WORDS};
 use crate::bits::{self, set};
 
@@ -255,6 +259,12 @@ impl<'a, A: Eq + Hash> Builder<'a, A> {
     }
 }
 
+/// Predecessor edges merging co-active positions may visit (rounds times edges) before
+/// it gives up and keeps every position: a few milliseconds of a compile. Sets that reach
+/// it are long chains (`C.{2000}L`), where refining splits one position a round and
+/// nothing merges anyway.
+const MERGE_BUDGET: usize = 1 << 22;
+
 /// Bytes of follow tables for a state of `words` words.
 pub(crate) fn table_bytes(words: usize) -> usize {
     words * 8 * 256 * words * 8
@@ -336,14 +346,35 @@ impl Nfa {
                 kept.push(p);
             }
         }
-        let positions = kept.len();
+        // One position per block of positions always active together: same atom, same
+        // AOV ended (a position names one), predecessors in the same blocks.
+        let block = {
+            let key: Vec<u64> = kept
+                .iter()
+                .map(|&old| u64::from(atom_of[old]) << 32 | u64::from(aov_of[old]))
+                .collect();
+            let mut preds = vec![Vec::new(); kept.len()];
+            for (p, &old) in kept.iter().enumerate() {
+                for &q in &follow[old] {
+                    if let Some(q) = renumber.get(q as usize).filter(|&&q| q != u32::MAX) {
+                        preds[*q as usize].push(p as u32);
+                    }
+                }
+            }
+            coactive::co_active_blocks(&key, &preds, MERGE_BUDGET)
+                .unwrap_or_else(|| (0..kept.len() as u32).collect())
+        };
+        for r in renumber.iter_mut().filter(|r| **r != u32::MAX) {
+            *r = block[*r as usize];
+        }
+        let positions = block.iter().max().map_or(0, |&b| b as usize + 1);
         let words = positions.div_ceil(64);
         let mut rows = vec![0u64; positions * words];
-        for (new, &old) in kept.iter().enumerate() {
+        for (&new, &old) in block.iter().zip(&kept) {
             for &q in &follow[old] {
                 let q = renumber[q as usize];
                 if q != u32::MAX {
-                    set(&mut rows[new * words..][..words], q as usize);
+                    set(&mut rows[new as usize * words..][..words], q as usize);
                 }
             }
         }
@@ -382,7 +413,8 @@ impl Nfa {
         let mut finals = vec![0u64; words];
         let mut new_atom_of = vec![u32::MAX; positions];
         let mut new_aov_of = vec![u32::MAX; positions];
-        for (new, &old) in kept.iter().enumerate().skip(1) {
+        for (&new, &old) in block.iter().zip(&kept).skip(1) {
+            let new = new as usize;
             let a = atom_of[old];
             new_atom_of[new] = a;
             new_aov_of[new] = aov_of[old];

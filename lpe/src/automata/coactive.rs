@@ -1,0 +1,132 @@
+//! Positions that are always active together, found so that the NFA can keep one of each.
+//!
+//! In a Glushkov automaton a position is active after a vertex exactly when its atom
+//! accepts the vertex's class and one of its predecessors was active before. Two
+//! positions with the same atom and the same predecessors are therefore active together
+//! on every path, and more generally so are the positions of a block of a partition in
+//! which every block's positions share an atom and have predecessors in the same blocks
+//! (a backward bisimulation; by induction on the path length, with the start alone in
+//! its block). Many AOVs of one set begin alike (`C<RD>…` in every diffuse AOV,
+//! `C<RS>…` in every specular one), so merging such positions often halves the NFA, and
+//! the bitset step's cost grows with the state's words.
+//!
+//! The coarsest such partition comes from refining: start from the blocks of equal keys,
+//! split each block by the set of blocks its positions' predecessors lie in, repeat until
+//! no block splits.
+
+use crate::fxhash::FxMap;
+
+/// The block of each position in the coarsest partition where positions of a block have
+/// equal `key`s and predecessors (`preds`) in the same blocks; blocks numbered in the
+/// order of their first position. `None` when refining would visit more than `budget`
+/// predecessor edges (then no merging: one block per position is always sound).
+///
+/// The caller keys each position by what must not merge (its atom, the AOV it ends);
+/// a position whose key no other has stays alone.
+pub(crate) fn co_active_blocks(key: &[u64], preds: &[Vec<u32>], budget: usize) -> Option<Vec<u32>> {
+    let n = key.len();
+    let edges: usize = preds.iter().map(Vec::len).sum();
+    let mut ids: FxMap<u64, u32> = FxMap::default();
+    let mut block: Vec<u32> = key
+        .iter()
+        .map(|&k| {
+            let next = ids.len() as u32;
+            *ids.entry(k).or_insert(next)
+        })
+        .collect();
+    let mut count = ids.len();
+    let mut spent = 0usize;
+    let mut signature = Vec::new();
+    loop {
+        // A round reads every edge once; the rounds are at most one per block.
+        spent = spent.saturating_add(n + edges);
+        if spent > budget {
+            return None;
+        }
+        let mut ids: FxMap<(u32, Vec<u32>), u32> = FxMap::default();
+        let next: Vec<u32> = (0..n)
+            .map(|p| {
+                signature.clear();
+                signature.extend(preds[p].iter().map(|&q| block[q as usize]));
+                signature.sort_unstable();
+                signature.dedup();
+                let fresh = ids.len() as u32;
+                *ids.entry((block[p], signature.clone())).or_insert(fresh)
+            })
+            .collect();
+        // The new partition refines the old (a block is part of the signature), so an
+        // unchanged count means an unchanged partition: every block is stable.
+        let stable = ids.len() == count;
+        count = ids.len();
+        block = next;
+        if stable {
+            return Some(block);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Preds lists from an edge list over `n` positions.
+    fn preds(n: usize, edges: &[(u32, u32)]) -> Vec<Vec<u32>> {
+        let mut p = vec![Vec::new(); n];
+        for &(from, to) in edges {
+            p[to as usize].push(from);
+        }
+        p
+    }
+
+    #[test]
+    fn equal_prefixes_merge_and_different_ones_do_not() {
+        // 0 -> 1(a) -> 2(b) and 0 -> 3(a) -> 4(b): the two branches merge pairwise;
+        // 0 -> 5(a) -> 6(c): 5 joins them, 6 (another atom) stays alone.
+        let key = [9, 1, 2, 1, 2, 1, 3];
+        let p = preds(7, &[(0, 1), (1, 2), (0, 3), (3, 4), (0, 5), (5, 6)]);
+        assert_eq!(
+            co_active_blocks(&key, &p, usize::MAX),
+            Some(vec![0, 1, 2, 1, 2, 1, 3])
+        );
+    }
+
+    #[test]
+    fn a_shared_atom_after_different_predecessors_stays_apart() {
+        // 1(a) and 2(b) after the start, then 3(c) after 1 and 4(c) after 2: 3 and 4
+        // read the same atom but are active after different vertices.
+        let key = [9, 1, 2, 3, 3];
+        let p = preds(5, &[(0, 1), (0, 2), (1, 3), (2, 4)]);
+        assert_eq!(
+            co_active_blocks(&key, &p, usize::MAX),
+            Some(vec![0, 1, 2, 3, 4])
+        );
+    }
+
+    #[test]
+    fn loops_merge_when_they_loop_alike() {
+        // Two copies of `a b*`: 1(a) -> 2(b) -> 2 and 3(a) -> 4(b) -> 4. Each loop's only
+        // outside predecessor is a merged `a`, so the coarsest partition merges the
+        // loops too (the least one, growing merges from single positions, would not).
+        let key = [9, 1, 2, 1, 2];
+        let p = preds(5, &[(0, 1), (1, 2), (2, 2), (0, 3), (3, 4), (4, 4)]);
+        assert_eq!(
+            co_active_blocks(&key, &p, usize::MAX),
+            Some(vec![0, 1, 2, 1, 2])
+        );
+    }
+
+    #[test]
+    fn a_chain_splits_one_position_a_round_until_stable() {
+        // 0 -> 1 -> 2 -> ... -> 9, all the same atom: refinement tells them apart one
+        // round at a time, from the start; the result keeps every position alone.
+        let n = 10;
+        let key: Vec<u64> = (0..n).map(|p| u64::from(p > 0)).collect();
+        let p = preds(n, &(1..n as u32).map(|q| (q - 1, q)).collect::<Vec<_>>());
+        let alone: Vec<u32> = (0..n as u32).collect();
+        assert_eq!(co_active_blocks(&key, &p, usize::MAX), Some(alone));
+        // Nine edges and ten positions a round; eight rounds split off one position
+        // each (the first block of equal keys is two), the ninth confirms: 171.
+        assert!(co_active_blocks(&key, &p, 171).is_some());
+        assert_eq!(co_active_blocks(&key, &p, 170), None);
+    }
+}
