@@ -245,8 +245,17 @@ fn blow_up_sets_go_lazy_at_once_and_answer_right() {
 fn batch_steps_answer_per_path() {
     let exprs = exprs();
     let paths = random_paths(5, 300, 10);
-    for opts in [Options::default(), lazy(1)] {
+    // A DFA (the batch reads its table alone), a lazy DFA with a cache that clears all
+    // the time, one that holds everything, and none (every step on the NFA).
+    for opts in [Options::default(), lazy(1), lazy(1 << 20), lazy(0)] {
         let set = AovSet::compile_with(&named(&exprs), &opts).unwrap();
+        // A state of no set steps as `step_class` steps it.
+        let c = set.classify(&paths[0].vertices()[0]);
+        for bad in [u32::MAX, u32::MAX - 1, 1 << 20] {
+            let mut batch = [State::from_u32(bad)];
+            set.step_batch(&mut batch, &[c]);
+            assert_eq!(batch[0], set.step_class(State::from_u32(bad), c), "{bad}");
+        }
         let mut states = vec![set.start(); paths.len()];
         let longest = paths.iter().map(Path::len).max().unwrap();
         for d in 0..longest {

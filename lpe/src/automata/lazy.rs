@@ -204,25 +204,37 @@ impl Lazy {
     }
 
     /// One step through this thread's cache (for callers without a [`Cache`] of their
-    /// own: the `State` API and [`crate::PathMatcher`]). One cache per thread, adopted by
-    /// the set stepped last: a thread alternating between two lazy sets refills it.
+    /// own: the `State` API and [`crate::PathMatcher`]) if it holds the transition: two
+    /// loads. Else [`Lazy::step_local_miss`] steps. One cache per thread, adopted by the
+    /// set stepped last: a thread alternating between two lazy sets refills it.
     #[inline]
-    pub(crate) fn step_local(&self, s: State, c: Class) -> State {
+    pub(crate) fn step_local_hit(&self, s: State, c: Class) -> Option<State> {
         // The hit path alone inside the thread-local access, so that the access inlines
         // into the step; with the miss path in it, it stayed a call, and the state went
         // through memory into it.
-        let hit = LOCAL.with(|cache| {
+        LOCAL.with(|cache| {
             let cache = cache.try_borrow().ok()?;
             self.cached(&cache, s, c)
-        });
-        match hit {
-            Some(n) => n,
-            None => self.step_local_miss(s, c),
-        }
+        })
     }
 
+    /// [`Lazy::step_local_hit`], else [`Lazy::step_local_miss`], for each pair of a batch
+    /// (pairs past the shorter slice left alone), with this thread's cache borrowed once
+    /// for the whole batch rather than once a step.
+    pub(crate) fn step_batch_local(&self, states: &mut [State], classes: &[Class]) {
+        let pairs = states.iter_mut().zip(classes);
+        LOCAL.with(|cache| match cache.try_borrow_mut() {
+            Ok(mut cache) if self.cache_budget > 0 => {
+                pairs.for_each(|(s, &c)| *s = self.step(&mut cache, *s, c));
+            }
+            _ => pairs.for_each(|(s, &c)| *s = self.step_uncached(*s, c)),
+        })
+    }
+
+    /// The step [`Lazy::step_local_hit`] does not have: through this thread's cache,
+    /// filling it.
     #[inline(never)]
-    fn step_local_miss(&self, s: State, c: Class) -> State {
+    pub(crate) fn step_local_miss(&self, s: State, c: Class) -> State {
         if self.cache_budget == 0 {
             return self.step_uncached(s, c);
         }
@@ -249,7 +261,7 @@ impl Lazy {
     /// [`Lazy::matches`] through this thread's cache.
     #[inline]
     pub(crate) fn matches_local(&self, s: State) -> AovMask {
-        // As in `step_local`: the hit path alone inside the thread-local access.
+        // As in `step_local_hit`: the hit path alone inside the thread-local access.
         let hit = LOCAL.with(|cache| {
             let cache = cache.try_borrow().ok()?;
             self.cached_mask(&cache, s)
