@@ -767,7 +767,9 @@ impl AovSet {
         self.lazy.as_deref().map(Lazy::registered)
     }
 
-    /// NFA positions (the start included).
+    /// NFA positions (the start included), after keeping once the positions that are
+    /// always active together and dropping those no path can use: at most the atoms of
+    /// the expressions after unrolling, plus one.
     pub fn nfa_positions(&self) -> usize {
         self.nfa_positions
     }
