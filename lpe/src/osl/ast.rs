@@ -196,6 +196,15 @@ pub struct Lpe {
 }
 
 impl Lpe {
+    /// Moves the positions of its warnings `by` bytes on: for an expression parsed from
+    /// the rest of a longer source (after [`crate::osl::SOURCE_MARK`]), so that they
+    /// count from the source as written.
+    pub fn shift_warnings(&mut self, by: usize) {
+        for w in &mut self.warnings {
+            w.pos += by;
+        }
+    }
+
     /// A plain expression without warnings.
     pub fn new(expr: Expr) -> Lpe {
         Lpe {

@@ -59,9 +59,7 @@ pub fn parse_source(src: &str, registered: &Registered) -> std::result::Result<L
     let shift = SOURCE_MARK.len();
     match parse(body, registered) {
         Ok(mut lpe) => {
-            for w in &mut lpe.warnings {
-                w.pos += shift;
-            }
+            lpe.shift_warnings(shift);
             Ok(lpe)
         }
         Err(e) => Err(Error {

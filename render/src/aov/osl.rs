@@ -54,10 +54,13 @@ pub fn parse(
     limits: &Limits,
     macros: &lpe::macros::MacroTable,
 ) -> Result<osl::Lpe, OslAovError> {
-    match source.strip_prefix("lpe:") {
-        Some(expr) => parse_expr(expr, limits, macros).map_err(|e| e.shifted("lpe:".len())),
-        None => parse_expr(source, limits, macros),
-    }
+    let Some(expr) = source.strip_prefix(osl::SOURCE_MARK) else {
+        return parse_expr(source, limits, macros);
+    };
+    let shift = osl::SOURCE_MARK.len();
+    let mut lpe = parse_expr(expr, limits, macros).map_err(|e| e.shifted(shift))?;
+    lpe.shift_warnings(shift);
+    Ok(lpe)
 }
 
 impl OslAovError {
@@ -205,6 +208,11 @@ mod tests {
         match parse_default("lpe:CE").unwrap_err() {
             OslAovError::Parse(e) => assert_eq!(e.pos, 5),
             e => panic!("{e:?}"),
+        }
+        // Warnings too: the reversed range's `{` is byte 6 of the source, 2 of the LPE.
+        for (src, pos) in [("lpe:C.{3,1}L", 6), ("C.{3,1}L", 2)] {
+            let w = parse_default(src).unwrap().warnings;
+            assert_eq!(w.iter().map(|w| w.pos).collect::<Vec<_>>(), [pos], "{src}");
         }
         // Not a prefix: OSL's own error.
         assert!(matches!(
