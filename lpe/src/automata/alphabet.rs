@@ -70,22 +70,50 @@ impl Group {
     }
 }
 
-fn event_index(e: Event) -> usize {
-    // D1-4, S1-8, U1-12 in `EventKind::ALL` order.
-    const BASE: [usize; 3] = [0, 4, 12];
-    BASE[e.kind() as usize] + usize::from(e.lobe()) - 1
-}
-
 /// Per `VertexType` (C R T L O), where its run of `(type, event)` indices starts.
 const TYPE_BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
 
-/// `(type, event)` to its index: C 0, L 1, O 2, R 3.., T 27.. (a table lookup rather
-/// than nested matches, whose branches mispredict on a realistic mix of vertices).
+/// [`type_event_index`] tabulated at entry `type << 6 | kind << 4 | lobe`, `kind` being
+/// the event kind's index (D S U) or 3 for no event (lobe 0). Within the R and T runs the
+/// events go D1-4, S1-8, U1-12; C, L and O ignore an event (a `Vertex` carries one
+/// exactly when it is R or T; a caller of `classify_interned` may pass one anyway). Lobes
+/// past a kind's range cannot be built (`Event::new`), and read as no event.
+const TYPE_EVENT: [u8; 5 << 6] = {
+    const KIND_BASE: [usize; 3] = [0, 4, 12];
+    const MAX_LOBE: [usize; 3] = [4, 8, 12];
+    let mut t = [0u8; 5 << 6];
+    let mut ty = 0;
+    while ty < 5 {
+        let scattering = ty == VertexType::R as usize || ty == VertexType::T as usize;
+        let mut kind = 0;
+        while kind < 4 {
+            let mut lobe = 0;
+            while lobe < 16 {
+                let event = if scattering && kind < 3 && lobe >= 1 && lobe <= MAX_LOBE[kind] {
+                    KIND_BASE[kind] + lobe - 1
+                } else {
+                    0
+                };
+                t[ty << 6 | kind << 4 | lobe] = (TYPE_BASE[ty] + event) as u8;
+                lobe += 1;
+            }
+            kind += 1;
+        }
+        ty += 1;
+    }
+    t
+};
+
+/// `(type, event)` to its index: C 0, L 1, O 2, R 3.., T 27..: one load from a table of
+/// bytes (nested matches mispredict on a realistic mix of vertices, and arithmetic on
+/// the event took several dependent steps more).
 #[inline]
 fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
-    // The event only ever offsets into the R and T runs (a `Vertex` carries one exactly
-    // when it is R or T; a caller of `classify_interned` may pass one anyway).
-    TYPE_BASE[ty as usize] + event.filter(|_| ty.is_scattering()).map_or(0, event_index)
+    let (kind, lobe) = match event {
+        Some(e) => (e.kind() as usize, usize::from(e.lobe()) & 15),
+        None => (3, 0),
+    };
+    TYPE_EVENT[(ty as usize) << 6 | kind << 4 | lobe] as usize
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
@@ -539,6 +567,23 @@ mod tests {
         for i in 0..TYPE_EVENTS {
             let (ty, ev) = type_event(i);
             assert_eq!(type_event_index(ty, ev), i);
+        }
+    }
+
+    #[test]
+    fn an_event_on_a_camera_or_emitter_is_ignored() {
+        for kind in [EventKind::D, EventKind::S, EventKind::U] {
+            for lobe in 1..=kind.max_lobe() {
+                let e = Event::new(kind, lobe);
+                assert!(e.is_some());
+                for ty in [VertexType::C, VertexType::L, VertexType::O] {
+                    assert_eq!(
+                        type_event_index(ty, e),
+                        type_event_index(ty, None),
+                        "{ty:?} {e:?}"
+                    );
+                }
+            }
         }
     }
 
