@@ -12,26 +12,38 @@
 //!
 //! The coarsest such partition comes from refining: start from the blocks of equal keys,
 //! split each block by the set of blocks its positions' predecessors lie in, repeat until
-//! no block splits.
+//! no block splits. Positions always active together are first active after the same
+//! number of vertices, so the start's partition also splits by that depth: the result is
+//! the same, and a chain (`C.{250}L`), which would otherwise split one position a round,
+//! is stable at once.
+
+use std::hash::Hash;
 
 use crate::fxhash::FxMap;
 
 /// The block of each position in the coarsest partition where positions of a block have
 /// equal `key`s and predecessors (`preds`) in the same blocks; blocks numbered in the
-/// order of their first position. `None` when refining would visit more than `budget`
-/// predecessor edges (then no merging: one block per position is always sound).
+/// order of their first position. Position 0 is the start. `None` when refining would
+/// visit more than `budget` predecessor edges (then no merging: one block per position
+/// is always sound).
 ///
 /// The caller keys each position by what must not merge (its atom, the AOV it ends);
 /// a position whose key no other has stays alone.
-pub(crate) fn co_active_blocks(key: &[u64], preds: &[Vec<u32>], budget: usize) -> Option<Vec<u32>> {
+pub(crate) fn co_active_blocks<K: Hash + Eq + Copy>(
+    key: &[K],
+    preds: &[Vec<u32>],
+    budget: usize,
+) -> Option<Vec<u32>> {
     let n = key.len();
     let edges: usize = preds.iter().map(Vec::len).sum();
-    let mut ids: FxMap<u64, u32> = FxMap::default();
+    let depth = depths(preds);
+    let mut ids: FxMap<(K, u32), u32> = FxMap::default();
     let mut block: Vec<u32> = key
         .iter()
-        .map(|&k| {
+        .zip(&depth)
+        .map(|(&k, &d)| {
             let next = ids.len() as u32;
-            *ids.entry(k).or_insert(next)
+            *ids.entry((k, d)).or_insert(next)
         })
         .collect();
     let mut count = ids.len();
@@ -63,6 +75,33 @@ pub(crate) fn co_active_blocks(key: &[u64], preds: &[Vec<u32>], budget: usize) -
             return Some(block);
         }
     }
+}
+
+/// Per position, the fewest steps from position 0 to it (`u32::MAX` if none), by a
+/// breadth-first search over the edges `preds` lists.
+fn depths(preds: &[Vec<u32>]) -> Vec<u32> {
+    let n = preds.len();
+    let mut succs = vec![Vec::new(); n];
+    for (q, ps) in preds.iter().enumerate() {
+        for &p in ps {
+            succs[p as usize].push(q as u32);
+        }
+    }
+    let mut depth = vec![u32::MAX; n];
+    let mut queue = std::collections::VecDeque::new();
+    if n > 0 {
+        depth[0] = 0;
+        queue.push_back(0u32);
+    }
+    while let Some(p) = queue.pop_front() {
+        for &q in &succs[p as usize] {
+            if depth[q as usize] == u32::MAX {
+                depth[q as usize] = depth[p as usize] + 1;
+                queue.push_back(q);
+            }
+        }
+    }
+    depth
 }
 
 #[cfg(test)]
@@ -116,17 +155,37 @@ mod tests {
     }
 
     #[test]
-    fn a_chain_splits_one_position_a_round_until_stable() {
-        // 0 -> 1 -> 2 -> ... -> 9, all the same atom: refinement tells them apart one
-        // round at a time, from the start; the result keeps every position alone.
+    fn a_chain_is_told_apart_by_depth_at_once() {
+        // 0 -> 1 -> 2 -> ... -> 9, all the same atom: every position is alone, and the
+        // depths say so before any round (without them, one position split a round).
         let n = 10;
         let key: Vec<u64> = (0..n).map(|p| u64::from(p > 0)).collect();
         let p = preds(n, &(1..n as u32).map(|q| (q - 1, q)).collect::<Vec<_>>());
         let alone: Vec<u32> = (0..n as u32).collect();
         assert_eq!(co_active_blocks(&key, &p, usize::MAX), Some(alone));
-        // Nine edges and ten positions a round; eight rounds split off one position
-        // each (the first block of equal keys is two), the ninth confirms: 171.
-        assert!(co_active_blocks(&key, &p, 171).is_some());
-        assert_eq!(co_active_blocks(&key, &p, 170), None);
+        // Nine edges and ten positions a round, one round to confirm: 19.
+        assert!(co_active_blocks(&key, &p, 19).is_some());
+        assert_eq!(co_active_blocks(&key, &p, 18), None);
+    }
+
+    #[test]
+    fn refinement_splits_what_depth_does_not() {
+        // 1(a) and 2(b) after the start, then 3(c) after 1 and 4(c) after 2, then 5(d)
+        // after 3 and 6(d) after 4: 3 and 4 share key and depth but not predecessors,
+        // and 5 and 6 split only once 3 and 4 have (a second round, then one to confirm).
+        let key = [9, 1, 2, 3, 3, 4, 4];
+        let p = preds(7, &[(0, 1), (0, 2), (1, 3), (2, 4), (3, 5), (4, 6)]);
+        let alone: Vec<u32> = (0..7).collect();
+        assert_eq!(co_active_blocks(&key, &p, usize::MAX), Some(alone));
+        // Seven positions and six edges a round, three rounds: 39.
+        assert!(co_active_blocks(&key, &p, 39).is_some());
+        assert_eq!(co_active_blocks(&key, &p, 38), None);
+    }
+
+    #[test]
+    fn depth_is_the_fewest_steps_from_the_start() {
+        // 0 -> 1 -> 2 -> 3 and 0 -> 3, 3 -> 3, and 4 unreachable.
+        let p = preds(5, &[(0, 1), (1, 2), (2, 3), (0, 3), (3, 3)]);
+        assert_eq!(depths(&p), [0, 1, 2, 1, u32::MAX]);
     }
 }

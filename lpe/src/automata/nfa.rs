@@ -259,11 +259,11 @@ impl<'a, A: Eq + Hash> Builder<'a, A> {
     }
 }
 
-/// Predecessor edges merging co-active positions may visit (rounds times edges) before
-/// it gives up and keeps every position: a few milliseconds of a compile. Sets that reach
-/// it are long chains (`C.{2000}L`), where refining splits one position a round and
-/// nothing merges anyway.
-const MERGE_BUDGET: usize = 1 << 22;
+/// Positions and predecessor edges merging co-active positions may visit (rounds times
+/// both) before it gives up and keeps every position. Refining from blocks of equal
+/// depth takes a few rounds on the sets of `lpe-check bench`; this bounds the rare set
+/// that needs many (tens of milliseconds at most).
+const MERGE_BUDGET: usize = 1 << 20;
 
 /// Bytes of follow tables for a state of `words` words.
 pub(crate) fn table_bytes(words: usize) -> usize {
@@ -349,9 +349,9 @@ impl Nfa {
         // One position per block of positions always active together: same atom, same
         // AOV ended (a position names one), predecessors in the same blocks.
         let block = {
-            let key: Vec<u64> = kept
+            let key: Vec<(u32, u32)> = kept
                 .iter()
-                .map(|&old| u64::from(atom_of[old]) << 32 | u64::from(aov_of[old]))
+                .map(|&old| (atom_of[old], aov_of[old]))
                 .collect();
             let mut preds = vec![Vec::new(); kept.len()];
             for (p, &old) in kept.iter().enumerate() {
