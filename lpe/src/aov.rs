@@ -522,8 +522,9 @@ impl AovSet {
     /// lazy DFA's cache hit inline, the rest out of line and cold. Cold, so that a DFA
     /// set's loop keeps its registers: with the call on an ordinary branch, the caller
     /// spilled the table's pointer and the path's bounds around it, and a renderer-shaped
-    /// loop stepped at 1.3-1.6x the bare chain of table loads (1.1x cold); the lazy hit
-    /// inline, so that a lazy set does not pay the cold call's spills at every step.
+    /// loop stepped at 1.3-1.75x the bare chain of table loads (`lpe-check bench`), 1.1x
+    /// with the whole off-table step cold. The lazy hit stays inline (1.2-1.3x), since
+    /// with it in the cold call a lazy set paid that call's spills at every step.
     #[inline(always)]
     fn step_off_table(&self, s: State, c: Class) -> State {
         if let Some(n) = self.lazy.as_ref().and_then(|l| l.step_local_hit(s, c)) {
