@@ -23,9 +23,9 @@ use crate::fxhash::FxMap;
 
 /// The block of each position in the coarsest partition where positions of a block have
 /// equal `key`s and predecessors (`preds`) in the same blocks; blocks numbered in the
-/// order of their first position. Position 0 is the start. `None` when refining would
-/// visit more than `budget` predecessor edges (then no merging: one block per position
-/// is always sound).
+/// order of their first position. Position 0 is the start (alone at depth 0). `None`
+/// when refining would visit more than `budget` positions and predecessor edges, summed
+/// over its rounds (then no merging: one block per position is always sound).
 ///
 /// The caller keys each position by what must not merge (its atom, the AOV it ends);
 /// a position whose key no other has stays alone.
