@@ -50,8 +50,9 @@ pub(crate) fn co_active_blocks<K: Hash + Eq + Copy>(
     let mut spent = 0usize;
     let mut signature = Vec::new();
     loop {
-        // A round reads every edge once; the rounds are at most one per block.
-        spent = spent.saturating_add(n + edges);
+        // A round reads every position and edge once (and counts one more, so that
+        // rounds end even on nothing); the rounds are at most one per block.
+        spent = spent.saturating_add(n + edges + 1);
         if spent > budget {
             return None;
         }
@@ -108,6 +109,10 @@ fn depths(preds: &[Vec<u32>]) -> Vec<u32> {
 mod tests {
     use super::*;
 
+    /// Enough for every case below, and finite, so that a refinement that never saw
+    /// itself stable would fail rather than loop.
+    const BUDGET: usize = 1 << 20;
+
     /// Preds lists from an edge list over `n` positions.
     fn preds(n: usize, edges: &[(u32, u32)]) -> Vec<Vec<u32>> {
         let mut p = vec![Vec::new(); n];
@@ -124,7 +129,7 @@ mod tests {
         let key = [9, 1, 2, 1, 2, 1, 3];
         let p = preds(7, &[(0, 1), (1, 2), (0, 3), (3, 4), (0, 5), (5, 6)]);
         assert_eq!(
-            co_active_blocks(&key, &p, usize::MAX),
+            co_active_blocks(&key, &p, BUDGET),
             Some(vec![0, 1, 2, 1, 2, 1, 3])
         );
     }
@@ -136,7 +141,7 @@ mod tests {
         let key = [9, 1, 2, 3, 3];
         let p = preds(5, &[(0, 1), (0, 2), (1, 3), (2, 4)]);
         assert_eq!(
-            co_active_blocks(&key, &p, usize::MAX),
+            co_active_blocks(&key, &p, BUDGET),
             Some(vec![0, 1, 2, 3, 4])
         );
     }
@@ -149,7 +154,7 @@ mod tests {
         let key = [9, 1, 2, 1, 2];
         let p = preds(5, &[(0, 1), (1, 2), (2, 2), (0, 3), (3, 4), (4, 4)]);
         assert_eq!(
-            co_active_blocks(&key, &p, usize::MAX),
+            co_active_blocks(&key, &p, BUDGET),
             Some(vec![0, 1, 2, 1, 2])
         );
     }
@@ -161,11 +166,18 @@ mod tests {
         let n = 10;
         let key: Vec<u64> = (0..n).map(|p| u64::from(p > 0)).collect();
         let p = preds(n, &(1..n as u32).map(|q| (q - 1, q)).collect::<Vec<_>>());
+        // Ten positions, nine edges and one a round, one round to confirm: 20.
+        assert!(co_active_blocks(&key, &p, 20).is_some());
+        assert_eq!(co_active_blocks(&key, &p, 19), None);
         let alone: Vec<u32> = (0..n as u32).collect();
-        assert_eq!(co_active_blocks(&key, &p, usize::MAX), Some(alone));
-        // Nine edges and ten positions a round, one round to confirm: 19.
-        assert!(co_active_blocks(&key, &p, 19).is_some());
-        assert_eq!(co_active_blocks(&key, &p, 18), None);
+        assert_eq!(co_active_blocks(&key, &p, BUDGET), Some(alone));
+    }
+
+    #[test]
+    fn no_positions_make_no_blocks() {
+        assert_eq!(co_active_blocks::<u64>(&[], &[], BUDGET), Some(vec![]));
+        assert_eq!(co_active_blocks::<u64>(&[], &[], 0), None);
+        assert_eq!(depths(&[]), Vec::<u32>::new());
     }
 
     #[test]
@@ -175,11 +187,11 @@ mod tests {
         // and 5 and 6 split only once 3 and 4 have (a second round, then one to confirm).
         let key = [9, 1, 2, 3, 3, 4, 4];
         let p = preds(7, &[(0, 1), (0, 2), (1, 3), (2, 4), (3, 5), (4, 6)]);
+        // Seven positions, six edges and one a round, three rounds: 42.
+        assert!(co_active_blocks(&key, &p, 42).is_some());
+        assert_eq!(co_active_blocks(&key, &p, 41), None);
         let alone: Vec<u32> = (0..7).collect();
-        assert_eq!(co_active_blocks(&key, &p, usize::MAX), Some(alone));
-        // Seven positions and six edges a round, three rounds: 39.
-        assert!(co_active_blocks(&key, &p, 39).is_some());
-        assert_eq!(co_active_blocks(&key, &p, 38), None);
+        assert_eq!(co_active_blocks(&key, &p, BUDGET), Some(alone));
     }
 
     #[test]
