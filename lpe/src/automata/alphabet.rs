@@ -117,7 +117,7 @@ fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
-    // The inverse of `event_index`: D1-4, S1-8, U1-12.
+    // The inverse of `type_event_index`: D1-4, S1-8, U1-12.
     let event = |j: usize| match j {
         0..4 => Event::new(EventKind::D, j as u8 + 1),
         4..12 => Event::new(EventKind::S, j as u8 - 3),

@@ -48,6 +48,14 @@ thread_local! {
     static LOCAL: RefCell<Cache> = const { RefCell::new(Cache::empty()) };
 }
 
+/// `hit` on this thread's cache, if it is free: the hit path alone inside the
+/// thread-local access, so that the access inlines into the step (with the miss path in
+/// it, it stayed a call, and the state went through memory into it).
+#[inline(always)]
+fn local_hit<T>(hit: impl FnOnce(&Cache) -> Option<T>) -> Option<T> {
+    LOCAL.with(|cache| hit(&*cache.try_borrow().ok()?))
+}
+
 /// NFA states reached so far, by id. Id 0 is the empty subset (the dead state), id 1 the
 /// start (position 0 alone).
 #[derive(Clone, Debug)]
@@ -209,25 +217,17 @@ impl Lazy {
     /// set stepped last: a thread alternating between two lazy sets refills it.
     #[inline]
     pub(crate) fn step_local_hit(&self, s: State, c: Class) -> Option<State> {
-        // The hit path alone inside the thread-local access, so that the access inlines
-        // into the step; with the miss path in it, it stayed a call, and the state went
-        // through memory into it.
-        LOCAL.with(|cache| {
-            let cache = cache.try_borrow().ok()?;
-            self.cached(&cache, s, c)
-        })
+        local_hit(|cache| self.cached(cache, s, c))
     }
 
     /// [`Lazy::step_local_hit`], else [`Lazy::step_local_miss`], for each pair of a batch
     /// (pairs past the shorter slice left alone), with this thread's cache borrowed once
     /// for the whole batch rather than once a step.
     pub(crate) fn step_batch_local(&self, states: &mut [State], classes: &[Class]) {
-        let pairs = states.iter_mut().zip(classes);
-        LOCAL.with(|cache| match cache.try_borrow_mut() {
-            Ok(mut cache) if self.cache_budget > 0 => {
-                pairs.for_each(|(s, &c)| *s = self.step(&mut cache, *s, c));
+        self.with_local(|mut cache| {
+            for (s, &c) in states.iter_mut().zip(classes) {
+                *s = self.step_in(cache.as_deref_mut(), *s, c);
             }
-            _ => pairs.for_each(|(s, &c)| *s = self.step_uncached(*s, c)),
         })
     }
 
@@ -235,25 +235,44 @@ impl Lazy {
     /// filling it.
     #[inline(never)]
     pub(crate) fn step_local_miss(&self, s: State, c: Class) -> State {
+        self.with_local(|cache| self.step_in(cache, s, c))
+    }
+
+    /// One step through `cache`, or on the NFA alone without one.
+    #[inline]
+    fn step_in(&self, cache: Option<&mut Cache>, s: State, c: Class) -> State {
+        match cache {
+            Some(cache) => self.step(cache, s, c),
+            None => self.step_uncached(s, c),
+        }
+    }
+
+    /// `f` with this thread's cache, or with none when caching is off (or the cache is
+    /// already borrowed, which a step never leaves it).
+    fn with_local<T>(&self, f: impl FnOnce(Option<&mut Cache>) -> T) -> T {
         if self.cache_budget == 0 {
-            return self.step_uncached(s, c);
+            return f(None);
         }
         LOCAL.with(|cache| match cache.try_borrow_mut() {
-            Ok(mut cache) => self.step(&mut cache, s, c),
-            Err(_) => self.step_uncached(s, c),
+            Ok(mut cache) => f(Some(&mut cache)),
+            Err(_) => f(None),
         })
+    }
+
+    /// The row of `s` in `cache`, if it has one.
+    #[inline(always)]
+    fn cached_row(&self, cache: &Cache, s: State) -> Option<u32> {
+        if cache.owner != self.owner {
+            return None;
+        }
+        let row = *cache.row_of.get(s.0 as usize)?;
+        (row != NONE).then_some(row)
     }
 
     /// The transition from `s` on `c` if `cache` holds it: two loads.
     #[inline(always)]
     fn cached(&self, cache: &Cache, s: State, c: Class) -> Option<State> {
-        if cache.owner != self.owner {
-            return None;
-        }
-        let row = *cache.row_of.get(s.0 as usize)?;
-        if row == NONE {
-            return None;
-        }
+        let row = self.cached_row(cache, s)?;
         let n = *cache.trans.get(row as usize + c.0 as usize)?;
         (n != NONE).then_some(State(n))
     }
@@ -261,12 +280,7 @@ impl Lazy {
     /// [`Lazy::matches`] through this thread's cache.
     #[inline]
     pub(crate) fn matches_local(&self, s: State) -> AovMask {
-        // As in `step_local_hit`: the hit path alone inside the thread-local access.
-        let hit = LOCAL.with(|cache| {
-            let cache = cache.try_borrow().ok()?;
-            self.cached_mask(&cache, s)
-        });
-        match hit {
+        match local_hit(|cache| self.cached_mask(cache, s)) {
             Some(m) => m,
             None => self.matches_local_miss(s),
         }
@@ -274,25 +288,16 @@ impl Lazy {
 
     #[inline(never)]
     fn matches_local_miss(&self, s: State) -> AovMask {
-        if self.cache_budget == 0 {
-            return self.matches_uncached(s);
-        }
-        LOCAL.with(|cache| match cache.try_borrow_mut() {
-            Ok(mut cache) => self.matches(&mut cache, s),
-            Err(_) => self.matches_uncached(s),
+        self.with_local(|cache| match cache {
+            Some(cache) => self.matches(cache, s),
+            None => self.matches_uncached(s),
         })
     }
 
     /// The AOVs matching in `s` if `cache` has a row for it.
     #[inline(always)]
     fn cached_mask(&self, cache: &Cache, s: State) -> Option<AovMask> {
-        if cache.owner != self.owner {
-            return None;
-        }
-        let row = *cache.row_of.get(s.0 as usize)?;
-        if row == NONE {
-            return None;
-        }
+        let row = self.cached_row(cache, s)?;
         cache.masks.get((row >> self.shift) as usize).copied()
     }
 

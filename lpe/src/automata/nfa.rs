@@ -563,24 +563,16 @@ impl Nfa {
         }
     }
 
-    /// [`Nfa::matches`] on a state held by value, inlined for the reason
-    /// [`Nfa::step_wide`] is.
+    /// [`Nfa::matches`] on a state held by value (words past [`Nfa::words`] ignored),
+    /// inlined for the reason [`Nfa::step_wide`] is.
     #[inline(always)]
     pub(crate) fn matches_wide(&self, cur: [u64; NFA_STATE_WORDS]) -> AovMask {
-        let mut m = if cur[0] & 1 == 1 {
-            self.start_matches
-        } else {
-            AovMask::EMPTY
-        };
-        let hits: [u64; NFA_STATE_WORDS] =
-            std::array::from_fn(|k| cur[k] & self.finals.get(k).copied().unwrap_or(0));
-        for p in bits::ones(hits) {
-            m.insert(self.aov_of.get(p).map_or(usize::MAX, |&a| a as usize));
-        }
-        m
+        self.matches(&cur)
     }
 
-    /// The AOVs that match when the path ends in state `cur`.
+    /// The AOVs that match when the path ends in state `cur` (words past
+    /// [`Nfa::words`] ignored: the finals have no more).
+    #[inline(always)]
     pub(crate) fn matches(&self, cur: &[u64]) -> AovMask {
         let mut m = if cur[0] & 1 == 1 {
             self.start_matches
