@@ -260,10 +260,13 @@ impl LabelTable {
 #[derive(Clone, Debug)]
 pub(crate) struct Alphabet {
     labels: LabelTable,
-    /// Label symbols per `(type, event)`: none, the interned labels, OTHER.
-    label_syms: usize,
-    /// Raw symbol -> class. Index `type_event * label_syms + label`, where label 0 is
-    /// none, `1..=k` the interned labels and `k + 1` OTHER.
+    /// `log2` of the stride of a `(type, event)`'s run in `raw_to_class`: the label
+    /// symbols (none, the interned labels, OTHER) rounded up to a power of two, so that
+    /// classifying shifts instead of multiplying.
+    label_shift: u32,
+    /// Raw symbol -> class. Index `type_event << label_shift | label`, where label 0 is
+    /// none, `1..=k` the interned labels and `k + 1` OTHER; the slots past OTHER up to
+    /// the stride hold OTHER's class (no label id of this set reaches them).
     raw_to_class: Vec<u32>,
     /// Per class, which of the distinct atoms accept it (bitset over atoms).
     class_atoms: Vec<Vec<u64>>,
@@ -280,10 +283,12 @@ impl Alphabet {
     pub(crate) fn new(atoms: &[&Atom], labels: Vec<String>) -> Alphabet {
         let labels = LabelTable::new(labels);
         let label_syms = labels.len() + 2;
+        let label_shift = label_syms.next_power_of_two().trailing_zeros();
+        let stride = 1 << label_shift;
         let words = atoms.len().div_ceil(64).max(1);
         let mut by_signature: FxMap<Vec<u64>, u32> = FxMap::default();
         let mut class_atoms = Vec::new();
-        let mut raw_to_class = Vec::with_capacity(TYPE_EVENTS * label_syms);
+        let mut raw_to_class = Vec::with_capacity(TYPE_EVENTS * stride);
         // Atoms that never look at labels answer alike for every label of one
         // `(type, event)`: evaluate them once per `(type, event)`, on the no-label symbol
         // that starts its run of raw symbols.
@@ -292,9 +297,9 @@ impl Alphabet {
         // One signature buffer for every raw symbol: only a new class allocates (a
         // compile has a few hundred raw symbols and a handful of classes).
         let mut sig = vec![0u64; words];
-        for raw in 0..TYPE_EVENTS * label_syms {
+        for raw in (0..TYPE_EVENTS * stride).filter(|raw| raw % stride < label_syms) {
             let sym = Self::sym_of(&labels, raw);
-            let first = raw % label_syms == 0;
+            let first = raw % stride == 0;
             if first {
                 sig.fill(0);
             } else {
@@ -321,9 +326,15 @@ impl Alphabet {
                 }
             };
             raw_to_class.push(class);
+            if raw % stride == label_syms - 1 {
+                raw_to_class.resize(raw_to_class.len() + stride - label_syms, class);
+            }
         }
         let mut representatives = vec![[None; 3]; class_atoms.len()];
         for (raw, &class) in raw_to_class.iter().enumerate() {
+            if raw % stride >= label_syms {
+                continue;
+            }
             let sym = Self::sym_of(&labels, raw);
             // The camera carries no label (path.rs): only `C` with no label is a vertex.
             if sym.ty == VertexType::C && sym.label != LabelSym::None {
@@ -341,7 +352,7 @@ impl Alphabet {
         }
         Alphabet {
             labels,
-            label_syms,
+            label_shift,
             raw_to_class,
             class_atoms,
             representatives,
@@ -350,9 +361,9 @@ impl Alphabet {
     }
 
     fn sym_of(labels: &LabelTable, raw: usize) -> Sym {
-        let label_syms = labels.len() + 2;
-        let (ty, event) = type_event(raw / label_syms);
-        let l = raw % label_syms;
+        let shift = (labels.len() + 2).next_power_of_two().trailing_zeros();
+        let (ty, event) = type_event(raw >> shift);
+        let l = raw & ((1 << shift) - 1);
         let label = match l {
             0 => LabelSym::None,
             l if l <= labels.len() => LabelSym::Known(l as u32 - 1),
@@ -390,7 +401,7 @@ impl Alphabet {
         event: Option<Event>,
         label: LabelId,
     ) -> Class {
-        let raw = type_event_index(ty, event) * self.label_syms + label.0 as usize;
+        let raw = (type_event_index(ty, event) << self.label_shift) + label.0 as usize;
         Class(self.raw_to_class.get(raw).copied().unwrap_or(0))
     }
 
@@ -596,6 +607,28 @@ mod tests {
     }
 
     #[test]
+    fn label_ids_past_this_sets_read_some_class_and_the_stride_padding_reads_other() {
+        // One label: ids 0 (none), 1 ('floor'), 2 (OTHER), and 3, the padding of the
+        // stride of 4, which no id of this set reaches: it must read as OTHER.
+        let (a, _) = alphabet("C<RD'floor'>L");
+        let d1 = Event::new(EventKind::D, 1);
+        let other = a.classify(&Vertex::scatter(VertexType::R, d1.unwrap(), Some("x")));
+        assert_eq!(a.label_id(Some("x")), LabelId(2));
+        assert_eq!(a.classify_interned(VertexType::R, d1, LabelId(3)), other);
+        assert_ne!(
+            a.classify_interned(VertexType::R, d1, LabelId(1)),
+            other,
+            "'floor' has its own class"
+        );
+        for ty in VertexType::ALL {
+            for id in 0..40 {
+                let c = a.classify_interned(ty, d1, LabelId(id));
+                assert!(c.index() < a.class_count(), "{ty:?} {id}");
+            }
+        }
+    }
+
+    #[test]
     fn occurs_in_names_the_places_a_class_can_take() {
         // Classes of `C<RD>L`: the camera, RD, lights, and the rest (O, other
         // scatterings). `O` ends a path; the rest's R/T vertices stand in the middle.
@@ -659,13 +692,14 @@ mod tests {
 
     #[test]
     fn memory_is_the_tables_worked_out_by_hand() {
-        // `C<RD'ab'>L`: one label, so 3 label symbols (none, 'ab', OTHER) per each of
-        // the 51 (type, event) pairs: 153 u32 classes = 612 bytes. Label slots: 2 of
+        // `C<RD'ab'>L`: one label, so 3 label symbols (none, 'ab', OTHER), a stride of
+        // 4, per each of the 51 (type, event) pairs: 204 u32 classes = 816 bytes. Label
+        // slots: 2 of
         // 24 bytes, plus the 2 bytes of "ab" = 50. Classes: C, <RD'ab'>, L, the rest:
         // 4, each one 8-byte word of atoms (32) and three u32 options of witnesses (96).
         let (a, _) = alphabet("C<RD'ab'>L");
         assert_eq!((a.class_count(), std::mem::size_of::<Slot>()), (4, 24));
         assert_eq!(a.slots_bytes(), 50);
-        assert_eq!(a.memory_bytes(), 612 + 50 + 32 + 96);
+        assert_eq!(a.memory_bytes(), 816 + 50 + 32 + 96);
     }
 }
