@@ -298,7 +298,7 @@ impl Alphabet {
         // compile has a few hundred raw symbols and a handful of classes).
         let mut sig = vec![0u64; words];
         for raw in (0..TYPE_EVENTS * stride).filter(|raw| raw % stride < label_syms) {
-            let sym = Self::sym_of(&labels, raw);
+            let sym = Self::sym_of(&labels, label_shift, raw);
             let first = raw % stride == 0;
             if first {
                 sig.fill(0);
@@ -335,7 +335,7 @@ impl Alphabet {
             if raw % stride >= label_syms {
                 continue;
             }
-            let sym = Self::sym_of(&labels, raw);
+            let sym = Self::sym_of(&labels, label_shift, raw);
             // The camera carries no label (path.rs): only `C` with no label is a vertex.
             if sym.ty == VertexType::C && sym.label != LabelSym::None {
                 continue;
@@ -360,10 +360,9 @@ impl Alphabet {
         }
     }
 
-    fn sym_of(labels: &LabelTable, raw: usize) -> Sym {
-        let shift = (labels.len() + 2).next_power_of_two().trailing_zeros();
-        let (ty, event) = type_event(raw >> shift);
-        let l = raw & ((1 << shift) - 1);
+    fn sym_of(labels: &LabelTable, label_shift: u32, raw: usize) -> Sym {
+        let (ty, event) = type_event(raw >> label_shift);
+        let l = raw & ((1 << label_shift) - 1);
         let label = match l {
             0 => LabelSym::None,
             l if l <= labels.len() => LabelSym::Known(l as u32 - 1),
@@ -423,7 +422,7 @@ impl Alphabet {
     /// A vertex of class `c` that can stand in place `g` of a path, if there is one.
     pub(crate) fn representative(&self, c: usize, g: Group) -> Option<Vertex> {
         let raw = self.representatives[c][g.index()]? as usize;
-        let sym = Self::sym_of(&self.labels, raw);
+        let sym = Self::sym_of(&self.labels, self.label_shift, raw);
         let label = match sym.label {
             LabelSym::None => None,
             LabelSym::Known(i) => Some(&*self.labels.names[i as usize]),
