@@ -286,8 +286,10 @@ impl Alphabet {
         let label_shift = label_syms.next_power_of_two().trailing_zeros();
         let stride = 1 << label_shift;
         let words = atoms.len().div_ceil(64).max(1);
+        // Signature -> class; the signatures become `class_atoms` once all are found, so
+        // each is copied once (every heap block costs a stack trace under the fuzz
+        // targets' AddressSanitizer).
         let mut by_signature: FxMap<Vec<u64>, u32> = FxMap::default();
-        let mut class_atoms = Vec::new();
         let mut raw_to_class = Vec::with_capacity(TYPE_EVENTS * stride);
         // Atoms that never look at labels answer alike for every label of one
         // `(type, event)`: evaluate them once per `(type, event)`, on the no-label symbol
@@ -319,9 +321,8 @@ impl Alphabet {
             let class = match by_signature.get(sig.as_slice()) {
                 Some(&class) => class,
                 None => {
-                    let class = class_atoms.len() as u32;
+                    let class = by_signature.len() as u32;
                     by_signature.insert(sig.clone(), class);
-                    class_atoms.push(sig.clone());
                     class
                 }
             };
@@ -329,6 +330,10 @@ impl Alphabet {
             if raw % stride == label_syms - 1 {
                 raw_to_class.resize(raw_to_class.len() + stride - label_syms, class);
             }
+        }
+        let mut class_atoms = vec![Vec::new(); by_signature.len()];
+        for (sig, class) in by_signature {
+            class_atoms[class as usize] = sig;
         }
         let mut representatives = vec![[None; 3]; class_atoms.len()];
         for (raw, &class) in raw_to_class.iter().enumerate() {
