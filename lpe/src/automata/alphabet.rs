@@ -73,8 +73,11 @@ impl Group {
 /// Per `VertexType` (C R T L O), where its run of `(type, event)` indices starts.
 const TYPE_BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
 
-/// [`type_event_index`] tabulated at entry `type << 6 | kind << 4 | lobe`, `kind` being
-/// the event kind's index (D S U) or 3 for no event (lobe 0). Within the R and T runs the
+/// `(type, event)` to its index (C 0, L 1, O 2, R 3.., T 27..) tabulated at entry
+/// [`type_event_code`] = `type << 6 | kind << 4 | lobe`, `kind` being the event kind's
+/// index (D S U) or 3 for no event (lobe 0): one load (nested matches mispredict on a
+/// realistic mix of vertices, and arithmetic on the event took several dependent steps
+/// more). Each alphabet keeps it premultiplied by its label stride. Within the R and T runs the
 /// events go D1-4, S1-8, U1-12; C, L and O ignore an event (a `Vertex` carries one
 /// exactly when it is R or T; a caller of `classify_interned` may pass one anyway). Lobes
 /// past a kind's range cannot be built (`Event::new`), and read as no event.
@@ -104,20 +107,18 @@ const TYPE_EVENT: [u8; 5 << 6] = {
     t
 };
 
-/// `(type, event)` to its index: C 0, L 1, O 2, R 3.., T 27..: one load from a table of
-/// bytes (nested matches mispredict on a realistic mix of vertices, and arithmetic on
-/// the event took several dependent steps more).
+/// The entry of `(type, event)` in [`TYPE_EVENT`]: `type << 6 | kind << 4 | lobe`.
 #[inline]
-fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
+fn type_event_code(ty: VertexType, event: Option<Event>) -> usize {
     let (kind, lobe) = match event {
         Some(e) => (e.kind() as usize, usize::from(e.lobe()) & 15),
         None => (3, 0),
     };
-    TYPE_EVENT[(ty as usize) << 6 | kind << 4 | lobe] as usize
+    (ty as usize) << 6 | kind << 4 | lobe
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
-    // The inverse of `type_event_index`: D1-4, S1-8, U1-12.
+    // The inverse of `TYPE_EVENT`: D1-4, S1-8, U1-12.
     let event = |j: usize| match j {
         0..4 => Event::new(EventKind::D, j as u8 + 1),
         4..12 => Event::new(EventKind::S, j as u8 - 3),
@@ -268,6 +269,10 @@ pub(crate) struct Alphabet {
     /// none, `1..=k` the interned labels and `k + 1` OTHER; the slots past OTHER up to
     /// the stride hold OTHER's class (no label id of this set reaches them).
     raw_to_class: Vec<u32>,
+    /// Per [`TYPE_EVENT`] entry, where its `(type, event)`'s run starts in
+    /// `raw_to_class`: classifying reads this instead of [`TYPE_EVENT`] and so needs no
+    /// shift.
+    run_start: Box<[u32; 5 << 6]>,
     /// Per class, which of the distinct atoms accept it (bitset over atoms).
     class_atoms: Vec<Vec<u64>>,
     /// Per `(class, group)`, a raw symbol of that class that can occur in that place, for
@@ -355,10 +360,12 @@ impl Alphabet {
             }
             other_label = format!("other{n}");
         }
+        let run_start = Box::new(TYPE_EVENT.map(|te| u32::from(te) << label_shift));
         Alphabet {
             labels,
             label_shift,
             raw_to_class,
+            run_start,
             class_atoms,
             representatives,
             other_label,
@@ -405,7 +412,7 @@ impl Alphabet {
         event: Option<Event>,
         label: LabelId,
     ) -> Class {
-        let raw = (type_event_index(ty, event) << self.label_shift) + label.0 as usize;
+        let raw = self.run_start[type_event_code(ty, event)] as usize + label.0 as usize;
         Class(self.raw_to_class.get(raw).copied().unwrap_or(0))
     }
 
@@ -446,6 +453,7 @@ impl Alphabet {
     /// Bytes held by the tables.
     pub(crate) fn memory_bytes(&self) -> usize {
         self.raw_to_class.len() * 4
+            + std::mem::size_of_val(&*self.run_start)
             + self.slots_bytes()
             + self.class_atoms.iter().map(|c| c.len() * 8).sum::<usize>()
             + self.representatives.len() * 24
@@ -577,6 +585,10 @@ mod tests {
         (Alphabet::new(&refs, e.labels()), atoms)
     }
 
+    fn type_event_index(ty: VertexType, event: Option<Event>) -> usize {
+        TYPE_EVENT[type_event_code(ty, event)] as usize
+    }
+
     #[test]
     fn type_event_index_round_trips() {
         for i in 0..TYPE_EVENTS {
@@ -697,13 +709,14 @@ mod tests {
     #[test]
     fn memory_is_the_tables_worked_out_by_hand() {
         // `C<RD'ab'>L`: one label, so 3 label symbols (none, 'ab', OTHER), a stride of
-        // 4, per each of the 51 (type, event) pairs: 204 u32 classes = 816 bytes. Label
+        // 4, per each of the 51 (type, event) pairs: 204 u32 classes = 816 bytes, and a
+        // run start per entry of the 320-entry (type, event) table, 1 280 bytes. Label
         // slots: 2 of
         // 24 bytes, plus the 2 bytes of "ab" = 50. Classes: C, <RD'ab'>, L, the rest:
         // 4, each one 8-byte word of atoms (32) and three u32 options of witnesses (96).
         let (a, _) = alphabet("C<RD'ab'>L");
         assert_eq!((a.class_count(), std::mem::size_of::<Slot>()), (4, 24));
         assert_eq!(a.slots_bytes(), 50);
-        assert_eq!(a.memory_bytes(), 816 + 50 + 32 + 96);
+        assert_eq!(a.memory_bytes(), 816 + 1280 + 50 + 32 + 96);
     }
 }
