@@ -77,8 +77,8 @@ const TYPE_BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
 /// [`type_event_code`] = `type << 6 | kind << 4 | lobe`, `kind` being the event kind's
 /// index (D S U) or 3 for no event (lobe 0): one load (nested matches mispredict on a
 /// realistic mix of vertices, and arithmetic on the event took several dependent steps
-/// more). Each alphabet keeps it premultiplied by its label stride. Within the R and T runs the
-/// events go D1-4, S1-8, U1-12; C, L and O ignore an event (a `Vertex` carries one
+/// more). Each alphabet keeps it premultiplied by its label stride. Within the R and T
+/// runs the events go D1-4, S1-8, U1-12; C, L and O ignore an event (a `Vertex` carries one
 /// exactly when it is R or T; a caller of `classify_interned` may pass one anyway). Lobes
 /// past a kind's range cannot be built (`Event::new`), and read as no event.
 const TYPE_EVENT: [u8; 5 << 6] = {
@@ -263,7 +263,7 @@ pub(crate) struct Alphabet {
     labels: LabelTable,
     /// `log2` of the stride of a `(type, event)`'s run in `raw_to_class`: the label
     /// symbols (none, the interned labels, OTHER) rounded up to a power of two, so that
-    /// classifying shifts instead of multiplying.
+    /// a run's start is a shift of its `(type, event)` index, not a product.
     label_shift: u32,
     /// Raw symbol -> class. Index `type_event << label_shift | label`, where label 0 is
     /// none, `1..=k` the interned labels and `k + 1` OTHER; the slots past OTHER up to
