@@ -304,7 +304,12 @@ impl Alphabet {
         // One signature buffer for every raw symbol: only a new class allocates (a
         // compile has a few hundred raw symbols and a handful of classes).
         let mut sig = vec![0u64; words];
-        for raw in (0..TYPE_EVENTS * stride).filter(|raw| raw % stride < label_syms) {
+        for raw in 0..TYPE_EVENTS * stride {
+            if raw % stride >= label_syms {
+                // Padding past OTHER: OTHER's class (no label id of this set reaches it).
+                raw_to_class.push(raw_to_class[raw - 1]);
+                continue;
+            }
             let sym = Self::sym_of(&labels, label_shift, raw);
             let first = raw % stride == 0;
             if first {
@@ -332,19 +337,14 @@ impl Alphabet {
                 }
             };
             raw_to_class.push(class);
-            if raw % stride == label_syms - 1 {
-                raw_to_class.resize(raw_to_class.len() + stride - label_syms, class);
-            }
         }
         let mut class_atoms = vec![Vec::new(); by_signature.len()];
         for (sig, class) in by_signature {
             class_atoms[class as usize] = sig;
         }
         let mut representatives = vec![[None; 3]; class_atoms.len()];
+        // Padding reads as OTHER, whose entry comes first: it names no new representative.
         for (raw, &class) in raw_to_class.iter().enumerate() {
-            if raw % stride >= label_syms {
-                continue;
-            }
             let sym = Self::sym_of(&labels, label_shift, raw);
             // The camera carries no label (path.rs): only `C` with no label is a vertex.
             if sym.ty == VertexType::C && sym.label != LabelSym::None {
