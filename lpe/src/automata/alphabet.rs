@@ -10,9 +10,11 @@
 //! unmentioned label behaves like every other one: mapping them all to one OTHER symbol is
 //! exact (OSL does the same with a per-state default transition).
 //!
-//! Each distinct atom of the compiled set is evaluated once on every raw symbol (with the
-//! predicate code in this module, written from docs/language.md and the table in
-//! [`crate::ast`]); raw symbols with the same answers from every atom form one [`Class`].
+//! Each distinct atom of the compiled set is turned into the set of raw symbols it
+//! accepts, per label symbol a bit mask over the 51 `(type, event)` pairs (set algebra
+//! written from docs/language.md and the table in [`crate::ast`]); raw symbols with the
+//! same answers from every atom form one [`Class`], found by splitting blocks of raw
+//! symbols atom by atom rather than by evaluating every atom on every raw symbol.
 //! `Alphabet::classify` is then arithmetic plus one label lookup plus one table load.
 
 use crate::fxhash::FxMap;
@@ -73,6 +75,10 @@ impl Group {
 /// Per `VertexType` (C R T L O), where its run of `(type, event)` indices starts.
 const TYPE_BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
 
+/// Per event kind (D S U), where its lobes start in an R or T run, and how many it has.
+const KIND_BASE: [usize; 3] = [0, 4, 12];
+const MAX_LOBE: [usize; 3] = [4, 8, 12];
+
 /// `(type, event)` to its index (C 0, L 1, O 2, R 3.., T 27..) tabulated at entry
 /// [`type_event_code`] = `type << 6 | kind << 4 | lobe`, `kind` being the event kind's
 /// index (D S U) or 3 for no event (lobe 0): one load (nested matches mispredict on a
@@ -82,8 +88,6 @@ const TYPE_BASE: [usize; 5] = [0, 3, 3 + EVENTS, 1, 2];
 /// exactly when it is R or T; a caller of `classify_interned` may pass one anyway). Lobes
 /// past a kind's range cannot be built (`Event::new`), and read as no event.
 const TYPE_EVENT: [u8; 5 << 6] = {
-    const KIND_BASE: [usize; 3] = [0, 4, 12];
-    const MAX_LOBE: [usize; 3] = [4, 8, 12];
     let mut t = [0u8; 5 << 6];
     let mut ty = 0;
     while ty < 5 {
@@ -289,59 +293,89 @@ impl Alphabet {
         let labels = LabelTable::new(labels);
         let label_syms = labels.len() + 2;
         let label_shift = label_syms.next_power_of_two().trailing_zeros();
-        let stride = 1 << label_shift;
+        let stride = 1usize << label_shift;
         let words = atoms.len().div_ceil(64).max(1);
-        // Signature -> class; the signatures become `class_atoms` once all are found, so
-        // each is copied once (every heap block costs a stack trace under the fuzz
-        // targets' AddressSanitizer).
-        let mut by_signature: FxMap<Vec<u64>, u32> = FxMap::default();
-        let mut raw_to_class = Vec::with_capacity(TYPE_EVENTS * stride);
-        // Atoms that never look at labels answer alike for every label of one
-        // `(type, event)`: evaluate them once per `(type, event)`, on the no-label symbol
-        // that starts its run of raw symbols.
-        let blind: Vec<bool> = atoms.iter().map(|a| !mentions_label(a)).collect();
-        let mut blind_sig = vec![0u64; words];
-        // One signature buffer for every raw symbol: only a new class allocates (a
-        // compile has a few hundred raw symbols and a handful of classes).
-        let mut sig = vec![0u64; words];
-        for raw in 0..TYPE_EVENTS * stride {
-            if raw % stride >= label_syms {
-                // Padding past OTHER: OTHER's class (no label id of this set reaches it).
-                raw_to_class.push(raw_to_class[raw - 1]);
-                continue;
-            }
-            let sym = Self::sym_of(&labels, label_shift, raw);
-            let first = raw % stride == 0;
-            if first {
-                sig.fill(0);
-            } else {
-                sig.copy_from_slice(&blind_sig);
-            }
+        // Atoms that never look at labels accept the same `(type, event)` pairs whatever
+        // the label: their masks are worked out once.
+        let blind: Vec<Option<TeMask>> = atoms
+            .iter()
+            .map(|a| (!mentions_label(a)).then(|| atom_mask(a, 0, &labels)))
+            .collect();
+        // Per label symbol, the 51 `(type, event)` pairs start as one block, and each atom
+        // splits every block into the pairs it accepts and the rest. A block is
+        // `(pairs, label symbol)`; its signature (the atoms that accept it) is at
+        // `sigs[block * words..]`, one flat buffer (every heap block costs a stack trace
+        // under the fuzz targets' AddressSanitizer).
+        let mut blocks: Vec<(TeMask, usize)> = Vec::new();
+        let mut sigs: Vec<u64> = Vec::new();
+        for l in 0..label_syms {
+            let first = blocks.len();
+            blocks.push((ALL_TYPE_EVENTS, l));
+            sigs.resize(sigs.len() + words, 0);
             for (a, atom) in atoms.iter().enumerate() {
-                if (first || !blind[a]) && atom_accepts(atom, &sym, &labels) {
-                    bits::set(&mut sig, a);
+                let accepted = blind[a].unwrap_or_else(|| atom_mask(atom, l, &labels));
+                for b in first..blocks.len() {
+                    let (pairs, _) = blocks[b];
+                    let (inside, outside) = (pairs & accepted, pairs & !accepted);
+                    if inside == 0 {
+                        continue;
+                    }
+                    if outside != 0 {
+                        blocks[b].0 = inside;
+                        blocks.push((outside, l));
+                        sigs.extend_from_within(b * words..(b + 1) * words);
+                    }
+                    bits::set(&mut sigs[b * words..(b + 1) * words], a);
                 }
             }
-            if first {
-                blind_sig.copy_from_slice(&sig);
-                for (a, _) in blind.iter().enumerate().filter(|(_, b)| !**b) {
-                    bits::clear(&mut blind_sig, a);
+        }
+        // Blocks with one signature (across label symbols) are one class. Classes are
+        // numbered as raw symbols first show them, in raw-symbol order.
+        let mut by_signature: FxMap<&[u64], u32> = FxMap::default();
+        // Per signature, a block that has it.
+        let mut sig_block = Vec::new();
+        let block_sig: Vec<u32> = (0..blocks.len())
+            .map(|b| {
+                let next = sig_block.len() as u32;
+                let sig = *by_signature
+                    .entry(&sigs[b * words..(b + 1) * words])
+                    .or_insert(next);
+                if sig == next {
+                    sig_block.push(b);
                 }
-            }
-            let class = match by_signature.get(sig.as_slice()) {
-                Some(&class) => class,
-                None => {
-                    let class = by_signature.len() as u32;
-                    by_signature.insert(sig.clone(), class);
-                    class
-                }
+                sig
+            })
+            .collect();
+        let mut raw_to_class = vec![0u32; TYPE_EVENTS * stride];
+        for (&(pairs, l), &sig) in blocks.iter().zip(&block_sig) {
+            // OTHER's class also fills the padding past it, up to the stride (no label
+            // id of this set reaches it).
+            let labels = if l == label_syms - 1 {
+                l..stride
+            } else {
+                l..l + 1
             };
-            raw_to_class.push(class);
+            let mut rest = pairs;
+            while rest != 0 {
+                let te = rest.trailing_zeros() as usize;
+                rest &= rest - 1;
+                raw_to_class[te << label_shift..][labels.clone()].fill(sig);
+            }
         }
-        let mut class_atoms = vec![Vec::new(); by_signature.len()];
-        for (sig, class) in by_signature {
-            class_atoms[class as usize] = sig;
+        let mut class_of_sig = vec![u32::MAX; sig_block.len()];
+        let mut sig_of_class = Vec::with_capacity(sig_block.len());
+        for c in raw_to_class.iter_mut() {
+            let class = &mut class_of_sig[*c as usize];
+            if *class == u32::MAX {
+                *class = sig_of_class.len() as u32;
+                sig_of_class.push(*c);
+            }
+            *c = *class;
         }
+        let class_atoms: Vec<Vec<u64>> = sig_of_class
+            .iter()
+            .map(|&s| sigs[sig_block[s as usize] * words..][..words].to_vec())
+            .collect();
         let mut representatives = vec![[None; 3]; class_atoms.len()];
         // Padding reads as OTHER, whose entry comes first: it names no new representative.
         for (raw, &class) in raw_to_class.iter().enumerate() {
@@ -465,24 +499,48 @@ impl Alphabet {
     }
 }
 
-// --- The predicates: one atom against one raw symbol (docs/language.md §4.1). ---
+// --- What each atom accepts, as sets (docs/language.md §4.1). ---
+
+/// A set of `(type, event)` pairs, bit `i` for [`type_event`]`(i)`: C 0, L 1, O 2, then
+/// R's events from 3 and T's from 27, each run D1-4, S1-8, U1-12.
+type TeMask = u64;
+
+const ALL_TYPE_EVENTS: TeMask = (1 << TYPE_EVENTS) - 1;
+
+/// Event bits (D1-4, S1-8, U1-12 as bits 0-23) on both R and T.
+const fn on_r_and_t(events: u64) -> TeMask {
+    events << TYPE_BASE[VertexType::R as usize] | events << TYPE_BASE[VertexType::T as usize]
+}
 
 /// `.` at the top level: R or T with a D or S event.
-fn dot(s: &Sym) -> bool {
-    s.ty.is_scattering() && s.event.is_some_and(Event::is_transport)
-}
+const TRANSPORT: TeMask = on_r_and_t((1 << (MAX_LOBE[0] + MAX_LOBE[1])) - 1);
+/// R or T, any event.
+const SCATTERING: TeMask = on_r_and_t((1 << EVENTS) - 1);
+/// C, L and O: the pairs without an event.
+const NO_EVENT: TeMask = 0b111;
 
-fn event_is(p: EventPattern, s: &Sym) -> bool {
-    s.event
-        .is_some_and(|e| e.kind() == p.kind && p.lobe.is_none_or(|l| l == e.lobe()))
-}
-
-fn label_is(name: &str, s: &Sym, labels: &LabelTable) -> bool {
-    // A string compare, not a table lookup: this runs for every raw symbol and atom.
-    match s.label {
-        LabelSym::Known(i) => *labels.names[i as usize] == *name,
-        LabelSym::None | LabelSym::Other => false,
+fn type_mask(ty: VertexType) -> TeMask {
+    match ty {
+        VertexType::R | VertexType::T => ((1 << EVENTS) - 1) << TYPE_BASE[ty as usize],
+        VertexType::C | VertexType::L | VertexType::O => 1 << TYPE_BASE[ty as usize],
     }
+}
+
+/// The R and T pairs whose event matches `p` (its kind, and its lobe if given).
+fn event_mask(p: EventPattern) -> TeMask {
+    let kind = p.kind as usize;
+    let lobes: u64 = match p.lobe.map(usize::from) {
+        None => (1 << MAX_LOBE[kind]) - 1,
+        Some(l) if (1..=MAX_LOBE[kind]).contains(&l) => 1 << (l - 1),
+        Some(_) => 0,
+    };
+    on_r_and_t(lobes << KIND_BASE[kind])
+}
+
+/// Whether label symbol `l` (0 none, `1..=k` the interned labels, `k + 1` OTHER) is
+/// the label `name`.
+fn label_is(name: &str, l: usize, labels: &LabelTable) -> bool {
+    labels.get(name).is_some_and(|i| i as usize + 1 == l)
 }
 
 /// Whether an atom's answer can depend on the vertex label.
@@ -498,79 +556,299 @@ fn mentions_label(atom: &Atom) -> bool {
     }
 }
 
-fn atom_accepts(atom: &Atom, s: &Sym, labels: &LabelTable) -> bool {
+/// The `(type, event)` pairs `atom` accepts with label symbol `l`.
+fn atom_mask(atom: &Atom, l: usize, labels: &LabelTable) -> TeMask {
+    let any = |items: &[Item]| items.iter().fold(0, |m, i| m | item_mask(i, l, labels));
     match atom {
-        Atom::Item(item) => item_accepts(item, s, labels),
+        Atom::Item(item) => item_mask(item, l, labels),
         Atom::Class {
             negated: false,
             items,
-        } => items.iter().any(|i| item_accepts(i, s, labels)),
+        } => any(items),
         // Negation: what `.` matches, minus the items.
         Atom::Class {
             negated: true,
             items,
-        } => dot(s) && !items.iter().any(|i| item_accepts(i, s, labels)),
+        } => TRANSPORT & !any(items),
     }
 }
 
-fn item_accepts(item: &Item, s: &Sym, labels: &LabelTable) -> bool {
+fn item_mask(item: &Item, l: usize, labels: &LabelTable) -> TeMask {
     match item {
         // `C`, `L`, `O`: the type, any label. `R`, `T`: the type with a D or S event.
-        Item::Type(t) if t.is_scattering() => s.ty == *t && dot(s),
-        Item::Type(t) => s.ty == *t,
+        Item::Type(t) if t.is_scattering() => type_mask(*t) & TRANSPORT,
+        Item::Type(t) => type_mask(*t),
         // `D`, `S2`, `U3`: an R/T vertex with that event (user lobes only this way).
-        Item::Event(p) => s.ty.is_scattering() && event_is(*p, s),
-        Item::Any => dot(s),
-        Item::Label(name) => dot(s) && label_is(name, s, labels),
-        Item::Triple(t) => triple_accepts(t, s, labels),
+        Item::Event(p) => event_mask(*p),
+        Item::Any => TRANSPORT,
+        Item::Label(name) if label_is(name, l, labels) => TRANSPORT,
+        Item::Label(_) => 0,
+        Item::Triple(t) => triple_mask(t, l, labels),
     }
 }
 
-/// `<t e l>`: every position must accept; a negated class in a position is that
-/// position's `.` minus its items.
-fn triple_accepts(t: &Triple, s: &Sym, labels: &LabelTable) -> bool {
-    let ty_dot = s.ty.is_scattering();
-    let ty_ok = match &t.ty {
-        TypePos::Any => ty_dot,
-        TypePos::One(ty) => s.ty == *ty,
+/// `<t e l>`: the product of what each position accepts; a negated class in a position
+/// is that position's `.` minus its items.
+fn triple_mask(t: &Triple, l: usize, labels: &LabelTable) -> TeMask {
+    let label_ok = match &t.label {
+        // `.` in the label position: any label or none; `[^'a']` includes "no label".
+        LabelPos::Any => true,
+        LabelPos::One(name) => label_is(name, l, labels),
+        LabelPos::Class {
+            negated,
+            labels: names,
+        } => names.iter().any(|n| label_is(n, l, labels)) != *negated,
+    };
+    if !label_ok {
+        return 0;
+    }
+    let types = match &t.ty {
+        TypePos::Any => SCATTERING,
+        TypePos::One(ty) => type_mask(*ty),
         TypePos::Class { negated, types } => {
-            let listed = types.contains(&s.ty);
+            let listed = types.iter().fold(0, |m, ty| m | type_mask(*ty));
             if *negated {
-                ty_dot && !listed
+                SCATTERING & !listed
             } else {
                 listed
             }
         }
     };
     // `.` in the event position: D or S on R/T, "no event" on C/L/O.
-    let ev_dot = s.event.is_none_or(Event::is_transport);
-    let ev_ok = match &t.event {
-        EventPos::Any => ev_dot,
-        EventPos::One(p) => event_is(*p, s),
+    let event_dot = NO_EVENT | TRANSPORT;
+    let events = match &t.event {
+        EventPos::Any => event_dot,
+        EventPos::One(p) => event_mask(*p),
         EventPos::Class { negated, events } => {
-            let listed = events.iter().any(|p| event_is(*p, s));
+            let listed = events.iter().fold(0, |m, p| m | event_mask(*p));
             if *negated {
-                ev_dot && !listed
+                event_dot & !listed
             } else {
                 listed
             }
         }
     };
-    // `.` in the label position: any label or none; `[^'a']` includes "no label".
-    let label_ok = match &t.label {
-        LabelPos::Any => true,
-        LabelPos::One(name) => label_is(name, s, labels),
-        LabelPos::Class {
-            negated,
-            labels: names,
-        } => names.iter().any(|n| label_is(n, s, labels)) != *negated,
-    };
-    ty_ok && ev_ok && label_ok
+    types & events
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::ast::Expr;
+
+    /// The atoms' meaning written the other way round: one predicate per atom, asked
+    /// of one raw symbol at a time (the construction this module had before it built
+    /// sets), to check the sets against.
+    mod per_symbol {
+        use super::super::*;
+
+        /// `.` at the top level: R or T with a D or S event.
+        fn dot(s: &Sym) -> bool {
+            s.ty.is_scattering() && s.event.is_some_and(Event::is_transport)
+        }
+
+        fn event_is(p: EventPattern, s: &Sym) -> bool {
+            s.event
+                .is_some_and(|e| e.kind() == p.kind && p.lobe.is_none_or(|l| l == e.lobe()))
+        }
+
+        fn label_is(name: &str, s: &Sym, labels: &LabelTable) -> bool {
+            // A string compare, not a table lookup: this runs for every raw symbol and atom.
+            match s.label {
+                LabelSym::Known(i) => *labels.names[i as usize] == *name,
+                LabelSym::None | LabelSym::Other => false,
+            }
+        }
+
+        pub(super) fn atom_accepts(atom: &Atom, s: &Sym, labels: &LabelTable) -> bool {
+            match atom {
+                Atom::Item(item) => item_accepts(item, s, labels),
+                Atom::Class {
+                    negated: false,
+                    items,
+                } => items.iter().any(|i| item_accepts(i, s, labels)),
+                // Negation: what `.` matches, minus the items.
+                Atom::Class {
+                    negated: true,
+                    items,
+                } => dot(s) && !items.iter().any(|i| item_accepts(i, s, labels)),
+            }
+        }
+
+        fn item_accepts(item: &Item, s: &Sym, labels: &LabelTable) -> bool {
+            match item {
+                // `C`, `L`, `O`: the type, any label. `R`, `T`: the type with a D or S event.
+                Item::Type(t) if t.is_scattering() => s.ty == *t && dot(s),
+                Item::Type(t) => s.ty == *t,
+                // `D`, `S2`, `U3`: an R/T vertex with that event (user lobes only this way).
+                Item::Event(p) => s.ty.is_scattering() && event_is(*p, s),
+                Item::Any => dot(s),
+                Item::Label(name) => dot(s) && label_is(name, s, labels),
+                Item::Triple(t) => triple_accepts(t, s, labels),
+            }
+        }
+
+        /// `<t e l>`: every position must accept; a negated class in a position is that
+        /// position's `.` minus its items.
+        fn triple_accepts(t: &Triple, s: &Sym, labels: &LabelTable) -> bool {
+            let ty_dot = s.ty.is_scattering();
+            let ty_ok = match &t.ty {
+                TypePos::Any => ty_dot,
+                TypePos::One(ty) => s.ty == *ty,
+                TypePos::Class { negated, types } => {
+                    let listed = types.contains(&s.ty);
+                    if *negated {
+                        ty_dot && !listed
+                    } else {
+                        listed
+                    }
+                }
+            };
+            // `.` in the event position: D or S on R/T, "no event" on C/L/O.
+            let ev_dot = s.event.is_none_or(Event::is_transport);
+            let ev_ok = match &t.event {
+                EventPos::Any => ev_dot,
+                EventPos::One(p) => event_is(*p, s),
+                EventPos::Class { negated, events } => {
+                    let listed = events.iter().any(|p| event_is(*p, s));
+                    if *negated {
+                        ev_dot && !listed
+                    } else {
+                        listed
+                    }
+                }
+            };
+            // `.` in the label position: any label or none; `[^'a']` includes "no label".
+            let label_ok = match &t.label {
+                LabelPos::Any => true,
+                LabelPos::One(name) => label_is(name, s, labels),
+                LabelPos::Class {
+                    negated,
+                    labels: names,
+                } => names.iter().any(|n| label_is(n, s, labels)) != *negated,
+            };
+            ty_ok && ev_ok && label_ok
+        }
+    }
+
+    /// Atoms covering every branch of the set construction: types, events with and
+    /// without lobes, `.`, labels, triples with each kind of position, classes and
+    /// negated classes of each.
+    const ATOMS: &[&str] = &[
+        "C",
+        "R",
+        "T",
+        "L",
+        "O",
+        "D",
+        "S",
+        "U",
+        "D2",
+        "S8",
+        "U12",
+        ".",
+        "'a'",
+        "'b'",
+        "<RD>",
+        "<T.'a'>",
+        "<.S3>",
+        "<[RT]D>",
+        "<[^R].>",
+        "<[CL].>",
+        "<L.'b'>",
+        "<L.[^'a']>",
+        "<O.['a' 'b']>",
+        "<.[DS2]>",
+        "<.[^D]>",
+        "<R[^S].>",
+        "<[^T][^D1]['b']>",
+        "<.U3>",
+        "<C..>",
+        "<[^R][^S]'c'>",
+        "[DS]",
+        "[^D]",
+        "[^'a']",
+        "[^<RD>]",
+        "[<L.'a'>O]",
+        "[^R S2]",
+        "[C 'b']",
+        "[^.]",
+        "[^U 'c']",
+    ];
+
+    #[test]
+    fn classes_are_the_raw_symbols_every_atom_answers_alike() {
+        let atoms: Vec<Atom> = ATOMS
+            .iter()
+            .map(|src| {
+                let mut one = Vec::new();
+                parse(src)
+                    .unwrap_or_else(|e| panic!("{src}: {e}"))
+                    .expr
+                    .for_each_atom(&mut |a| one.push(a.clone()));
+                assert_eq!(one.len(), 1, "{src}");
+                one.remove(0)
+            })
+            .collect();
+        let mut rng = crate::rng::SplitMix64::new(7);
+        for case in 0..300 {
+            // All atoms, then random subsets in random order, with and without a label
+            // that no atom mentions.
+            let mut chosen: Vec<&Atom> = if case == 0 {
+                atoms.iter().collect()
+            } else {
+                let n = 1 + rng.below(8);
+                (0..n).map(|_| &atoms[rng.below(atoms.len())]).collect()
+            };
+            chosen.dedup();
+            let mut labels: Vec<String> = Vec::new();
+            for a in &chosen {
+                labels.extend(Expr::Atom((*a).clone()).labels());
+            }
+            if case % 3 == 0 {
+                labels.push("unmentioned".into());
+            }
+            let al = Alphabet::new(&chosen, labels);
+            let stride = 1usize << al.label_shift;
+            let label_syms = al.labels.len() + 2;
+            let mut class_of: Vec<(Vec<bool>, u32)> = Vec::new();
+            let mut next_new_class = 0;
+            for (raw, &class) in al.raw_to_class.iter().enumerate() {
+                if raw % stride >= label_syms {
+                    let other = raw - raw % stride + label_syms - 1;
+                    assert_eq!(class, al.raw_to_class[other], "case {case}: padding {raw}");
+                    continue;
+                }
+                let sym = Alphabet::sym_of(&al.labels, al.label_shift, raw);
+                let answers: Vec<bool> = chosen
+                    .iter()
+                    .map(|a| per_symbol::atom_accepts(a, &sym, &al.labels))
+                    .collect();
+                for (i, &yes) in answers.iter().enumerate() {
+                    assert_eq!(
+                        al.accepts(class as usize, i),
+                        yes,
+                        "case {case}: {sym:?} atom {:?}",
+                        chosen[i]
+                    );
+                }
+                match class_of.iter().find(|(a, _)| *a == answers) {
+                    Some(&(_, c)) => assert_eq!(c, class, "case {case}: {sym:?} split off"),
+                    None => {
+                        assert!(
+                            class_of.iter().all(|&(_, c)| c != class),
+                            "case {case}: {sym:?} merged with other answers"
+                        );
+                        // Classes are numbered as raw symbols first show them.
+                        assert_eq!(class, next_new_class, "case {case}: {sym:?}");
+                        next_new_class += 1;
+                        class_of.push((answers, class));
+                    }
+                }
+            }
+            assert_eq!(al.class_count(), class_of.len(), "case {case}");
+        }
+    }
     use crate::parse;
 
     fn alphabet(src: &str) -> (Alphabet, Vec<Atom>) {
