@@ -15,6 +15,7 @@
 //! - labels may hold any character but `'` and may be empty (`''`).
 
 use std::fmt;
+use std::num::NonZeroU8;
 
 /// The type of a vertex.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -121,10 +122,13 @@ impl EventKind {
 }
 
 /// A concrete scattering event: a lobe kind and its number (`D2`, `S8`, `U6`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+///
+/// Held as one byte, `kind << 4 | lobe` (kinds D S U as 0 1 2, lobes from 1), never 0:
+/// an `Option<Event>` is that byte with 0 for none, which is what classifying a vertex
+/// reads (one load, no test of which variant it is). Ordered by kind, then lobe.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Event {
-    kind: EventKind,
-    lobe: u8,
+    code: NonZeroU8,
 }
 
 impl Event {
@@ -132,35 +136,61 @@ impl Event {
     pub fn new(kind: EventKind, lobe: u8) -> Option<Event> {
         (1..=kind.max_lobe())
             .contains(&lobe)
-            .then_some(Event { kind, lobe })
+            .then(|| Event::in_range(kind, lobe))
+    }
+
+    /// `kind` and `lobe`, already known to be in range.
+    fn in_range(kind: EventKind, lobe: u8) -> Event {
+        Event {
+            code: NonZeroU8::new((kind as u8) << 4 | lobe).expect("lobes start at 1"),
+        }
     }
 
     /// Every valid event: D1..D4, S1..S8, U1..U12.
     pub fn all() -> impl Iterator<Item = Event> {
         EventKind::ALL
             .into_iter()
-            .flat_map(|kind| (1..=kind.max_lobe()).map(move |lobe| Event { kind, lobe }))
+            .flat_map(|kind| (1..=kind.max_lobe()).map(move |lobe| Event::in_range(kind, lobe)))
     }
 
     /// The lobe kind.
     pub fn kind(self) -> EventKind {
-        self.kind
+        match self.code.get() >> 4 {
+            0 => EventKind::D,
+            1 => EventKind::S,
+            _ => EventKind::U,
+        }
     }
 
     /// The lobe number, starting at 1.
     pub fn lobe(self) -> u8 {
-        self.lobe
+        self.code.get() & 15
+    }
+
+    /// `kind << 4 | lobe` (kinds D S U as 0 1 2): below 64, never 0.
+    #[inline]
+    pub(crate) fn code(self) -> u8 {
+        self.code.get()
     }
 
     /// D or S: light transport (user lobes are not).
     pub fn is_transport(self) -> bool {
-        self.kind != EventKind::U
+        self.kind() != EventKind::U
+    }
+}
+
+impl fmt::Debug for Event {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Event")
+            .field("kind", &self.kind())
+            .field("lobe", &self.lobe())
+            .finish()
     }
 }
 
 impl fmt::Display for Event {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}{}", self.kind.letter(), self.lobe)
+        write!(f, "{}{}", self.kind().letter(), self.lobe())
     }
 }
 

@@ -10,7 +10,7 @@
 //! and searches are anchored at the start: whole-path matching.
 
 use lpe::ast::{Atom, Expr};
-use lpe::{Event, Lpe, Path, Vertex, VertexType};
+use lpe::{Event, EventKind, Lpe, Path, Vertex, VertexType};
 use regex_automata::dfa::{dense, Automaton, StartKind};
 use regex_automata::hybrid;
 use regex_automata::nfa::thompson;
@@ -59,7 +59,16 @@ pub struct Encoding {
 }
 
 fn type_event_code(v: &Vertex) -> u8 {
-    let event = |e: Event| Event::all().position(|x| x == e).unwrap_or(0) as u8;
+    // The index of `e` in `Event::all()` (D1-4, S1-8, U1-12): the lobes of the kinds
+    // before it, plus its own lobe.
+    let event = |e: Event| {
+        let before: u8 = EventKind::ALL
+            .iter()
+            .take_while(|&&k| k != e.kind())
+            .map(|k| k.max_lobe())
+            .sum();
+        before + e.lobe() - 1
+    };
     match (v.ty(), v.event()) {
         (VertexType::L, _) => 1,
         (VertexType::O, _) => 2,

@@ -81,12 +81,13 @@ const MAX_LOBE: [usize; 3] = [4, 8, 12];
 
 /// `(type, event)` to its index (C 0, L 1, O 2, R 3.., T 27..) tabulated at entry
 /// [`type_event_code`] = `type << 6 | kind << 4 | lobe`, `kind` being the event kind's
-/// index (D S U) or 3 for no event (lobe 0): one load (nested matches mispredict on a
-/// realistic mix of vertices, and arithmetic on the event took several dependent steps
-/// more). Each alphabet keeps it premultiplied by its label stride. Within the R and T
-/// runs the events go D1-4, S1-8, U1-12; C, L and O ignore an event (a `Vertex` carries one
-/// exactly when it is R or T; a caller of `classify_interned` may pass one anyway). Lobes
-/// past a kind's range cannot be built (`Event::new`), and read as no event.
+/// index (D S U), and no event entry 0 of the type's 64 (`kind << 4 | lobe` is how an
+/// `Event` is held, and an `Option<Event>` holds none as 0): one load (nested matches
+/// mispredict on a realistic mix of vertices, and arithmetic on the event took several
+/// dependent steps more). Each alphabet keeps it premultiplied by its label stride.
+/// Within the R and T runs the events go D1-4, S1-8, U1-12; C, L and O ignore an event (a
+/// `Vertex` carries one exactly when it is R or T; a caller of `classify_interned` may
+/// pass one anyway). Codes that are no event (lobe 0, kind 3) read as no event.
 const TYPE_EVENT: [u8; 5 << 6] = {
     let mut t = [0u8; 5 << 6];
     let mut ty = 0;
@@ -111,14 +112,12 @@ const TYPE_EVENT: [u8; 5 << 6] = {
     t
 };
 
-/// The entry of `(type, event)` in [`TYPE_EVENT`]: `type << 6 | kind << 4 | lobe`.
+/// The entry of `(type, event)` in [`TYPE_EVENT`]: `type << 6 | kind << 4 | lobe`, or
+/// `type << 6` for no event.
 #[inline]
 fn type_event_code(ty: VertexType, event: Option<Event>) -> usize {
-    let (kind, lobe) = match event {
-        Some(e) => (e.kind() as usize, usize::from(e.lobe()) & 15),
-        None => (3, 0),
-    };
-    (ty as usize) << 6 | kind << 4 | lobe
+    // Codes are below 64; the mask tells the compiler so, and the index needs no check.
+    (ty as usize) << 6 | usize::from(event.map_or(0, Event::code) & 63)
 }
 
 fn type_event(i: usize) -> (VertexType, Option<Event>) {
