@@ -524,4 +524,29 @@ mod tests {
         assert!(Path::new(vec![Vertex::camera(), Vertex::camera()]).is_err());
         assert!(Path::new(vec![Vertex::light(None), Vertex::light(None)]).is_err());
     }
+
+    #[test]
+    fn an_event_is_its_kind_and_lobe_in_one_byte_ordered_by_kind_then_lobe() {
+        assert_eq!(std::mem::size_of::<Option<Event>>(), 1);
+        let mut listed = Vec::new();
+        for kind in [EventKind::D, EventKind::S, EventKind::U] {
+            let max = kind.max_lobe();
+            assert_eq!(Event::new(kind, 0), None, "{kind:?}0");
+            assert_eq!(Event::new(kind, max + 1), None, "{kind:?}{}", max + 1);
+            for lobe in 1..=max {
+                let e = Event::new(kind, lobe).unwrap();
+                assert_eq!((e.kind(), e.lobe()), (kind, lobe));
+                assert_eq!(e.to_string(), format!("{}{lobe}", kind.letter()));
+                assert_eq!(
+                    format!("{e:?}"),
+                    format!("Event {{ kind: {kind:?}, lobe: {lobe} }}")
+                );
+                listed.push(e);
+            }
+        }
+        // D1-4, S1-8, U1-12: `all` lists them in that order, which is also theirs.
+        assert_eq!(Event::all().collect::<Vec<_>>(), listed);
+        assert!(listed.windows(2).all(|w| w[0] < w[1]));
+        assert_eq!(listed.len(), 24);
+    }
 }
