@@ -1,6 +1,7 @@
 //! `fuzz/sancov-scope`, the rustc wrapper of fuzz builds: a crate whose source is outside
 //! the repository loses the coverage flags and keeps every other flag in order; a crate
-//! of the repository, or a call with no crate root, keeps every flag.
+//! of the repository keeps every flag but comparison tracing, which it keeps too with
+//! `LPE_FUZZ_TRACE_COMPARES=1`; a call with no crate root keeps every flag.
 #![cfg(unix)]
 
 use std::path::{Path, PathBuf};
@@ -13,27 +14,38 @@ fn repo() -> PathBuf {
         .to_path_buf()
 }
 
+const TRACE_COMPARES: &str = "-Cllvm-args=-sanitizer-coverage-trace-compares";
+
 const COVERAGE: [&str; 3] = [
     "-Cpasses=sancov-module",
     "-Cllvm-args=-sanitizer-coverage-level=4",
-    "-Cllvm-args=-sanitizer-coverage-trace-compares",
+    TRACE_COMPARES,
 ];
 
-/// The arguments the wrapper hands to "rustc" (here `echo`), run from `cwd`.
-fn passed(cwd: &Path, args: &[&str]) -> Vec<String> {
-    let out = Command::new("sh")
-        .arg(repo().join("fuzz/sancov-scope"))
+/// The arguments the wrapper hands to "rustc" (here `echo`), run from `cwd`, with
+/// comparison tracing asked for or not.
+fn passed_with(cwd: &Path, args: &[&str], trace_compares: bool) -> Vec<String> {
+    let mut cmd = Command::new("sh");
+    cmd.arg(repo().join("fuzz/sancov-scope"))
         .arg("echo")
         .args(args)
-        .current_dir(cwd)
-        .output()
-        .expect("sh runs");
+        .current_dir(cwd);
+    if trace_compares {
+        cmd.env("LPE_FUZZ_TRACE_COMPARES", "1");
+    } else {
+        cmd.env_remove("LPE_FUZZ_TRACE_COMPARES");
+    }
+    let out = cmd.output().expect("sh runs");
     assert!(out.status.success(), "{out:?}");
     String::from_utf8(out.stdout)
         .unwrap()
         .split_whitespace()
         .map(str::to_string)
         .collect()
+}
+
+fn passed(cwd: &Path, args: &[&str]) -> Vec<String> {
+    passed_with(cwd, args, false)
 }
 
 fn rustc_args(root: &str) -> Vec<String> {
@@ -52,23 +64,35 @@ fn strs(v: &[String]) -> Vec<&str> {
 fn a_crate_from_outside_the_repository_loses_only_the_coverage_flags() {
     let root = "/cargo-home/registry/src/index/regex-automata-0.4.18/src/lib.rs";
     let args = rustc_args(root);
-    let got = passed(&std::env::temp_dir(), &strs(&args));
     let want: Vec<&str> = strs(&args)
         .into_iter()
         .filter(|a| !COVERAGE.contains(a))
         .collect();
-    assert_eq!(got, want);
-    assert!(got.contains(&"-Zsanitizer=address".to_string()));
+    for trace_compares in [false, true] {
+        let got = passed_with(&std::env::temp_dir(), &strs(&args), trace_compares);
+        assert_eq!(got, want, "trace compares asked for: {trace_compares}");
+        assert!(got.contains(&"-Zsanitizer=address".to_string()));
+    }
 }
 
 #[test]
-fn a_crate_of_the_repository_keeps_every_flag() {
+fn a_crate_of_the_repository_keeps_every_flag_but_comparison_tracing_unless_asked() {
     // Cargo names a workspace member's root relative to its directory, a path
     // dependency's absolutely.
     let relative = rustc_args("src/lib.rs");
-    assert_eq!(passed(&repo().join("lpe"), &strs(&relative)), relative);
     let absolute = rustc_args(repo().join("engines/src/lib.rs").to_str().unwrap());
-    assert_eq!(passed(&std::env::temp_dir(), &strs(&absolute)), absolute);
+    for (cwd, args) in [
+        (repo().join("lpe"), &relative),
+        (std::env::temp_dir(), &absolute),
+    ] {
+        let without: Vec<&str> = strs(args)
+            .into_iter()
+            .filter(|a| *a != TRACE_COMPARES)
+            .collect();
+        assert_eq!(without.len() + 1, args.len());
+        assert_eq!(passed(&cwd, &strs(args)), without);
+        assert_eq!(passed_with(&cwd, &strs(args), true), *args);
+    }
 }
 
 #[test]
