@@ -17,6 +17,8 @@
 //! - [`fuzzing`]: the bodies of the cargo-fuzz targets in `fuzz/`, as plain functions
 //!   that `cargo test` also replays.
 
+#![forbid(unsafe_code)]
+
 pub mod adapters;
 pub mod differential;
 pub mod engine;

@@ -103,6 +103,7 @@
 //! each with a shortest witness path.
 
 #![warn(missing_docs)]
+#![forbid(unsafe_code)]
 
 pub mod algebra;
 pub mod analysis;

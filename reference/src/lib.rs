@@ -32,6 +32,8 @@
 //! The OSL dialect has its own reference in [`osl`]: OSL defines matching over a
 //! stream of symbols, not of vertices.
 
+#![forbid(unsafe_code)]
+
 use std::collections::HashSet;
 
 pub mod osl;

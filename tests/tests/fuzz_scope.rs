@@ -1,7 +1,8 @@
 //! `fuzz/sancov-scope`, the rustc wrapper of fuzz builds: a crate whose source is outside
 //! the repository loses the coverage flags and keeps every other flag in order; a crate
 //! of the repository keeps every flag but comparison tracing, which it keeps too with
-//! `LPE_FUZZ_TRACE_COMPARES=1`; a call with no crate root keeps every flag.
+//! `LPE_FUZZ_TRACE_COMPARES=1`; a call with no crate root keeps every flag. And
+//! `fuzz/run`, which sets the wrapper up: what it hands to cargo.
 #![cfg(unix)]
 
 use std::path::{Path, PathBuf};
@@ -98,4 +99,67 @@ fn a_crate_of_the_repository_keeps_every_flag_but_comparison_tracing_unless_aske
 #[test]
 fn a_call_without_a_crate_root_passes_through() {
     assert_eq!(passed(&std::env::temp_dir(), &["-vV"]), ["-vV"]);
+}
+
+/// What `fuzz/run` hands to cargo (here a fake `cargo` that prints its environment and
+/// arguments), with `ASAN_OPTIONS` set to `asan` or unset.
+fn run_env(asan: Option<&str>) -> Vec<String> {
+    let bin = std::env::temp_dir().join(format!("lpe-fuzz-run-{}", std::process::id()));
+    std::fs::create_dir_all(&bin).unwrap();
+    let cargo = bin.join("cargo");
+    std::fs::write(
+        &cargo,
+        "#!/bin/sh\nprintf '%s\\n' \"ASAN_OPTIONS=$ASAN_OPTIONS\" \"RUSTFLAGS=$RUSTFLAGS\" \
+         \"RUSTC_WRAPPER=$RUSTC_WRAPPER\" \"$@\"\n",
+    )
+    .unwrap();
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::set_permissions(&cargo, std::fs::Permissions::from_mode(0o755)).unwrap();
+    let path = format!(
+        "{}:{}",
+        bin.display(),
+        std::env::var("PATH").unwrap_or_default()
+    );
+    let mut cmd = Command::new("sh");
+    cmd.arg(repo().join("fuzz/run"))
+        .args(["run", "differential"])
+        .env("PATH", path)
+        .env_remove("RUSTFLAGS")
+        .env_remove("LPE_FUZZ_TRACE_COMPARES");
+    match asan {
+        Some(a) => cmd.env("ASAN_OPTIONS", a),
+        None => cmd.env_remove("ASAN_OPTIONS"),
+    };
+    let out = cmd.output().expect("sh runs");
+    std::fs::remove_dir_all(&bin).unwrap();
+    assert!(out.status.success(), "{out:?}");
+    String::from_utf8(out.stdout)
+        .unwrap()
+        .lines()
+        .map(str::to_string)
+        .collect()
+}
+
+#[test]
+fn fuzz_run_trims_asan_diagnostics_and_lets_the_callers_options_win() {
+    const TRIMMED: &str = "malloc_context_size=0:detect_stack_use_after_return=0";
+    let wrapper = repo().join("fuzz/sancov-scope");
+    let rest = [
+        "RUSTFLAGS=--cfg=sancov_scope_edges".to_string(),
+        format!("RUSTC_WRAPPER={}", wrapper.display()),
+        "+nightly".into(),
+        "fuzz".into(),
+        "run".into(),
+        "differential".into(),
+    ];
+    let got = run_env(None);
+    assert_eq!(got[0], format!("ASAN_OPTIONS={TRIMMED}"));
+    assert_eq!(got[1..], rest);
+    // AddressSanitizer reads its options in order, a later value replacing an earlier.
+    let got = run_env(Some("malloc_context_size=30:detect_leaks=0"));
+    assert_eq!(
+        got[0],
+        format!("ASAN_OPTIONS={TRIMMED}:malloc_context_size=30:detect_leaks=0")
+    );
+    assert_eq!(got[1..], rest);
 }
