@@ -36,13 +36,17 @@ fn passed_with(cwd: &Path, args: &[&str], trace_compares: bool) -> Vec<String> {
     } else {
         cmd.env_remove("LPE_FUZZ_TRACE_COMPARES");
     }
-    let out = cmd.output().expect("sh runs");
-    assert!(out.status.success(), "{out:?}");
-    String::from_utf8(out.stdout)
-        .unwrap()
+    stdout_of(&mut cmd)
         .split_whitespace()
         .map(str::to_string)
         .collect()
+}
+
+/// What `cmd` printed, once it has run and succeeded.
+fn stdout_of(cmd: &mut Command) -> String {
+    let out = cmd.output().expect("sh runs");
+    assert!(out.status.success(), "{out:?}");
+    String::from_utf8(out.stdout).unwrap()
 }
 
 fn passed(cwd: &Path, args: &[&str]) -> Vec<String> {
@@ -130,14 +134,9 @@ fn run_env(asan: Option<&str>) -> Vec<String> {
         Some(a) => cmd.env("ASAN_OPTIONS", a),
         None => cmd.env_remove("ASAN_OPTIONS"),
     };
-    let out = cmd.output().expect("sh runs");
+    let out = stdout_of(&mut cmd);
     std::fs::remove_dir_all(&bin).unwrap();
-    assert!(out.status.success(), "{out:?}");
-    String::from_utf8(out.stdout)
-        .unwrap()
-        .lines()
-        .map(str::to_string)
-        .collect()
+    out.lines().map(str::to_string).collect()
 }
 
 #[test]

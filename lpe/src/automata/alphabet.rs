@@ -87,7 +87,8 @@ const MAX_LOBE: [usize; 3] = [4, 8, 12];
 /// dependent steps more). Each alphabet keeps it premultiplied by its label stride.
 /// Within the R and T runs the events go D1-4, S1-8, U1-12; C, L and O ignore an event (a
 /// `Vertex` carries one exactly when it is R or T; a caller of `classify_interned` may
-/// pass one anyway). Codes that are no event (lobe 0, kind 3) read as no event.
+/// pass one anyway). Codes no `Event` has (kind 3, lobe 0, a lobe past its kind's range)
+/// read as no event.
 const TYPE_EVENT: [u8; 5 << 6] = {
     let mut t = [0u8; 5 << 6];
     let mut ty = 0;
