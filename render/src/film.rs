@@ -498,7 +498,34 @@ impl FilmRow<'_> {
         });
         self.pixels[x * stride..(x + 1) * stride].copy_from_slice(&self.scratch);
         self.scratch.fill(DVec3::ZERO);
+        if let Some(next) = self.pixels.get((x + 1) * stride..(x + 2) * stride) {
+            prefetch(next);
+        }
     }
+}
+
+/// Asks for `data`'s cache lines ahead of writing it. A pixel's storage (792 bytes with
+/// 32 AOVs) is written once, as one copy, when the pixel is finished; the film (7 MB at
+/// 96x96) is far larger than the core's caches, and a copy that waits for each line to
+/// be fetched before it can write it was about a quarter of what 32 AOVs cost over
+/// beauty (`lpe-render bench`, means of 20 runs on a 2-core Xeon VM: +2.4-2.7 % without,
+/// +1.9-2.1 % with). Fetched while the pixel's samples are traced, the lines are there
+/// when the copy comes.
+#[inline]
+fn prefetch(data: &[DVec3]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        use std::arch::x86_64::{_mm_prefetch, _MM_HINT_T0};
+        let start = data.as_ptr().cast::<i8>();
+        for offset in (0..std::mem::size_of_val(data)).step_by(64) {
+            // SAFETY: `_mm_prefetch` is unsafe only as an SSE function, and SSE is part of
+            // every x86_64 CPU; a prefetch reads nothing the program sees and never
+            // faults, and the address stays inside `data`.
+            unsafe { _mm_prefetch::<_MM_HINT_T0>(start.wrapping_add(offset)) };
+        }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = data;
 }
 
 #[cfg(test)]
