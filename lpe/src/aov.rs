@@ -22,10 +22,10 @@
 //!
 //! ```
 //! use lpe::aov::AovSet;
-//! use lpe::macros::BASIC;
-//! use lpe::{parse, Event, EventKind, Vertex, VertexType};
+//! use lpe::renderman::macros::BASIC;
+//! use lpe::renderman::{parse, Event, EventKind, Lpe, Vertex, VertexType};
 //!
-//! let aovs: Vec<(String, lpe::Lpe)> = BASIC
+//! let aovs: Vec<(String, Lpe)> = BASIC
 //!     .iter()
 //!     .map(|(name, src)| (name.to_string(), parse(src).unwrap()))
 //!     .collect();
@@ -46,22 +46,18 @@
 //! assert_eq!(hits, ["indirectDiffuse"]);
 //! ```
 
-use std::fmt;
 
 use crate::algebra::SetExpr;
-use crate::ast::{Atom, Expr};
-use crate::automata::alphabet::Alphabet;
 use crate::automata::dfa::{Dfa, MAX_EAGER_STATES};
 use crate::automata::emptiness::{self, Warning};
 pub use crate::automata::lazy::Cache;
 use crate::automata::lazy::Lazy;
-use crate::automata::mask::{AovMask, Class, LabelId, State, MAX_AOVS, NFA_STATE_WORDS};
+use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
 use crate::automata::nfa::{Builder, Nfa};
 use crate::automata::visible::Visible;
 pub use crate::automata::wide::NfaMatcher;
-use crate::osl;
-use crate::path::{Event, Path, Vertex, VertexType};
-use crate::{Dialect, Lpe};
+use crate::dialect::{Dialect, DialectLpe};
+use crate::automata::ir::VertexClasses;
 
 /// Compile-time knobs.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -98,101 +94,10 @@ impl Default for Options {
     }
 }
 
-/// Why a set did not compile.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum CompileError {
-    /// More than [`MAX_AOVS`] expressions.
-    TooManyAovs(usize),
-    /// More than [`MAX_AOVS`] AOVs once every set-algebra operand counts as a hidden
-    /// AOV of its own (a plain AOV is one).
-    TooManyOperands {
-        /// AOVs in the set.
-        aovs: usize,
-        /// Hidden AOVs: operands of set algebra plus plain AOVs.
-        hidden: usize,
-    },
-    /// The NFA's follow sets alone (one row per position: `positions^2 / 8` bytes) would
-    /// exceed [`Options::nfa_budget`].
-    NfaOverBudget {
-        /// NFA positions the set unrolls to, the start included.
-        positions: u64,
-        /// Bytes the follow sets would take; `None` when that overflows `u64`.
-        bytes: Option<u64>,
-        /// [`Options::nfa_budget`].
-        budget: usize,
-    },
-    /// An OSL set's vertex patterns need more states than
-    /// [`osl::MAX_VERTEX_STATES`] to classify a vertex.
-    TooManyVertexStates {
-        /// [`osl::MAX_VERTEX_STATES`].
-        max: usize,
-    },
-    /// The DFA exceeds [`Options::dfa_budget`], and the NFA has more positions than an
-    /// NFA state of the lazy DFA holds, so the set cannot step lazily either.
-    TooManyPositions {
-        /// NFA positions, the start included.
-        positions: usize,
-        /// Most positions a stepping state holds (`64 * NFA_STATE_WORDS`).
-        max: usize,
-        /// [`Options::dfa_budget`].
-        dfa_budget: usize,
-    },
-}
+pub use crate::automata::error::CompileError;
 
-impl fmt::Display for CompileError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            CompileError::TooManyAovs(n) => {
-                write!(
-                    f,
-                    "{n} AOVs in one set, over the limit of {MAX_AOVS}: split the set"
-                )
-            }
-            CompileError::TooManyOperands { aovs, hidden } => write!(
-                f,
-                "{aovs} AOVs in one set compile to {hidden} hidden AOVs (each operand of \
-                 `&`, `-`, `^` is one), over the limit of {MAX_AOVS}: split the set"
-            ),
-            CompileError::NfaOverBudget {
-                positions,
-                bytes,
-                budget,
-            } => {
-                let need = bytes.map_or("more than 2^64 bytes".into(), |b| {
-                    format!("{} MiB", b >> 20)
-                });
-                write!(
-                    f,
-                    "the set unrolls to {positions} NFA positions; its follow sets would need \
-                     {need}, over the NFA budget of {} MiB (lower the repetition counts, \
-                     or set `max_path_len` so long bounded repeats compile as unbounded)",
-                    budget >> 20
-                )
-            }
-            CompileError::TooManyVertexStates { max } => write!(
-                f,
-                "the set's vertex patterns need more than {max} states to classify a vertex \
-                 (many long `<...>` groups with negations): split the set"
-            ),
-            CompileError::TooManyPositions {
-                positions,
-                max,
-                dfa_budget,
-            } => write!(
-                f,
-                "the set's DFA exceeds the budget of {} MiB and its NFA has {positions} \
-                 positions, more than the {max} a stepping state holds: raise `dfa_budget`, \
-                 or split the set",
-                dfa_budget >> 20
-            ),
-        }
-    }
-}
-
-impl std::error::Error for CompileError {}
-
-/// The hidden AOVs of a set, in either dialect: every operand of set algebra is one, a
-/// plain AOV is one operand.
+/// The hidden AOVs of a set: every operand of set algebra is one, a plain AOV is one
+/// operand.
 struct Hidden<'a, E> {
     operands: Vec<&'a E>,
     /// Per hidden AOV, the name of the AOV it belongs to.
@@ -252,12 +157,14 @@ impl<'a, E> Hidden<'a, E> {
     }
 }
 
-/// A compiled AOV set. See the [module docs](self).
+/// A compiled AOV set of dialect `D`. See the
+/// [module docs](self).
 #[derive(Clone, Debug)]
-pub struct AovSet {
+pub struct AovSet<D: Dialect> {
     names: Vec<String>,
-    lpes: Vec<Lpe>,
-    alphabet: Alphabet,
+    lpes: Vec<D::Lpe>,
+    registration: D::Registration,
+    classes: D::Classes,
     /// The eager DFA; empty (no states) for a lazy set, so that a step of a lazy set
     /// misses the table and takes the lazy path: the DFA step has no other branch.
     dfa: Dfa,
@@ -277,109 +184,84 @@ pub struct AovSet {
     /// no active position, unless a complement then matches.
     empty_is_dead: bool,
     warnings: Vec<Warning>,
-    /// The OSL side of a set compiled with [`AovSet::compile_osl`] (its `alphabet` is
-    /// then an empty RenderMan one).
-    osl: Option<Box<osl::Compiled>>,
 }
 
-impl AovSet {
-    /// Compiles with default [`Options`].
-    pub fn compile(aovs: &[(String, Lpe)]) -> Result<AovSet, CompileError> {
-        Self::compile_with(aovs, &Options::default())
+impl<D: Dialect> AovSet<D> {
+    /// Compiles with default [`Options`] and the dialect's default registration (the
+    /// dialect is the expressions').
+    pub fn compile<L>(aovs: &[(String, L)]) -> Result<AovSet<D>, CompileError>
+    where
+        L: DialectLpe<Dialect = D>,
+        D: Dialect<Lpe = L>,
+    {
+        Self::compile_under(aovs, &D::Registration::default(), &Options::default())
     }
 
     /// Compiles with explicit options.
-    pub fn compile_with(aovs: &[(String, Lpe)], opts: &Options) -> Result<AovSet, CompileError> {
-        let Hidden {
-            operands,
-            names: hidden_names,
-            visible,
-        } = Hidden::of(aovs)?;
-        let (alphabet, nfa, atoms) = Self::build_nfa(&operands, opts)?;
-        let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
-        let lpes: Vec<Lpe> = aovs.iter().map(|(_, l)| l.clone()).collect();
-        let warnings = Hidden::plain_warnings(
-            aovs,
-            &emptiness::empty_aovs(&nfa, &alphabet, &atoms, &hidden_names, &operands),
-        );
-        let nfa_positions = nfa.positions;
-        let (dfa, lazy, start) = Self::engine(nfa, alphabet.class_count(), opts, visible.as_ref())?;
-        let empty_is_dead = Self::empty_is_dead(lazy.as_deref(), visible.as_ref());
-        Ok(AovSet {
-            names,
-            lpes,
-            alphabet,
-            dfa,
-            lazy,
-            start,
-            nfa_positions,
-            visible,
-            empty_is_dead,
-            warnings,
-            osl: None,
-        })
+    pub fn compile_with<L>(aovs: &[(String, L)], opts: &Options) -> Result<AovSet<D>, CompileError>
+    where
+        L: DialectLpe<Dialect = D>,
+        D: Dialect<Lpe = L>,
+    {
+        Self::compile_under(aovs, &D::Registration::default(), opts)
     }
 
-    /// Compiles OSL-dialect expressions (parsed with [`osl::parse`] under `registered`)
-    /// into a set stepped exactly like a RenderMan one, on OSL vertex classes
-    /// ([`AovSet::classify_osl`]). The eager DFA is attempted within the smaller of
-    /// [`Options::dfa_budget`] and [`osl::DFA_ATTEMPT_BUDGET`].
+    /// Compiles expressions parsed under `registration` (OSL's user labels, RenderMan's
+    /// macros: the set keeps it for [`AovSet::registration`]) with explicit options. The
+    /// eager DFA is attempted within the smaller of [`Options::dfa_budget`] and
+    /// [`Dialect::DFA_ATTEMPT_BUDGET`].
     ///
     /// ```
-    /// use lpe::osl::{self, Registered};
+    /// use lpe::osl::{self, Osl, Registered};
     /// use lpe::{AovSet, Options};
     ///
     /// let reg = Registered::none();
     /// let aovs = vec![("diffuse".to_string(), osl::parse("C<RD>L", &reg).unwrap())];
-    /// let set = AovSet::compile_osl(&aovs, &reg, &Options::default()).unwrap();
-    /// let hit = set.match_osl_path(&"C,_ R,D,floor L,_".parse().unwrap());
+    /// let set = AovSet::compile_under(&aovs, &reg, &Options::default()).unwrap();
+    /// let hit = set.match_path(&"C,_ R,D,floor L,_".parse().unwrap());
     /// assert!(hit.contains(0));
-    /// assert!(set.match_osl_path(&"C,_ R,D,G L,_".parse().unwrap()).is_empty());
+    /// assert!(set.match_path(&"C,_ R,D,G L,_".parse().unwrap()).is_empty());
     /// ```
-    pub fn compile_osl(
-        aovs: &[(String, osl::Lpe)],
-        registered: &osl::Registered,
+    pub fn compile_under<L>(
+        aovs: &[(String, L)],
+        registration: &D::Registration,
         opts: &Options,
-    ) -> Result<AovSet, CompileError> {
+    ) -> Result<AovSet<D>, CompileError>
+    where
+        L: DialectLpe<Dialect = D>,
+        D: Dialect<Lpe = L>,
+    {
+        Self::compile_lpes(aovs, registration, opts)
+    }
+
+    fn compile_lpes(
+        aovs: &[(String, D::Lpe)],
+        registration: &D::Registration,
+        opts: &Options,
+    ) -> Result<AovSet<D>, CompileError> {
         let Hidden {
             operands,
             names: hidden_names,
             visible,
         } = Hidden::of(aovs)?;
-        let positions = aovs
-            .iter()
-            .fold(1u64, |n, (_, l)| n.saturating_add(l.positions()));
-        Self::check_nfa_budget(positions, opts)?;
-        let names: Vec<String> = aovs.iter().map(|(n, _)| n.clone()).collect();
-        let (compiled, nfa, hidden_warnings) = osl::Compiled::build(
+        let (classes, nfa, atoms) = Self::build_nfa(&operands, opts)?;
+        let warnings = Hidden::plain_warnings(
             aovs,
-            &operands,
-            &hidden_names,
-            registered,
-            opts.max_path_len,
-            opts.nfa_budget,
-        )
-        .map_err(
-            |osl::TooManyVertexStates| CompileError::TooManyVertexStates {
-                max: osl::MAX_VERTEX_STATES,
-            },
-        )?;
-        let warnings = Hidden::plain_warnings(aovs, &hidden_warnings);
+            &emptiness::empty_aovs(&nfa, &classes, D::SHAPE, &atoms, &hidden_names, &operands),
+        );
         let nfa_positions = nfa.positions;
-        // OSL sets have several times RenderMan's classes, so a blow-up reaches a large
-        // budget slowly (OSL's own ReDoS expression: a second for 16 MiB): attempt the
-        // eager DFA within a smaller budget, and go lazy past it.
         let attempt = Options {
-            dfa_budget: opts.dfa_budget.min(osl::DFA_ATTEMPT_BUDGET),
+            dfa_budget: opts.dfa_budget.min(D::DFA_ATTEMPT_BUDGET),
             ..opts.clone()
         };
         let (dfa, lazy, start) =
-            Self::engine(nfa, compiled.class_count(), &attempt, visible.as_ref())?;
+            Self::engine(nfa, classes.class_count(), &attempt, visible.as_ref())?;
         let empty_is_dead = Self::empty_is_dead(lazy.as_deref(), visible.as_ref());
         Ok(AovSet {
-            names,
-            lpes: Vec::new(),
-            alphabet: Alphabet::new(&[], Vec::new()),
+            names: aovs.iter().map(|(n, _)| n.clone()).collect(),
+            lpes: aovs.iter().map(|(_, l)| l.clone()).collect(),
+            registration: registration.clone(),
+            classes,
             dfa,
             lazy,
             start,
@@ -387,7 +269,6 @@ impl AovSet {
             visible,
             empty_is_dead,
             warnings,
-            osl: Some(Box::new(compiled)),
         })
     }
 
@@ -451,24 +332,23 @@ impl AovSet {
         Ok(())
     }
 
-    /// The alphabet and NFA of the hidden AOVs `exprs`, and their distinct atoms (the
-    /// NFA's atom indices refer to them).
-    fn build_nfa<'a>(
-        exprs: &[&'a Expr],
+    /// The vertex classes and NFA of the hidden AOVs `exprs`, and their distinct atoms
+    /// (the NFA's atom indices refer to them).
+    #[allow(clippy::type_complexity)]
+    pub(crate) fn build_nfa<'a>(
+        exprs: &[&'a D::Expr],
         opts: &Options,
-    ) -> Result<(Alphabet, Nfa, Vec<&'a Atom>), CompileError> {
+    ) -> Result<(D::Classes, Nfa, Vec<&'a D::Atom>), CompileError> {
         let positions = exprs.iter().fold(1u64, |n, e| {
-            n.saturating_add(e.positions_with(opts.max_path_len))
+            n.saturating_add(D::positions(e, opts.max_path_len))
         });
         Self::check_nfa_budget(positions, opts)?;
         let (builder, parts) = Builder::of_all(exprs.iter().copied(), opts.max_path_len);
-        // Duplicates across AOVs are fine: the alphabet's label table deduplicates.
-        let labels: Vec<String> = exprs.iter().flat_map(|e| e.labels()).collect();
-        let alphabet = Alphabet::new(&builder.atoms, labels);
+        let classes = D::classes(&builder.atoms, exprs)?;
         // Borrowed from `aovs`: the analysis outlives the builder, which the NFA consumes.
         let atoms = builder.atoms.clone();
-        let nfa = Nfa::new(builder, parts, &alphabet, opts.nfa_budget);
-        Ok((alphabet, nfa, atoms))
+        let nfa = Nfa::new(builder, parts, &classes, opts.nfa_budget);
+        Ok((classes, nfa, atoms))
     }
 
     /// The state before any vertex.
@@ -478,32 +358,15 @@ impl AovSet {
     }
 
     /// The class of a vertex: compute it once per material lobe and step with
-    /// [`AovSet::step_class`]. Hashes the label; [`AovSet::classify_interned`] does not.
-    /// On an OSL set the answer is unspecified: use [`AovSet::classify_osl`].
+    /// [`AovSet::step_class`].
     #[inline]
-    pub fn classify(&self, v: &Vertex) -> Class {
-        self.alphabet.classify(v)
-    }
-
-    /// The id of a vertex label (or of no label) for [`AovSet::classify_interned`]:
-    /// intern each label of a scene once, at load. Labels no expression mentions all
-    /// get one id.
-    pub fn label_id(&self, label: Option<&str>) -> LabelId {
-        self.alphabet.label_id(label)
-    }
-
-    /// The class of a vertex given by its parts and an interned label: index arithmetic
-    /// and table loads, no hashing. Same answer as [`AovSet::classify`] on the vertex. An
-    /// event on `C`, `L` or `O` is ignored; `R`/`T` without an event or a label id of
-    /// another set give some class, never a panic.
-    #[inline]
-    pub fn classify_interned(&self, ty: VertexType, event: Option<Event>, label: LabelId) -> Class {
-        self.alphabet.classify_interned(ty, event, label)
+    pub fn classify(&self, v: &D::Vertex) -> Class {
+        self.classes.classify(v)
     }
 
     /// One vertex.
     #[inline]
-    pub fn step(&self, s: State, v: &Vertex) -> State {
+    pub fn step(&self, s: State, v: &D::Vertex) -> State {
         self.step_class(s, self.classify(v))
     }
 
@@ -541,9 +404,10 @@ impl AovSet {
     /// for the set's life.
     ///
     /// ```
-    /// use lpe::{AovSet, Vertex};
+    /// use lpe::AovSet;
+    /// use lpe::renderman::{parse, Vertex};
     ///
-    /// let set = AovSet::compile(&[("d".to_string(), lpe::parse("C<RD>L").unwrap())]).unwrap();
+    /// let set = AovSet::compile(&[("d".to_string(), parse("C<RD>L").unwrap())]).unwrap();
     /// let (s, c) = (set.start(), set.classify(&Vertex::camera()));
     /// let i = s.to_u32().wrapping_add(c.index() as u32) as usize;
     /// assert_eq!(set.step_table()[i], set.step_class(s, c).to_u32());
@@ -627,10 +491,10 @@ impl AovSet {
 
     /// The bitset NFA of a lazy set, stepped on its wide state without registry or
     /// cache; `None` for a set with a DFA (which drops its NFA).
-    pub fn nfa(&self) -> Option<NfaMatcher<'_>> {
+    pub fn nfa(&self) -> Option<NfaMatcher<'_, D::Classes>> {
         self.lazy.as_ref().map(|l| NfaMatcher {
             nfa: l.nfa(),
-            alphabet: &self.alphabet,
+            classes: &self.classes,
             visible: self.visible.as_ref(),
             empty_is_dead: self.empty_is_dead,
         })
@@ -656,56 +520,17 @@ impl AovSet {
         }
     }
 
-    /// The class of a whole OSL vertex, read once (one table load per symbol): compute
-    /// it once per material lobe and step with [`AovSet::step_class`]. On a RenderMan set
-    /// every vertex gets a class one past the set's last, which steps to the dead state.
-    #[inline]
-    pub fn classify_osl(&self, v: &osl::Vertex) -> Class {
-        match &self.osl {
-            Some(o) => o.classify(v),
-            None => Class(self.alphabet.class_count() as u32),
-        }
-    }
-
-    /// Steps a whole OSL path from the start (only meaningful on an OSL set).
-    pub fn match_osl_path(&self, p: &osl::Path) -> AovMask {
-        let s = p.vertices.iter().fold(self.start(), |s, v| {
-            self.step_class(s, self.classify_osl(v))
-        });
-        self.matches(s)
-    }
-
-    /// The dialect the set was compiled from.
-    pub fn dialect(&self) -> Dialect {
-        if self.osl.is_some() {
-            Dialect::Osl
-        } else {
-            Dialect::RenderMan
-        }
-    }
-
-    /// The OSL expressions of an OSL set, in compile order (empty for a RenderMan set,
-    /// whose expressions are [`AovSet::lpes`]).
-    pub fn osl_lpes(&self) -> &[osl::Lpe] {
-        self.osl.as_ref().map_or(&[], |o| o.lpes())
-    }
-
-    /// The labels an OSL set was compiled under.
-    pub fn osl_registered(&self) -> Option<&osl::Registered> {
-        self.osl.as_ref().map(|o| o.registered())
-    }
-
-    pub(crate) fn osl_compiled(&self) -> Option<&osl::Compiled> {
-        self.osl.as_deref()
-    }
-
     /// Steps a whole path from the start.
-    pub fn match_path(&self, path: &Path) -> AovMask {
-        let s = path
-            .vertices()
+    pub fn match_path(&self, path: &D::Path) -> AovMask {
+        let s = D::vertices(path)
             .iter()
             .fold(self.start(), |s, v| self.step(s, v));
         self.matches(s)
+    }
+
+    /// What the set's expressions were parsed under.
+    pub fn registration(&self) -> &D::Registration {
+        &self.registration
     }
 
     /// Number of AOVs.
@@ -723,9 +548,9 @@ impl AovSet {
         &self.names
     }
 
-    /// The AOV expressions, in compile order (prefixes tell the renderer what to
-    /// accumulate); empty for an OSL set ([`AovSet::osl_lpes`]).
-    pub fn lpes(&self) -> &[Lpe] {
+    /// The AOV expressions, in compile order (RenderMan's prefixes tell the renderer what
+    /// to accumulate).
+    pub fn lpes(&self) -> &[D::Lpe] {
         &self.lpes
     }
 
@@ -736,20 +561,22 @@ impl AovSet {
         &self.warnings
     }
 
-    /// A shortest vertex of OSL class `c` (`0..class_count()`), NONE first and then
-    /// labels in byte order; `None` for a RenderMan set or a class out of range. Every
-    /// class has one, so stepping over these visits every state of the set.
-    pub fn osl_class_vertex(&self, c: usize) -> Option<&osl::Vertex> {
-        let o = self.osl.as_ref()?;
-        (c < o.class_count()).then(|| o.representative(c))
+    /// A shortest vertex of class `c` (`0..class_count()`) at the first place of the
+    /// dialect's path shape where the class occurs; `None` for a class out of range.
+    /// Every class has one, so stepping over these visits every state of the set.
+    pub fn class_vertex(&self, c: usize) -> Option<D::Vertex> {
+        if c >= self.classes.class_count() {
+            return None;
+        }
+        D::SHAPE
+            .places()
+            .iter()
+            .find_map(|&p| self.classes.representative(c, p))
     }
 
     /// Number of vertex classes.
     pub fn class_count(&self) -> usize {
-        match &self.osl {
-            Some(o) => o.class_count(),
-            None => self.alphabet.class_count(),
-        }
+        self.classes.class_count()
     }
 
     /// Whether the set steps an eager DFA (else a lazy one: over the DFA budget).
@@ -775,10 +602,9 @@ impl AovSet {
         self.nfa_positions
     }
 
-    /// Bytes held by the automaton the set steps and by the alphabet tables.
+    /// Bytes held by the automaton the set steps and by the class tables.
     pub fn memory_bytes(&self) -> usize {
-        self.alphabet.memory_bytes()
-            + self.osl.as_ref().map_or(0, |o| o.memory_bytes())
+        self.classes.memory_bytes()
             + self.dfa.memory_bytes()
             + match &self.lazy {
                 None => 0,
@@ -786,21 +612,22 @@ impl AovSet {
             }
     }
 
-    pub(crate) fn alphabet(&self) -> &Alphabet {
-        &self.alphabet
+    /// The set's vertex classes.
+    pub(crate) fn classes(&self) -> &D::Classes {
+        &self.classes
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::parse;
+    use crate::renderman::{parse, Lpe, Path, RenderMan, Vertex};
 
     fn lpe(s: &str) -> Lpe {
         parse(s).unwrap()
     }
 
-    fn set(srcs: &[&str], opts: &Options) -> AovSet {
+    fn set(srcs: &[&str], opts: &Options) -> AovSet<RenderMan> {
         let aovs: Vec<(String, Lpe)> = srcs
             .iter()
             .map(|s| (s.to_string(), parse(s).unwrap()))
@@ -818,7 +645,8 @@ mod tests {
     #[test]
     fn set_is_send_and_sync() {
         fn check<T: Send + Sync>() {}
-        check::<AovSet>();
+        check::<AovSet<RenderMan>>();
+        check::<AovSet<crate::osl::Osl>>();
     }
 
     #[test]
@@ -894,7 +722,7 @@ mod tests {
 
     #[test]
     fn empty_sets_and_foreign_states_do_not_panic() {
-        let empty = AovSet::compile(&[]).unwrap();
+        let empty = AovSet::<RenderMan>::compile(&[] as &[(String, Lpe)]).unwrap();
         assert!(empty.is_empty());
         assert!(empty.match_path(&"C L".parse().unwrap()).is_empty());
         // A state and class from a larger set, stepped in a smaller one: some state,
@@ -926,7 +754,7 @@ mod tests {
         // The set keeps only its DFA: ask the construction it came from.
         let nfa_of = |opts: &Options| {
             let e = parse("C(.{100}){3}L").unwrap().expr;
-            AovSet::build_nfa(&[&e], opts).unwrap().1
+            AovSet::<RenderMan>::build_nfa(&[&e], opts).unwrap().1
         };
         assert!(!nfa_of(&opts).has_step_tables());
         assert!(nfa_of(&Options::default()).has_step_tables());

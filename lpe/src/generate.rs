@@ -31,7 +31,7 @@
 //!     // `lpe-reference`'s `reference::is_expr_match(&expr, &path)`.
 //!     assert!(path.len() >= 2);
 //!     // Every generated expression prints to text that parses back to itself.
-//!     assert_eq!(lpe::parse(&expr.to_string()).unwrap().expr, expr);
+//!     assert_eq!(lpe::renderman::parse(&expr.to_string()).unwrap().expr, expr);
 //! }
 //! ```
 //!
@@ -42,11 +42,11 @@
 //! [`crate::strategy`] has strategies for the same shapes.
 
 use crate::algebra::Algebra;
-use crate::ast::{
+use crate::renderman::ast::{
     Atom, EventPattern, EventPos, Expr, Item, LabelPos, Lpe, Repetition, Triple, TypePos,
 };
-use crate::path::{Event, EventKind, Path, Vertex, VertexType};
-use crate::prefix::{Prefix, Prefixes};
+use crate::renderman::path::{Event, EventKind, Path, Vertex, VertexType};
+use crate::renderman::prefix::{Prefix, Prefixes};
 use crate::rng::SplitMix64;
 
 pub mod osl;
@@ -813,7 +813,7 @@ mod tests {
                 "{e}"
             );
             let text = e.to_string();
-            let back = crate::parse(&text).unwrap_or_else(|err| panic!("{text}: {err}"));
+            let back = crate::renderman::parse(&text).unwrap_or_else(|err| panic!("{text}: {err}"));
             assert_eq!(back.expr, e, "{text}");
         }
     }
@@ -836,7 +836,7 @@ mod tests {
         let e = expr(&mut Greedy, &cfg);
         assert!(matches!(e, Expr::Repeat(..)), "{e}");
         assert!(e.positions() <= cfg.max_positions, "{e}");
-        assert_eq!(crate::parse(&e.to_string()).unwrap().expr, e);
+        assert_eq!(crate::renderman::parse(&e.to_string()).unwrap().expr, e);
     }
 
     #[test]
@@ -878,7 +878,7 @@ mod tests {
     fn walks_of_simple_expressions_give_the_expected_shapes() {
         let cfg = Config::default();
         let mut rng = SplitMix64::new(1);
-        let e = crate::parse("C<RD'floor'><TS8>[<L.'key'>]").unwrap().expr;
+        let e = crate::renderman::parse("C<RD'floor'><TS8>[<L.'key'>]").unwrap().expr;
         let p = matching_path(&e, &mut rng, &cfg).unwrap();
         let v = p.vertices();
         assert_eq!(v.len(), 4);

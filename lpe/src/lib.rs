@@ -7,18 +7,22 @@
 //!
 //! # Modules, bottom-up
 //!
-//! - The language: the path model ([`path`]), the expression syntax tree ([`ast`]), the
-//!   RenderMan-dialect front end ([`syntax`]: lexer, parser, errors with spans) with
-//!   prefixes ([`prefix`]), macros ([`macros`]), lobe mappings ([`lobes`]) and
-//!   `rendermn.ini` loading ([`ini`]); the OSL-dialect front end ([`osl`]: its path
-//!   model, expanded tree and parser), and [`Dialect`] naming the two; set algebra over
-//!   whole expressions (`A & B`, `A - B`, `^A`: [`algebra`], a dialect-independent layer
-//!   above the front ends).
+//! - The seam ([`dialect`]): the [`Dialect`] trait every layer above is generic over; its
+//!   two implementations, each in its folder: [`renderman`] ([`renderman::RenderMan`]:
+//!   path model, expression tree, front end with prefixes, macros, lobe maps and
+//!   `rendermn.ini`, and the class alphabet it lowers to) and [`osl`] ([`osl::Osl`]: the
+//!   same for Open Shading Language's dialect); [`registry`] names them at run time
+//!   ([`DialectName`], [`with_dialect!`]). Shared by both front ends: [`limits`] (what an
+//!   expression may cost) and `print` (sequences and alternations with their
+//!   parentheses); set algebra over whole expressions (`A & B`, `A - B`, `^A`:
+//!   [`algebra`]).
 //! - The automata ([`automata`]): the shared ids in the leaf [`automata::mask`]
-//!   ([`AovMask`], [`Class`], [`State`], [`MAX_AOVS`]), then the compressed alphabet,
-//!   the bitset Glushkov NFA and the minimized DFA (crate-private).
-//! - The facade ([`aov`]): [`AovSet`] compiles a list of AOVs under [`Options`] into one
-//!   automaton and steps it; [`CompileError`] says why a set did not compile.
+//!   ([`AovMask`], [`Class`], [`State`], [`MAX_AOVS`]), the intermediate form dialects
+//!   lower to ([`automata::ir`]), [`CompileError`], then the bitset Glushkov NFA, the
+//!   minimized DFA and the lazy DFA.
+//! - The facade ([`aov`]): [`AovSet`] compiles a list of AOVs of any dialect under
+//!   [`Options`] into one automaton and steps it; [`CompileError`] says why a set did
+//!   not compile.
 //! - The seam ([`matcher`]): [`PathMatcher`], the incremental matcher trait renderers
 //!   program against; [`AovSet`] implements it.
 //! - The formal side ([`analysis`]): emptiness warnings (on the NFA alone), equivalence
@@ -29,21 +33,9 @@
 //!
 //! The semantics are specified in the repository's docs/language.md and executed by the
 //! `lpe-reference` crate; the decisions this crate makes where a renderer could expect
-//! either answer are documented on the items that make them ([`path`], [`ast`],
-//! [`syntax`]).
-//!
-//! ```
-//! use lpe::{parse, Path};
-//!
-//! let aov = parse("lpe:indirectDiffuse_key").unwrap();
-//! assert_eq!(aov.to_string(), "C<RD>.+[<L.'key'>O]");
-//!
-//! let path: Path = "C RD2'floor' TS8 L'key'".parse().unwrap();
-//! assert_eq!(path.len(), 4);
-//!
-//! let err = parse("C<L'key'>").unwrap_err();
-//! assert_eq!(err.help(), Some("write `<L.'key'>`"));
-//! ```
+//! either answer are documented on the items that make them ([`renderman::path`],
+//! [`renderman::ast`], [`renderman::syntax`], [`osl`]). docs/architecture.md says which
+//! files a new dialect touches.
 //!
 //! # Matching in a renderer
 //!
@@ -55,8 +47,8 @@
 //! in [`matcher`]):
 //!
 //! ```
+//! use lpe::renderman::{parse, Event, EventKind, Lpe, Vertex, VertexType};
 //! use lpe::{AovSet, Class};
-//! use lpe::{parse, Event, EventKind, Lpe, Vertex, VertexType};
 //!
 //! // Scene load: compile the AOVs, classify every material lobe once.
 //! let aovs: Vec<(String, Lpe)> = ["directDiffuse", "indirectDiffuse", "emissive", "caustics"]
@@ -108,36 +100,28 @@
 pub mod algebra;
 pub mod analysis;
 pub mod aov;
-pub mod ast;
 pub mod automata;
 mod bits;
 pub mod dialect;
 pub mod fxhash;
-pub mod ini;
-pub mod lobes;
-pub mod macros;
+pub mod limits;
 pub mod matcher;
 pub mod osl;
-pub mod path;
-pub mod prefix;
 mod print;
+pub mod registry;
+pub mod renderman;
 pub mod rng;
-pub mod syntax;
 
 #[cfg(any(feature = "arbitrary", feature = "proptest"))]
 pub mod generate;
 #[cfg(feature = "proptest")]
 pub mod strategy;
 
-pub use aov::{AovSet, CompileError, Options};
+pub use aov::{AovSet, Options};
 pub use aov::{Cache, NfaMatcher};
-pub use ast::{Expr, Lpe};
+pub use automata::error::CompileError;
 pub use automata::mask::{AovMask, Class, State, MAX_AOVS};
 pub use automata::mask::{LabelId, NfaState};
-pub use dialect::Dialect;
-pub use ini::{Config, IniError, IniErrorKind};
-pub use lobes::{LobeCategory, LobeError, LobeMap};
+pub use dialect::{Dialect, DialectLpe};
 pub use matcher::PathMatcher;
-pub use path::{Event, EventKind, Path, PathError, Vertex, VertexType};
-pub use prefix::{Prefix, Prefixes};
-pub use syntax::{parse, Error, ErrorKind, Limits, Parser};
+pub use registry::{DialectName, UnknownDialect};

@@ -11,11 +11,12 @@
 //! records the classes and answer at the emitter.
 //!
 //! ```
-//! use lpe::{parse, Event, EventKind, AovSet, Lpe, PathMatcher, Vertex, VertexType};
+//! use lpe::renderman::{parse, Event, EventKind, Lpe, Vertex, VertexType};
+//! use lpe::{AovSet, PathMatcher};
 //!
 //! /// Routes the two-bounce path of one camera sample, sampling the key light at each
 //! /// bounce: the AOV names that receive each light sample.
-//! fn route<M: PathMatcher + Sync>(m: &M, names: &[String]) -> Vec<Vec<String>> {
+//! fn route<M: PathMatcher<Vertex = Vertex> + Sync>(m: &M, names: &[String]) -> Vec<Vec<String>> {
 //!     // Scene load: classify every material lobe, light and the camera once.
 //!     let lobe = |ty, kind, n, group| {
 //!         m.classify(&Vertex::scatter(ty, Event::new(kind, n).unwrap(), Some(group)))
@@ -57,21 +58,24 @@
 //! ```
 
 use crate::aov::AovSet;
+use crate::automata::ir::VertexClasses;
 use crate::automata::mask::{AovMask, Class, NfaState, State};
 use crate::automata::wide::NfaMatcher;
-use crate::path::{Path, Vertex};
+use crate::dialect::Dialect;
 
 /// An incremental LPE matcher over a list of AOVs: AOV `i` is the `i`-th expression the
 /// matcher was built from, bit `i` of every [`AovMask`] it returns. See the
 /// [module docs](self) for the loop a renderer runs.
 pub trait PathMatcher {
+    /// The vertex of the matcher's dialect ([`crate::Dialect::Vertex`]).
+    type Vertex;
     /// A vertex after classification: compute it once per kind of scene vertex.
     type Class: Copy + Send + Sync;
     /// Where one path is: small, carried per path and copied at every branch.
     type State: Copy + Send;
 
     /// The class of a vertex.
-    fn classify(&self, v: &Vertex) -> Self::Class;
+    fn classify(&self, v: &Self::Vertex) -> Self::Class;
     /// The state before any vertex: step the camera vertex `C` first.
     fn start(&self) -> Self::State;
     /// The state after one more vertex.
@@ -83,11 +87,10 @@ pub trait PathMatcher {
     /// costs the caller the early exit.
     fn is_dead(&self, s: Self::State) -> bool;
 
-    /// The AOVs matching a whole path: every vertex classified and stepped from
-    /// [`PathMatcher::start`].
-    fn match_path(&self, path: &Path) -> AovMask {
-        let s = path
-            .vertices()
+    /// The AOVs matching a whole path, given by its vertices: every vertex classified
+    /// and stepped from [`PathMatcher::start`].
+    fn match_vertices(&self, vertices: &[Self::Vertex]) -> AovMask {
+        let s = vertices
             .iter()
             .fold(self.start(), |s, v| self.step(s, self.classify(v)));
         self.matches(s)
@@ -95,12 +98,13 @@ pub trait PathMatcher {
 }
 
 /// One table step per vertex (see [`AovSet`]).
-impl PathMatcher for AovSet {
+impl<D: Dialect> PathMatcher for AovSet<D> {
+    type Vertex = D::Vertex;
     type Class = Class;
     type State = State;
 
     #[inline]
-    fn classify(&self, v: &Vertex) -> Class {
+    fn classify(&self, v: &D::Vertex) -> Class {
         AovSet::classify(self, v)
     }
 
@@ -123,19 +127,16 @@ impl PathMatcher for AovSet {
     fn is_dead(&self, s: State) -> bool {
         AovSet::is_dead(self, s)
     }
-
-    fn match_path(&self, path: &Path) -> AovMask {
-        AovSet::match_path(self, path)
-    }
 }
 
 /// The bitset NFA on its wide state (see [`NfaMatcher`]).
-impl PathMatcher for NfaMatcher<'_> {
+impl<C: VertexClasses> PathMatcher for NfaMatcher<'_, C> {
+    type Vertex = C::Vertex;
     type Class = Class;
     type State = NfaState;
 
     #[inline]
-    fn classify(&self, v: &Vertex) -> Class {
+    fn classify(&self, v: &C::Vertex) -> Class {
         NfaMatcher::classify(self, v)
     }
 
@@ -164,11 +165,11 @@ impl PathMatcher for NfaMatcher<'_> {
 mod tests {
     use super::*;
     use crate::aov::Options;
-    use crate::parse;
+    use crate::renderman::{parse, Lpe, Path};
 
     /// Through the trait, generically: the same answers as the set's own methods, on
     /// both of the set's engines.
-    fn generic_match<M: PathMatcher>(m: &M, path: &Path) -> (AovMask, bool) {
+    fn generic_match<M: PathMatcher<Vertex = crate::renderman::Vertex>>(m: &M, path: &Path) -> (AovMask, bool) {
         let mut s = m.start();
         let mut died = false;
         for v in path.vertices() {
@@ -186,7 +187,7 @@ mod tests {
             "C<RS>+<TD'glass'>?L",
             "CR<CD>L",
         ];
-        let aovs: Vec<(String, crate::Lpe)> = srcs
+        let aovs: Vec<(String, Lpe)> = srcs
             .iter()
             .map(|s| (s.to_string(), parse(s).unwrap()))
             .collect();
@@ -209,7 +210,7 @@ mod tests {
                 let p: Path = p.parse().unwrap();
                 let (mask, _) = generic_match(&set, &p);
                 assert_eq!(mask, set.match_path(&p), "{p}");
-                assert_eq!(PathMatcher::match_path(&set, &p), mask, "{p}");
+                assert_eq!(PathMatcher::match_vertices(&set, p.vertices()), mask, "{p}");
             }
             let s = PathMatcher::start(&set);
             assert_eq!(s, AovSet::start(&set), "start is before the camera");

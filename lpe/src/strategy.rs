@@ -1,7 +1,7 @@
 //! proptest strategies for expressions and paths (feature `proptest`).
 //!
 //! Exported so a renderer can property-test its own matcher against these ASTs. The
-//! ASTs are normalized (see [`crate::ast`]) so they print and re-parse to themselves.
+//! ASTs are normalized (see [`crate::renderman::ast`]) so they print and re-parse to themselves.
 //! Labels come from a small pool so that expressions and paths share them.
 //!
 //! To test your own matcher against the reference, draw an [`aov_expr`] (or [`expr`])
@@ -10,11 +10,11 @@
 use proptest::prelude::*;
 
 use crate::algebra::Algebra;
-use crate::ast::{
+use crate::renderman::ast::{
     Atom, EventPattern, EventPos, Expr, Item, LabelPos, Lpe, Repetition, Triple, TypePos,
 };
-use crate::path::{Event, EventKind, Path, Vertex, VertexType};
-use crate::prefix::{Prefix, Prefixes};
+use crate::renderman::path::{Event, EventKind, Path, Vertex, VertexType};
+use crate::renderman::prefix::{Prefix, Prefixes};
 
 /// The label pool shared by expressions and paths.
 pub const LABELS: [&str; 4] = ["key", "fill", "floor", "a b"];

@@ -1,15 +1,13 @@
 //! Equivalence and inclusion of two expressions, with shortest witnesses.
 
-use super::search::{analysis_options, explore, explore_osl, AnalysisError};
+use super::search::{analysis_options, explore, AnalysisError};
 use crate::aov::AovSet;
 use crate::automata::mask::AovMask;
-use crate::path::Path;
-use crate::{osl, Lpe};
+use crate::dialect::{Dialect, DialectLpe};
 
-/// How two expressions relate: on paths (RenderMan), or on every vertex sequence (OSL,
-/// whose paths have no fixed shape; witnesses are [`osl::Path`]s).
+/// How two expressions relate, with witnesses of dialect paths `P`.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Comparison<P = Path> {
+pub struct Comparison<P> {
     /// A shortest path matched by the first and not the second.
     pub first_only: Option<P>,
     /// A shortest path matched by the second and not the first.
@@ -23,43 +21,35 @@ impl<P> Comparison<P> {
     }
 }
 
-/// Compares two expressions on every path: equivalence, inclusion, and shortest
-/// witnesses of the differences.
-pub fn compare(a: &Lpe, b: &Lpe) -> Result<Comparison, AnalysisError> {
-    let set = AovSet::compile_with(
-        &[("A".into(), a.clone()), ("B".into(), b.clone())],
-        &analysis_options(),
-    )?;
-    differences(|visit| explore(&set, visit))
-}
-
-/// [`compare`] for two OSL expressions parsed under `registered`, on every sequence of
-/// vertices.
+/// Compares two expressions of one dialect on every path of its path model (OSL's: every
+/// sequence of vertices): equivalence, inclusion, and shortest witnesses of the
+/// differences.
 ///
 /// ```
-/// use lpe::analysis::compare_osl;
+/// use lpe::analysis::compare;
 /// use lpe::osl::{parse, Registered};
 ///
 /// let reg = Registered::none();
-/// let c = compare_osl(
+/// let c = compare(
 ///     &parse("C<RD>[LO]", &reg).unwrap(),
 ///     &parse("(C<RD>L)|(C<RD>O)", &reg).unwrap(),
-///     &reg,
 /// )
 /// .unwrap();
 /// assert!(c.equivalent());
 /// ```
-pub fn compare_osl(
-    a: &osl::Lpe,
-    b: &osl::Lpe,
-    registered: &osl::Registered,
-) -> Result<Comparison<osl::Path>, AnalysisError> {
-    let set = AovSet::compile_osl(
-        &[("A".into(), a.clone()), ("B".into(), b.clone())],
-        registered,
-        &analysis_options(),
-    )?;
-    differences(|visit| explore_osl(&set, visit))
+pub fn compare<D, L>(a: &L, b: &L) -> Result<Comparison<D::Path>, AnalysisError>
+where
+    L: DialectLpe<Dialect = D>,
+    D: Dialect<Lpe = L>,
+{
+    compare_in::<D>(a, b)
+}
+
+/// [`compare`] with the dialect named (the expressions' bounds are the dialect's).
+fn compare_in<D: Dialect>(a: &D::Lpe, b: &D::Lpe) -> Result<Comparison<D::Path>, AnalysisError> {
+    let aovs = [("A".to_string(), a.clone()), ("B".to_string(), b.clone())];
+    let set = AovSet::<D>::compile_under(&aovs, &D::Registration::default(), &analysis_options())?;
+    differences(|visit| explore(&set, visit))
 }
 
 /// The first shortest witness each way, from a search over the set of `A` (AOV 0) and
@@ -85,7 +75,8 @@ fn differences<P>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::parse;
+    use crate::osl;
+    use crate::renderman::{parse, Lpe};
 
     fn lpe(s: &str) -> Lpe {
         parse(s).unwrap()
@@ -125,7 +116,7 @@ mod tests {
     }
 
     fn cmp_osl(a: &str, b: &str) -> Comparison<osl::Path> {
-        compare_osl(&osl(a), &osl(b), &osl::Registered::none()).unwrap()
+        compare(&osl(a), &osl(b)).unwrap()
     }
 
     #[test]

@@ -1,8 +1,10 @@
-//! Formal analysis on the automata: emptiness, equivalence and inclusion, partition
-//! checks, each with the shortest witness path.
+//! Formal analysis on the automata, for any [`crate::Dialect`]: emptiness, equivalence
+//! and inclusion, partition checks, each with the shortest witness path.
 //!
-//! All searches run over *paths* only (docs/language.md §2.2: `C`, then `R`/`T` vertices, then one
-//! `L` or `O`), as the product of the set's automaton with that path shape:
+//! All searches run over the dialect's paths only ([`crate::Dialect::SHAPE`]: RenderMan's
+//! `C`, then `R`/`T` vertices, then one `L` or `O`, docs/language.md §2.2; OSL's any
+//! sequence, with [`crate::Dialect::domain`] for partitions), as the product of the set's
+//! automaton with that path shape:
 //! - emptiness ([`crate::aov::AovSet::warnings`], computed in the automata layer when a set
 //!   compiles) needs no determinization: a breadth-first search
 //!   over `(NFA position, shape state)` pairs, linear in the NFA;
@@ -21,10 +23,7 @@ mod search;
 mod unmatched;
 
 pub use crate::automata::emptiness::Warning;
-pub use compare::{compare, compare_osl, Comparison};
-pub use partition::{
-    default_osl_universe, default_universe, partition, partition_osl, remainder, remainder_osl,
-    Partition, DEFAULT_OSL_UNIVERSE, DEFAULT_UNIVERSE,
-};
+pub use compare::{compare, Comparison};
+pub use partition::{default_universe, partition, remainder, Partition};
 pub use search::{AnalysisError, MAX_SEARCH_STATES};
 pub use unmatched::warnings;

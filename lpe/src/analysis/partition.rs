@@ -1,26 +1,15 @@
 //! Partition checks: does a list of AOVs split a universe of paths into disjoint parts
 //! that cover it, and if not, shortest witnesses of each overlap, gap and stray path.
 
-use super::search::{analysis_options, explore, explore_osl, AnalysisError};
+use super::search::{analysis_options, explore, AnalysisError};
 use crate::algebra::{Algebra, SetExpr};
 use crate::aov::AovSet;
 use crate::automata::mask::AovMask;
-use crate::path::Path;
-use crate::{osl, parse, Expr, Lpe, Prefixes};
+use crate::dialect::{Dialect, DialectLpe};
 
-/// The default universe of a partition check: every light-transport path.
-pub const DEFAULT_UNIVERSE: &str = "C.*[<L.>O]";
-
-/// The OSL counterpart of [`DEFAULT_UNIVERSE`], and the domain of every OSL partition
-/// check: the paths a renderer feeds with the built-in labels, a camera, scattering
-/// vertices (event `R` or `T`, scattering `D`, `G` or `S`, any non-basic custom labels),
-/// then a light or an emitting object. RenderMan's searches run over its path shape; OSL
-/// paths have none, so this expression plays that part.
-pub const DEFAULT_OSL_UNIVERSE: &str = "C<[RT][DGS]>*[LO]";
-
-/// The result of a partition check.
+/// The result of a partition check, with witnesses of dialect paths `P`.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Partition<P = Path> {
+pub struct Partition<P> {
     /// `(i, j, path)`: a shortest universe path matched by both AOV `i` and AOV `j`
     /// (`i < j`), one entry per overlapping pair.
     pub overlaps: Vec<(usize, usize, P)>,
@@ -37,33 +26,43 @@ impl<P> Partition<P> {
     }
 }
 
-/// Checks whether `aovs` partition `universe` (default [`DEFAULT_UNIVERSE`]): every
-/// universe path matched by exactly one AOV, none matching outside it.
-pub fn partition(aovs: &[(String, Lpe)], universe: &Lpe) -> Result<Partition, AnalysisError> {
-    let mut all = vec![("universe".to_string(), universe.clone())];
-    all.extend_from_slice(aovs);
-    let set = AovSet::compile_with(&all, &analysis_options())?;
-    split(|visit| explore(&set, visit), 1)
+/// Checks whether `aovs`, parsed under `registration`, partition `universe` (default
+/// [`default_universe`]): every universe path matched by exactly one AOV, none matching
+/// outside it. A dialect with a [`Dialect::domain`] (OSL) is checked on the paths of
+/// that domain only: overlaps and gaps inside `universe`, and AOV matches on such paths
+/// outside it.
+pub fn partition<D, L>(
+    aovs: &[(String, L)],
+    universe: &L,
+    registration: &D::Registration,
+) -> Result<Partition<D::Path>, AnalysisError>
+where
+    L: DialectLpe<Dialect = D>,
+    D: Dialect<Lpe = L>,
+{
+    partition_in::<D>(aovs, universe, registration)
 }
 
-/// [`partition`] for OSL expressions parsed under `registered`, over the paths of
-/// [`DEFAULT_OSL_UNIVERSE`] (the default universe is that same expression): overlaps and
-/// gaps inside `universe`, and AOV matches on such paths outside it.
-pub fn partition_osl(
-    aovs: &[(String, osl::Lpe)],
-    universe: &osl::Lpe,
-    registered: &osl::Registered,
-) -> Result<Partition<osl::Path>, AnalysisError> {
-    let domain = osl::parse(DEFAULT_OSL_UNIVERSE, registered).expect("the OSL domain parses");
-    let mut all = vec![
-        ("paths".to_string(), domain.clone()),
-        ("universe".to_string(), universe.clone()),
-    ];
+/// [`partition`] with the dialect named (the expressions' bounds are the dialect's).
+fn partition_in<D: Dialect>(
+    aovs: &[(String, D::Lpe)],
+    universe: &D::Lpe,
+    registration: &D::Registration,
+) -> Result<Partition<D::Path>, AnalysisError> {
+    let domain = D::domain(registration);
+    let mut all = Vec::with_capacity(aovs.len() + 2);
+    if let Some(d) = &domain {
+        all.push(("paths".to_string(), d.clone()));
+    }
+    all.push(("universe".to_string(), universe.clone()));
     all.extend_from_slice(aovs);
-    let set = AovSet::compile_osl(&all, registered, &analysis_options())?;
+    let set = AovSet::compile_under(&all, registration, &analysis_options())?;
+    if domain.is_none() {
+        return split(|visit| explore(&set, visit), 1);
+    }
     split(
         |visit| {
-            explore_osl(&set, &mut |m: AovMask, w: &dyn Fn() -> osl::Path| {
+            explore(&set, &mut |m: AovMask, w: &dyn Fn() -> D::Path| {
                 // Outside the domain nothing counts: drop bit 0 there as if unmatched.
                 m.contains(0) && visit(m.iter().skip(1).map(|i| i - 1).collect(), w)
             })
@@ -115,18 +114,22 @@ fn split<P>(
 }
 
 /// The AOV that closes every gap of a partition: the universe minus every AOV, as set
-/// algebra that prints as text the parser reads back (`C.*[<L.>O] - (a|b|c)`). Plain
-/// AOVs are subtracted as one alternation, set-algebra AOVs one by one; prefixes are
-/// dropped (they never change what matches). Overlaps are not its business: it only
-/// covers what no AOV covers.
-pub fn remainder(aovs: &[(String, Lpe)], universe: &Lpe) -> Lpe {
-    Lpe::from_algebra(Prefixes::NONE, remainder_tree(aovs, universe, Expr::alt))
+/// algebra that prints as text the dialect's parser reads back (`C.*[<L.>O] - (a|b|c)`;
+/// in OSL under the registration the AOVs were parsed with). Plain AOVs are subtracted
+/// as one alternation, set-algebra AOVs one by one; RenderMan's prefixes are dropped
+/// (they never change what matches). Overlaps are not its business: it only covers what
+/// no AOV covers.
+pub fn remainder<D, L>(aovs: &[(String, L)], universe: &L) -> L
+where
+    L: DialectLpe<Dialect = D>,
+    D: Dialect<Lpe = L>,
+{
+    remainder_in::<D>(aovs, universe)
 }
 
-/// [`remainder`] in the OSL dialect: `C<[RT][DGS]>*[LO] - ((a)|(b))`, printed as the
-/// OSL parser reads it back (under the registration the AOVs were parsed with).
-pub fn remainder_osl(aovs: &[(String, osl::Lpe)], universe: &osl::Lpe) -> osl::Lpe {
-    osl::Lpe::from_algebra(remainder_tree(aovs, universe, osl::Expr::alt))
+/// [`remainder`] with the dialect named (the expressions' bounds are the dialect's).
+fn remainder_in<D: Dialect>(aovs: &[(String, D::Lpe)], universe: &D::Lpe) -> D::Lpe {
+    D::from_algebra(remainder_tree(aovs, universe, D::alt))
 }
 
 /// The universe minus the plain AOVs as one alternation (`alt`), then minus each
@@ -151,20 +154,22 @@ fn remainder_tree<L: SetExpr>(
     t
 }
 
-/// The default universe, parsed.
-pub fn default_universe() -> Lpe {
-    parse(DEFAULT_UNIVERSE).expect("the default universe parses")
-}
-
-/// [`DEFAULT_OSL_UNIVERSE`], parsed under `registered`.
-pub fn default_osl_universe(registered: &osl::Registered) -> osl::Lpe {
-    osl::parse(DEFAULT_OSL_UNIVERSE, registered).expect("the OSL universe parses")
+/// The dialect's default universe ([`Dialect::DEFAULT_UNIVERSE`]), parsed under
+/// `registration`.
+pub fn default_universe<D: Dialect>(registration: &D::Registration) -> D::Lpe {
+    D::parse(D::DEFAULT_UNIVERSE, registration).expect("the default universe parses")
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::macros::BASIC;
+    use crate::osl::{self, Osl};
+    use crate::renderman::macros::BASIC;
+    use crate::renderman::{parse, Lpe, Parser, RenderMan};
+
+    fn rm_universe() -> Lpe {
+        default_universe::<RenderMan>(&Parser::default())
+    }
 
     fn lpe(s: &str) -> Lpe {
         parse(s).unwrap()
@@ -176,7 +181,7 @@ mod tests {
 
     #[test]
     fn basic_aovs_partition_the_universe() {
-        let p = partition(&basic(), &default_universe()).unwrap();
+        let p = partition(&basic(), &rm_universe(), &Parser::default()).unwrap();
         assert!(p.is_clean(), "{p:?}");
     }
 
@@ -184,7 +189,7 @@ mod tests {
     fn caustics_overlap_with_a_short_witness() {
         let mut aovs = basic();
         aovs.push(("caustics".into(), lpe("CDS+[<L.>O]")));
-        let p = partition(&aovs, &default_universe()).unwrap();
+        let p = partition(&aovs, &rm_universe(), &Parser::default()).unwrap();
         assert!(p.gap.is_none() && p.outside.is_empty(), "{p:?}");
         // `D` is reflected or transmitted diffuse, so caustics lie inside indirectDiffuse
         // (`C RD S L`) and subsurface (`C TD S L`); 4 vertices is the shortest caustic.
@@ -213,15 +218,15 @@ mod tests {
             let (n, first) = aovs.remove(0);
             let split = lpe(&format!("{first} - C<RS>.*[<L.>O]"));
             aovs.insert(0, (n, split));
-            let p = partition(&aovs, &default_universe()).unwrap();
+            let p = partition(&aovs, &rm_universe(), &Parser::default()).unwrap();
             assert!(p.gap.is_some(), "{name}");
-            let r = remainder(&aovs, &default_universe());
+            let r = remainder(&aovs, &rm_universe());
             let text = r.to_string();
             assert!(text.starts_with("C.*[<L.>O] - ("), "{text}");
             assert_eq!(parse(&text).unwrap(), r, "{text}");
             let mut closed = aovs.clone();
             closed.push(("rest".into(), r.clone()));
-            let q = partition(&closed, &default_universe()).unwrap();
+            let q = partition(&closed, &rm_universe(), &Parser::default()).unwrap();
             assert_eq!(q.gap, None, "{name}: {text}");
             assert!(q.outside.is_empty(), "{name}: {text}");
             // What it covers is exactly what the dropped AOV covered and the split-off
@@ -244,9 +249,9 @@ mod tests {
     #[test]
     fn osl_basic_set_partitions_the_osl_universe() {
         let reg = osl::Registered::none();
-        let p = partition_osl(
+        let p = partition(
             &osl_set(&osl::BASIC.map(|(_, src)| src)),
-            &default_osl_universe(&reg),
+            &default_universe::<Osl>(&reg),
             &reg,
         )
         .unwrap();
@@ -259,7 +264,7 @@ mod tests {
         // Without `C[LO]` the direct paths are a gap; doubling `C<RD>[LO]` overlaps.
         let mut aovs = osl_set(&osl::BASIC.map(|(_, src)| src)[..6]);
         aovs.push(("again".into(), osl::parse("C<RD>L", &reg).unwrap()));
-        let p = partition_osl(&aovs, &default_osl_universe(&reg), &reg).unwrap();
+        let p = partition(&aovs, &default_universe::<Osl>(&reg), &reg).unwrap();
         assert_eq!(p.gap.unwrap().to_string(), "C,~ L,~");
         let o: Vec<(usize, usize, String)> = p
             .overlaps
@@ -270,7 +275,7 @@ mod tests {
         assert!(p.outside.is_empty());
         // A universe without glossy: glossy AOVs match outside it.
         let u = osl::parse("C<[RT]D>*[LO]", &reg).unwrap();
-        let p = partition_osl(&osl_set(&osl::BASIC.map(|(_, src)| src)), &u, &reg).unwrap();
+        let p = partition(&osl_set(&osl::BASIC.map(|(_, src)| src)), &u, &reg).unwrap();
         let out: Vec<(usize, String)> =
             p.outside.iter().map(|(i, w)| (*i, w.to_string())).collect();
         // Each a shortest one: the glossy bounce comes first, or right after the
@@ -290,9 +295,9 @@ mod tests {
 
     #[test]
     fn osl_algebra_members_and_the_osl_remainder() {
-        use crate::analysis::compare_osl;
+        use crate::analysis::compare;
         let reg = osl::Registered::none();
-        let universe = default_osl_universe(&reg);
+        let universe = default_universe::<Osl>(&reg);
         // The basic set without `C[LO]`, its first member split: `C<RD>O` now goes
         // nowhere either.
         let mut aovs = osl_set(&osl::BASIC.map(|(_, src)| src)[1..6]);
@@ -303,10 +308,10 @@ mod tests {
                 osl::parse("C<RD>[LO] - C<RD>O", &reg).unwrap(),
             ),
         );
-        let p = partition_osl(&aovs, &universe, &reg).unwrap();
+        let p = partition(&aovs, &universe, &reg).unwrap();
         assert_eq!(p.gap.as_ref().unwrap().to_string(), "C,~ L,~");
         assert!(p.overlaps.is_empty() && p.outside.is_empty(), "{p:?}");
-        let r = remainder_osl(&aovs, &universe);
+        let r = remainder(&aovs, &universe);
         let text = r.to_string();
         assert!(text.starts_with("<C.><[RT][DGS]>*<L.>|<O.> - (("), "{text}");
         assert!(
@@ -316,8 +321,8 @@ mod tests {
         assert_eq!(osl::parse(&text, &reg).unwrap(), r, "{text}");
         // Exactly the two missing parts, worked out by hand.
         let want = osl::parse("(C[LO])|(C<RD>O)", &reg).unwrap();
-        assert!(compare_osl(&r, &want, &reg).unwrap().equivalent(), "{text}");
+        assert!(compare(&r, &want).unwrap().equivalent(), "{text}");
         aovs.push(("rest".into(), r));
-        assert!(partition_osl(&aovs, &universe, &reg).unwrap().is_clean());
+        assert!(partition(&aovs, &universe, &reg).unwrap().is_clean());
     }
 }

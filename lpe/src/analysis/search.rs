@@ -4,12 +4,11 @@
 use std::fmt;
 
 use crate::aov::{AovSet, CompileError, Options};
-use crate::automata::alphabet::Group;
+use crate::automata::ir::{Place, VertexClasses};
 use crate::automata::mask::{AovMask, Class, State};
-use crate::automata::shape::{Shape, ANY, NONE, PATH};
+use crate::automata::shape::{Shape, NONE};
+use crate::dialect::Dialect;
 use crate::fxhash::FxSet;
-use crate::osl;
-use crate::path::{Path, Vertex};
 
 /// Most `(state, shape)` pairs a comparison or partition search visits before giving up.
 pub const MAX_SEARCH_STATES: usize = 2_000_000;
@@ -45,74 +44,43 @@ impl From<CompileError> for AnalysisError {
 
 /// Visits every distinct end state of a complete path, shortest path first, calling
 /// `visit(mask, witness)`; `visit` returns `true` to stop. Dead states are pruned, so
-/// masks are never empty.
-pub(super) fn explore(
-    set: &AovSet,
-    visit: impl FnMut(AovMask, &dyn Fn() -> Path) -> bool,
+/// masks are never empty. Paths are the sequences of the dialect's [`Dialect::SHAPE`]
+/// (RenderMan's: `C`, scattering vertices, one emitter; OSL's: any sequence).
+pub(super) fn explore<D: Dialect>(
+    set: &AovSet<D>,
+    visit: impl FnMut(AovMask, &dyn Fn() -> D::Path) -> bool,
 ) -> Result<(), AnalysisError> {
     explore_within(set, MAX_SEARCH_STATES, visit)
 }
 
 /// [`explore`], giving up past `cap` states.
-pub(super) fn explore_within(
-    set: &AovSet,
+pub(super) fn explore_within<D: Dialect>(
+    set: &AovSet<D>,
     cap: usize,
-    mut visit: impl FnMut(AovMask, &dyn Fn() -> Path) -> bool,
+    mut visit: impl FnMut(AovMask, &dyn Fn() -> D::Path) -> bool,
 ) -> Result<(), AnalysisError> {
-    let alphabet = set.alphabet();
-    // Letters: (class, group) with a representative vertex.
-    let letters: Vec<(Class, Group, Vertex)> = (0..alphabet.class_count())
+    let classes = set.classes();
+    // Letters: (class, place) with a representative vertex.
+    let letters: Vec<(Class, Place, D::Vertex)> = (0..classes.class_count())
         .flat_map(|c| {
-            Group::ALL.into_iter().filter_map(move |g| {
-                alphabet
-                    .representative(c, g)
-                    .map(|v| (set.classify(&v), g, v))
+            D::SHAPE.places().iter().filter_map(move |&p| {
+                classes
+                    .representative(c, p)
+                    .map(|v| (set.classify(&v), p, v))
             })
         })
         .collect();
-    walk(set, &letters, &PATH, cap, |m, witness| {
-        // Built along the PATH shape from constructible vertices: valid.
-        visit(m, &|| {
-            Path::new(witness()).expect("witnesses follow the path shape")
-        })
-    })
-}
-
-/// [`explore`] on an OSL set: every sequence of vertices (OSL paths have no fixed
-/// shape), one letter per vertex class, witnessed by the class representatives.
-pub(super) fn explore_osl(
-    set: &AovSet,
-    visit: impl FnMut(AovMask, &dyn Fn() -> osl::Path) -> bool,
-) -> Result<(), AnalysisError> {
-    explore_osl_within(set, MAX_SEARCH_STATES, visit)
-}
-
-/// [`explore_osl`], giving up past `cap` states.
-pub(super) fn explore_osl_within(
-    set: &AovSet,
-    cap: usize,
-    mut visit: impl FnMut(AovMask, &dyn Fn() -> osl::Path) -> bool,
-) -> Result<(), AnalysisError> {
-    let Some(compiled) = set.osl_compiled() else {
-        return Ok(());
-    };
-    let letters: Vec<(Class, Group, osl::Vertex)> = (0..compiled.class_count())
-        .map(|c| {
-            let v = compiled.representative(c).clone();
-            (set.classify_osl(&v), Group::Scatter, v)
-        })
-        .collect();
-    walk(set, &letters, &ANY, cap, |m, witness| {
-        visit(m, &|| osl::Path::new(witness()))
+    walk(set, &letters, D::SHAPE.automaton(), cap, |m, witness| {
+        visit(m, &|| D::path(witness()))
     })
 }
 
 /// Breadth-first search over `(state, shape state)` of the product of `set` with
 /// `shape`, reading `letters`; calls `visit` on every newly reached accepting node, with
 /// the letters' values along a shortest way there.
-fn walk<V: Clone>(
-    set: &AovSet,
-    letters: &[(Class, Group, V)],
+fn walk<D: Dialect, V: Clone>(
+    set: &AovSet<D>,
+    letters: &[(Class, Place, V)],
     shape: &Shape,
     cap: usize,
     mut visit: impl FnMut(AovMask, &dyn Fn() -> Vec<V>) -> bool,

@@ -2,10 +2,12 @@
 //! plain AOVs; whether `A - B` or `A & B` leaves any path needs the two operands' states
 //! together, so it searches the compiled set's own states.
 
-use super::search::{explore_osl_within, explore_within};
+use super::search::explore_within;
+use crate::algebra::SetExpr;
 use crate::aov::AovSet;
 use crate::automata::emptiness::Warning;
 use crate::automata::mask::AovMask;
+use crate::dialect::Dialect;
 
 /// Most states the search visits; past it no warning is given (a warning is advice, not
 /// a verdict).
@@ -14,7 +16,7 @@ const MAX_STATES: usize = 200_000;
 /// Every AOV of `set` that can match no path, with the reason: [`AovSet::warnings`] for
 /// the plain AOVs, and for the AOVs with set algebra a search of the set's states (none
 /// reported for them if it passes 200 000 states).
-pub fn warnings(set: &AovSet) -> Vec<Warning> {
+pub fn warnings<D: Dialect>(set: &AovSet<D>) -> Vec<Warning> {
     let mut out = set.warnings().to_vec();
     out.extend(algebra_warnings(set));
     out.sort_by_key(|w| w.aov);
@@ -23,12 +25,9 @@ pub fn warnings(set: &AovSet) -> Vec<Warning> {
 
 /// Warnings for the AOVs with set algebra that match no path of the path model (for an
 /// OSL set: no non-empty sequence of vertices).
-fn algebra_warnings(set: &AovSet) -> Vec<Warning> {
+fn algebra_warnings<D: Dialect>(set: &AovSet<D>) -> Vec<Warning> {
     let algebra: Vec<usize> = (0..set.len())
-        .filter(|&i| match set.osl_registered() {
-            Some(_) => set.osl_lpes()[i].algebra.is_some(),
-            None => set.lpes()[i].algebra.is_some(),
-        })
+        .filter(|&i| set.lpes()[i].algebra().is_some())
         .collect();
     if algebra.is_empty() {
         return Vec::new();
@@ -38,10 +37,7 @@ fn algebra_warnings(set: &AovSet) -> Vec<Warning> {
         seen = m.iter().chain(seen.iter()).collect();
         algebra.iter().all(|&i| seen.contains(i))
     };
-    let searched = match set.osl_registered() {
-        Some(_) => explore_osl_within(set, MAX_STATES, |m, _| visit(m)),
-        None => explore_within(set, MAX_STATES, |m, _| visit(m)),
-    };
+    let searched = explore_within(set, MAX_STATES, |m, _| visit(m));
     if searched.is_err() {
         return Vec::new();
     }
@@ -61,11 +57,11 @@ fn algebra_warnings(set: &AovSet) -> Vec<Warning> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::parse;
+    use crate::renderman::parse;
 
     #[test]
     fn algebra_that_leaves_no_path_is_reported_and_the_rest_is_not() {
-        let aovs: Vec<(String, crate::Lpe)> = [
+        let aovs: Vec<(String, crate::renderman::Lpe)> = [
             ("none", "C.*L - C.*L"),
             ("disjoint", "C<RD>L & C<RS>L"),
             ("some", "C.*L - C.*DL"),
@@ -96,7 +92,7 @@ mod tests {
         .iter()
         .map(|(n, s)| (n.to_string(), crate::osl::parse(s, &reg).unwrap()))
         .collect();
-        let set = AovSet::compile_osl(&aovs, &reg, &crate::Options::default()).unwrap();
+        let set = AovSet::compile_under(&aovs, &reg, &crate::Options::default()).unwrap();
         let names = |ws: &[Warning]| ws.iter().map(|w| w.name.clone()).collect::<Vec<_>>();
         assert_eq!(names(set.warnings()), ["dead"]);
         assert_eq!(names(&warnings(&set)), ["none", "disjoint", "dead"]);

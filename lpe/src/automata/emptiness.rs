@@ -4,11 +4,10 @@
 
 use std::fmt;
 
-use super::shape::{Shape, ANY, CAMERA_TO_EMITTER, FROM_CAMERA, NONE, PATH};
-use crate::ast::{Atom, Expr};
-use crate::automata::alphabet::{Alphabet, Group};
+use super::shape::{Shape, ANY, CAMERA_TO_EMITTER, FROM_CAMERA, NONE};
 use crate::automata::nfa::Nfa;
 use crate::bits;
+use crate::automata::ir::{PathShape, Place, Regex, VertexClasses};
 
 /// A compile-time warning: an AOV that can match no path.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -42,7 +41,7 @@ pub(crate) fn nonempty_under(nfa: &Nfa, groups: &[u8], shape: &Shape, aovs: usiz
         }
         for q in bits::ones(nfa.follow_of(p).iter().copied()) {
             let g = groups[nfa.atom_of[q] as usize];
-            for group in Group::ALL {
+            for group in Place::ALL {
                 let t = shape.next[s as usize][group.index()];
                 if g >> group.index() & 1 == 1
                     && t != NONE
@@ -56,23 +55,27 @@ pub(crate) fn nonempty_under(nfa: &Nfa, groups: &[u8], shape: &Shape, aovs: usiz
     found
 }
 
-/// The emptiness warnings of a freshly compiled set.
-pub(crate) fn empty_aovs(
+/// The emptiness warnings of a freshly compiled set whose paths have shape `shape`: an
+/// AOV that matches no sequence at all (naming an atom that matches no vertex, if one
+/// does), and under [`PathShape::CameraScattersEmitter`] which part of the path shape
+/// its sequences miss.
+pub(crate) fn empty_aovs<E: Regex>(
     nfa: &Nfa,
-    alphabet: &Alphabet,
-    atoms: &[&Atom],
+    classes: &impl VertexClasses,
+    shape: PathShape,
+    atoms: &[&E::Atom],
     names: &[String],
-    exprs: &[&Expr],
+    exprs: &[&E],
 ) -> Vec<Warning> {
-    // Per distinct atom: the groups (bit per `Group`) of the vertices it accepts.
+    // Per distinct atom: the places (bit per `Place`) of the vertices it accepts.
     let groups: Vec<u8> = (0..atoms.len())
         .map(|a| {
             let mut g = 0u8;
-            for c in 0..alphabet.class_count() {
-                if alphabet.accepts(c, a) {
-                    for group in Group::ALL {
-                        if alphabet.occurs_in(c, group) {
-                            g |= 1 << group.index();
+            for c in 0..classes.class_count() {
+                if classes.accepts(c, a) {
+                    for &place in shape.places() {
+                        if classes.occurs_in(c, place) {
+                            g |= 1 << place.index();
                         }
                     }
                 }
@@ -81,7 +84,7 @@ pub(crate) fn empty_aovs(
         })
         .collect();
     let n = names.len();
-    let on_paths = nonempty_under(nfa, &groups, &PATH, n);
+    let on_paths = nonempty_under(nfa, &groups, shape.automaton(), n);
     if on_paths.iter().all(|&b| b) {
         return Vec::new();
     }
@@ -121,14 +124,14 @@ pub(crate) fn empty_aovs(
         .collect()
 }
 
-/// An atom of `e` that accepts no vertex at all, if any.
-fn dead_atom(e: &Expr, atoms: &[&Atom], groups: &[u8]) -> Option<Atom> {
+/// An atom of `e` that accepts no vertex at all, if any, printed.
+fn dead_atom<E: Regex>(e: &E, atoms: &[&E::Atom], groups: &[u8]) -> Option<String> {
     let mut out = None;
-    e.for_each_atom(&mut |a| {
+    e.each_atom(&mut |a| {
         if out.is_none() {
             if let Some(i) = atoms.iter().position(|&x| x == a) {
                 if groups[i] == 0 {
-                    out = Some(a.clone());
+                    out = Some(a.to_string());
                 }
             }
         }

@@ -27,43 +27,10 @@ use std::hash::Hash;
 
 use crate::fxhash::FxMap;
 
-use crate::ast::{Atom, Expr, Repetition};
-use crate::automata::alphabet::AcceptTable;
+use crate::automata::ir::{Node, Regex, Repetition, VertexClasses};
 use crate::automata::coactive;
 use crate::automata::mask::{AovMask, NFA_STATE_WORDS};
 use crate::bits::{self, set};
-
-/// One node of an expression tree, as the Glushkov construction sees it: the seam that
-/// lets each dialect's tree (RenderMan's [`Expr`], OSL's [`crate::osl::Expr`]) build the
-/// same NFA. An atom reads exactly one vertex.
-pub(crate) enum Node<'a, E: Regex> {
-    Atom(&'a E::Atom),
-    Concat(&'a [E]),
-    /// No alternatives matches nothing.
-    Alt(&'a [E]),
-    Repeat(&'a E, Repetition),
-    /// The empty sequence.
-    Empty,
-}
-
-/// An expression tree the NFA can be built from.
-pub(crate) trait Regex: Sized {
-    /// What one position reads; equal atoms share one alphabet column.
-    type Atom: Eq + Hash;
-    fn node(&self) -> Node<'_, Self>;
-}
-
-impl Regex for Expr {
-    type Atom = Atom;
-    fn node(&self) -> Node<'_, Expr> {
-        match self {
-            Expr::Atom(a) => Node::Atom(a),
-            Expr::Concat(es) => Node::Concat(es),
-            Expr::Alt(es) => Node::Alt(es),
-            Expr::Repeat(e, r) => Node::Repeat(e, *r),
-        }
-    }
-}
 
 /// What the Glushkov construction computes for one subexpression.
 struct Frag {
@@ -277,7 +244,7 @@ impl Nfa {
     pub(crate) fn new<A>(
         builder: Builder<'_, A>,
         parts: Parts,
-        alphabet: &impl AcceptTable,
+        alphabet: &impl VertexClasses,
         table_budget: usize,
     ) -> Nfa {
         let Builder {
@@ -604,8 +571,8 @@ impl Nfa {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::automata::alphabet::Alphabet;
-    use crate::parse;
+    use crate::renderman::alphabet::Alphabet;
+    use crate::renderman::parse;
     use crate::rng::SplitMix64;
 
     /// `Options::default().nfa_budget`, spelled out so that the automata need not see

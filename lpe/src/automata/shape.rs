@@ -1,4 +1,4 @@
-//! Path shapes: small DFAs over vertex groups (camera, scatter, emitter) that the
+//! Path shapes: small DFAs over vertex places (camera, scatter, emitter) that the
 //! searches run in product with, so that they only visit sequences of the wanted shape.
 
 pub(crate) const NONE: u8 = u8::MAX;
@@ -29,3 +29,13 @@ pub(crate) const PATH: Shape = Shape {
     next: [[1, NONE, NONE], [NONE, 1, 2], [NONE; 3]],
     accept: [false, false, true],
 };
+
+impl crate::automata::ir::PathShape {
+    /// The shape's automaton over places.
+    pub(crate) fn automaton(self) -> &'static Shape {
+        match self {
+            crate::automata::ir::PathShape::CameraScattersEmitter => &PATH,
+            crate::automata::ir::PathShape::Any => &ANY,
+        }
+    }
+}

@@ -3,29 +3,37 @@
 //! want the plain NFA (the benchmark's NFA row, a path record that can afford 32 bytes).
 //! `crate::matcher` puts it behind `PathMatcher`.
 
-use crate::automata::alphabet::Alphabet;
+use crate::automata::ir::VertexClasses;
 use crate::automata::mask::{AovMask, Class, NfaState, NFA_STATE_WORDS};
 use crate::automata::nfa::Nfa;
 use crate::automata::visible::Visible;
-use crate::path::Vertex;
 
-/// A lazily stepped set's bitset NFA, stepped on [`NfaState`]s. Obtained from
+/// A lazily stepped set's bitset NFA over vertex classes `C`, stepped on [`NfaState`]s. Obtained from
 /// [`crate::aov::AovSet::nfa`]; answers exactly as the set.
-#[derive(Clone, Copy, Debug)]
-pub struct NfaMatcher<'a> {
+#[derive(Debug)]
+pub struct NfaMatcher<'a, C> {
     pub(crate) nfa: &'a Nfa,
-    pub(crate) alphabet: &'a Alphabet,
+    pub(crate) classes: &'a C,
     /// With set algebra, the visible masks over the NFA's hidden ones.
     pub(crate) visible: Option<&'a Visible>,
     /// No active position is dead: false when a complement then matches.
     pub(crate) empty_is_dead: bool,
 }
 
-impl NfaMatcher<'_> {
+// Written out: derived, they would ask the class table `C` to be `Copy`.
+impl<C> Clone for NfaMatcher<'_, C> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<C> Copy for NfaMatcher<'_, C> {}
+
+impl<C: VertexClasses> NfaMatcher<'_, C> {
     /// The class of a vertex.
     #[inline]
-    pub fn classify(&self, v: &Vertex) -> Class {
-        self.alphabet.classify(v)
+    pub fn classify(&self, v: &C::Vertex) -> Class {
+        self.classes.classify(v)
     }
 
     /// The state before any vertex: position 0 alone.

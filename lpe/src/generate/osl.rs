@@ -10,7 +10,7 @@
 //! labels with a space and one label ([`STRANGER`]) no expression mentions.
 
 use super::Choices;
-use crate::ast::Repetition;
+use crate::automata::ir::Repetition;
 use crate::osl::{Expr, Lpe, Path, Registered, Symbol, SymbolPattern, Vertex, VertexPattern};
 
 /// A path label no generated expression mentions.

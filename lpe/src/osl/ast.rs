@@ -14,7 +14,7 @@ use std::fmt;
 
 use super::symbol::Symbol;
 use crate::algebra::{write_operands, Algebra, SetExpr};
-use crate::ast::Repetition;
+use crate::automata::ir::Repetition;
 use crate::print::write_parts;
 
 /// What one slot of a vertex pattern accepts. No slot accepts STOP.

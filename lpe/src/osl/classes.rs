@@ -17,7 +17,7 @@ use crate::fxhash::FxMap;
 use super::ast::{SymbolPattern, VertexPattern};
 use super::path::Vertex;
 use super::symbol::Symbol;
-use crate::automata::alphabet::AcceptTable;
+use crate::automata::ir::{Place, VertexClasses as ClassTable};
 use crate::automata::mask::Class;
 use crate::bits;
 
@@ -29,7 +29,7 @@ const NONE_ID: u32 = 0;
 
 /// The vertex classes of one compiled OSL set.
 #[derive(Clone, Debug)]
-pub(crate) struct VertexClasses {
+pub struct VertexClasses {
     /// Mentioned labels to their symbol ids.
     label_ids: FxMap<Box<str>, u32>,
     /// The symbol id of every one-byte ASCII label, without hashing: most symbols a
@@ -239,7 +239,8 @@ impl VertexClasses {
     }
 
     /// A shortest vertex of class `c`.
-    pub(crate) fn representative(&self, c: usize) -> &Vertex {
+    #[cfg(test)]
+    fn representative(&self, c: usize) -> &Vertex {
         &self.reps[c]
     }
 
@@ -250,13 +251,29 @@ impl VertexClasses {
     }
 }
 
-impl AcceptTable for VertexClasses {
+impl ClassTable for VertexClasses {
+    type Vertex = Vertex;
+
+    #[inline]
+    fn classify(&self, v: &Vertex) -> Class {
+        VertexClasses::classify(self, v)
+    }
+
     fn class_count(&self) -> usize {
         self.reps.len()
     }
 
     fn accepts(&self, c: usize, a: usize) -> bool {
         bits::get(&self.accept[c * self.words..][..self.words], a)
+    }
+
+    /// Every class occurs anywhere (OSL paths have no fixed shape).
+    fn representative(&self, c: usize, _: Place) -> Option<Vertex> {
+        self.reps.get(c).cloned()
+    }
+
+    fn memory_bytes(&self) -> usize {
+        VertexClasses::memory_bytes(self)
     }
 }
 

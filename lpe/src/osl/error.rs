@@ -41,12 +41,12 @@ pub enum ErrorKind {
     ZeroRepeat,
     /// `'__stop__'`: OSL's end-of-vertex mark is not a label.
     StopLabel,
-    /// A repetition count over [`crate::Limits::max_repeat`].
+    /// A repetition count over [`crate::limits::Limits::max_repeat`].
     RepeatTooLarge {
         /// The limit.
         max: u32,
     },
-    /// Groups and lists nested deeper than [`crate::Limits::max_depth`].
+    /// Groups and lists nested deeper than [`crate::limits::Limits::max_depth`].
     TooDeep {
         /// The limit.
         max: usize,
@@ -55,7 +55,7 @@ pub enum ErrorKind {
     /// unbalanced algebra group, an operator inside an operand, too deep or too many
     /// operands.
     Algebra(crate::algebra::AlgebraError),
-    /// More vertex positions after unrolling than [`crate::Limits::max_positions`].
+    /// More vertex positions after unrolling than [`crate::limits::Limits::max_positions`].
     TooManyPositions {
         /// The expression's positions.
         positions: u64,

@@ -18,8 +18,8 @@ use super::ast::{Expr, Lpe, SymbolPattern, VertexPattern, Warning, WarningKind};
 use super::error::{Error, ErrorKind};
 use super::symbol::{LabelKind, Registered, Symbol, STOP_LABEL};
 use crate::algebra::{self, Algebra, ParseError};
-use crate::ast::Repetition;
-use crate::Limits;
+use crate::automata::ir::Repetition;
+use crate::limits::Limits;
 
 /// Custom items from which on a vertex pattern gets no eater.
 const EATER_MAX_CUSTOM: usize = 5;

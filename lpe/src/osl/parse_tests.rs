@@ -5,8 +5,8 @@ use super::ast::{Expr, SymbolPattern as P, VertexPattern, WarningKind};
 use super::error::ErrorKind as K;
 use super::symbol::{Registered, Symbol};
 use super::{parse, parse_with};
-use crate::ast::Repetition;
-use crate::Limits;
+use crate::automata::ir::Repetition;
+use crate::limits::Limits;
 
 fn none() -> Registered {
     Registered::none()

@@ -1,4 +1,4 @@
-//! The RenderMan-dialect front end: source text to [`crate::ast::Lpe`].
+//! The RenderMan-dialect front end: source text to [`crate::renderman::ast::Lpe`].
 //!
 //! ```text
 //! source := ('lpe:')? (prefix ';')* body
@@ -25,38 +25,16 @@ mod error;
 mod lexer;
 mod parser;
 
+pub use crate::limits::Limits;
+
 pub(crate) use error::nearest;
 pub use error::{edit_distance, Error, ErrorKind};
 
 use crate::algebra::{self, AlgebraError, ParseError};
-use crate::ast::{Atom, EventPos, Item, LabelPos, Lpe, Triple, TypePos};
-use crate::macros::MacroTable;
-use crate::path::VertexType;
-use crate::prefix::{Prefix, Prefixes};
-
-/// Bounds on what one expression may cost, each with its own error.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Limits {
-    /// Largest `n` or `m` in `{n}`, `{n,}`, `{n,m}` (default 256).
-    pub max_repeat: u32,
-    /// Most atom positions after unrolling counted repetition (default 65 536).
-    pub max_positions: usize,
-    /// Deepest nesting of groups and classes (default 128).
-    pub max_depth: usize,
-    /// Deepest chain of macros naming macros (default 16).
-    pub max_macro_depth: usize,
-}
-
-impl Default for Limits {
-    fn default() -> Self {
-        Limits {
-            max_repeat: 256,
-            max_positions: 65_536,
-            max_depth: 128,
-            max_macro_depth: 16,
-        }
-    }
-}
+use crate::renderman::ast::{Atom, EventPos, Item, LabelPos, Lpe, Triple, TypePos};
+use crate::renderman::macros::MacroTable;
+use crate::renderman::path::VertexType;
+use crate::renderman::prefix::{Prefix, Prefixes};
 
 /// A configured parser: limits plus the macro table.
 #[derive(Clone, Debug, Default)]
@@ -68,8 +46,8 @@ pub struct Parser {
 /// Parses with the built-in macros and default limits.
 ///
 /// ```
-/// let lpe = lpe::parse("lpe:unoccluded;C<RD>[<L.>O]").unwrap();
-/// assert!(lpe.prefixes.contains(lpe::Prefix::Unoccluded));
+/// let lpe = lpe::renderman::parse("lpe:unoccluded;C<RD>[<L.>O]").unwrap();
+/// assert!(lpe.prefixes.contains(lpe::renderman::Prefix::Unoccluded));
 /// assert_eq!(lpe.to_string(), "unoccluded;C<RD>[<L.>O]");
 /// ```
 pub fn parse(source: &str) -> Result<Lpe, Error> {

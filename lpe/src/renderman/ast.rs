@@ -1,7 +1,7 @@
 //! The abstract syntax of light path expressions, independent of any dialect's surface
 //! syntax (docs/language.md §4–§5).
 //!
-//! A front end ([`crate::syntax`] for RenderMan's dialect) produces these values; every
+//! A front end ([`crate::renderman::syntax`] for RenderMan's dialect) produces these values; every
 //! engine consumes them. The [`fmt::Display`] impls are the canonical printer: printing
 //! an AST and parsing the text with the RenderMan front end gives the same AST back, as
 //! long as the AST is *normalized*: [`Expr::Concat`] and [`Expr::Alt`] have at least two
@@ -33,8 +33,9 @@
 use std::fmt;
 
 use crate::algebra::{write_operands, Algebra, SetExpr};
-use crate::path::{EventKind, VertexType};
-use crate::prefix::Prefixes;
+use crate::renderman::path::{EventKind, VertexType};
+pub use crate::automata::ir::Repetition;
+use crate::renderman::prefix::Prefixes;
 use crate::print::write_parts;
 
 /// A parsed light path expression: prefixes plus the expression proper, which may be
@@ -221,63 +222,6 @@ impl Expr {
             Expr::Repeat(e, r) => e
                 .positions_with(max_path_len)
                 .saturating_mul(r.bounded(max_path_len).copies()),
-        }
-    }
-}
-
-/// A quantifier: `min..=max` repetitions (`max = None` is unbounded).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct Repetition {
-    /// Fewest repetitions.
-    pub min: u32,
-    /// Most repetitions, or unbounded.
-    pub max: Option<u32>,
-}
-
-impl Repetition {
-    /// `*`
-    pub const STAR: Repetition = Repetition { min: 0, max: None };
-    /// `+`
-    pub const PLUS: Repetition = Repetition { min: 1, max: None };
-    /// `?`
-    pub const OPTIONAL: Repetition = Repetition {
-        min: 0,
-        max: Some(1),
-    };
-
-    /// The repetition an automaton for paths of at most `max_path_len` vertices builds:
-    /// `e{n,m}` with `m >= max_path_len` becomes `e{n,}`. Exact on such paths: at most
-    /// `max_path_len` iterations consume a vertex and empty iterations can be dropped
-    /// down to `n`, so any number of iterations beyond `m` shortens to at most
-    /// `max(n, max_path_len) <= m`.
-    pub(crate) fn bounded(self, max_path_len: Option<u32>) -> Repetition {
-        match (self.max, max_path_len) {
-            (Some(m), Some(l)) if m >= l && m >= self.min => Repetition {
-                min: self.min,
-                max: None,
-            },
-            _ => self,
-        }
-    }
-
-    /// How many copies of the body an unrolled automaton needs.
-    pub fn copies(self) -> u64 {
-        match self.max {
-            Some(m) => u64::from(m.max(self.min)),
-            None => u64::from(self.min) + 1,
-        }
-    }
-}
-
-impl fmt::Display for Repetition {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match (self.min, self.max) {
-            (0, None) => f.write_str("*"),
-            (1, None) => f.write_str("+"),
-            (0, Some(1)) => f.write_str("?"),
-            (n, None) => write!(f, "{{{n},}}"),
-            (n, Some(m)) if n == m => write!(f, "{{{n}}}"),
-            (n, Some(m)) => write!(f, "{{{n},{m}}}"),
         }
     }
 }

@@ -12,17 +12,18 @@
 //!
 //! Each distinct atom of the compiled set is turned into the set of raw symbols it
 //! accepts, per label symbol a bit mask over the 51 `(type, event)` pairs (set algebra
-//! written from docs/language.md and the table in [`crate::ast`]); raw symbols with the
+//! written from docs/language.md and the table in [`crate::renderman::ast`]); raw symbols with the
 //! same answers from every atom form one [`Class`], found by splitting blocks of raw
 //! symbols atom by atom rather than by evaluating every atom on every raw symbol.
 //! `Alphabet::classify` is then arithmetic plus one label lookup plus one table load.
 
 use crate::fxhash::FxMap;
 
-use crate::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
+use super::ast::{Atom, EventPattern, EventPos, Item, LabelPos, Triple, TypePos};
+use super::path::{Event, EventKind, Vertex, VertexType};
+use crate::automata::ir::{Place, VertexClasses};
 use crate::automata::mask::{Class, LabelId};
 use crate::bits;
-use crate::path::{Event, EventKind, Vertex, VertexType};
 
 /// Number of `(type, event)` combinations: C, L, O, then R and T with 24 events each.
 pub(crate) const TYPE_EVENTS: usize = 3 + 2 * EVENTS;
@@ -46,29 +47,12 @@ pub(crate) struct Sym {
     pub label: LabelSym,
 }
 
-/// The three kinds of place a vertex can take in a path: the camera, a scattering vertex
-/// in the middle, an emitter at the end. Path-shaped searches ([`crate::analysis`]) step
-/// on `(class, group)` letters.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub(crate) enum Group {
-    Camera,
-    Scatter,
-    Emitter,
-}
-
-impl Group {
-    pub(crate) const ALL: [Group; 3] = [Group::Camera, Group::Scatter, Group::Emitter];
-
-    fn of(ty: VertexType) -> Group {
-        match ty {
-            VertexType::C => Group::Camera,
-            VertexType::R | VertexType::T => Group::Scatter,
-            VertexType::L | VertexType::O => Group::Emitter,
-        }
-    }
-
-    pub(crate) fn index(self) -> usize {
-        self as usize
+/// The place a vertex of type `ty` takes in a path.
+fn place_of(ty: VertexType) -> Place {
+    match ty {
+        VertexType::C => Place::Camera,
+        VertexType::R | VertexType::T => Place::Scatter,
+        VertexType::L | VertexType::O => Place::Emitter,
     }
 }
 
@@ -137,21 +121,32 @@ fn type_event(i: usize) -> (VertexType, Option<Event>) {
     }
 }
 
-/// What the NFA asks of an alphabet: how many classes, and which atoms accept which
-/// class. RenderMan's [`Alphabet`] and OSL's vertex classes (`crate::osl`) both answer.
-pub(crate) trait AcceptTable {
-    fn class_count(&self) -> usize;
-    /// Whether distinct atom `a` accepts the vertices of class `c`.
-    fn accepts(&self, c: usize, a: usize) -> bool;
-}
+impl VertexClasses for Alphabet {
+    type Vertex = Vertex;
 
-impl AcceptTable for Alphabet {
+    #[inline]
+    fn classify(&self, v: &Vertex) -> Class {
+        Alphabet::classify(self, v)
+    }
+
     fn class_count(&self) -> usize {
         Alphabet::class_count(self)
     }
 
     fn accepts(&self, c: usize, a: usize) -> bool {
         Alphabet::accepts(self, c, a)
+    }
+
+    fn representative(&self, c: usize, p: Place) -> Option<Vertex> {
+        Alphabet::representative(self, c, p)
+    }
+
+    fn occurs_in(&self, c: usize, p: Place) -> bool {
+        Alphabet::occurs_in(self, c, p)
+    }
+
+    fn memory_bytes(&self) -> usize {
+        Alphabet::memory_bytes(self)
     }
 }
 
@@ -263,7 +258,7 @@ impl LabelTable {
 
 /// The compressed alphabet of one compiled set.
 #[derive(Clone, Debug)]
-pub(crate) struct Alphabet {
+pub struct Alphabet {
     labels: LabelTable,
     /// `log2` of the stride of a `(type, event)`'s run in `raw_to_class`: the label
     /// symbols (none, the interned labels, OTHER) rounded up to a power of two, so that
@@ -384,7 +379,7 @@ impl Alphabet {
             if sym.ty == VertexType::C && sym.label != LabelSym::None {
                 continue;
             }
-            let slot = &mut representatives[class as usize][Group::of(sym.ty).index()];
+            let slot = &mut representatives[class as usize][place_of(sym.ty).index()];
             slot.get_or_insert(raw as u32);
         }
         let mut other_label = "other".to_string();
@@ -461,12 +456,12 @@ impl Alphabet {
 
     /// Whether some vertex of class `c` can stand in place `g` of a path: what
     /// [`Alphabet::representative`] answers, without building the vertex (and its label).
-    pub(crate) fn occurs_in(&self, c: usize, g: Group) -> bool {
+    pub(crate) fn occurs_in(&self, c: usize, g: Place) -> bool {
         self.representatives[c][g.index()].is_some()
     }
 
     /// A vertex of class `c` that can stand in place `g` of a path, if there is one.
-    pub(crate) fn representative(&self, c: usize, g: Group) -> Option<Vertex> {
+    pub(crate) fn representative(&self, c: usize, g: Place) -> Option<Vertex> {
         let raw = self.representatives[c][g.index()]? as usize;
         let sym = Self::sym_of(&self.labels, self.label_shift, raw);
         let label = match sym.label {
@@ -634,7 +629,7 @@ fn triple_mask(t: &Triple, l: usize, labels: &LabelTable) -> TeMask {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::ast::Expr;
+    use crate::renderman::ast::Expr;
 
     /// The atoms' meaning written the other way round: one predicate per atom, asked
     /// of one raw symbol at a time (the construction this module had before it built
@@ -849,7 +844,7 @@ mod tests {
             assert_eq!(al.class_count(), class_of.len(), "case {case}");
         }
     }
-    use crate::parse;
+    use crate::renderman::parse;
 
     fn alphabet(src: &str) -> (Alphabet, Vec<Atom>) {
         let e = parse(src).unwrap().expr;
@@ -930,8 +925,8 @@ mod tests {
         let d1 = Event::new(EventKind::D, 1).unwrap();
         let places = |v: &Vertex| {
             let c = a.classify(v).0 as usize;
-            let places = Group::ALL.map(|g| a.occurs_in(c, g));
-            assert_eq!(places, Group::ALL.map(|g| a.representative(c, g).is_some()));
+            let places = Place::ALL.map(|g| a.occurs_in(c, g));
+            assert_eq!(places, Place::ALL.map(|g| a.representative(c, g).is_some()));
             places
         };
         assert_eq!(places(&Vertex::camera()), [true, false, false]);

@@ -1,7 +1,7 @@
 //! Expression prefixes: `unoccluded;`, `shadows;` … (docs/language.md §7).
 //!
 //! Prefixes change what the renderer accumulates, never what matches. They travel with
-//! the expression in [`crate::ast::Lpe::prefixes`]. A prefix given twice is the same as
+//! the expression in [`crate::renderman::ast::Lpe::prefixes`]. A prefix given twice is the same as
 //! once; the canonical printer writes each set prefix once, in [`Prefix::ALL`] order.
 
 use std::fmt;

@@ -8,7 +8,7 @@
 use std::collections::BTreeMap;
 use std::fmt;
 
-use crate::path::{Event, EventKind};
+use crate::renderman::path::{Event, EventKind};
 
 /// Which family a named lobe belongs to; decides the fallback and the allowed lobes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

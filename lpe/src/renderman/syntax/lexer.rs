@@ -4,7 +4,7 @@
 use std::ops::Range;
 
 use super::error::{Error, ErrorKind};
-use crate::path::{EventKind, VertexType};
+use crate::renderman::path::{EventKind, VertexType};
 
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) enum Tok {

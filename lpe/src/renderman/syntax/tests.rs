@@ -2,8 +2,8 @@
 //! docs/language.md with its kind and position.
 
 use super::*;
-use crate::ast::{EventPattern, Expr, Repetition};
-use crate::path::EventKind;
+use crate::renderman::ast::{EventPattern, Expr, Repetition};
+use crate::renderman::path::EventKind;
 
 fn p(s: &str) -> Expr {
     parse(s).unwrap_or_else(|e| panic!("{s}: {e}")).expr

@@ -13,9 +13,9 @@
 
 use std::fmt;
 
-use crate::lobes::{LobeCategory, LobeError, LobeMap};
-use crate::macros::MacroTable;
-use crate::syntax::{Error, Limits, Parser};
+use crate::renderman::lobes::{LobeCategory, LobeError, LobeMap};
+use crate::renderman::macros::MacroTable;
+use crate::renderman::syntax::{Error, Limits, Parser};
 
 /// Macros and lobe mappings, from defaults plus an optional ini file.
 #[derive(Clone, Debug, Default)]
@@ -164,7 +164,7 @@ impl Config {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::path::{Event, EventKind};
+    use crate::renderman::path::{Event, EventKind};
 
     #[test]
     fn loads_macros_and_lobes() {
@@ -225,12 +225,12 @@ mod tests {
                 .unwrap();
         let parser = config.parser();
         let l = parser.parse("rest_key & C<RD>.*L").unwrap();
-        assert!(l.prefixes.contains(crate::Prefix::Unoccluded));
+        assert!(l.prefixes.contains(crate::renderman::Prefix::Unoccluded));
         assert_eq!(
             l.to_string(),
             "unoccluded;C.*[<L.'key'>O] - C<RD>[<L.'key'>O] & C<RD>.*L"
         );
-        let plain = crate::parse("directDiffuse_key").unwrap();
+        let plain = crate::renderman::parse("directDiffuse_key").unwrap();
         assert!(plain.algebra.is_none());
     }
 
@@ -250,7 +250,7 @@ mod tests {
         let e = config.parser().parse("m4 & m4").unwrap_err();
         assert_eq!(
             (e.kind(), e.span().start),
-            (crate::ErrorKind::Limit, 5),
+            (crate::renderman::ErrorKind::Limit, 5),
             "{e}"
         );
         assert!(e.message().contains("operands"), "{e}");
