@@ -7,7 +7,8 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
-use lpe::{AovSet, Lpe, Path};
+use lpe::renderman::{Lpe, Path};
+use lpe::AovSet;
 use lpe_capi::classify::lpe_classify_text;
 use lpe_capi::set::{lpe_set_compile, lpe_set_free, LPE_DIALECT_RENDERMAN};
 use lpe_capi::step::{lpe_matches, lpe_start, lpe_step, lpe_step_n};
@@ -22,16 +23,16 @@ const PATHS: [&str; 4] = [
 ];
 
 fn bench(c: &mut Criterion) {
-    let aovs: Vec<(String, Lpe)> = lpe::macros::BASIC
+    let aovs: Vec<(String, Lpe)> = lpe::renderman::macros::BASIC
         .iter()
-        .map(|(n, e)| (n.to_string(), lpe::parse(e).unwrap()))
+        .map(|(n, e)| (n.to_string(), lpe::renderman::parse(e).unwrap()))
         .collect();
     let rust = AovSet::compile(&aovs).unwrap();
     let names: Vec<std::ffi::CString> = aovs
         .iter()
         .map(|(n, _)| std::ffi::CString::new(n.as_str()).unwrap())
         .collect();
-    let exprs: Vec<std::ffi::CString> = lpe::macros::BASIC
+    let exprs: Vec<std::ffi::CString> = lpe::renderman::macros::BASIC
         .iter()
         .map(|(_, e)| std::ffi::CString::new(*e).unwrap())
         .collect();

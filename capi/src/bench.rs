@@ -45,7 +45,7 @@ pub extern "C" fn lpe_bench_rust_loop(
         paths.push(path);
         at += n;
     }
-    let rust = &set.set;
+    let rust = set.set.automaton();
     let mut sum = 0u64;
     let t = Instant::now();
     for _ in 0..reps {

@@ -3,9 +3,10 @@
 use std::ffi::c_char;
 
 use lpe::osl::{self, Symbol};
-use lpe::{Class, Dialect, Event, EventKind, Path, Vertex, VertexType};
+use lpe::renderman::{Event, EventKind, Path, Vertex, VertexType};
+use lpe::Class;
 
-use crate::set::{lpe_set, text};
+use crate::set::{lpe_set, text, DialectSet};
 use crate::status::{guard, lpe_status};
 
 /// A vertex after classification. Plain data, only meaningful for the set that made it;
@@ -98,12 +99,12 @@ pub extern "C" fn lpe_classify(
     ) else {
         return lpe_status::LPE_ERR_NULL;
     };
-    if set.set.dialect() != Dialect::RenderMan {
+    let DialectSet::RenderMan(rm) = &set.set else {
         return lpe_status::LPE_ERR_UNSUPPORTED;
-    }
+    };
     guard(lpe_status::LPE_ERR_PANIC, || match vertex_of(vertex) {
         Ok(v) => {
-            *out = lpe_class::from_class(set.set.classify(&v));
+            *out = lpe_class::from_class(rm.classify(&v));
             lpe_status::LPE_OK
         }
         Err(s) => s,
@@ -123,16 +124,16 @@ pub extern "C" fn lpe_classify_text(
     let (Some(set), Some(out)) = (unsafe { set.as_ref() }, unsafe { out.as_mut() }) else {
         return lpe_status::LPE_ERR_NULL;
     };
-    if set.set.dialect() != Dialect::RenderMan {
+    let DialectSet::RenderMan(rm) = &set.set else {
         return lpe_status::LPE_ERR_UNSUPPORTED;
-    }
+    };
     let src = match text(vertex) {
         Ok(s) => s,
         Err(e) => return e,
     };
     guard(lpe_status::LPE_ERR_PANIC, || match vertex_from_text(src) {
         Some(v) => {
-            *out = lpe_class::from_class(set.set.classify(&v));
+            *out = lpe_class::from_class(rm.classify(&v));
             lpe_status::LPE_OK
         }
         None => lpe_status::LPE_ERR_PARSE,
@@ -182,9 +183,9 @@ pub extern "C" fn lpe_classify_osl(
     if count == 0 {
         return lpe_status::LPE_ERR_RANGE;
     }
-    if set.set.dialect() != Dialect::Osl {
+    let DialectSet::Osl(osl_set) = &set.set else {
         return lpe_status::LPE_ERR_UNSUPPORTED;
-    }
+    };
     // SAFETY: the caller passes `count` readable pointers (checked non-null).
     let symbols = unsafe { std::slice::from_raw_parts(symbols, count) };
     let vertex = match osl_vertex_of(symbols) {
@@ -192,7 +193,7 @@ pub extern "C" fn lpe_classify_osl(
         Err(s) => return s,
     };
     guard(lpe_status::LPE_ERR_PANIC, || {
-        *out = lpe_class::from_class(set.set.classify_osl(&vertex));
+        *out = lpe_class::from_class(osl_set.classify(&vertex));
         lpe_status::LPE_OK
     })
 }

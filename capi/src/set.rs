@@ -2,8 +2,12 @@
 
 use std::ffi::{c_char, CStr, CString};
 
+use lpe::aov::Automaton;
+use lpe::osl::Osl;
 use lpe::osl::{self, Registered};
-use lpe::{AovSet, Config, Lpe, Options};
+use lpe::renderman::RenderMan;
+use lpe::renderman::{Config, Lpe};
+use lpe::{AovSet, Options};
 
 use crate::error::lpe_error;
 use crate::status::{guard, lpe_status};
@@ -41,10 +45,48 @@ pub struct lpe_options {
 /// A compiled AOV set: immutable, safe to share between threads. Release it with
 /// `lpe_set_free`.
 pub struct lpe_set {
-    pub(crate) set: AovSet,
+    pub(crate) set: DialectSet,
     pub(crate) class_count: usize,
     names: Vec<CString>,
     warnings: Vec<CString>,
+}
+
+/// A compiled set of either dialect: its vertex classes differ, its automaton does not.
+pub(crate) enum DialectSet {
+    RenderMan(AovSet<RenderMan>),
+    Osl(AovSet<Osl>),
+}
+
+impl DialectSet {
+    /// What every dialect's set steps.
+    #[inline(always)]
+    pub(crate) fn automaton(&self) -> &Automaton {
+        match self {
+            DialectSet::RenderMan(s) => s.automaton(),
+            DialectSet::Osl(s) => s.automaton(),
+        }
+    }
+
+    pub(crate) fn len(&self) -> usize {
+        match self {
+            DialectSet::RenderMan(s) => s.len(),
+            DialectSet::Osl(s) => s.len(),
+        }
+    }
+
+    pub(crate) fn warnings(&self) -> &[lpe::analysis::Warning] {
+        match self {
+            DialectSet::RenderMan(s) => s.warnings(),
+            DialectSet::Osl(s) => s.warnings(),
+        }
+    }
+
+    fn class_count(&self) -> usize {
+        match self {
+            DialectSet::RenderMan(s) => s.class_count(),
+            DialectSet::Osl(s) => s.class_count(),
+        }
+    }
 }
 
 /// The defaults: 16 MiB DFA and NFA budgets, a 2 MiB lazy-DFA cache, no path length
@@ -166,7 +208,7 @@ fn compile(
                 None,
             ));
         }
-        compile_osl(&sources, registered, &opts)?
+        DialectSet::Osl(compile_osl(&sources, registered, &opts)?)
     } else {
         if !registered.is_null() {
             return Err(plain(
@@ -175,7 +217,7 @@ fn compile(
                 None,
             ));
         }
-        compile_renderman(&sources, ini_text, &opts)?
+        DialectSet::RenderMan(compile_renderman(&sources, ini_text, &opts)?)
     };
     let warnings = set
         .warnings()
@@ -249,7 +291,7 @@ fn compile_renderman(
     sources: &[Source],
     ini_text: *const c_char,
     opts: &Options,
-) -> Result<AovSet, lpe_error> {
+) -> Result<AovSet<RenderMan>, lpe_error> {
     let config = if ini_text.is_null() {
         Config::default()
     } else {
@@ -279,7 +321,7 @@ fn compile_osl(
     sources: &[Source],
     registered: *const c_char,
     opts: &Options,
-) -> Result<AovSet, lpe_error> {
+) -> Result<AovSet<Osl>, lpe_error> {
     let registered: Registered = if registered.is_null() {
         Registered::none()
     } else {
@@ -299,7 +341,7 @@ fn compile_osl(
         let lpe = osl::parse(s.expr, &registered).map_err(|e| parse_error(i, s.name, &e, e.pos))?;
         aovs.push((s.name.to_string(), lpe));
     }
-    AovSet::compile_osl(&aovs, &registered, opts).map_err(compile_error)
+    AovSet::compile_under(&aovs, &registered, opts).map_err(compile_error)
 }
 
 /// Releases a set. NULL is ignored. No state or class of it may be used after.

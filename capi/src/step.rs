@@ -50,7 +50,7 @@ pub extern "C" fn lpe_cache_new(set: *const lpe_set) -> *mut lpe_cache {
     };
     guard(std::ptr::null_mut(), || {
         Box::into_raw(Box::new(lpe_cache {
-            cache: set.set.cache(),
+            cache: set.set.automaton().cache(),
         }))
     })
 }
@@ -74,7 +74,7 @@ pub extern "C" fn lpe_start(set: *const lpe_set, out: *mut lpe_state) -> lpe_sta
         return lpe_status::LPE_ERR_NULL;
     };
     guard(lpe_status::LPE_ERR_PANIC, || {
-        *out = lpe_state::from_state(set.set.start());
+        *out = lpe_state::from_state(set.set.automaton().start());
         lpe_status::LPE_OK
     })
 }
@@ -88,7 +88,9 @@ pub extern "C" fn lpe_step(
     state: *mut lpe_state,
     cls: lpe_class,
 ) -> lpe_status {
-    step_one(set, state, cls, |set, s, c| set.set.step_class(s, c))
+    step_one(set, state, cls, |set, s, c| {
+        set.set.automaton().step_class(s, c)
+    })
 }
 
 /// `lpe_step` through the caller's cache (from `lpe_cache_new` for this set; a cache of
@@ -105,7 +107,7 @@ pub extern "C" fn lpe_step_with(
         return lpe_status::LPE_ERR_NULL;
     };
     step_one(set, state, cls, |set, s, c| {
-        set.set.step_with(&mut cache.cache, s, c)
+        set.set.automaton().step_with(&mut cache.cache, s, c)
     })
 }
 
@@ -160,7 +162,7 @@ pub extern "C" fn lpe_step_n(
             let Some(c) = c.to_class(set) else {
                 return lpe_status::LPE_ERR_RANGE;
             };
-            s = set.set.step_class(s, c);
+            s = set.set.automaton().step_class(s, c);
         }
         *state = lpe_state::from_state(s);
         lpe_status::LPE_OK
@@ -180,7 +182,7 @@ pub extern "C" fn lpe_matches(
     match_count: *mut usize,
 ) -> lpe_status {
     matches_by(set, state, words, word_count, match_count, |set, s| {
-        set.set.matches(s)
+        set.set.automaton().matches(s)
     })
 }
 
@@ -200,7 +202,7 @@ pub extern "C" fn lpe_matches_with(
         return lpe_status::LPE_ERR_NULL;
     };
     matches_by(set, state, words, word_count, match_count, |set, s| {
-        set.set.matches_with(&mut cache.cache, s)
+        set.set.automaton().matches_with(&mut cache.cache, s)
     })
 }
 
@@ -259,7 +261,7 @@ pub extern "C" fn lpe_is_dead(
         return lpe_status::LPE_ERR_NULL;
     };
     guard(lpe_status::LPE_ERR_PANIC, || {
-        *dead = set.set.is_dead(state.to_state());
+        *dead = set.set.automaton().is_dead(state.to_state());
         lpe_status::LPE_OK
     })
 }

@@ -47,7 +47,7 @@ pub extern "C" fn lpe_set_step_view(set: *const lpe_set, view: *mut lpe_step_vie
         return lpe_status::LPE_ERR_NULL;
     };
     guard(lpe_status::LPE_ERR_PANIC, || {
-        let table = s.set.step_table();
+        let table = s.set.automaton().step_table();
         *out = lpe_step_view {
             set,
             table: if table.is_empty() {
@@ -58,9 +58,9 @@ pub extern "C" fn lpe_set_step_view(set: *const lpe_set, view: *mut lpe_step_vie
             table_len: table.len(),
             class_count: s.class_count,
             start: lpe_state {
-                opaque: s.set.start().to_u32(),
+                opaque: s.set.automaton().start().to_u32(),
             },
-            zero_is_dead: s.set.is_dead(lpe::State::from_u32(0)),
+            zero_is_dead: s.set.automaton().is_dead(lpe::State::from_u32(0)),
         };
         lpe_status::LPE_OK
     })

@@ -120,8 +120,14 @@ fn route(set: &Set, path: &[&str]) -> (Vec<u64>, usize) {
 
 #[test]
 fn answers_equal_lpe_on_the_basic_aovs() {
-    let names: Vec<&str> = lpe::macros::BASIC.iter().map(|(n, _)| *n).collect();
-    let exprs: Vec<&str> = lpe::macros::BASIC.iter().map(|(_, e)| *e).collect();
+    let names: Vec<&str> = lpe::renderman::macros::BASIC
+        .iter()
+        .map(|(n, _)| *n)
+        .collect();
+    let exprs: Vec<&str> = lpe::renderman::macros::BASIC
+        .iter()
+        .map(|(_, e)| *e)
+        .collect();
     let set = compile(&names, &exprs, None).unwrap();
     assert_eq!(lpe_set_len(set.0), names.len());
     for (i, n) in names.iter().enumerate() {
@@ -129,9 +135,9 @@ fn answers_equal_lpe_on_the_basic_aovs() {
         assert_eq!(got.to_str().unwrap(), *n);
     }
     assert!(lpe_set_name(set.0, names.len()).is_null());
-    let aovs: Vec<(String, lpe::Lpe)> = lpe::macros::BASIC
+    let aovs: Vec<(String, lpe::renderman::Lpe)> = lpe::renderman::macros::BASIC
         .iter()
-        .map(|(n, e)| (n.to_string(), lpe::parse(e).unwrap()))
+        .map(|(n, e)| (n.to_string(), lpe::renderman::parse(e).unwrap()))
         .collect();
     let rust = lpe::AovSet::compile(&aovs).unwrap();
     for p in [
@@ -142,7 +148,7 @@ fn answers_equal_lpe_on_the_basic_aovs() {
         "C TD L",
         "C RU3 L",
     ] {
-        let path: lpe::Path = p.parse().unwrap();
+        let path: lpe::renderman::Path = p.parse().unwrap();
         let want: Vec<usize> = rust.match_path(&path).iter().collect();
         let texts: Vec<String> = path.vertices().iter().map(|v| v.to_string()).collect();
         let texts: Vec<&str> = texts.iter().map(|s| s.as_str()).collect();

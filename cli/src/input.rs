@@ -29,11 +29,11 @@ pub enum InputError {
         /// The file.
         path: PathBuf,
         /// Which line, and what.
-        error: lpe::IniError,
+        error: lpe::renderman::IniError,
     },
     /// An expression does not parse (the error shows the byte position with a caret).
     #[error("{0}")]
-    Expr(lpe::Error),
+    Expr(lpe::renderman::Error),
     /// `--ini` with `--dialect osl`: its macros and lobe mappings are RenderMan's.
     #[error("--ini holds RenderMan macros; it does not apply to --dialect osl")]
     IniWithOsl,
@@ -49,8 +49,8 @@ pub enum InputError {
 #[derive(clap::Args, Debug, Clone)]
 pub struct DialectArgs {
     /// The expression language: `renderman` or `osl`.
-    #[arg(long, default_value_t = lpe::Dialect::RenderMan)]
-    pub dialect: lpe::Dialect,
+    #[arg(long, default_value_t = lpe::DialectName::RenderMan)]
+    pub dialect: lpe::DialectName,
     /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
     #[arg(long)]
     pub register: Option<String>,
@@ -60,7 +60,7 @@ impl DialectArgs {
     /// Whether the OSL dialect is asked for; with RenderMan, `--register` is an error.
     pub fn is_osl(&self) -> Result<bool, InputError> {
         match (self.dialect, &self.register) {
-            (lpe::Dialect::Osl, _) => Ok(true),
+            (lpe::DialectName::Osl, _) => Ok(true),
             (_, Some(_)) => Err(InputError::RegisterWithoutOsl),
             (_, None) => Ok(false),
         }
@@ -82,8 +82,8 @@ impl DialectArgs {
     }
 }
 
-impl From<lpe::Error> for InputError {
-    fn from(e: lpe::Error) -> Self {
+impl From<lpe::renderman::Error> for InputError {
+    fn from(e: lpe::renderman::Error) -> Self {
         InputError::Expr(e)
     }
 }
@@ -108,15 +108,15 @@ pub fn select_engines(name: &str) -> Result<Vec<&'static dyn Engine>, InputError
 }
 
 /// The parser for the built-in macros, or for those plus an ini file's.
-pub fn load_parser(ini: Option<&std::path::Path>) -> Result<lpe::Parser, InputError> {
+pub fn load_parser(ini: Option<&std::path::Path>) -> Result<lpe::renderman::Parser, InputError> {
     let Some(path) = ini else {
-        return Ok(lpe::Parser::default());
+        return Ok(lpe::renderman::Parser::default());
     };
     let text = std::fs::read_to_string(path).map_err(|error| InputError::ReadIni {
         path: path.to_path_buf(),
         error,
     })?;
-    lpe::Config::from_ini(&text)
+    lpe::renderman::Config::from_ini(&text)
         .map(|c| c.parser())
         .map_err(|error| InputError::Ini {
             path: path.to_path_buf(),

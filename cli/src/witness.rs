@@ -8,7 +8,8 @@
 use std::fmt::Display;
 use std::process::ExitCode;
 
-use lpe::{osl, Lpe, Path};
+use lpe::osl;
+use lpe::renderman::{Lpe, Path};
 
 /// An expression of either dialect, as the reference matcher of its dialect reads it.
 pub trait Checked: Display {
@@ -38,7 +39,7 @@ impl Checked for osl::Lpe {
         reference::osl::is_match(self, path)
     }
     fn remainder(aovs: &[(String, osl::Lpe)], universe: &osl::Lpe) -> osl::Lpe {
-        lpe::analysis::remainder_osl(aovs, universe)
+        lpe::analysis::remainder(aovs, universe)
     }
 }
 

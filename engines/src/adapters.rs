@@ -2,7 +2,8 @@
 //! AOV set in its two stepping modes.
 
 use lpe::osl::{self, Registered};
-use lpe::{AovSet, Lpe, Options, Path};
+use lpe::renderman::{Lpe, Path};
+use lpe::{AovSet, Dialect, Options};
 
 use crate::engine::{Engine, EngineError, Matcher};
 
@@ -62,23 +63,12 @@ pub struct Fast;
 /// and not only on sets whose DFA is too large.
 pub struct BitsetNfa;
 
-struct AovSetMatcher(AovSet);
+struct AovSetMatcher<D: Dialect>(AovSet<D>);
 
-impl AovSetMatcher {
-    fn which(&self, m: lpe::AovMask) -> Vec<bool> {
+impl<D: Dialect> Matcher<D::Path> for AovSetMatcher<D> {
+    fn which(&self, path: &D::Path) -> Vec<bool> {
+        let m = self.0.match_path(path);
         (0..self.0.len()).map(|i| m.contains(i)).collect()
-    }
-}
-
-impl Matcher for AovSetMatcher {
-    fn which(&self, path: &Path) -> Vec<bool> {
-        AovSetMatcher::which(self, self.0.match_path(path))
-    }
-}
-
-impl Matcher<osl::Path> for AovSetMatcher {
-    fn which(&self, path: &osl::Path) -> Vec<bool> {
-        AovSetMatcher::which(self, self.0.match_osl_path(path))
     }
 }
 
@@ -101,7 +91,7 @@ fn compile_osl_set(
     registered: &Registered,
     opts: &Options,
 ) -> Result<Box<dyn Matcher<osl::Path>>, EngineError> {
-    let set = AovSet::compile_osl(&numbered(exprs), registered, opts)?;
+    let set = AovSet::compile_under(&numbered(exprs), registered, opts)?;
     Ok(Box::new(AovSetMatcher(set)))
 }
 

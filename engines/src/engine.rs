@@ -6,12 +6,13 @@
 //! them, never hide them.
 //!
 //! Two dialects share the seam: [`Engine::compile`] takes RenderMan expressions and gives
-//! a [`Matcher`] over [`lpe::Path`], [`Engine::compile_osl`] takes OSL expressions and
+//! a [`Matcher`] over [`lpe::renderman::Path`], [`Engine::compile_osl`] takes OSL expressions and
 //! gives a `Matcher<lpe::osl::Path>`. An engine written for one dialect only keeps the
 //! default `compile_osl`, which refuses with [`EngineError::Unsupported`].
 
 use lpe::osl::{self, Registered};
-use lpe::{Dialect, Lpe, Path};
+use lpe::renderman::{Lpe, Path};
+use lpe::DialectName;
 
 use crate::regex::BuildError;
 
@@ -27,7 +28,7 @@ pub enum EngineError {
     Regex(BuildError),
     /// The engine does not speak this dialect.
     #[error("cannot build: this engine does not support the {0} dialect")]
-    Unsupported(Dialect),
+    Unsupported(DialectName),
 }
 
 // Written out rather than `#[from]`, which would also make the inner error the
@@ -66,6 +67,6 @@ pub trait Engine: Sync {
         registered: &Registered,
     ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
         let _ = (exprs, registered);
-        Err(EngineError::Unsupported(Dialect::Osl))
+        Err(EngineError::Unsupported(DialectName::Osl))
     }
 }

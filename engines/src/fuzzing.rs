@@ -16,7 +16,8 @@
 
 use arbitrary::Unstructured;
 use lpe::generate::{self, Choices, Config};
-use lpe::{osl, Lpe, Options, Path};
+use lpe::renderman::{Lpe, Path};
+use lpe::{osl, Options};
 
 use crate::adapters::{compile_set, Fast, Reference};
 use crate::differential::{self, Agreement, Osl, Outcome};
@@ -26,11 +27,11 @@ use crate::registry;
 /// `parse`: never panics; parse -> print -> parse is the identity on the AST.
 pub fn parse(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
-    let Ok(lpe) = lpe::parse(&text) else {
+    let Ok(lpe) = lpe::renderman::parse(&text) else {
         return;
     };
     let printed = lpe.to_string();
-    let again = lpe::parse(&printed)
+    let again = lpe::renderman::parse(&printed)
         .unwrap_or_else(|e| panic!("`{text}` printed as `{printed}`, which does not parse: {e}"));
     assert_eq!(
         again, lpe,
@@ -80,7 +81,7 @@ fn compare(exprs: &[Lpe], paths: &[Path]) -> differential::Agreement {
     // below would not reproduce.
     for e in exprs {
         let text = e.to_string();
-        match lpe::parse(&text) {
+        match lpe::renderman::parse(&text) {
             Ok(back) => assert_eq!(&back, e, "`{text}` parses to another expression"),
             Err(err) => panic!("generated `{text}` does not parse: {err}"),
         }
@@ -297,7 +298,9 @@ mod tests {
     use super::*;
 
     fn set(srcs: &[&str]) -> Vec<Lpe> {
-        srcs.iter().map(|s| lpe::parse(s).unwrap()).collect()
+        srcs.iter()
+            .map(|s| lpe::renderman::parse(s).unwrap())
+            .collect()
     }
 
     fn paths(texts: &[&str]) -> Vec<Path> {

@@ -30,7 +30,7 @@ fn repo(rel: &str) -> String {
 fn setup(command: String, timeout_ms: u64) -> Setup {
     Setup {
         command,
-        dialect: lpe::Dialect::RenderMan,
+        dialect: lpe::DialectName::RenderMan,
         registered: lpe::osl::Registered::none(),
         timeout: Duration::from_millis(timeout_ms),
         max_restarts: 20,

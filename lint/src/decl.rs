@@ -99,7 +99,7 @@ pub struct Document {
     /// The first RenderProduct's `orderedVars`, as AOV (prim) names, in order.
     pub ordered_vars: Option<Vec<String>>,
     /// Macros and lobe mappings (ini files only).
-    pub config: Option<lpe::Config>,
+    pub config: Option<lpe::renderman::Config>,
 }
 
 impl Document {

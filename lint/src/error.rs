@@ -67,7 +67,7 @@ pub enum ReadError {
         /// The file.
         path: PathBuf,
         /// Which line, and what.
-        error: lpe::IniError,
+        error: lpe::renderman::IniError,
     },
 }
 

@@ -8,7 +8,7 @@
 //!   attributes the render delegates read, and declared partitions
 //!   (`custom string lpe:partition` on a `RenderSettings` prim);
 //! - RIB ([`read::rib`]): `DisplayChannel` lines with an `lpe:` source, streamed;
-//! - `rendermn.ini` ([`read::ini`]): macros and lobe mappings, through [`lpe::Config`].
+//! - `rendermn.ini` ([`read::ini`]): macros and lobe mappings, through [`lpe::renderman::Config`].
 //!
 //! Every reader has a documented size limit ([`read::Limits`]) and turns bad bytes into a
 //! [`ReadError`] with the file and, where there is one, the line; none panics.

@@ -46,55 +46,20 @@
 //! assert_eq!(hits, ["indirectDiffuse"]);
 //! ```
 
-
 use crate::algebra::SetExpr;
-use crate::automata::dfa::{Dfa, MAX_EAGER_STATES};
+use std::ops::Deref;
+
+pub use crate::automata::automaton::Automaton;
 use crate::automata::emptiness::{self, Warning};
+pub use crate::automata::error::CompileError;
+use crate::automata::ir::VertexClasses;
 pub use crate::automata::lazy::Cache;
-use crate::automata::lazy::Lazy;
-use crate::automata::mask::{AovMask, Class, State, MAX_AOVS, NFA_STATE_WORDS};
+use crate::automata::mask::{AovMask, Class, State, MAX_AOVS};
 use crate::automata::nfa::{Builder, Nfa};
+pub use crate::automata::options::Options;
 use crate::automata::visible::Visible;
 pub use crate::automata::wide::NfaMatcher;
 use crate::dialect::{Dialect, DialectLpe};
-use crate::automata::ir::VertexClasses;
-
-/// Compile-time knobs.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Options {
-    /// Most bytes the DFA may take (transition table, per-state masks and construction
-    /// scratch). Over it, the set is a lazy DFA. Default 16 MiB. `0` forces the lazy
-    /// DFA.
-    pub dfa_budget: usize,
-    /// Bytes of transition rows one lazy [`Cache`] may hold (per thread; a row is
-    /// `4 * stride + 40` bytes), cleared whole when full. `0` turns caching off: every
-    /// step of a lazy set runs the bitset NFA. Default 2 MiB. Unused by sets with a DFA.
-    pub lazy_cache: usize,
-    /// Most bytes the NFA may take. It needs one follow row per position
-    /// (`positions^2 / 8` bytes; over the budget, compilation fails: about 11 000
-    /// positions at the default), and steps fast with per-byte tables of up to `16 KiB *
-    /// words^2` for states of `words` 64-bit words, built when they fit (about 2 000
-    /// positions); without them it only serves to build the DFA. Default 16 MiB.
-    pub nfa_budget: usize,
-    /// The longest path the caller will ever step, in vertices, if known. With it,
-    /// `e{n,m}` with `m >= max_path_len` compiles as `e{n,}` (fewer positions, smaller
-    /// automata); answers for longer paths are then unspecified. Default `None`: exact
-    /// on every path.
-    pub max_path_len: Option<u32>,
-}
-
-impl Default for Options {
-    fn default() -> Self {
-        Options {
-            dfa_budget: 16 << 20,
-            lazy_cache: 2 << 20,
-            nfa_budget: 16 << 20,
-            max_path_len: None,
-        }
-    }
-}
-
-pub use crate::automata::error::CompileError;
 
 /// The hidden AOVs of a set: every operand of set algebra is one, a plain AOV is one
 /// operand.
@@ -157,33 +122,36 @@ impl<'a, E> Hidden<'a, E> {
     }
 }
 
-/// A compiled AOV set of dialect `D`. See the
-/// [module docs](self).
+/// A compiled AOV set of dialect `D`: the dialect's vertex classes in front of the
+/// [`Automaton`] every dialect steps, which the set dereferences to (`set.start()`,
+/// `set.step_class(s, c)`, `set.matches(s)`, …). See the [module docs](self).
+///
+/// A set is of one dialect by type: another dialect's vertex does not classify.
+///
+/// ```compile_fail
+/// use lpe::AovSet;
+///
+/// let set = AovSet::compile(&[("d".to_string(), lpe::renderman::parse("C<RD>L").unwrap())]).unwrap();
+/// let osl_vertex: lpe::osl::Vertex = "C,_".parse().unwrap();
+/// set.classify(&osl_vertex);
+/// ```
 #[derive(Clone, Debug)]
 pub struct AovSet<D: Dialect> {
     names: Vec<String>,
     lpes: Vec<D::Lpe>,
     registration: D::Registration,
     classes: D::Classes,
-    /// The eager DFA; empty (no states) for a lazy set, so that a step of a lazy set
-    /// misses the table and takes the lazy path: the DFA step has no other branch.
-    dfa: Dfa,
-    /// Over the DFA budget: the lazy DFA. Boxed because its registry's lock is interior
-    /// mutability: held inline it would make `&AovSet` a reference to mutable memory, and
-    /// the compiler would reload the DFA's table pointer and length after every call in
-    /// a caller's loop (the out-of-line miss path) instead of keeping them in registers.
-    lazy: Option<Box<Lazy>>,
-    /// The DFA's start, or the registry's id of the NFA start (position 0 alone).
-    start: State,
-    /// NFA positions (the start included), kept for reporting once the NFA is dropped.
-    nfa_positions: usize,
-    /// With set algebra: the visible masks as formulas over the operands, which the
-    /// automata hold as hidden AOVs. `None`: every AOV is its own hidden AOV.
-    visible: Option<Visible>,
-    /// State 0 is dead: always with a DFA; on a lazy set, where it is the NFA state with
-    /// no active position, unless a complement then matches.
-    empty_is_dead: bool,
+    automaton: Automaton,
     warnings: Vec<Warning>,
+}
+
+impl<D: Dialect> Deref for AovSet<D> {
+    type Target = Automaton;
+
+    #[inline(always)]
+    fn deref(&self) -> &Automaton {
+        &self.automaton
+    }
 }
 
 impl<D: Dialect> AovSet<D> {
@@ -249,72 +217,19 @@ impl<D: Dialect> AovSet<D> {
             aovs,
             &emptiness::empty_aovs(&nfa, &classes, D::SHAPE, &atoms, &hidden_names, &operands),
         );
-        let nfa_positions = nfa.positions;
         let attempt = Options {
             dfa_budget: opts.dfa_budget.min(D::DFA_ATTEMPT_BUDGET),
             ..opts.clone()
         };
-        let (dfa, lazy, start) =
-            Self::engine(nfa, classes.class_count(), &attempt, visible.as_ref())?;
-        let empty_is_dead = Self::empty_is_dead(lazy.as_deref(), visible.as_ref());
+        let automaton = Automaton::build(nfa, classes.class_count(), &attempt, visible)?;
         Ok(AovSet {
             names: aovs.iter().map(|(n, _)| n.clone()).collect(),
             lpes: aovs.iter().map(|(_, l)| l.clone()).collect(),
             registration: registration.clone(),
             classes,
-            dfa,
-            lazy,
-            start,
-            nfa_positions,
-            visible,
-            empty_is_dead,
+            automaton,
             warnings,
         })
-    }
-
-    /// The automata a set steps: its eager DFA when it fits [`Options::dfa_budget`] and
-    /// [`MAX_EAGER_STATES`], else a lazy DFA over the NFA (which must then fit a lazy
-    /// state); and the start state.
-    /// With set algebra, `visible` gives the automata's visible masks.
-    fn engine(
-        nfa: Nfa,
-        classes: usize,
-        opts: &Options,
-        visible: Option<&Visible>,
-    ) -> Result<(Dfa, Option<Box<Lazy>>, State), CompileError> {
-        let dfa = if opts.dfa_budget > 0 {
-            // Past `MAX_EAGER_STATES`, a set the lazy DFA can step goes lazy rather than
-            // spend its budget's worth of construction first; a wider one has no other
-            // way to step and gets the whole budget.
-            let max_states = if nfa.words() <= NFA_STATE_WORDS {
-                MAX_EAGER_STATES
-            } else {
-                usize::MAX
-            };
-            Dfa::build(&nfa, classes, opts.dfa_budget, visible, max_states)
-        } else {
-            None
-        };
-        if dfa.is_none() && nfa.words() > NFA_STATE_WORDS {
-            return Err(CompileError::TooManyPositions {
-                positions: nfa.positions,
-                max: 64 * NFA_STATE_WORDS,
-                dfa_budget: opts.dfa_budget,
-            });
-        }
-        // The NFA only serves to build the DFA, so a set with a DFA drops it (with its
-        // follow tables, often the larger of the two).
-        let start = dfa.as_ref().map_or(State(1), |d| State(d.start()));
-        let lazy = dfa
-            .is_none()
-            .then(|| Box::new(Lazy::new(nfa, classes, opts.lazy_cache, visible.cloned())));
-        Ok((dfa.unwrap_or_else(Dfa::empty), lazy, start))
-    }
-
-    /// A DFA's state 0 is always dead (`Dfa::build`); a lazy set's state 0 is the NFA
-    /// state with no active position, where a complement `^A` still matches.
-    fn empty_is_dead(lazy: Option<&Lazy>, visible: Option<&Visible>) -> bool {
-        lazy.is_none() || visible.is_none_or(|v| v.none().is_empty())
     }
 
     /// One follow row per position is the least an NFA needs: `positions^2 / 8` bytes.
@@ -351,12 +266,6 @@ impl<D: Dialect> AovSet<D> {
         Ok((classes, nfa, atoms))
     }
 
-    /// The state before any vertex.
-    #[inline]
-    pub fn start(&self) -> State {
-        self.start
-    }
-
     /// The class of a vertex: compute it once per material lobe and step with
     /// [`AovSet::step_class`].
     #[inline]
@@ -370,154 +279,16 @@ impl<D: Dialect> AovSet<D> {
         self.step_class(s, self.classify(v))
     }
 
-    /// One vertex, already classified. A class or state from another set gives an
-    /// unspecified state, never a panic. On a lazy set (no DFA) this goes through a
-    /// per-thread cache; [`AovSet::step_with`] with a [`Cache`] of the caller's is faster.
-    #[inline]
-    pub fn step_class(&self, s: State, c: Class) -> State {
-        match self.dfa.next(s.0, c.0) {
-            Some(n) => State(n),
-            None => self.step_off_table(s, c),
-        }
-    }
-
-    /// A state or class out of the DFA's table, which on a lazy set is every step: the
-    /// lazy DFA's cache hit inline, the rest out of line and cold. Cold, so that a DFA
-    /// set's loop keeps its registers: with the call on an ordinary branch, the caller
-    /// spilled the table's pointer and the path's bounds around it, and a renderer-shaped
-    /// loop stepped at 1.3-1.75x the bare chain of table loads (`lpe-check bench`), 1.1x
-    /// with the whole off-table step cold. The lazy hit stays inline (1.2-1.3x), since
-    /// with it in the cold call a lazy set paid that call's spills at every step.
-    #[inline(always)]
-    fn step_off_table(&self, s: State, c: Class) -> State {
-        if let Some(n) = self.lazy.as_ref().and_then(|l| l.step_local_hit(s, c)) {
-            return n;
-        }
-        self.step_miss(s, c)
-    }
-
-    /// The eager DFA's transitions, for callers that inline the step into their own
-    /// loop (the C ABI's `lpe_step_view`): for any state `s` and class `c`, when
-    /// `i = s.to_u32().wrapping_add(c.index() as u32)` is below the table's length,
-    /// [`AovSet::step_class`]`(s, c)` is `State::from_u32(table[i])`; otherwise (always
-    /// on a lazy set, whose table is empty) step with [`AovSet::step_class`]. Immutable
-    /// for the set's life.
-    ///
-    /// ```
-    /// use lpe::AovSet;
-    /// use lpe::renderman::{parse, Vertex};
-    ///
-    /// let set = AovSet::compile(&[("d".to_string(), parse("C<RD>L").unwrap())]).unwrap();
-    /// let (s, c) = (set.start(), set.classify(&Vertex::camera()));
-    /// let i = s.to_u32().wrapping_add(c.index() as u32) as usize;
-    /// assert_eq!(set.step_table()[i], set.step_class(s, c).to_u32());
-    /// ```
-    #[inline]
-    pub fn step_table(&self) -> &[u32] {
-        self.dfa.table()
-    }
-
-    /// The AOVs that match a path ending in state `s`.
-    #[inline]
-    pub fn matches(&self, s: State) -> AovMask {
-        let missed;
-        let m = match self.dfa.mask_ref(s.0) {
-            Some(m) => m,
-            None => {
-                missed = self.matches_miss(s);
-                &missed
-            }
-        };
-        *m
-    }
-
-    /// No continuation of the path can match any AOV. Exact on a DFA, where the dead
-    /// state is state 0. On a lazy set, state 0 is the NFA state with no active position:
-    /// dead unless a complement (`^A`) matches from there on; and a state whose operands
-    /// can still match but whose set algebra never will (`A & B` after `B` died) is not
-    /// flagged.
-    #[inline]
-    pub fn is_dead(&self, s: State) -> bool {
-        s == State::DEAD && self.empty_is_dead
-    }
-
-    /// One step of many independent paths, for wavefront renderers: `states[i]` steps on
-    /// `classes[i]` (pairs past the shorter slice are left alone). On a DFA the loads of
-    /// different paths overlap, where one path's steps wait on each other.
-    #[inline]
-    pub fn step_batch(&self, states: &mut [State], classes: &[Class]) {
-        match &self.lazy {
-            // The table alone, no call in the loop: what is off the table is another
-            // set's state or class, which `step_class` takes to the dead state too.
-            None => {
-                for (s, c) in states.iter_mut().zip(classes) {
-                    *s = self.dfa.next(s.0, c.0).map_or(State::DEAD, State);
-                }
-            }
-            // The lazy DFA borrows this thread's cache once for the batch.
-            Some(l) => l.step_batch_local(states, classes),
-        }
-    }
-
-    /// A cache for stepping this set with [`AovSet::step_with`]: one per thread. Sized by
-    /// [`Options::lazy_cache`]; holds nothing for a set with a DFA.
-    pub fn cache(&self) -> Cache {
-        match &self.lazy {
-            None => Cache::empty(),
-            Some(l) => l.cache(),
-        }
-    }
-
-    /// [`AovSet::step_class`] through the caller's cache: on a lazy set, two loads when
-    /// the transition is cached. A cache of another set is reset for this one.
-    #[inline]
-    pub fn step_with(&self, cache: &mut Cache, s: State, c: Class) -> State {
-        match (self.dfa.next(s.0, c.0), &self.lazy) {
-            (Some(n), _) => State(n),
-            (None, Some(l)) => l.step(cache, s, c),
-            (None, None) => State::DEAD,
-        }
-    }
-
-    /// [`AovSet::matches`] through the caller's cache.
-    #[inline]
-    pub fn matches_with(&self, cache: &mut Cache, s: State) -> AovMask {
-        match (self.dfa.matches(s.0), &self.lazy) {
-            (Some(m), _) => m,
-            (None, Some(l)) => l.matches(cache, s),
-            (None, None) => AovMask::EMPTY,
-        }
-    }
-
     /// The bitset NFA of a lazy set, stepped on its wide state without registry or
     /// cache; `None` for a set with a DFA (which drops its NFA).
     pub fn nfa(&self) -> Option<NfaMatcher<'_, D::Classes>> {
-        self.lazy.as_ref().map(|l| NfaMatcher {
-            nfa: l.nfa(),
+        let (nfa, visible, empty_is_dead) = self.automaton.lazy_nfa()?;
+        Some(NfaMatcher {
+            nfa,
             classes: &self.classes,
-            visible: self.visible.as_ref(),
-            empty_is_dead: self.empty_is_dead,
+            visible,
+            empty_is_dead,
         })
-    }
-
-    /// A state or class out of the DFA's table that this thread's lazy cache does not
-    /// hold: the lazy DFA's step, or (a state or class of another set) the dead state.
-    #[cold]
-    #[inline(never)]
-    fn step_miss(&self, s: State, c: Class) -> State {
-        match &self.lazy {
-            Some(l) => l.step_local_miss(s, c),
-            None => State::DEAD,
-        }
-    }
-
-    #[cold]
-    #[inline(never)]
-    fn matches_miss(&self, s: State) -> AovMask {
-        match &self.lazy {
-            Some(l) => l.matches_local(s),
-            None => AovMask::EMPTY,
-        }
     }
 
     /// Steps a whole path from the start.
@@ -526,6 +297,11 @@ impl<D: Dialect> AovSet<D> {
             .iter()
             .fold(self.start(), |s, v| self.step(s, v));
         self.matches(s)
+    }
+
+    /// The name of the set's dialect ([`Dialect::NAME`]).
+    pub fn dialect(&self) -> &'static str {
+        D::NAME
     }
 
     /// What the set's expressions were parsed under.
@@ -579,37 +355,14 @@ impl<D: Dialect> AovSet<D> {
         self.classes.class_count()
     }
 
-    /// Whether the set steps an eager DFA (else a lazy one: over the DFA budget).
-    pub fn uses_dfa(&self) -> bool {
-        self.lazy.is_none()
-    }
-
-    /// DFA states (dead state included), if the set has a DFA.
-    pub fn dfa_states(&self) -> Option<usize> {
-        self.lazy.is_none().then(|| self.dfa.state_count())
-    }
-
-    /// NFA states a lazy set has determinized so far (dead and start included), across
-    /// all threads; `None` for a set with a DFA.
-    pub fn lazy_states(&self) -> Option<usize> {
-        self.lazy.as_deref().map(Lazy::registered)
-    }
-
-    /// NFA positions (the start included), after keeping once the positions that are
-    /// always active together and dropping those no path can use: at most the atoms of
-    /// the expressions after unrolling, plus one.
-    pub fn nfa_positions(&self) -> usize {
-        self.nfa_positions
-    }
-
     /// Bytes held by the automaton the set steps and by the class tables.
     pub fn memory_bytes(&self) -> usize {
-        self.classes.memory_bytes()
-            + self.dfa.memory_bytes()
-            + match &self.lazy {
-                None => 0,
-                Some(l) => l.memory_bytes(),
-            }
+        self.classes.memory_bytes() + self.automaton.memory_bytes()
+    }
+
+    /// The automaton the set steps (what it dereferences to).
+    pub fn automaton(&self) -> &Automaton {
+        &self.automaton
     }
 
     /// The set's vertex classes.

@@ -70,7 +70,10 @@ pub trait Dialect: Copy + Default + fmt::Debug + Send + Sync + 'static {
     type Classes: VertexClasses<Vertex = Self::Vertex>;
 
     /// Parses one expression under `registration`.
-    fn parse(source: &str, registration: &Self::Registration) -> Result<Self::Lpe, Self::ParseError>;
+    fn parse(
+        source: &str,
+        registration: &Self::Registration,
+    ) -> Result<Self::Lpe, Self::ParseError>;
     /// The vertices of a path, camera first.
     fn vertices(path: &Self::Path) -> &[Self::Vertex];
     /// The path of `vertices`, which follow [`Dialect::SHAPE`] (the searches build their

@@ -878,7 +878,9 @@ mod tests {
     fn walks_of_simple_expressions_give_the_expected_shapes() {
         let cfg = Config::default();
         let mut rng = SplitMix64::new(1);
-        let e = crate::renderman::parse("C<RD'floor'><TS8>[<L.'key'>]").unwrap().expr;
+        let e = crate::renderman::parse("C<RD'floor'><TS8>[<L.'key'>]")
+            .unwrap()
+            .expr;
         let p = matching_path(&e, &mut rng, &cfg).unwrap();
         let v = p.vertices();
         assert_eq!(v.len(), 4);

@@ -57,7 +57,7 @@
 //! );
 //! ```
 
-use crate::aov::AovSet;
+use crate::aov::{AovSet, Automaton};
 use crate::automata::ir::VertexClasses;
 use crate::automata::mask::{AovMask, Class, NfaState, State};
 use crate::automata::wide::NfaMatcher;
@@ -110,22 +110,22 @@ impl<D: Dialect> PathMatcher for AovSet<D> {
 
     #[inline]
     fn start(&self) -> State {
-        AovSet::start(self)
+        Automaton::start(self)
     }
 
     #[inline]
     fn step(&self, s: State, c: Class) -> State {
-        AovSet::step_class(self, s, c)
+        Automaton::step_class(self, s, c)
     }
 
     #[inline]
     fn matches(&self, s: State) -> AovMask {
-        AovSet::matches(self, s)
+        Automaton::matches(self, s)
     }
 
     #[inline]
     fn is_dead(&self, s: State) -> bool {
-        AovSet::is_dead(self, s)
+        Automaton::is_dead(self, s)
     }
 }
 
@@ -169,7 +169,10 @@ mod tests {
 
     /// Through the trait, generically: the same answers as the set's own methods, on
     /// both of the set's engines.
-    fn generic_match<M: PathMatcher<Vertex = crate::renderman::Vertex>>(m: &M, path: &Path) -> (AovMask, bool) {
+    fn generic_match<M: PathMatcher<Vertex = crate::renderman::Vertex>>(
+        m: &M,
+        path: &Path,
+    ) -> (AovMask, bool) {
         let mut s = m.start();
         let mut died = false;
         for v in path.vertices() {

@@ -73,10 +73,7 @@ pub struct UnknownDialect(pub String);
 
 impl fmt::Display for UnknownDialect {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let known: Vec<String> = DialectName::ALL
-            .iter()
-            .map(|d| format!("`{d}`"))
-            .collect();
+        let known: Vec<String> = DialectName::ALL.iter().map(|d| format!("`{d}`")).collect();
         write!(
             f,
             "unknown dialect `{}` (expected {})",
@@ -106,7 +103,10 @@ mod tests {
     #[test]
     fn names_round_trip_and_unknown_names_fail() {
         assert_eq!("osl".parse::<DialectName>(), Ok(DialectName::Osl));
-        assert_eq!("renderman".parse::<DialectName>(), Ok(DialectName::RenderMan));
+        assert_eq!(
+            "renderman".parse::<DialectName>(),
+            Ok(DialectName::RenderMan)
+        );
         assert_eq!(DialectName::Osl.to_string(), "osl");
         assert_eq!(DialectName::RenderMan.to_string(), "renderman");
         let e = "OSL".parse::<DialectName>().unwrap_err();
@@ -115,9 +115,6 @@ mod tests {
             e.to_string(),
             "unknown dialect `OSL` (expected `renderman` or `osl`)"
         );
-        assert_eq!(
-            DialectName::of::<crate::osl::Osl>(),
-            Some(DialectName::Osl)
-        );
+        assert_eq!(DialectName::of::<crate::osl::Osl>(), Some(DialectName::Osl));
     }
 }

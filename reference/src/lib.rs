@@ -38,8 +38,10 @@ use std::collections::HashSet;
 
 pub mod osl;
 
-use lpe::ast::{Atom, EventPattern, EventPos, Expr, Item, LabelPos, Repetition, Triple, TypePos};
-use lpe::{Lpe, Path, Vertex, VertexType};
+use lpe::renderman::ast::{
+    Atom, EventPattern, EventPos, Expr, Item, LabelPos, Repetition, Triple, TypePos,
+};
+use lpe::renderman::{Lpe, Path, Vertex, VertexType};
 
 /// Whether `lpe` matches the whole of `path`. Set algebra by its definition: each
 /// operand matched on its own, the answers combined (`&` and, `-` and not, `^` not).

@@ -16,7 +16,7 @@
 
 use std::collections::{BTreeSet, HashMap};
 
-use lpe::ast::Repetition;
+use lpe::automata::ir::Repetition;
 use lpe::osl::{Expr, Lpe, Path, Symbol, SymbolPattern};
 
 /// One token of a path's symbol stream.

@@ -2,7 +2,7 @@
 //! reference matcher, over every path up to length 4 of a small alphabet. (The
 //! vector-by-vector conformance cases are in `tests/testdata/`.)
 
-use lpe::{parse, Event, EventKind, Path, Vertex, VertexType};
+use lpe::renderman::{parse, Event, EventKind, Path, Vertex, VertexType};
 use reference::is_match;
 
 /// A small alphabet: both scattering types with D1, D2, S2, S8, one or no label; both
@@ -60,7 +60,7 @@ fn all_paths(max_len: usize) -> Vec<Path> {
 
 #[test]
 fn basic_aovs_are_disjoint_and_exhaustive_up_to_length_4() {
-    let basic: Vec<_> = lpe::macros::BASIC
+    let basic: Vec<_> = lpe::renderman::macros::BASIC
         .iter()
         .map(|(n, _)| (n, parse(n).unwrap()))
         .collect();

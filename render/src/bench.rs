@@ -1,6 +1,7 @@
 //! `lpe-render bench`: what LPE tracking costs.
 
-use lpe::{Dialect, LobeMap, Parser};
+use lpe::renderman::{LobeMap, Parser};
+use lpe::DialectName;
 
 use crate::aov::{AovError, AovList};
 use crate::integrator::RenderError;
@@ -77,14 +78,14 @@ const OSL_EXTRA: [(&str, &str); 25] = [
 
 /// The bench's 32 AOVs in `dialect`: the defaults, the extras above, then
 /// `bounces{k}`, paths of at least `4 + k` bounces.
-pub fn aovs(dialect: Dialect, scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
+pub fn aovs(dialect: DialectName, scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
     let (mut aovs, extra, emitter) = match dialect {
-        Dialect::RenderMan => (
+        DialectName::RenderMan => (
             AovList::defaults(scene, parser)?,
             &RENDERMAN_EXTRA[..],
             "[<L.>O]",
         ),
-        Dialect::Osl => (AovList::basic_osl(parser)?, &OSL_EXTRA[..], "[LO]"),
+        DialectName::Osl => (AovList::basic_osl(parser)?, &OSL_EXTRA[..], "[LO]"),
     };
     for (n, s) in extra {
         if aovs.aovs.len() >= 32 {
@@ -111,12 +112,19 @@ pub fn bench(
     settings: &Settings,
     rounds: usize,
 ) -> Result<Bench, BenchError> {
-    bench_in(Dialect::RenderMan, scene, lobes, parser, settings, rounds)
+    bench_in(
+        DialectName::RenderMan,
+        scene,
+        lobes,
+        parser,
+        settings,
+        rounds,
+    )
 }
 
 /// [`bench`] with the 32 AOVs of [`aovs`] in `dialect`.
 pub fn bench_in(
-    dialect: Dialect,
+    dialect: DialectName,
     scene: &Scene,
     lobes: &LobeMap,
     parser: &Parser,
@@ -161,7 +169,8 @@ fn median(xs: &mut [f64]) -> f64 {
 mod tests {
     use super::*;
     use lpe::osl::Registered;
-    use lpe::{AovSet, Config, Options};
+    use lpe::renderman::Config;
+    use lpe::{AovSet, Options};
 
     /// The bench measures the eager DFA step in both dialects: a padding AOV that blew
     /// the set up (OSL sets attempt the DFA within 1 MiB) would time the lazy DFA, or
@@ -172,7 +181,7 @@ mod tests {
         let parser = Parser::new(cfg.limits.clone(), cfg.macros.clone());
         for name in ["cornell", "still-life"] {
             let scene = Scene::load(name, &cfg.lobes).unwrap();
-            for dialect in Dialect::ALL {
+            for dialect in DialectName::ALL {
                 let list = aovs(dialect, &scene, &parser).unwrap();
                 assert_eq!(list.aovs.len(), 32, "{name} {dialect}");
                 assert_eq!(list.dialect, dialect);
@@ -180,21 +189,23 @@ mod tests {
                 names.sort_unstable();
                 names.dedup();
                 assert_eq!(names.len(), 32, "{name} {dialect}: duplicate names");
-                let set = match dialect {
-                    Dialect::RenderMan => AovSet::compile(&list.named()),
-                    Dialect::Osl => AovSet::compile_osl(
-                        &list.named_osl(),
-                        &Registered::none(),
-                        &Options::default(),
-                    ),
-                }
-                .unwrap();
-                assert!(set.uses_dfa(), "{name} {dialect}: lazy");
-                assert!(
-                    set.warnings().is_empty(),
-                    "{name} {dialect}: {:?}",
-                    set.warnings()
-                );
+                let (uses_dfa, warnings) = match dialect {
+                    DialectName::RenderMan => {
+                        let set = AovSet::compile(&list.named()).unwrap();
+                        (set.uses_dfa(), set.warnings().to_vec())
+                    }
+                    DialectName::Osl => {
+                        let set = AovSet::compile_under(
+                            &list.named_osl(),
+                            &Registered::none(),
+                            &Options::default(),
+                        )
+                        .unwrap();
+                        (set.uses_dfa(), set.warnings().to_vec())
+                    }
+                };
+                assert!(uses_dfa, "{name} {dialect}: lazy");
+                assert!(warnings.is_empty(), "{name} {dialect}: {warnings:?}");
             }
         }
     }

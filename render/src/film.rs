@@ -555,8 +555,8 @@ mod tests {
 
     /// One AOV `C.*L` per entry of `prefixes` ("plain": none).
     fn weighting_of(prefixes: &[&str], clamp: Option<f32>) -> Weighting {
-        let config = lpe::Config::default();
-        let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
+        let config = lpe::renderman::Config::default();
+        let parser = lpe::renderman::Parser::new(config.limits.clone(), config.macros.clone());
         let mut aovs = AovList::default();
         for (i, prefixes) in prefixes.iter().enumerate() {
             let prefixes = if *prefixes == "plain" { "" } else { prefixes };

@@ -1,5 +1,5 @@
 //! Materials: sums of named lobes (docs/language.md §2.4). Each lobe is one BSDF model; its name
-//! goes through the [`lpe::LobeMap`] to the event its vertices record.
+//! goes through the [`lpe::renderman::LobeMap`] to the event its vertices record.
 //!
 //! A material's BSDF is the sum of its lobes. Paths pick one lobe per vertex with
 //! probability `p_i` (proportional to the lobe's albedo estimate) and sample a direction
@@ -9,7 +9,7 @@
 //! with a layered shader's mix weights.
 
 use glam::{Vec2, Vec3};
-use lpe::{Event, LobeCategory, LobeMap};
+use lpe::renderman::{Event, LobeCategory, LobeMap};
 use std::f32::consts::{FRAC_1_PI, PI};
 
 use crate::aov::vertex::Scattering;

@@ -23,7 +23,7 @@
 //! `the_excluded_cases_are_those_the_lattice_rule_excludes` keeps the list below honest.
 
 use glam::Vec3;
-use lpe::LobeMap;
+use lpe::renderman::LobeMap;
 use lpe_render::material::{Lobe, Model};
 use lpe_render::verify::chi2::{self, ChiSquare, Grid, HalfVectorGrid, SphereGrid};
 

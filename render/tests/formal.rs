@@ -1,7 +1,7 @@
 //! The formal partition check a render reports before tracing: decided by
 //! `lpe::analysis` for every path, with a witness the reference matcher confirms.
 
-use lpe::{Parser, Path};
+use lpe::renderman::{Parser, Path};
 use lpe_render::aov::{AovList, Partition};
 use lpe_render::verify::invariants::formal_partition;
 
@@ -24,7 +24,7 @@ fn list(aovs: &[(&str, &str)], declare: bool) -> AovList {
 
 #[test]
 fn basic_aovs_pass_and_basic_plus_caustics_fails_with_a_real_witness() {
-    let basic: Vec<(&str, &str)> = lpe::macros::BASIC.to_vec();
+    let basic: Vec<(&str, &str)> = lpe::renderman::macros::BASIC.to_vec();
     let r = formal_partition(&list(&basic, true));
     assert_eq!(r.len(), 1);
     assert_eq!(r[0].passed, Some(true), "{}", r[0].detail);
@@ -41,7 +41,7 @@ fn basic_aovs_pass_and_basic_plus_caustics_fails_with_a_real_witness() {
         .expect("a quoted witness path")
         .parse()
         .unwrap();
-    let matches = |src: &str| reference::is_match(&lpe::parse(src).unwrap(), &witness);
+    let matches = |src: &str| reference::is_match(&lpe::renderman::parse(src).unwrap(), &witness);
     assert!(matches("caustics"), "{detail}");
     let other = if detail.contains("indirectDiffuse") {
         "indirectDiffuse"

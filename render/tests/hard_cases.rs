@@ -2,7 +2,7 @@
 //! or an independent computation; statistical ones state their significance.
 
 use glam::{DVec3, Vec3};
-use lpe::{LobeMap, Parser};
+use lpe::renderman::{LobeMap, Parser};
 use lpe_render::aov::AovList;
 use lpe_render::film::Accumulation;
 use lpe_render::geometry::{Bvh, Ray, Shape};

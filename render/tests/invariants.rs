@@ -6,7 +6,7 @@
 mod common;
 
 use common::{parser, render, scene};
-use lpe::Config;
+use lpe::renderman::Config;
 use lpe_render::aov::AovList;
 use lpe_render::integrator;
 use lpe_render::integrator::Settings;

@@ -9,7 +9,7 @@
 //! lobe, shadows on the floor, a quad, a sphere and a dome light.
 
 use glam::DVec3;
-use lpe::{Config, Parser};
+use lpe::renderman::{Config, Parser};
 use lpe_render::aov::AovList;
 use lpe_render::integrator::{self, Render, Settings, Technique};
 use lpe_render::scene::Scene;

@@ -12,7 +12,8 @@ use std::collections::BTreeSet;
 use std::fmt;
 use std::path::{Path as FsPath, PathBuf};
 
-use lpe::{AovSet, ErrorKind, Lpe, Options, Parser, Path};
+use lpe::renderman::{ErrorKind, Lpe, Parser, Path};
+use lpe::{AovSet, Options};
 use serde::Deserialize;
 
 // The one line to change when the engine registry moves crates.
@@ -577,7 +578,7 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
         };
     let parser = match &case.ini {
         None => Parser::default(),
-        Some(text) => match lpe::Config::from_ini(text) {
+        Some(text) => match lpe::renderman::Config::from_ini(text) {
             Ok(c) => c.parser(),
             Err(e) => {
                 report.failures.push(fail(

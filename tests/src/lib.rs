@@ -5,9 +5,9 @@
 pub mod conformance;
 pub mod osl_rows;
 
-use lpe::ast::{Atom, Expr, Item, Triple, TypePos};
+use lpe::renderman::ast::{Atom, Expr, Item, Triple, TypePos};
+use lpe::renderman::{Event, Lpe, Vertex, VertexType};
 use lpe::strategy::{self, LABELS};
-use lpe::{Event, Lpe, Vertex, VertexType};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
@@ -38,8 +38,8 @@ pub fn framed(e: Expr) -> Expr {
         items: vec![
             Item::Triple(Triple {
                 ty: TypePos::One(VertexType::L),
-                event: lpe::ast::EventPos::Any,
-                label: lpe::ast::LabelPos::Any,
+                event: lpe::renderman::ast::EventPos::Any,
+                label: lpe::renderman::ast::LabelPos::Any,
             }),
             Item::Type(VertexType::O),
         ],
@@ -93,10 +93,13 @@ pub fn vertex_pool() -> Vec<Vertex> {
 
 /// RenderMan `(name, expression)` pairs compiled with the default options but a DFA
 /// budget of `dfa_budget` bytes (0: no DFA).
-pub fn compile_with_dfa_budget(srcs: &[(&str, &str)], dfa_budget: usize) -> lpe::AovSet {
+pub fn compile_with_dfa_budget(
+    srcs: &[(&str, &str)],
+    dfa_budget: usize,
+) -> lpe::AovSet<lpe::renderman::RenderMan> {
     let aovs: Vec<_> = srcs
         .iter()
-        .map(|(n, s)| (n.to_string(), lpe::parse(s).unwrap()))
+        .map(|(n, s)| (n.to_string(), lpe::renderman::parse(s).unwrap()))
         .collect();
     let opts = lpe::Options {
         dfa_budget,
@@ -107,8 +110,8 @@ pub fn compile_with_dfa_budget(srcs: &[(&str, &str)], dfa_budget: usize) -> lpe:
 
 /// The states reachable from the start over `letters` and, for each, whether it can
 /// still reach a state whose `matches` is not empty. `None` past `cap` states.
-pub fn reachable_and_live(
-    set: &dyn lpe::PathMatcher<Class = lpe::Class, State = lpe::State>,
+pub fn reachable_and_live<V>(
+    set: &dyn lpe::PathMatcher<Vertex = V, Class = lpe::Class, State = lpe::State>,
     letters: &[lpe::Class],
     cap: usize,
 ) -> Option<(Vec<lpe::State>, Vec<bool>)> {

@@ -4,7 +4,8 @@
 //! re-checked with the reference matcher, so any shortest witness is accepted.
 
 use lpe::analysis::{self, default_universe};
-use lpe::{parse, AovSet, Lpe, Path};
+use lpe::renderman::{parse, Lpe, Path};
+use lpe::AovSet;
 
 fn aovs(srcs: &[(&str, &str)]) -> Vec<(String, Lpe)> {
     srcs.iter()
@@ -34,8 +35,9 @@ fn partition_report_fills_every_field() {
         // Partly inside (`C TD L`), partly outside (`C TD TU L`, the shortest).
         ("mixed", "C<TD>(.|<TU>)*[<L.>O]"),
     ]);
-    let universe = default_universe();
-    let p = analysis::partition(&set, &universe).unwrap();
+    let universe =
+        default_universe::<lpe::renderman::RenderMan>(&lpe::renderman::Parser::default());
+    let p = analysis::partition(&set, &universe, &lpe::renderman::Parser::default()).unwrap();
     assert!(!p.is_clean());
 
     // Overlaps: exactly the pair (0, 1), with a shortest witness of 3 vertices.
@@ -67,13 +69,18 @@ fn partition_report_fills_every_field() {
 
 #[test]
 fn partition_report_of_a_partition_is_empty() {
-    let set = aovs(&lpe::macros::BASIC);
-    let p = analysis::partition(&set, &default_universe()).unwrap();
+    let set = aovs(&lpe::renderman::macros::BASIC);
+    let p = analysis::partition(
+        &set,
+        &default_universe::<lpe::renderman::RenderMan>(&lpe::renderman::Parser::default()),
+        &lpe::renderman::Parser::default(),
+    )
+    .unwrap();
     assert!(p.overlaps.is_empty() && p.gap.is_none() && p.outside.is_empty());
     assert!(p.is_clean());
     // A narrower universe: every AOV but `directDiffuse` now matches outside it.
     let narrow = parse("C<RD>[<L.>O]").unwrap();
-    let p = analysis::partition(&set, &narrow).unwrap();
+    let p = analysis::partition(&set, &narrow, &lpe::renderman::Parser::default()).unwrap();
     assert!(p.overlaps.is_empty() && p.gap.is_none(), "{p:?}");
     let outside: Vec<usize> = p.outside.iter().map(|o| o.0).collect();
     assert_eq!(outside, [1, 2, 3, 4, 5, 6]);
@@ -82,20 +89,27 @@ fn partition_report_of_a_partition_is_empty() {
 
 #[test]
 fn any_one_field_alone_makes_a_partition_unclean() {
-    let basic = aovs(&lpe::macros::BASIC);
-    let universe = default_universe();
+    let basic = aovs(&lpe::renderman::macros::BASIC);
+    let universe =
+        default_universe::<lpe::renderman::RenderMan>(&lpe::renderman::Parser::default());
     // Overlaps only: caustics lie inside indirectDiffuse and subsurface.
     let mut set = basic.clone();
     set.extend(aovs(&[("caustics", "CDS+[<L.>O]")]));
-    let p = analysis::partition(&set, &universe).unwrap();
+    let p = analysis::partition(&set, &universe, &lpe::renderman::Parser::default()).unwrap();
     assert!(!p.overlaps.is_empty() && p.gap.is_none() && p.outside.is_empty());
     assert!(!p.is_clean(), "{p:?}");
     // A gap only: the paths of the AOV left out.
-    let p = analysis::partition(&basic[1..], &universe).unwrap();
+    let p =
+        analysis::partition(&basic[1..], &universe, &lpe::renderman::Parser::default()).unwrap();
     assert!(p.overlaps.is_empty() && p.gap.is_some() && p.outside.is_empty());
     assert!(!p.is_clean(), "{p:?}");
     // Outside only: the narrow universe of `partition_report_of_a_partition_is_empty`.
-    let p = analysis::partition(&basic, &parse("C<RD>[<L.>O]").unwrap()).unwrap();
+    let p = analysis::partition(
+        &basic,
+        &parse("C<RD>[<L.>O]").unwrap(),
+        &lpe::renderman::Parser::default(),
+    )
+    .unwrap();
     assert!(p.overlaps.is_empty() && p.gap.is_none() && !p.outside.is_empty());
     assert!(!p.is_clean(), "{p:?}");
 }

@@ -4,9 +4,8 @@
 //! for a set stepped on its NFA, `positions * words * 8` bytes of follow rows within
 //! `nfa_budget`).
 
-use lpe::{
-    parse, AovSet, CompileError, Event, EventKind, Lpe, Options, Path, Vertex, VertexType, MAX_AOVS,
-};
+use lpe::renderman::{parse, Event, EventKind, Lpe, Path, Vertex, VertexType};
+use lpe::{AovSet, CompileError, Options, MAX_AOVS};
 
 fn named(srcs: &[String]) -> Vec<(String, Lpe)> {
     srcs.iter()
@@ -59,7 +58,7 @@ fn max_aovs_compile_and_one_more_does_not() {
 
 #[test]
 fn a_set_of_no_aovs_compiles_and_matches_nothing() {
-    let set = AovSet::compile(&[]).unwrap();
+    let set = AovSet::compile(&[] as &[(String, lpe::renderman::Lpe)]).unwrap();
     assert_eq!((set.len(), set.is_empty()), (0, true));
     assert!(set.match_path(&"C RD1 L".parse().unwrap()).is_empty());
 }

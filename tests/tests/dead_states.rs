@@ -22,11 +22,9 @@
 
 use std::cell::Cell;
 
+use lpe::renderman::{parse, Event, EventKind, Lpe, Path, Prefixes, Vertex, VertexType};
 use lpe::strategy;
-use lpe::{
-    parse, AovSet, Class, Event, EventKind, Lpe, Options, Path, PathMatcher, Prefixes, State,
-    Vertex, VertexType,
-};
+use lpe::{AovSet, Class, Options, PathMatcher, State};
 use lpe_tests::{expr_set, framed, named, vertex_pool};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
@@ -34,7 +32,10 @@ use proptest::test_runner::TestCaseError;
 /// One class per distinct answer of `classify` over the pool. A set may have classes no
 /// constructible vertex falls in (a labelled camera, which `Vertex` cannot build), so
 /// this can be fewer than `class_count()`.
-fn letters(set: &dyn PathMatcher<Class = Class, State = State>, pool: &[Vertex]) -> Vec<Class> {
+fn letters(
+    set: &dyn PathMatcher<Vertex = Vertex, Class = Class, State = State>,
+    pool: &[Vertex],
+) -> Vec<Class> {
     let mut out: Vec<Class> = pool.iter().map(|v| set.classify(v)).collect();
     out.sort();
     out.dedup();
@@ -59,7 +60,7 @@ fn bump(c: &Cell<u32>) {
 /// state, when there are at most `cap` of them. Through [`PathMatcher`], the interface
 /// renderers step.
 fn check_exact(
-    set: &AovSet,
+    set: &AovSet<lpe::renderman::RenderMan>,
     pool: &[Vertex],
     complete: bool,
     cap: usize,
@@ -67,7 +68,7 @@ fn check_exact(
     stats: &Stats,
 ) -> Result<(), TestCaseError> {
     let class_count = set.class_count();
-    let set: &dyn PathMatcher<Class = Class, State = State> = set;
+    let set: &dyn PathMatcher<Vertex = Vertex, Class = Class, State = State> = set;
     let letters = letters(set, pool);
     let Some((states, live)) = lpe_tests::reachable_and_live(set, &letters, cap) else {
         return Ok(());
@@ -108,7 +109,7 @@ fn check_exact(
 /// Once a prefix is dead, the reference matches no AOV on any path that extends it:
 /// the path itself and the prefix spliced with the tails of the other paths.
 fn check_paths(
-    set: &dyn PathMatcher<Class = Class, State = State>,
+    set: &dyn PathMatcher<Vertex = Vertex, Class = Class, State = State>,
     exprs: &[Lpe],
     paths: &[Path],
     what: &str,

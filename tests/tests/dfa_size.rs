@@ -8,11 +8,11 @@
 
 use lpe::{AovMask, AovSet, Options};
 
-fn set(expr: &str, dfa_budget: usize) -> AovSet {
+fn set(expr: &str, dfa_budget: usize) -> AovSet<lpe::renderman::RenderMan> {
     lpe_tests::compile_with_dfa_budget(&[("a", expr)], dfa_budget)
 }
 
-fn default_set(expr: &str) -> AovSet {
+fn default_set(expr: &str) -> AovSet<lpe::renderman::RenderMan> {
     set(expr, Options::default().dfa_budget)
 }
 

@@ -11,12 +11,12 @@ use std::time::{Duration, Instant};
 
 use lpe::analysis::{self, default_universe};
 use lpe::aov::{AovSet, Options};
-use lpe::ast::{Expr, Repetition};
-use lpe::macros::BASIC;
-use lpe::path::{Path, Vertex, VertexType};
+use lpe::renderman::ast::{Expr, Repetition};
+use lpe::renderman::macros::BASIC;
+use lpe::renderman::path::{Path, Vertex, VertexType};
+use lpe::renderman::{parse, Lpe};
 use lpe::rng::SplitMix64 as Rng;
 use lpe::strategy;
-use lpe::{parse, Lpe};
 use lpe_tests::{expr_set, framed, named, vertex_pool};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
@@ -283,7 +283,12 @@ fn basic() -> Vec<(String, Lpe)> {
 
 #[test]
 fn basic_aovs_are_a_clean_partition() {
-    let p = analysis::partition(&basic(), &default_universe()).unwrap();
+    let p = analysis::partition(
+        &basic(),
+        &default_universe::<lpe::renderman::RenderMan>(&lpe::renderman::Parser::default()),
+        &lpe::renderman::Parser::default(),
+    )
+    .unwrap();
     assert!(p.is_clean(), "{p:?}");
 }
 
@@ -291,8 +296,9 @@ fn basic_aovs_are_a_clean_partition() {
 fn caustics_overlap_witnesses_hold_under_the_reference() {
     let mut aovs = basic();
     aovs.push(("caustics".into(), parse("caustics").unwrap()));
-    let universe = default_universe();
-    let p = analysis::partition(&aovs, &universe).unwrap();
+    let universe =
+        default_universe::<lpe::renderman::RenderMan>(&lpe::renderman::Parser::default());
+    let p = analysis::partition(&aovs, &universe, &lpe::renderman::Parser::default()).unwrap();
     assert!(!p.overlaps.is_empty());
     for (i, j, w) in &p.overlaps {
         assert!(reference::is_match(&universe, w), "{w}");

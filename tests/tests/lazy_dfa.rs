@@ -10,9 +10,10 @@
 //! - a blow-up set goes lazy without a long eager attempt first;
 //! - `step_batch` (a wavefront of paths, one step each) answers per path.
 
-use lpe::macros::BASIC;
+use lpe::renderman::macros::BASIC;
+use lpe::renderman::{parse, Lpe, Path, Vertex};
 use lpe::rng::SplitMix64;
-use lpe::{parse, AovMask, AovSet, Class, Lpe, Options, Path, PathMatcher, State, Vertex};
+use lpe::{AovMask, AovSet, Class, Options, PathMatcher, State};
 use lpe_tests::{named, vertex_pool};
 
 fn lazy(cache: usize) -> Options {
@@ -191,7 +192,7 @@ fn the_wide_nfa_and_interned_classes_agree_with_the_reference() {
     assert!(dfa_set.uses_dfa() && dfa_set.nfa().is_none());
     for p in random_paths(3, 500, 10) {
         let want = reference_mask(&exprs, &p);
-        assert_eq!(wide.match_path(&p), want, "{p}");
+        assert_eq!(wide.match_vertices(p.vertices()), want, "{p}");
         for set in [&lazy_set, &dfa_set] {
             let s = p.vertices().iter().fold(set.start(), |s, v| {
                 let c = set.classify_interned(v.ty(), v.event(), set.label_id(v.label()));
@@ -210,7 +211,7 @@ fn the_wide_nfa_and_interned_classes_agree_with_the_reference() {
     // With a cache too: a foreign id must not size the cache's per-id index.
     let cached = AovSet::compile_with(&named(&exprs), &lazy(1 << 20)).unwrap();
     for set in [&small, &lazy_set, &cached] {
-        let c = set.classify_interned(lpe::VertexType::L, None, foreign);
+        let c = set.classify_interned(lpe::renderman::VertexType::L, None, foreign);
         let s = set.step_class(State::from_u32(u32::MAX - 3), c);
         let _ = (set.matches(s), set.is_dead(s));
         let mut cache = set.cache();
@@ -285,7 +286,7 @@ fn batch_steps_answer_per_path() {
 }
 
 /// `C<RD>L` stepped lazily along `C RD L` through `cache`: the final state.
-fn step_cdl(set: &AovSet, cache: &mut lpe::Cache) -> State {
+fn step_cdl(set: &AovSet<lpe::renderman::RenderMan>, cache: &mut lpe::Cache) -> State {
     let p: Path = "C RD L".parse().unwrap();
     p.vertices()
         .iter()

@@ -6,7 +6,7 @@
 //! Expected expressions and answers are written out by hand here; nothing expected is
 //! computed by the rewrite under test.
 
-use lpe::{parse, Config, Lpe, Path};
+use lpe::renderman::{parse, Config, Lpe, Path};
 
 /// User macros with several light positions each.
 const INI: &str = "\
@@ -109,7 +109,7 @@ fn every_builtin_gets_the_group() {
         .iter()
         .map(|(b, _)| b.trim_end_matches("_g").to_ascii_lowercase())
         .collect();
-    for name in lpe::macros::MacroTable::builtin().names() {
+    for name in lpe::renderman::macros::MacroTable::builtin().names() {
         assert!(
             listed.contains(&name.to_ascii_lowercase()),
             "built-in `{name}` has no hand-written expansion"

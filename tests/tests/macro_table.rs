@@ -3,7 +3,7 @@
 //! the old entry and leaves every other one in place. Expected names and sources are
 //! copied from docs/language.md §6.1, not read back from the table.
 
-use lpe::macros::MacroTable;
+use lpe::renderman::macros::MacroTable;
 
 #[test]
 fn the_builtin_table_lists_every_macro_in_order() {

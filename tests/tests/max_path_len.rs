@@ -10,10 +10,11 @@
 
 use std::cell::Cell;
 
-use lpe::ast::{Expr, Repetition};
+use lpe::renderman::ast::{Expr, Repetition};
+use lpe::renderman::{parse, Event, EventKind, Lpe, Path, Vertex, VertexType};
 use lpe::strategy;
 use lpe::Options;
-use lpe::{parse, AovSet, CompileError, Event, EventKind, Lpe, Path, Vertex, VertexType};
+use lpe::{AovSet, CompileError};
 use lpe_tests::named;
 use proptest::prelude::*;
 

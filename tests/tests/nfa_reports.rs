@@ -3,14 +3,15 @@
 //! emptiness warnings of a set whose NFA spans more than one 64-bit word, and the bytes
 //! it holds.
 
-use lpe::{AovSet, Options, Path};
+use lpe::renderman::Path;
+use lpe::{AovSet, Options};
 
-fn set(srcs: &[(&str, &str)], dfa_budget: usize) -> AovSet {
+fn set(srcs: &[(&str, &str)], dfa_budget: usize) -> AovSet<lpe::renderman::RenderMan> {
     lpe_tests::compile_with_dfa_budget(srcs, dfa_budget)
 }
 
 /// The same set stepped on its DFA and on its NFA (a DFA budget of 0).
-fn both(srcs: &[(&str, &str)]) -> [AovSet; 2] {
+fn both(srcs: &[(&str, &str)]) -> [AovSet<lpe::renderman::RenderMan>; 2] {
     let dfa = set(srcs, Options::default().dfa_budget);
     let nfa = set(srcs, 0);
     assert!(dfa.uses_dfa() && !nfa.uses_dfa());
@@ -81,7 +82,9 @@ fn positions_always_active_together_are_kept_once() {
             "C RD1 TD2 RD3 L",
         ] {
             let want: Vec<usize> = (0..2)
-                .filter(|&i| reference::is_match(&lpe::parse(srcs[i].1).unwrap(), &path(p)))
+                .filter(|&i| {
+                    reference::is_match(&lpe::renderman::parse(srcs[i].1).unwrap(), &path(p))
+                })
                 .collect();
             for s in [&dfa, &nfa] {
                 assert_eq!(

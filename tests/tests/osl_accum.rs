@@ -31,10 +31,10 @@ fn failures(file: &str, rows: &[OslRow]) -> Vec<String> {
                     continue;
                 }
             };
-            let set = AovSet::compile_osl(&[("rule".into(), lpe)], &r.registered, &opts)
+            let set = AovSet::compile_under(&[("rule".into(), lpe)], &r.registered, &opts)
                 .unwrap_or_else(|e| panic!("{file}:{}: {e}", r.line));
             assert_eq!(set.uses_dfa(), mode == "dfa", "{file}:{}", r.line);
-            let got = set.match_osl_path(&r.path).contains(0);
+            let got = set.match_path(&r.path).contains(0);
             if got != r.matches {
                 out.push(format!(
                     "{file}:{} {mode}: `{}` [{}] on `{}`: got {got}, OSL says {}",
@@ -82,10 +82,10 @@ fn one_set_of_all_accum_rules_answers_each_rule() {
         .map(|e| (e.clone(), osl::parse(e, &reg).unwrap()))
         .collect();
     for (mode, opts) in modes() {
-        let set = AovSet::compile_osl(&aovs, &reg, &opts).unwrap();
+        let set = AovSet::compile_under(&aovs, &reg, &opts).unwrap();
         for r in &rows {
             let i = rules.iter().position(|e| *e == r.expr).unwrap();
-            let got = set.match_osl_path(&r.path).contains(i);
+            let got = set.match_path(&r.path).contains(i);
             assert_eq!(
                 got, r.matches,
                 "{mode}: line {} `{}` on `{}`",

@@ -159,10 +159,10 @@ proptest! {
         prop_assume!(!aovs.is_empty());
         let nfa = Options { dfa_budget: 0, ..Options::default() };
         for opts in [Options::default(), nfa] {
-            let set = AovSet::compile_osl(&aovs, &reg, &opts).unwrap();
+            let set = AovSet::compile_under(&aovs, &reg, &opts).unwrap();
             for vs in &paths {
                 let p = Path::new(vs.clone());
-                let got = set.match_osl_path(&p);
+                let got = set.match_path(&p);
                 for (i, (src, l)) in aovs.iter().enumerate() {
                     prop_assert_eq!(
                         got.contains(i),

@@ -3,14 +3,14 @@
 //! RenderMan and OSL sets.
 
 use lpe::osl::{self, parse, Registered};
-use lpe::{AovSet, Dialect, Options};
+use lpe::{AovSet, Options};
 
-fn set(srcs: &[&str], reg: &Registered, opts: &Options) -> AovSet {
+fn set(srcs: &[&str], reg: &Registered, opts: &Options) -> AovSet<lpe::osl::Osl> {
     let aovs: Vec<_> = srcs
         .iter()
         .map(|s| (s.to_string(), parse(s, reg).unwrap()))
         .collect();
-    AovSet::compile_osl(&aovs, reg, opts).unwrap()
+    AovSet::compile_under(&aovs, reg, opts).unwrap()
 }
 
 #[test]
@@ -23,8 +23,8 @@ fn redos_expression_steps_the_nfa_and_answers_right() {
         &Options::default(),
     );
     assert!(!s.uses_dfa());
-    assert_eq!(s.dialect(), Dialect::Osl);
-    let m = |p: &str| s.match_osl_path(&p.parse().unwrap()).contains(0);
+    assert_eq!(s.dialect(), "osl");
+    let m = |p: &str| s.match_path(&p.parse().unwrap()).contains(0);
     assert!(m("C,_ R,D L,_ B,_ O,_"));
     assert!(!m("C,_ R,D L,_ B,_"));
     assert!(m("C,_ R,D T,D T,G s,s B,_"));
@@ -62,14 +62,14 @@ fn basic_set_gets_a_dfa_and_both_modes_agree() {
     for (p, want) in cases {
         let p = p.parse().unwrap();
         for s in [&dfa, &nfa] {
-            let hit: Vec<usize> = s.match_osl_path(&p).iter().collect();
+            let hit: Vec<usize> = s.match_path(&p).iter().collect();
             assert_eq!(hit, [want], "{p}");
         }
     }
     // `R,D,D`: the eater refuses the basic label D: no AOV.
     let p = "C,_ R,D,D L,_".parse().unwrap();
-    assert!(dfa.match_osl_path(&p).is_empty());
-    assert!(nfa.match_osl_path(&p).is_empty());
+    assert!(dfa.match_path(&p).is_empty());
+    assert!(nfa.match_path(&p).is_empty());
 }
 
 #[test]
@@ -87,16 +87,15 @@ fn emptiness_warnings_name_the_dead_vertex() {
     assert!(w[1].message.contains("matches no sequence"), "{}", w[1]);
 }
 
+/// A set is of one dialect by type: an OSL vertex or path given to a RenderMan set does
+/// not compile (the `compile_fail` example on `lpe::AovSet`), where it used to give a
+/// class past the set's last, which stepped to the dead state. What is left to check at
+/// run time: the set's dialect has its name, and the set keeps its own expressions.
 #[test]
-fn renderman_sets_say_their_dialect_and_give_osl_vertices_no_class() {
-    let s = AovSet::compile(&[("d".into(), lpe::parse("C<RD>L").unwrap())]).unwrap();
-    assert_eq!(s.dialect(), Dialect::RenderMan);
-    assert!(s.osl_lpes().is_empty());
-    let p = "C,_ R,D L,_".parse().unwrap();
-    assert!(s.match_osl_path(&p).is_empty());
-    let c = s.classify_osl(&"C,_".parse().unwrap());
-    assert_eq!(c.index(), s.class_count());
-    assert!(s.is_dead(s.step_class(s.start(), c)));
+fn renderman_sets_say_their_dialect_and_keep_their_expressions() {
+    let s = AovSet::compile(&[("d".into(), lpe::renderman::parse("C<RD>L").unwrap())]).unwrap();
+    assert_eq!(s.dialect(), "renderman");
+    assert_eq!(s.lpes()[0].to_string(), "C<RD>L");
 }
 
 /// Dead states of OSL sets with set algebra, on every stepping mode: a complement `^A`
@@ -151,9 +150,9 @@ fn dead_states_of_osl_set_algebra_are_sound_and_dfa_dead_states_complete() {
         }
         paths.extend((0..6).map(|_| gen::uniform_path(&mut rng, &reg, &cfg)));
         for (mode, opts) in &modes {
-            let set = AovSet::compile_osl(&aovs, &reg, opts).unwrap();
+            let set = AovSet::compile_under(&aovs, &reg, opts).unwrap();
             let letters: Vec<lpe::Class> = (0..set.class_count())
-                .map(|c| set.classify_osl(set.osl_class_vertex(c).unwrap()))
+                .map(|c| set.classify(&set.class_vertex(c).unwrap()))
                 .collect();
             // Every state reachable over the letters, and which can reach a match.
             let (states, live, explored) =
@@ -181,7 +180,7 @@ fn dead_states_of_osl_set_algebra_are_sound_and_dfa_dead_states_complete() {
             for p in &paths {
                 let mut s = set.start();
                 for k in 0..p.vertices.len() {
-                    s = set.step_class(s, set.classify_osl(&p.vertices[k]));
+                    s = set.step_class(s, set.classify(&p.vertices[k]));
                     if !set.is_dead(s) {
                         continue;
                     }

@@ -5,9 +5,9 @@
 //! expand, nesting, positions, repetition counts).
 
 use lpe::algebra::MAX_OPERANDS;
-use lpe::macros::MacroTable;
-use lpe::syntax::edit_distance;
-use lpe::{parse, ErrorKind, Limits, Parser};
+use lpe::renderman::macros::MacroTable;
+use lpe::renderman::syntax::edit_distance;
+use lpe::renderman::{parse, ErrorKind, Limits, Parser};
 
 /// One expected error: the source, its kind, its span, text the message must contain,
 /// and the exact help (`None`: no help).

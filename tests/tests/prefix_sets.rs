@@ -3,7 +3,7 @@
 //! `is_empty` tells an expression with prefixes from one without (the differential
 //! shrinker drops prefixes only when there are some). Answers decided by hand.
 
-use lpe::{parse, Config, Prefix, Prefixes};
+use lpe::renderman::{parse, Config, Prefix, Prefixes};
 
 #[test]
 fn user_prefixes_join_the_macros_prefixes() {

@@ -9,10 +9,10 @@
 
 use engines::differential::{self, Outcome};
 use engines::{Engine, Reference};
-use lpe::ast::Expr;
-use lpe::macros::{MacroTable, BASIC};
+use lpe::renderman::ast::Expr;
+use lpe::renderman::macros::{MacroTable, BASIC};
+use lpe::renderman::{Event, EventKind, Lpe, Path, Prefixes, Vertex};
 use lpe::strategy;
-use lpe::{Event, EventKind, Lpe, Path, Prefixes, Vertex};
 use lpe_tests::cases;
 use proptest::prelude::*;
 
@@ -111,7 +111,7 @@ proptest! {
     /// with a user-lobe vertex (outside `C.*[<L.>O]`) matches none.
     #[test]
     fn basic_aovs_are_disjoint_and_exhaustive(path in strategy::path(8)) {
-        let exprs: Vec<Lpe> = BASIC.iter().map(|(_, s)| lpe::parse(s).unwrap()).collect();
+        let exprs: Vec<Lpe> = BASIC.iter().map(|(_, s)| lpe::renderman::parse(s).unwrap()).collect();
         // Decided from the path alone, not by any engine.
         let transport = path.vertices().iter().all(|v| v.event().is_none_or(|e| e.is_transport()));
         for e in engines() {
@@ -123,7 +123,7 @@ proptest! {
 
     #[test]
     fn light_transport_paths_always_land_in_one_basic_aov(path in transport_path()) {
-        let exprs: Vec<Lpe> = BASIC.iter().map(|(_, s)| lpe::parse(s).unwrap()).collect();
+        let exprs: Vec<Lpe> = BASIC.iter().map(|(_, s)| lpe::renderman::parse(s).unwrap()).collect();
         for e in engines() {
             let which = e.compile(&exprs).unwrap().which(&path);
             prop_assert_eq!(which.iter().filter(|&&b| b).count(), 1, "{} on {}", e.name(), path);
@@ -147,8 +147,8 @@ proptest! {
             .map(|(c, &u)| if u { c.to_ascii_uppercase() } else { c.to_ascii_lowercase() })
             .collect();
         let text = format!("{} {spelled} ", if lpe_prefix { "lpe:" } else { "" });
-        let expanded = lpe::parse(&text).unwrap();
-        let written = lpe::parse(source).unwrap();
+        let expanded = lpe::renderman::parse(&text).unwrap();
+        let written = lpe::renderman::parse(source).unwrap();
         prop_assert_eq!(&expanded, &written, "{}", text);
         assert_agree(&[expanded, written], &[path])?;
     }
@@ -163,13 +163,13 @@ proptest! {
         grouped_light in any::<bool>(),
     ) {
         let (name, source) = BASIC[index];
-        let suffixed = lpe::parse(&format!("{name}_{group}")).unwrap();
-        let by_hand = lpe::parse(&source.replace("<L.>", &format!("<L.'{group}'>"))).unwrap();
+        let suffixed = lpe::renderman::parse(&format!("{name}_{group}")).unwrap();
+        let by_hand = lpe::renderman::parse(&source.replace("<L.>", &format!("<L.'{group}'>"))).unwrap();
         prop_assert_eq!(&suffixed, &by_hand);
         // Give the path's light the group half the time, so the label matters.
         let mut v = path.vertices().to_vec();
         let last = v.len() - 1;
-        if grouped_light && v[last].ty() == lpe::VertexType::L {
+        if grouped_light && v[last].ty() == lpe::renderman::VertexType::L {
             v[last] = Vertex::light(Some(&group));
         }
         let path = Path::new(v).unwrap();

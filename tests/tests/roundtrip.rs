@@ -9,7 +9,7 @@ proptest! {
     #[test]
     fn print_then_parse_is_identity(l in lpe::strategy::lpe()) {
         let text = l.to_string();
-        let back = lpe::parse(&text).map_err(|e| TestCaseError::fail(format!("{text}\n{e}")))?;
+        let back = lpe::renderman::parse(&text).map_err(|e| TestCaseError::fail(format!("{text}\n{e}")))?;
         prop_assert_eq!(back, l, "printed as {}", text);
     }
 
@@ -25,10 +25,10 @@ proptest! {
         lpe_prefix in any::<bool>(),
     ) {
         let text = respell(&l.to_string(), &flips, &blanks, lpe_prefix);
-        let parsed = lpe::parse(&text).map_err(|e| TestCaseError::fail(format!("{text:?}\n{e}")))?;
+        let parsed = lpe::renderman::parse(&text).map_err(|e| TestCaseError::fail(format!("{text:?}\n{e}")))?;
         prop_assert_eq!(&parsed, &l, "respelled as {:?}", text);
         let once = parsed.to_string();
-        let again = lpe::parse(&once).expect("canonical text re-parses").to_string();
+        let again = lpe::renderman::parse(&once).expect("canonical text re-parses").to_string();
         prop_assert_eq!(once, again);
     }
 
@@ -36,9 +36,9 @@ proptest! {
     fn parsing_arbitrary_text_never_panics_and_canonical_text_is_stable(
         s in "[CRTLODSU0-9.<>\\[\\]^()|*+?{},' a-z;:_]{0,40}"
     ) {
-        if let Ok(l) = lpe::parse(&s) {
+        if let Ok(l) = lpe::renderman::parse(&s) {
             let once = l.to_string();
-            let again = lpe::parse(&once).expect("canonical text re-parses").to_string();
+            let again = lpe::renderman::parse(&once).expect("canonical text re-parses").to_string();
             prop_assert_eq!(once, again);
         }
     }

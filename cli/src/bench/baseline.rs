@@ -9,8 +9,8 @@
 //! baseline shares no predicate code with lpe. Every pattern ends with an end anchor
 //! and searches are anchored at the start: whole-path matching.
 
-use lpe::ast::{Atom, Expr};
-use lpe::{Event, EventKind, Lpe, Path, Vertex, VertexType};
+use lpe::renderman::ast::{Atom, Expr};
+use lpe::renderman::{Event, EventKind, Lpe, Path, Vertex, VertexType};
 use regex_automata::dfa::{dense, Automaton, StartKind};
 use regex_automata::hybrid;
 use regex_automata::nfa::thompson;

@@ -22,8 +22,8 @@ pub mod workload;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
+use lpe::renderman::{Lpe, Path, Vertex};
 use lpe::{AovMask, AovSet, Class, Options, PathMatcher};
-use lpe::{Lpe, Path, Vertex};
 use regex_automata::dfa::dense;
 use regex_automata::hybrid;
 use regex_automata::util::primitives::StateID;
@@ -62,7 +62,7 @@ impl<T> Flat<T> {
 }
 
 /// Classes of every vertex, for one set.
-pub fn classify(set: &AovSet, paths: &[Path]) -> Flat<Class> {
+pub fn classify(set: &AovSet<lpe::renderman::RenderMan>, paths: &[Path]) -> Flat<Class> {
     Flat::build(paths, |p, out| {
         out.extend(p.vertices().iter().map(|v| set.classify(v)))
     })
@@ -96,7 +96,7 @@ pub fn flatten(paths: &[Path]) -> Flat<Vertex> {
 }
 
 /// The fast matcher on vertices (classification included).
-pub fn run_vertices(set: &AovSet, vertices: &Flat<Vertex>) -> u64 {
+pub fn run_vertices(set: &AovSet<lpe::renderman::RenderMan>, vertices: &Flat<Vertex>) -> u64 {
     vertices.paths().fold(0u64, |acc, p| {
         let s = p.iter().fold(set.start(), |s, v| set.step(s, v));
         acc.wrapping_add(digest(set.matches(s)))
@@ -104,7 +104,7 @@ pub fn run_vertices(set: &AovSet, vertices: &Flat<Vertex>) -> u64 {
 }
 
 /// The fast matcher (DFA or NFA) on classes computed beforehand.
-pub fn run_classes(set: &AovSet, classes: &Flat<Class>) -> u64 {
+pub fn run_classes<D: lpe::Dialect>(set: &AovSet<D>, classes: &Flat<Class>) -> u64 {
     classes.paths().fold(0u64, |acc, p| {
         let s = p.iter().fold(set.start(), |s, &c| set.step_class(s, c));
         acc.wrapping_add(digest(set.matches(s)))
@@ -345,7 +345,9 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
                 Some(set.matches_with(&mut cache, s))
             });
             if let Some(wide) = set.nfa() {
-                check("bitset NFA", &mut |p| Some(wide.match_path(p)));
+                check("bitset NFA", &mut |p| {
+                    Some(wide.match_vertices(p.vertices()))
+                });
             }
         }
         let interned = chunked(&paths, |c| shapes::intern(&fast, c));

@@ -10,7 +10,8 @@
 use std::time::{Duration, Instant};
 
 use lpe::osl::{self, Registered, Symbol};
-use lpe::{AovMask, AovSet, Class, EventKind, Options, Path, VertexType};
+use lpe::renderman::{EventKind, Path, VertexType};
+use lpe::{AovMask, AovSet, Class, Options};
 
 use super::{best_times, chunked, row, run_classes, BenchError, Disagreement, Flat, Job, Row};
 
@@ -22,7 +23,7 @@ pub const WORKLOAD: &str = "osl-basic";
 const REDOS: &str = "C(R('a'+|G[^S]{2}[^OC]){2,}|(L|T*[sBO]{2,})+)";
 
 /// The OSL vertex a renderer feeds for `v`.
-pub fn vertex(v: &lpe::Vertex) -> osl::Vertex {
+pub fn vertex(v: &lpe::renderman::Vertex) -> osl::Vertex {
     let event = match v.ty() {
         VertexType::C => "C",
         VertexType::R => "R",
@@ -49,9 +50,9 @@ pub fn path(p: &Path) -> osl::Path {
     osl::Path::new(p.vertices().iter().map(vertex).collect())
 }
 
-fn classify(set: &AovSet, paths: &[osl::Path]) -> Flat<Class> {
+fn classify(set: &AovSet<lpe::osl::Osl>, paths: &[osl::Path]) -> Flat<Class> {
     Flat::build(paths, |p, out| {
-        out.extend(p.vertices.iter().map(|v| set.classify_osl(v)))
+        out.extend(p.vertices.iter().map(|v| set.classify(v)))
     })
 }
 
@@ -84,7 +85,7 @@ pub fn run(
     let osl_paths: Vec<osl::Path> = paths.iter().map(path).collect();
     let vertices: usize = paths.iter().map(Path::len).sum();
     let compile = |opts: &Options| {
-        AovSet::compile_osl(&aovs, &reg, opts).map_err(|error| BenchError::Compile {
+        AovSet::compile_under(&aovs, &reg, opts).map_err(|error| BenchError::Compile {
             workload: WORKLOAD,
             error,
         })
@@ -104,12 +105,13 @@ pub fn run(
     let mut redos = None;
     for _ in 0..reps.max(1) {
         let t = Instant::now();
-        let set = AovSet::compile_osl(&redos_aovs, &reg, &Options::default()).map_err(|error| {
-            BenchError::Compile {
-                workload: WORKLOAD,
-                error,
-            }
-        })?;
+        let set =
+            AovSet::compile_under(&redos_aovs, &reg, &Options::default()).map_err(|error| {
+                BenchError::Compile {
+                    workload: WORKLOAD,
+                    error,
+                }
+            })?;
         redos_compile = redos_compile.min(t.elapsed());
         redos = Some(set);
     }
@@ -132,7 +134,7 @@ pub fn run(
     ] {
         let wrong = osl_paths[..checked]
             .iter()
-            .filter(|p| set.match_osl_path(p) != reference_mask(aovs, p))
+            .filter(|p| set.match_path(p) != reference_mask(aovs, p))
             .count();
         if wrong > 0 {
             bad.push(Disagreement {
@@ -211,10 +213,10 @@ mod tests {
             .iter()
             .map(|(n, s)| (n.to_string(), osl::parse(s, &reg).unwrap()))
             .collect();
-        let osl_set = AovSet::compile_osl(&osl_aovs, &reg, &Options::default()).unwrap();
-        let rm_aovs: Vec<(String, lpe::Lpe)> = lpe::macros::BASIC
+        let osl_set = AovSet::compile_under(&osl_aovs, &reg, &Options::default()).unwrap();
+        let rm_aovs: Vec<(String, lpe::renderman::Lpe)> = lpe::renderman::macros::BASIC
             .iter()
-            .map(|(n, s)| (n.to_string(), lpe::parse(s).unwrap()))
+            .map(|(n, s)| (n.to_string(), lpe::renderman::parse(s).unwrap()))
             .collect();
         let rm_set = AovSet::compile(&rm_aovs).unwrap();
         for p in super::super::sample::paths(20_000, 3) {
@@ -224,11 +226,7 @@ mod tests {
             {
                 continue; // user lobes: RenderMan's `.` excludes them, OSL's does not
             }
-            assert_eq!(
-                osl_set.match_osl_path(&path(&p)),
-                rm_set.match_path(&p),
-                "{p}"
-            );
+            assert_eq!(osl_set.match_path(&path(&p)), rm_set.match_path(&p), "{p}");
         }
     }
 }

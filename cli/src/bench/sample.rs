@@ -1,8 +1,8 @@
 //! Paths drawn the way a path tracer draws them: a camera vertex, 0..=10 bounces with
 //! Russian roulette, then a light (mostly, with its group) or an emissive object.
 
+use lpe::renderman::{Event, EventKind, Path, Vertex, VertexType};
 use lpe::rng::SplitMix64 as Rng;
-use lpe::{Event, EventKind, Path, Vertex, VertexType};
 
 use super::workload::{LIGHT_GROUPS, OBJECT_GROUPS};
 

@@ -6,8 +6,9 @@
 
 use std::hint::black_box;
 
+use lpe::renderman::{Event, Path, VertexType};
 use lpe::rng::SplitMix64;
-use lpe::{AovMask, AovSet, Cache, Class, Event, LabelId, Path, PathMatcher, VertexType};
+use lpe::{AovMask, AovSet, Cache, Class, LabelId, PathMatcher};
 
 use super::{digest, Flat};
 
@@ -111,7 +112,7 @@ pub fn run_heap_record<M: PathMatcher<Class = Class>>(m: &M, classes: &Flat<Clas
 pub type Interned = (VertexType, Option<Event>, LabelId);
 
 /// Every vertex with its label interned for `set`.
-pub fn intern(set: &AovSet, paths: &[Path]) -> Flat<Interned> {
+pub fn intern(set: &AovSet<lpe::renderman::RenderMan>, paths: &[Path]) -> Flat<Interned> {
     Flat::build(paths, |p, out| {
         out.extend(
             p.vertices()
@@ -122,7 +123,7 @@ pub fn intern(set: &AovSet, paths: &[Path]) -> Flat<Interned> {
 }
 
 /// The fast matcher classifying each vertex from its interned parts, then stepping.
-pub fn run_interned(set: &AovSet, vertices: &Flat<Interned>) -> u64 {
+pub fn run_interned(set: &AovSet<lpe::renderman::RenderMan>, vertices: &Flat<Interned>) -> u64 {
     let mut acc = 0u64;
     for p in vertices.paths() {
         let mut s = set.start();
@@ -135,7 +136,11 @@ pub fn run_interned(set: &AovSet, vertices: &Flat<Interned>) -> u64 {
 }
 
 /// Stepping with the caller's [`Cache`] (a lazy set's fast path).
-pub fn run_cached(set: &AovSet, cache: &mut Cache, classes: &Flat<Class>) -> u64 {
+pub fn run_cached(
+    set: &AovSet<lpe::renderman::RenderMan>,
+    cache: &mut Cache,
+    classes: &Flat<Class>,
+) -> u64 {
     let mut acc = 0u64;
     for p in classes.paths() {
         let mut s = set.start();
@@ -174,7 +179,7 @@ impl Wavefront {
 
 /// Every path of the wavefront one depth at a time through [`AovSet::step_batch`], the
 /// masks read at the end.
-pub fn run_batch(set: &AovSet, wf: &Wavefront) -> u64 {
+pub fn run_batch(set: &AovSet<lpe::renderman::RenderMan>, wf: &Wavefront) -> u64 {
     let mut states = vec![set.start(); wf.paths];
     for d in &wf.depths {
         set.step_batch(&mut states[..d.len()], d);

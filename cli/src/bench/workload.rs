@@ -1,8 +1,8 @@
 //! The benchmark's AOV sets: the basic set, the per-lobe set, light-group
 //! splits with label AOVs, and adversarial shapes.
 
-use lpe::macros::{BASIC, PER_LOBE};
-use lpe::{parse, Lpe};
+use lpe::renderman::macros::{BASIC, PER_LOBE};
+use lpe::renderman::{parse, Lpe};
 
 /// Light groups the light-group workload splits over (and the path sampler draws).
 pub const LIGHT_GROUPS: [&str; 4] = ["key", "fill", "rim", "env"];

@@ -17,7 +17,6 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use engines::differential::{run_cases, run_osl_cases, Language, Run, Totals};
-use lpe::Dialect;
 
 use crate::input::{bad_input, select_engines, DialectArgs};
 
@@ -108,8 +107,10 @@ pub fn run(args: Args) -> ExitCode {
     let names: Vec<&str> = engines.iter().map(|e| e.name()).collect();
     let start = Instant::now();
     match args.lang.dialect {
-        Dialect::RenderMan => report(&args, &names, run_cases(&args.run(), &engines), start),
-        Dialect::Osl => report(&args, &names, run_osl_cases(&args.run(), &engines), start),
+        lpe::DialectName::RenderMan => {
+            report(&args, &names, run_cases(&args.run(), &engines), start)
+        }
+        lpe::DialectName::Osl => report(&args, &names, run_osl_cases(&args.run(), &engines), start),
     }
 }
 

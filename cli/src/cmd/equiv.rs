@@ -67,7 +67,7 @@ fn run_osl(args: &Args) -> ExitCode {
         (Ok(a), Ok(b)) => (a, b),
         (Err(e), _) | (_, Err(e)) => return bad_input(e),
     };
-    let c = match analysis::compare_osl(&a, &b, &registered) {
+    let c = match analysis::compare(&a, &b) {
         Ok(c) => c,
         Err(e) => return bad_input(format!("error: {e}")),
     };
@@ -117,10 +117,10 @@ pub fn report<E: Checked>(a: &E, b: &E, c: &Comparison<E::Path>) -> Result<Strin
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lpe::Lpe;
+    use lpe::renderman::Lpe;
 
     fn lpe(s: &str) -> Lpe {
-        lpe::parse(s).unwrap()
+        lpe::renderman::parse(s).unwrap()
     }
 
     #[test]

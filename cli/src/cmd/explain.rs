@@ -13,7 +13,11 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use lpe::{osl, AovSet, Class, Lpe, Path, State};
+use lpe::osl::{self, Osl};
+#[cfg(test)]
+use lpe::renderman::{Lpe, Parser};
+use lpe::renderman::{Path, RenderMan};
+use lpe::{AovSet, Dialect, State};
 use lpe_lint::read::{self, Limits};
 use lpe_lint::Document;
 use tabled::builder::Builder;
@@ -66,7 +70,7 @@ fn run_renderman(args: &Args) -> Result<Explanation, String> {
     let path: Path = args.path.parse().map_err(|e| format!("{e}"))?;
     let parser = load_parser(args.ini.as_deref()).map_err(|e| e.to_string())?;
     let aovs = load(args, |src| parser.parse(src).map_err(|e| e.to_string()))?;
-    explain(&aovs, &path).map_err(|e| e.to_string())
+    explain::<RenderMan>(&aovs, &parser, &path).map_err(|e| e.to_string())
 }
 
 fn run_osl(args: &Args) -> Result<Explanation, String> {
@@ -81,7 +85,7 @@ fn run_osl(args: &Args) -> Result<Explanation, String> {
     let aovs = load(args, |src| {
         osl::parse_source(src, &registered).map_err(|e| osl_error(src, &e))
     })?;
-    explain_osl(&aovs, &registered, &path).map_err(|e| e.to_string())
+    explain::<Osl>(&aovs, &registered, &path).map_err(|e| e.to_string())
 }
 
 /// The AOVs of the arguments, each parsed by `parse` (its error with a caret).
@@ -132,48 +136,32 @@ pub struct Explanation {
     pub text: String,
 }
 
-/// Steps `path` through the set of `aovs` and through each AOV alone.
-pub fn explain(aovs: &[(String, Lpe)], path: &Path) -> Result<Explanation, lpe::CompileError> {
-    let set = AovSet::compile(aovs)?;
-    let alone: Vec<AovSet> = aovs
-        .iter()
-        .map(|a| AovSet::compile(std::slice::from_ref(a)))
-        .collect::<Result<_, _>>()?;
-    Ok(walk(aovs, &set, &alone, path.vertices(), AovSet::classify))
-}
-
-/// [`explain`] for OSL AOVs parsed under `registered`, on an OSL path.
-pub fn explain_osl(
-    aovs: &[(String, osl::Lpe)],
-    registered: &osl::Registered,
-    path: &osl::Path,
+/// Steps `path` through the set of `aovs` (parsed under `registration`) and through each
+/// AOV alone.
+pub fn explain<D: Dialect>(
+    aovs: &[(String, D::Lpe)],
+    registration: &D::Registration,
+    path: &D::Path,
 ) -> Result<Explanation, lpe::CompileError> {
     let opts = lpe::Options::default();
-    let set = AovSet::compile_osl(aovs, registered, &opts)?;
-    let alone: Vec<AovSet> = aovs
+    let set = AovSet::<D>::compile_under(aovs, registration, &opts)?;
+    let alone: Vec<AovSet<D>> = aovs
         .iter()
-        .map(|a| AovSet::compile_osl(std::slice::from_ref(a), registered, &opts))
+        .map(|a| AovSet::<D>::compile_under(std::slice::from_ref(a), registration, &opts))
         .collect::<Result<_, _>>()?;
-    Ok(walk(
-        aovs,
-        &set,
-        &alone,
-        &path.vertices,
-        AovSet::classify_osl,
-    ))
+    Ok(walk(aovs, &set, &alone, D::vertices(path)))
 }
 
 /// The report of one path, `vertices`, through `set` and through each AOV `alone` (the
 /// joint state only says whether any AOV is still reachable). States are numbered in the
 /// order this path first reaches them, the start `s0`; `dead` once no AOV can match.
-fn walk<E, V: std::fmt::Display>(
-    aovs: &[(String, E)],
-    set: &AovSet,
-    alone: &[AovSet],
-    vertices: &[V],
-    classify: impl Fn(&AovSet, &V) -> Class,
+fn walk<D: Dialect>(
+    aovs: &[(String, D::Lpe)],
+    set: &AovSet<D>,
+    alone: &[AovSet<D>],
+    vertices: &[D::Vertex],
 ) -> Explanation {
-    let mut states: Vec<_> = alone.iter().map(AovSet::start).collect();
+    let mut states: Vec<_> = alone.iter().map(|a| a.start()).collect();
     // How many vertices each AOV stayed reachable through.
     let mut alive_for = vec![0usize; aovs.len()];
     let mut s = set.start();
@@ -181,11 +169,11 @@ fn walk<E, V: std::fmt::Display>(
     let mut table = Builder::default();
     table.push_record(["#", "vertex", "class", "state", "still reachable"]);
     for (k, v) in vertices.iter().enumerate() {
-        let class = classify(set, v);
+        let class = set.classify(v);
         s = set.step_class(s, class);
         let mut reachable = Vec::new();
         for (i, a) in alone.iter().enumerate() {
-            states[i] = a.step_class(states[i], classify(a, v));
+            states[i] = a.step_class(states[i], a.classify(v));
             if !a.is_dead(states[i]) {
                 alive_for[i] = k + 1;
                 reachable.push(aovs[i].0.as_str());
@@ -256,7 +244,7 @@ mod tests {
 
     fn aovs(list: &[(&str, &str)]) -> Vec<(String, Lpe)> {
         list.iter()
-            .map(|(n, e)| (n.to_string(), lpe::parse(e).unwrap()))
+            .map(|(n, e)| (n.to_string(), lpe::renderman::parse(e).unwrap()))
             .collect()
     }
 
@@ -267,7 +255,8 @@ mod tests {
             ("indirect", "C<RD>.+L"),
             ("any", "C.*L"),
         ]);
-        let e = explain(&a, &"C RD RS L".parse().unwrap()).unwrap();
+        let e =
+            explain::<RenderMan>(&a, &Parser::default(), &"C RD RS L".parse().unwrap()).unwrap();
         assert_eq!(e.landed, [1, 2]);
         assert!(e.text.ends_with("lands in: indirect, any\n"), "{}", e.text);
         // After `C RD`, direct is still reachable; after `C RD RS` it is not.
@@ -292,7 +281,8 @@ mod tests {
     #[test]
     fn a_missing_path_gets_its_closest_aov() {
         let a = aovs(&[("spec", "C<RS>L"), ("diffuse2", "C<RD><RD>L")]);
-        let e = explain(&a, &"C RD RS L".parse().unwrap()).unwrap();
+        let e =
+            explain::<RenderMan>(&a, &Parser::default(), &"C RD RS L".parse().unwrap()).unwrap();
         assert!(e.landed.is_empty());
         assert!(
             e.text.contains("longest live prefix: C RD1 (2 of 4 vertices)\nclosest AOV: diffuse2 (dead at vertex 3)\n"),
@@ -302,7 +292,7 @@ mod tests {
         // Dead states ignore the path shape: an AOV asking for more after the emitter
         // is still reachable when the path ends.
         let a = aovs(&[("spec", "C<RS>L"), ("twice", "C<RD>L<RD>L")]);
-        let e = explain(&a, &"C RD L".parse().unwrap()).unwrap();
+        let e = explain::<RenderMan>(&a, &Parser::default(), &"C RD L".parse().unwrap()).unwrap();
         assert!(
             e.text
                 .contains("closest AOV: twice (still reachable after the last vertex"),

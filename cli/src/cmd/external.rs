@@ -36,8 +36,11 @@ pub fn run(args: &Args) -> ExitCode {
     }
     for p in &args.path {
         let parsed = match args.lang.dialect {
-            lpe::Dialect::RenderMan => p.parse::<lpe::Path>().map(drop).map_err(|e| e.to_string()),
-            lpe::Dialect::Osl => p
+            lpe::DialectName::RenderMan => p
+                .parse::<lpe::renderman::Path>()
+                .map(drop)
+                .map_err(|e| e.to_string()),
+            lpe::DialectName::Osl => p
                 .parse::<lpe::osl::Path>()
                 .map(drop)
                 .map_err(|e| e.to_string()),

@@ -15,7 +15,6 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
-use lpe::analysis;
 use lpe_lint::read::{self, Limits};
 use lpe_lint::{Document, Format, Location, PartitionDecl};
 
@@ -65,7 +64,7 @@ pub fn run(args: Args) -> ExitCode {
         Err(e) => return bad_input(format!("error: {e}")),
     };
     let limits = Limits::default();
-    let mut config = lpe::Config::default();
+    let mut config = lpe::renderman::Config::default();
     let mut statuses = Vec::new();
     let mut docs = Vec::new();
     let (inis, others): (Vec<&Path>, Vec<&Path>) = args
@@ -118,14 +117,17 @@ pub fn run(args: Args) -> ExitCode {
         format: args.format,
     };
     match registered {
-        Some(registered) => ctx.lint(&Osl { registered }, analysis::DEFAULT_OSL_UNIVERSE),
+        Some(registered) => ctx.lint(&Osl { registered }, lpe::osl::UNIVERSE),
         None => {
             let parser = config.parser();
             let dialect = RenderMan {
                 parser: &parser,
                 lobes: &config.lobes,
             };
-            ctx.lint(&dialect, analysis::DEFAULT_UNIVERSE)
+            ctx.lint(
+                &dialect,
+                <lpe::renderman::RenderMan as lpe::Dialect>::DEFAULT_UNIVERSE,
+            )
         }
     }
 }

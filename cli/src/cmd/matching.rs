@@ -11,7 +11,7 @@
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
 
-use lpe::{Lpe, Parser, Path};
+use lpe::renderman::{Lpe, Parser, Path};
 
 use engines::differential::{Language, RenderMan};
 use engines::Engine;

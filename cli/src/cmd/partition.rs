@@ -16,7 +16,8 @@
 use std::process::ExitCode;
 
 use lpe::analysis::{self, Partition};
-use lpe::{osl, AovSet, Lpe, Options};
+use lpe::renderman::Lpe;
+use lpe::{osl, AovSet, Options};
 
 use crate::input::{bad_input, load_parser, osl_error, DialectArgs, InputError};
 use crate::witness::{self, Checked, Disagreement, Expect};
@@ -53,7 +54,8 @@ pub fn run(args: Args) -> ExitCode {
             for w in warnings {
                 println!("warning: {w}");
             }
-            let p = match analysis::partition(&aovs, &universe) {
+            let p = match analysis::partition(&aovs, &universe, &lpe::renderman::Parser::default())
+            {
                 Ok(p) => p,
                 Err(e) => return bad_input(format!("error: {e}")),
             };
@@ -70,21 +72,18 @@ fn run_osl(args: &Args) -> ExitCode {
         Err(e) => return bad_input(format!("error: {e}")),
     };
     let parse = |s: &str| osl::parse_source(s, &registered).map_err(|e| osl_error(s, &e));
-    let universe_text = args
-        .universe
-        .as_deref()
-        .unwrap_or(analysis::DEFAULT_OSL_UNIVERSE);
+    let universe_text = args.universe.as_deref().unwrap_or(lpe::osl::UNIVERSE);
     let prepared = parse(universe_text).and_then(|u| Ok((named(&args.aovs, |e| parse(e))?, u)));
     let (aovs, universe) = match prepared {
         Ok(p) => p,
         Err(e) => return bad_input(e),
     };
-    if let Ok(set) = AovSet::compile_osl(&aovs, &registered, &Options::default()) {
+    if let Ok(set) = AovSet::compile_under(&aovs, &registered, &Options::default()) {
         for w in set.warnings() {
             println!("warning: {w}");
         }
     }
-    let p = match analysis::partition_osl(&aovs, &universe, &registered) {
+    let p = match analysis::partition(&aovs, &universe, &registered) {
         Ok(p) => p,
         Err(e) => return bad_input(format!("error: {e}")),
     };
@@ -99,7 +98,7 @@ fn prepare(args: &Args) -> Result<(Named, Lpe), InputError> {
     let universe = parse(
         args.universe
             .as_deref()
-            .unwrap_or(analysis::DEFAULT_UNIVERSE),
+            .unwrap_or(<lpe::renderman::RenderMan as lpe::Dialect>::DEFAULT_UNIVERSE),
     )?;
     Ok((named(&args.aovs, parse)?, universe))
 }
@@ -209,19 +208,21 @@ pub fn report<E: Checked>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lpe::macros::BASIC;
+    use lpe::renderman::macros::BASIC;
 
     fn basic() -> Named {
         BASIC
             .iter()
-            .map(|(n, s)| (n.to_string(), lpe::parse(s).unwrap()))
+            .map(|(n, s)| (n.to_string(), lpe::renderman::parse(s).unwrap()))
             .collect()
     }
 
     #[test]
     fn basic_set_is_clean() {
-        let u = analysis::default_universe();
-        let p = analysis::partition(&basic(), &u).unwrap();
+        let u = analysis::default_universe::<lpe::renderman::RenderMan>(
+            &lpe::renderman::Parser::default(),
+        );
+        let p = analysis::partition(&basic(), &u, &lpe::renderman::Parser::default()).unwrap();
         let text = report(&basic(), &u, &p).unwrap();
         assert!(text.ends_with("clean partition\n"), "{text}");
     }
@@ -229,9 +230,14 @@ mod tests {
     #[test]
     fn caustics_overlap_is_printed_with_its_witness() {
         let mut aovs = basic();
-        aovs.push(("caustics".into(), lpe::parse("caustics").unwrap()));
-        let u = analysis::default_universe();
-        let p = analysis::partition(&aovs, &u).unwrap();
+        aovs.push((
+            "caustics".into(),
+            lpe::renderman::parse("caustics").unwrap(),
+        ));
+        let u = analysis::default_universe::<lpe::renderman::RenderMan>(
+            &lpe::renderman::Parser::default(),
+        );
+        let p = analysis::partition(&aovs, &u, &lpe::renderman::Parser::default()).unwrap();
         let text = report(&aovs, &u, &p).unwrap();
         assert!(
             text.contains("overlap: indirectDiffuse & caustics: C RD"),
@@ -243,7 +249,9 @@ mod tests {
     #[test]
     fn a_wrong_witness_is_refused_not_printed() {
         let aovs = basic();
-        let u = analysis::default_universe();
+        let u = analysis::default_universe::<lpe::renderman::RenderMan>(
+            &lpe::renderman::Parser::default(),
+        );
         // `C RD L` is directDiffuse alone: not a gap.
         let forged = Partition {
             overlaps: Vec::new(),
@@ -258,8 +266,10 @@ mod tests {
     fn a_gap_comes_with_a_remainder_that_parses_and_closes_it() {
         let mut aovs = basic();
         aovs.retain(|(n, _)| n != "subsurface" && n != "emissive");
-        let u = analysis::default_universe();
-        let p = analysis::partition(&aovs, &u).unwrap();
+        let u = analysis::default_universe::<lpe::renderman::RenderMan>(
+            &lpe::renderman::Parser::default(),
+        );
+        let p = analysis::partition(&aovs, &u, &lpe::renderman::Parser::default()).unwrap();
         let text = report(&aovs, &u, &p).unwrap();
         let line = text
             .lines()
@@ -267,12 +277,15 @@ mod tests {
             .unwrap_or_else(|| panic!("{text}"));
         assert!(line.starts_with("C.*[<L.>O] - ((C<RD>[<L.>O])|"), "{line}");
         // Added as an AOV, the printed text closes the gap (and overlaps nothing).
-        aovs.push(("rest".into(), lpe::parse(line).unwrap()));
-        let closed = analysis::partition(&aovs, &u).unwrap();
+        aovs.push(("rest".into(), lpe::renderman::parse(line).unwrap()));
+        let closed = analysis::partition(&aovs, &u, &lpe::renderman::Parser::default()).unwrap();
         assert!(closed.is_clean(), "{closed:?}");
         // It covers exactly the two AOVs left out (their union, within the universe).
         let union = "C.*[<L.>O] - (C.*[<L.>O] - subsurface - emissive)";
-        let c = analysis::compare(&lpe::parse(line).unwrap(), &lpe::parse(union).unwrap());
+        let c = analysis::compare(
+            &lpe::renderman::parse(line).unwrap(),
+            &lpe::renderman::parse(union).unwrap(),
+        );
         assert!(c.unwrap().equivalent(), "{line}");
     }
 }

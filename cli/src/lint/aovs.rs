@@ -1,6 +1,6 @@
 //! Per-AOV checks of one file: parse errors, emptiness, equivalence, group labels, lobes.
 
-use lpe::LobeCategory;
+use lpe::renderman::LobeCategory;
 use lpe_lint::Document;
 
 use super::dialect::Dialect;
@@ -166,7 +166,7 @@ fn closest<'a>(label: &str, known: &'a std::collections::BTreeSet<String>) -> Op
     let mut best: Option<(usize, &str)> = None;
     let mut tie = false;
     for g in known {
-        let d = lpe::syntax::edit_distance(label, g);
+        let d = lpe::renderman::syntax::edit_distance(label, g);
         match best {
             Some((b, _)) if d > b => {}
             Some((b, _)) if d == b => tie = true,

@@ -8,7 +8,8 @@ use std::ops::Range;
 
 use lpe::analysis::{self, AnalysisError, Partition, Warning};
 use lpe::osl::{self, Registered, Symbol, SymbolPattern};
-use lpe::{AovSet, LobeCategory, LobeMap, Lpe, Options, Parser};
+use lpe::renderman::{LobeCategory, LobeMap, Lpe, Parser};
+use lpe::{AovSet, Options};
 
 use super::labels::{self, Carrier};
 use crate::witness::Checked;
@@ -107,8 +108,8 @@ impl Dialect for RenderMan<'_> {
         &self,
         aovs: &[(String, Lpe)],
         universe: &Lpe,
-    ) -> Result<Partition, AnalysisError> {
-        analysis::partition(aovs, universe)
+    ) -> Result<Partition<lpe::renderman::Path>, AnalysisError> {
+        analysis::partition(aovs, universe, &lpe::renderman::Parser::default())
     }
 }
 
@@ -140,13 +141,13 @@ impl Dialect for Osl {
     }
 
     fn warnings(&self, aovs: &[(String, osl::Lpe)]) -> Option<Vec<Warning>> {
-        AovSet::compile_osl(aovs, &self.registered, &Options::default())
+        AovSet::compile_under(aovs, &self.registered, &Options::default())
             .ok()
             .map(|s| analysis::warnings(&s))
     }
 
     fn equivalent(&self, a: &osl::Lpe, b: &osl::Lpe) -> bool {
-        analysis::compare_osl(a, b, &self.registered).is_ok_and(|c| c.equivalent())
+        analysis::compare(a, b).is_ok_and(|c| c.equivalent())
     }
 
     fn labels(&self, e: &osl::Lpe) -> Vec<(Carrier, String)> {
@@ -163,7 +164,7 @@ impl Dialect for Osl {
         aovs: &[(String, osl::Lpe)],
         universe: &osl::Lpe,
     ) -> Result<Partition<osl::Path>, AnalysisError> {
-        analysis::partition_osl(aovs, universe, &self.registered)
+        analysis::partition(aovs, universe, &self.registered)
     }
 }
 

@@ -3,8 +3,8 @@
 //! a label or lobe named only to be excluded makes no AOV black. Every operand of set
 //! algebra counts (a typo in `A - B` is a typo too).
 
-use lpe::ast::{Atom, EventPos, Item, LabelPos, TypePos};
-use lpe::{EventKind, LobeCategory, Lpe, VertexType};
+use lpe::renderman::ast::{Atom, EventPos, Item, LabelPos, TypePos};
+use lpe::renderman::{EventKind, LobeCategory, Lpe, VertexType};
 
 /// Who must carry a label for the AOV to see it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
@@ -113,7 +113,7 @@ mod tests {
     use super::*;
 
     fn expr(s: &str) -> Lpe {
-        lpe::parse(s).unwrap()
+        lpe::renderman::parse(s).unwrap()
     }
 
     #[test]

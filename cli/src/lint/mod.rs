@@ -16,7 +16,7 @@ pub mod text;
 
 pub use finding::{Finding, Kind};
 
-use lpe::Lpe;
+use lpe::renderman::Lpe;
 use lpe_lint::{AovDecl, Document, PartitionDecl};
 
 use dialect::Dialect;

@@ -8,8 +8,8 @@
 //! for a seed and a reported case can be regenerated alone (`--first i --cases 1`).
 
 use lpe::generate::{self, Choices, Config};
+use lpe::renderman::Lpe;
 use lpe::rng::SplitMix64 as Rng;
-use lpe::Lpe;
 
 use super::check::{check_in, Outcome};
 use super::counterexample::Counterexample;

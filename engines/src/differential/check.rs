@@ -1,6 +1,6 @@
 //! Running engines side by side and comparing their answers.
 
-use lpe::{Lpe, Path};
+use lpe::renderman::{Lpe, Path};
 
 use super::counterexample::Counterexample;
 use super::language::{Language, RenderMan};
@@ -127,7 +127,7 @@ mod tests {
 
     #[test]
     fn agreement_counts_pairs_and_matches() {
-        let e = lpe::parse("C<RD>[<L.>O]").unwrap();
+        let e = lpe::renderman::parse("C<RD>[<L.>O]").unwrap();
         let paths: Vec<Path> = ["C RD L", "C RS L", "C RD O'x'"]
             .iter()
             .map(|p| p.parse().unwrap())

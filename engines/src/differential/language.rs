@@ -8,7 +8,7 @@
 use std::fmt;
 
 use lpe::osl::{self, Registered};
-use lpe::{Lpe, Path};
+use lpe::renderman::{Lpe, Path};
 
 use super::shrink;
 use crate::engine::{Engine, EngineError, Matcher};
@@ -63,7 +63,7 @@ impl Language for RenderMan {
         let mut out = shrink::shrink_lpe(e);
         if !e.prefixes.is_empty() {
             let mut bare = e.clone();
-            bare.prefixes = lpe::Prefixes::NONE;
+            bare.prefixes = lpe::renderman::Prefixes::NONE;
             out.push(bare);
         }
         out

@@ -36,8 +36,8 @@ pub use shrink::{minimize, minimize_by, minimize_in, shrink_expr, shrink_path};
 
 #[cfg(test)]
 pub(crate) mod tests {
-    use lpe::ast::{Atom, Item};
-    use lpe::Lpe;
+    use lpe::renderman::ast::{Atom, Item};
+    use lpe::renderman::Lpe;
 
     use crate::adapters::ReferenceMatcher;
     use crate::engine::{Engine, EngineError, Matcher};

@@ -3,7 +3,7 @@
 //! besides the AOVs, and the arguments that restore a case in a replay command.
 
 use lpe::osl;
-use lpe::Dialect;
+use lpe::DialectName;
 
 use super::protocol::Registration;
 use crate::differential::{Language, Osl, RenderMan};
@@ -11,7 +11,7 @@ use crate::differential::{Language, Osl, RenderMan};
 /// A dialect as the external harness speaks it.
 pub trait Wire: Language {
     /// The dialect of `hello`.
-    fn dialect(&self) -> Dialect;
+    fn dialect(&self) -> DialectName;
 
     /// An expression parsed as the CLI parses it, or where and why not.
     fn parse_expr(&self, src: &str) -> Result<Self::Expr, (usize, String)>;
@@ -27,15 +27,15 @@ pub trait Wire: Language {
 }
 
 impl Wire for RenderMan {
-    fn dialect(&self) -> Dialect {
-        Dialect::RenderMan
+    fn dialect(&self) -> DialectName {
+        DialectName::RenderMan
     }
 
-    fn parse_expr(&self, src: &str) -> Result<lpe::Lpe, (usize, String)> {
-        lpe::parse(src).map_err(|e| (e.span().start, e.message().to_string()))
+    fn parse_expr(&self, src: &str) -> Result<lpe::renderman::Lpe, (usize, String)> {
+        lpe::renderman::parse(src).map_err(|e| (e.span().start, e.message().to_string()))
     }
 
-    fn parse_path(&self, src: &str) -> Option<lpe::Path> {
+    fn parse_path(&self, src: &str) -> Option<lpe::renderman::Path> {
         src.parse().ok()
     }
 
@@ -49,8 +49,8 @@ impl Wire for RenderMan {
 }
 
 impl Wire for Osl {
-    fn dialect(&self) -> Dialect {
-        Dialect::Osl
+    fn dialect(&self) -> DialectName {
+        DialectName::Osl
     }
 
     fn parse_expr(&self, src: &str) -> Result<osl::Lpe, (usize, String)> {

@@ -14,7 +14,7 @@ use std::time::Duration;
 
 use lpe::generate::{self, Config as GenConfig};
 use lpe::osl::Registered;
-use lpe::Dialect;
+use lpe::DialectName;
 
 use super::client::{Client, Fault, FaultKind, StartError};
 use super::dialect::Wire;
@@ -183,7 +183,7 @@ pub struct Setup {
     /// The external command line (split like a shell does).
     pub command: String,
     /// The dialect of the expressions and paths.
-    pub dialect: Dialect,
+    pub dialect: DialectName,
     /// OSL: the labels registered for [`Cases::Given`] (generated cases carry their own).
     pub registered: Registered,
     /// Per-request timeout.
@@ -379,8 +379,8 @@ const BATCH: usize = 64;
 pub fn run(setup: &Setup, cases: &Cases, engines: &[&dyn Engine]) -> Result<Report, StartError> {
     let client = Client::start(&setup.command, setup.dialect.name(), setup.timeout)?;
     Ok(match setup.dialect {
-        Dialect::RenderMan => run_items(setup, client, engines, renderman_items(cases)),
-        Dialect::Osl => run_items(setup, client, engines, osl_items(setup, cases)),
+        DialectName::RenderMan => run_items(setup, client, engines, renderman_items(cases)),
+        DialectName::Osl => run_items(setup, client, engines, osl_items(setup, cases)),
     })
 }
 
@@ -666,7 +666,7 @@ fn replay<L: Wire>(setup: &Setup, lang: &L, exprs: &[String], path: &str) -> Str
         "--external".into(),
         setup.command.clone(),
     ];
-    if lang.dialect() != Dialect::RenderMan {
+    if lang.dialect() != DialectName::RenderMan {
         words.extend(["--dialect".into(), lang.dialect().name().to_string()]);
     }
     words.extend(lang.replay_args());
@@ -695,7 +695,7 @@ mod tests {
         };
         let setup = Setup {
             command: String::new(),
-            dialect: Dialect::Osl,
+            dialect: DialectName::Osl,
             registered: Registered::none(),
             timeout: Duration::from_secs(1),
             max_restarts: 0,
@@ -714,7 +714,7 @@ mod tests {
         let (_, items) = renderman_items(&Cases::Generated(run));
         for (_, _, texts, _) in &items {
             for t in texts {
-                assert!(lpe::parse(t).unwrap().algebra.is_none(), "{t}");
+                assert!(lpe::renderman::parse(t).unwrap().algebra.is_none(), "{t}");
             }
         }
     }

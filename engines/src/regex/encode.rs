@@ -21,7 +21,7 @@
 
 use std::collections::HashMap;
 
-use lpe::{Event, Vertex, VertexType};
+use lpe::renderman::{Event, Vertex, VertexType};
 
 /// Bytes per encoded vertex.
 pub const WIDTH: usize = 3;

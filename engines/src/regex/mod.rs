@@ -29,7 +29,7 @@ pub mod translate;
 use std::cell::RefCell;
 
 use lpe::algebra::Algebra;
-use lpe::{Lpe, Path};
+use lpe::renderman::{Lpe, Path};
 use regex_automata::dfa::{dense, Automaton};
 use regex_automata::hybrid;
 use regex_automata::nfa::thompson::{self, WhichCaptures, NFA};
@@ -115,7 +115,7 @@ pub static EAGER: RegexEngine = RegexEngine {
 /// one per operand of set algebra, in [`Lpe::operands`] order), plus the label interning
 /// they share.
 pub fn translate(exprs: &[Lpe]) -> Result<(Labels, Vec<Hir>), BuildError> {
-    let operands: Vec<&lpe::Expr> = exprs.iter().flat_map(|e| e.operands()).collect();
+    let operands: Vec<&lpe::renderman::Expr> = exprs.iter().flat_map(|e| e.operands()).collect();
     let mut all = Vec::new();
     for e in &operands {
         all.extend(e.labels());
@@ -328,7 +328,7 @@ mod tests {
 
     /// The lazy and the eager automaton's answer, which must be the same.
     fn m(expr: &str, path: &str) -> bool {
-        let lpe = lpe::parse(expr).unwrap();
+        let lpe = lpe::renderman::parse(expr).unwrap();
         let path: Path = path.parse().unwrap();
         let lazy = is_match(&lpe, &path).unwrap();
         // The eager build falls back to the lazy DFA silently; without this the
@@ -387,7 +387,7 @@ mod tests {
         let labels: String = (0..encode::MAX_LABELS + 1)
             .map(|i| format!("'l{i}'"))
             .collect();
-        let lpe = lpe::parse(&format!("C[{labels}]L")).unwrap();
+        let lpe = lpe::renderman::parse(&format!("C[{labels}]L")).unwrap();
         let r = LAZY.compile(std::slice::from_ref(&lpe));
         assert!(matches!(
             r,
@@ -396,7 +396,7 @@ mod tests {
         ));
         // One fewer fits, and the last label still gets its own byte.
         let labels: String = (0..encode::MAX_LABELS).map(|i| format!("'l{i}'")).collect();
-        let lpe = lpe::parse(&format!("C[{labels}]L")).unwrap();
+        let lpe = lpe::renderman::parse(&format!("C[{labels}]L")).unwrap();
         let last = format!("C RD'l{}' L", encode::MAX_LABELS - 1);
         assert!(is_match(&lpe, &last.parse().unwrap()).unwrap());
         assert!(!is_match(&lpe, &"C RD'other' L".parse().unwrap()).unwrap());
@@ -404,9 +404,9 @@ mod tests {
 
     #[test]
     fn aov_set_is_one_automaton_answering_each_pattern() {
-        let exprs: Vec<Lpe> = lpe::macros::BASIC
+        let exprs: Vec<Lpe> = lpe::renderman::macros::BASIC
             .iter()
-            .map(|(_, s)| lpe::parse(s).unwrap())
+            .map(|(_, s)| lpe::renderman::parse(s).unwrap())
             .collect();
         assert!(dense(&EAGER, &exprs));
         assert!(!dense(&LAZY, &exprs));
@@ -433,7 +433,7 @@ mod tests {
 
     #[test]
     fn huge_counts_are_a_typed_refusal_not_a_hang() {
-        let lpe = lpe::parse("C(.{0,200}){200}L").unwrap();
+        let lpe = lpe::renderman::parse("C(.{0,200}){200}L").unwrap();
         let r = LAZY.compile(std::slice::from_ref(&lpe));
         assert!(matches!(r, Err(EngineError::Regex(BuildError::Nfa(_)))));
     }
@@ -441,7 +441,7 @@ mod tests {
     #[test]
     fn dfa_blowup_falls_back_to_the_lazy_dfa() {
         // "the 20th vertex from the end is diffuse": exponential for any DFA.
-        let lpe = lpe::parse("C.*D.{20}L").unwrap();
+        let lpe = lpe::renderman::parse("C.*D.{20}L").unwrap();
         assert!(!dense(&EAGER, std::slice::from_ref(&lpe)));
         let m = EAGER.compile(std::slice::from_ref(&lpe)).unwrap();
         let mut text = String::from("C RS RD");
@@ -464,7 +464,7 @@ mod tests {
         // Two expressions after one with two operands: pattern ids shift by operand.
         let exprs: Vec<Lpe> = ["C.*L - CL", "CL", "^CL"]
             .iter()
-            .map(|s| lpe::parse(s).unwrap())
+            .map(|s| lpe::renderman::parse(s).unwrap())
             .collect();
         let m = LAZY.compile(&exprs).unwrap();
         assert_eq!(m.which(&"C L".parse().unwrap()), [false, true, false]);

@@ -23,8 +23,8 @@
 
 use std::collections::BTreeSet;
 
-use lpe::ast::Repetition;
 use lpe::osl::{Expr, Lpe, Path, Symbol, SymbolPattern};
+use lpe::renderman::ast::Repetition;
 use regex_syntax::hir::{Hir, Look};
 
 use super::translate::{byte_class, repeat};

@@ -18,8 +18,8 @@
 //! (`{2,200}` stays `{2,200}`: the fast matcher's `{n,m}` -> `{n,}` rewrite must be
 //! tested, not shared).
 
-use lpe::ast::{Atom, EventPattern, EventPos, Expr, Item, LabelPos, Triple, TypePos};
-use lpe::{Event, EventKind, VertexType};
+use lpe::renderman::ast::{Atom, EventPattern, EventPos, Expr, Item, LabelPos, Triple, TypePos};
+use lpe::renderman::{Event, EventKind, VertexType};
 use regex_syntax::hir::{Class, ClassBytes, ClassBytesRange, Hir, Repetition};
 
 use super::encode::{
@@ -159,7 +159,7 @@ impl<'a> Translator<'a> {
 }
 
 /// `sub{min,max}` with the expression's raw bounds (either dialect).
-pub(crate) fn repeat(sub: Hir, r: lpe::ast::Repetition) -> Hir {
+pub(crate) fn repeat(sub: Hir, r: lpe::renderman::ast::Repetition) -> Hir {
     Hir::repetition(Repetition {
         min: r.min,
         max: r.max,

@@ -1,4 +1,4 @@
-//! `rendermn.ini`: macros and lobe mappings through [`lpe::Config`], plus partition
+//! `rendermn.ini`: macros and lobe mappings through [`lpe::renderman::Config`], plus partition
 //! comments (`# lpe:partition a,b,c`).
 
 use std::path::Path;
@@ -9,7 +9,7 @@ use crate::read::{as_text, partition_comment, read_bounded, Limits};
 
 /// Reads an ini file on top of the defaults.
 pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
-    read_into(path, limits, &mut lpe::Config::default())
+    read_into(path, limits, &mut lpe::renderman::Config::default())
 }
 
 /// Reads an ini file on top of `config` (so several files stack, later lines winning);
@@ -17,7 +17,7 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
 pub fn read_into(
     path: &Path,
     limits: &Limits,
-    config: &mut lpe::Config,
+    config: &mut lpe::renderman::Config,
 ) -> Result<Document, ReadError> {
     let bytes = read_bounded(path, limits.ini_bytes, "ini")?;
     let text = as_text(&bytes, path, 0)?;

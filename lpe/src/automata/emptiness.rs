@@ -5,9 +5,9 @@
 use std::fmt;
 
 use super::shape::{Shape, ANY, CAMERA_TO_EMITTER, FROM_CAMERA, NONE};
+use crate::automata::ir::{PathShape, Place, Regex, VertexClasses};
 use crate::automata::nfa::Nfa;
 use crate::bits;
-use crate::automata::ir::{PathShape, Place, Regex, VertexClasses};
 
 /// A compile-time warning: an AOV that can match no path.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -27,8 +27,8 @@ use std::hash::Hash;
 
 use crate::fxhash::FxMap;
 
-use crate::automata::ir::{Node, Regex, Repetition, VertexClasses};
 use crate::automata::coactive;
+use crate::automata::ir::{Node, Regex, Repetition, VertexClasses};
 use crate::automata::mask::{AovMask, NFA_STATE_WORDS};
 use crate::bits::{self, set};
 

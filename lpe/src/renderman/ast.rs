@@ -33,10 +33,10 @@
 use std::fmt;
 
 use crate::algebra::{write_operands, Algebra, SetExpr};
-use crate::renderman::path::{EventKind, VertexType};
 pub use crate::automata::ir::Repetition;
-use crate::renderman::prefix::Prefixes;
 use crate::print::write_parts;
+use crate::renderman::path::{EventKind, VertexType};
+use crate::renderman::prefix::Prefixes;
 
 /// A parsed light path expression: prefixes plus the expression proper, which may be
 /// set algebra over several expressions ([`crate::algebra`]).

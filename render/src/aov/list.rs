@@ -5,8 +5,9 @@
 
 use std::fmt;
 
-use lpe::macros::{BASIC, OTHER, PER_LOBE};
-use lpe::{osl, Dialect, EventKind, Lpe, Parser, Prefix};
+use lpe::renderman::macros::{BASIC, OTHER, PER_LOBE};
+use lpe::renderman::{EventKind, Lpe, Parser, Prefix};
+use lpe::{osl, DialectName};
 use lpe_lint::read::rib::{display_channel, Channel};
 use lpe_lint::{AovDecl, Location, RibProblem};
 
@@ -24,7 +25,7 @@ pub enum AovError {
     #[error("AOV `{name}`: {error}")]
     Parse {
         name: String,
-        error: Box<lpe::Error>,
+        error: Box<lpe::renderman::Error>,
     },
     #[error("AOV `{name}` (OSL dialect): {error}")]
     OslParse {
@@ -86,10 +87,10 @@ pub enum AovExpr {
 }
 
 impl AovExpr {
-    pub fn dialect(&self) -> Dialect {
+    pub fn dialect(&self) -> DialectName {
         match self {
-            AovExpr::RenderMan(_) => Dialect::RenderMan,
-            AovExpr::Osl(_) => Dialect::Osl,
+            AovExpr::RenderMan(_) => DialectName::RenderMan,
+            AovExpr::Osl(_) => DialectName::Osl,
         }
     }
 
@@ -151,7 +152,7 @@ pub struct Partition {
 #[derive(Clone, Debug, Default)]
 pub struct AovList {
     /// The dialect every AOV of the list is parsed in.
-    pub dialect: Dialect,
+    pub dialect: DialectName,
     pub aovs: Vec<Aov>,
     pub partitions: Vec<Partition>,
     /// Why a default partition was not checked (e.g. lobes outside the per-lobe set).
@@ -160,7 +161,7 @@ pub struct AovList {
 
 impl AovList {
     /// An empty list reading AOVs in `dialect`.
-    pub fn new(dialect: Dialect) -> AovList {
+    pub fn new(dialect: DialectName) -> AovList {
         AovList {
             dialect,
             ..AovList::default()
@@ -182,14 +183,14 @@ impl AovList {
             return Err(AovError::DuplicateName { name: name.into() });
         }
         let (flags, expr) = match self.dialect {
-            Dialect::RenderMan => {
+            DialectName::RenderMan => {
                 let lpe = parser.parse(source).map_err(|error| AovError::Parse {
                     name: name.into(),
                     error: Box::new(error),
                 })?;
                 (AovFlags::of(&lpe), AovExpr::RenderMan(lpe))
             }
-            Dialect::Osl => {
+            DialectName::Osl => {
                 let lpe = super::osl::parse(source, parser.limits(), parser.macros()).map_err(
                     |error| AovError::OslParse {
                         name: name.into(),
@@ -257,7 +258,7 @@ impl AovList {
     /// The OSL basic set (`lpe::osl::BASIC`, under RenderMan's basic names), declared as
     /// the partition of beauty it is.
     pub fn basic_osl(parser: &Parser) -> Result<AovList, AovError> {
-        let mut list = AovList::new(Dialect::Osl);
+        let mut list = AovList::new(DialectName::Osl);
         let members = lpe::osl::BASIC
             .iter()
             .map(|(n, src)| list.push(n, src, parser))
@@ -273,7 +274,7 @@ impl AovList {
     /// The AOV list for a render: the defaults, plus for the furnace the per-bounce AOVs
     /// `furnace_bounceK = C<RD>{K}O`.
     pub fn for_render(scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
-        AovList::for_render_in(Dialect::RenderMan, scene, parser)
+        AovList::for_render_in(DialectName::RenderMan, scene, parser)
     }
 
     /// [`AovList::for_render`] in `dialect`: under OSL the defaults are the OSL basic
@@ -281,18 +282,18 @@ impl AovList {
     /// to be present, so there is no default light-group split), and the furnace's
     /// bounce 0 is `CO` (OSL refuses a `{0}` item after the first).
     pub fn for_render_in(
-        dialect: Dialect,
+        dialect: DialectName,
         scene: &Scene,
         parser: &Parser,
     ) -> Result<AovList, AovError> {
         let mut list = match dialect {
-            Dialect::RenderMan => AovList::defaults(scene, parser)?,
-            Dialect::Osl => AovList::basic_osl(parser)?,
+            DialectName::RenderMan => AovList::defaults(scene, parser)?,
+            DialectName::Osl => AovList::basic_osl(parser)?,
         };
         if crate::verify::known::furnace_params(scene).is_some() {
             for k in 0..=crate::verify::known::FURNACE_BOUNCES {
                 let source = match (dialect, k) {
-                    (Dialect::Osl, 0) => "CO".to_string(),
+                    (DialectName::Osl, 0) => "CO".to_string(),
                     _ => format!("C<RD>{{{k}}}O"),
                 };
                 list.push(&format!("furnace_bounce{k}"), &source, parser)?;

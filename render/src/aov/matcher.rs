@@ -13,7 +13,7 @@
 //! it with any engine of the `lpe-engines` registry, which is how `converge` times the
 //! regex-automata engine (`oracle`).
 
-use lpe::{Lpe, Path, Vertex, VertexType};
+use lpe::renderman::{Lpe, Path, Vertex, VertexType};
 
 use super::vertex::SceneClassifier;
 use std::hash::{Hash, Hasher};
@@ -237,6 +237,7 @@ impl<W: WholePath> WholePathMatcher<W> {
 }
 
 impl<W: WholePath> PathMatcher for WholePathMatcher<W> {
+    type Vertex = Vertex;
     type Class = u16;
     type State = RefState;
 
@@ -296,7 +297,11 @@ mod tests {
 
     /// Steps `m` along each path and compares its answer (twice: a memo must not
     /// change it) with `reference::is_match` per expression.
-    fn agrees_with_is_match(m: &(impl PathMatcher + Sync), exprs: &[Lpe], paths: &[&str]) {
+    fn agrees_with_is_match(
+        m: &(impl PathMatcher<Vertex = Vertex> + Sync),
+        exprs: &[Lpe],
+        paths: &[&str],
+    ) {
         for text in paths {
             let path: Path = text.parse().unwrap();
             let mut s = m.start();
@@ -328,7 +333,10 @@ mod tests {
     ];
 
     fn exprs() -> Vec<Lpe> {
-        EXPRS.iter().map(|s| lpe::parse(s).unwrap()).collect()
+        EXPRS
+            .iter()
+            .map(|s| lpe::renderman::parse(s).unwrap())
+            .collect()
     }
 
     #[test]
@@ -354,7 +362,7 @@ mod tests {
 
     #[test]
     fn too_many_aovs_is_an_error_for_every_whole_path_engine() {
-        let many = vec![lpe::parse("CL").unwrap(); MAX_AOVS + 1];
+        let many = vec![lpe::renderman::parse("CL").unwrap(); MAX_AOVS + 1];
         assert!(Reference::new(&many).is_err());
         #[cfg(feature = "engines")]
         assert!(CheckEngine::new(&engines::regex::LAZY, &many).is_err());

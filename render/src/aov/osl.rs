@@ -14,7 +14,7 @@
 //! of the source as written.
 
 use lpe::osl::{self, Registered};
-use lpe::{Limits, Prefix};
+use lpe::renderman::{Limits, Prefix};
 
 /// Why an OSL AOV was refused. Positions are byte offsets, printed as OSL prints its own
 /// (`at char N`).
@@ -52,7 +52,7 @@ pub enum OslAovError {
 pub fn parse(
     source: &str,
     limits: &Limits,
-    macros: &lpe::macros::MacroTable,
+    macros: &lpe::renderman::macros::MacroTable,
 ) -> Result<osl::Lpe, OslAovError> {
     let Some(expr) = source.strip_prefix(osl::SOURCE_MARK) else {
         return parse_expr(source, limits, macros);
@@ -85,7 +85,7 @@ impl OslAovError {
 fn parse_expr(
     source: &str,
     limits: &Limits,
-    macros: &lpe::macros::MacroTable,
+    macros: &lpe::renderman::macros::MacroTable,
 ) -> Result<osl::Lpe, OslAovError> {
     check_prefix(source)?;
     let lpe =
@@ -123,7 +123,7 @@ fn check_prefix(source: &str) -> Result<(), OslAovError> {
 }
 
 /// The RenderMan macro (with or without a light-group suffix) the whole source names.
-fn macro_name<'a>(source: &'a str, macros: &lpe::macros::MacroTable) -> Option<&'a str> {
+fn macro_name<'a>(source: &'a str, macros: &lpe::renderman::macros::MacroTable) -> Option<&'a str> {
     let name = source.trim();
     let known = |n: &str| macros.get(n).is_some();
     if known(name) {
@@ -180,7 +180,11 @@ mod tests {
     use super::*;
 
     fn parse_default(src: &str) -> Result<osl::Lpe, OslAovError> {
-        parse(src, &Limits::default(), &lpe::macros::MacroTable::builtin())
+        parse(
+            src,
+            &Limits::default(),
+            &lpe::renderman::macros::MacroTable::builtin(),
+        )
     }
 
     #[test]

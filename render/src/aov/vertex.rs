@@ -1,5 +1,5 @@
 //! The vertices `lpe-render` produces, described in the renderer's own terms, and how
-//! each dialect sees them: a RenderMan [`lpe::Vertex`] (type, event with its lobe number,
+//! each dialect sees them: a RenderMan [`lpe::renderman::Vertex`] (type, event with its lobe number,
 //! one label) or an OSL [`osl::Vertex`] (event, scattering, custom labels).
 //!
 //! The integrator classifies every vertex its scene can produce once, before rendering,
@@ -18,8 +18,10 @@
 //! A vertex carries at most one custom label: light objects have no `lpegroup`, and no
 //! other vertex has a light group. Emitters and the camera scatter NONE (`~`).
 
-use lpe::osl::{self, Symbol};
-use lpe::{AovSet, Dialect, Event, PathMatcher, VertexType};
+use lpe::osl::{self, Osl, Symbol};
+use lpe::renderman::RenderMan;
+use lpe::renderman::{Event, VertexType};
+use lpe::{AovSet, Dialect, DialectName, PathMatcher};
 
 use super::matcher::{WholePath, WholePathMatcher};
 
@@ -71,14 +73,14 @@ pub enum SceneVertex<'a> {
 
 impl SceneVertex<'_> {
     /// The vertex as the RenderMan dialect sees it.
-    pub fn renderman(&self) -> lpe::Vertex {
+    pub fn renderman(&self) -> lpe::renderman::Vertex {
         match *self {
-            SceneVertex::Camera => lpe::Vertex::camera(),
+            SceneVertex::Camera => lpe::renderman::Vertex::camera(),
             SceneVertex::Scatter {
                 side, event, group, ..
-            } => lpe::Vertex::scatter(side, event, group),
-            SceneVertex::Light { group } => lpe::Vertex::light(group),
-            SceneVertex::Emissive { group } => lpe::Vertex::emissive(group),
+            } => lpe::renderman::Vertex::scatter(side, event, group),
+            SceneVertex::Light { group } => lpe::renderman::Vertex::light(group),
+            SceneVertex::Emissive { group } => lpe::renderman::Vertex::emissive(group),
         }
     }
 
@@ -115,20 +117,36 @@ pub trait SceneClassifier: PathMatcher {
 
     /// The dialect the matcher's expressions are written in. Only RenderMan has user
     /// lobes (the pseudo paths `C <R Un> L`).
-    fn dialect(&self) -> Dialect;
+    fn dialect(&self) -> DialectName;
 }
 
-impl SceneClassifier for AovSet {
+/// How a dialect sees the renderer's vertices: the one thing the renderer needs per
+/// dialect.
+pub trait SceneDialect: Dialect {
+    /// The vertex `v` as this dialect sees it.
+    fn scene_vertex(v: &SceneVertex) -> Self::Vertex;
+}
+
+impl SceneDialect for RenderMan {
+    fn scene_vertex(v: &SceneVertex) -> lpe::renderman::Vertex {
+        v.renderman()
+    }
+}
+
+impl SceneDialect for Osl {
+    fn scene_vertex(v: &SceneVertex) -> osl::Vertex {
+        v.osl()
+    }
+}
+
+impl<D: SceneDialect> SceneClassifier for AovSet<D> {
     #[inline]
     fn classify_scene(&self, v: &SceneVertex) -> lpe::Class {
-        match AovSet::dialect(self) {
-            Dialect::RenderMan => self.classify(&v.renderman()),
-            Dialect::Osl => self.classify_osl(&v.osl()),
-        }
+        self.classify(&D::scene_vertex(v))
     }
 
-    fn dialect(&self) -> Dialect {
-        AovSet::dialect(self)
+    fn dialect(&self) -> DialectName {
+        DialectName::of::<D>().expect("the renderer's dialects are lpe's")
     }
 }
 
@@ -138,15 +156,15 @@ impl<W: WholePath> SceneClassifier for WholePathMatcher<W> {
         self.classify(&v.renderman())
     }
 
-    fn dialect(&self) -> Dialect {
-        Dialect::RenderMan
+    fn dialect(&self) -> DialectName {
+        DialectName::RenderMan
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lpe::EventKind;
+    use lpe::renderman::EventKind;
 
     fn scatter(side: VertexType, scattering: Scattering, group: Option<&str>) -> SceneVertex<'_> {
         SceneVertex::Scatter {

@@ -29,7 +29,7 @@ pub enum InputError {
     #[error("{}:{source}", path.display())]
     Ini {
         path: PathBuf,
-        source: lpe::ini::IniError,
+        source: lpe::renderman::ini::IniError,
     },
     #[error("{}:{at}: {source}", path.display())]
     DisplayAov {

@@ -6,15 +6,15 @@ use lpe_render::scene::Scene;
 use crate::args::InputError;
 
 pub fn run(
-    dialect: lpe::Dialect,
+    dialect: lpe::DialectName,
     scene: &str,
     spp: u32,
     res: (usize, usize),
     threads: Option<usize>,
     rounds: usize,
 ) -> Result<bool, InputError> {
-    let config = lpe::Config::default();
-    let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
+    let config = lpe::renderman::Config::default();
+    let parser = lpe::renderman::Parser::new(config.limits.clone(), config.macros.clone());
     let scene = Scene::load(scene, &config.lobes)?;
     let settings = Settings {
         width: res.0,

@@ -5,7 +5,7 @@ use std::time::Instant;
 use crate::args::InputError;
 use crate::render::print_invariants;
 
-pub fn run(dialect: lpe::Dialect, threads: Option<usize>) -> Result<bool, InputError> {
+pub fn run(dialect: lpe::DialectName, threads: Option<usize>) -> Result<bool, InputError> {
     let t0 = Instant::now();
     let list = lpe_render::verify::suite::check_suite_in(dialect, threads, &mut |s| {
         eprintln!("  rendered {s}")

@@ -38,8 +38,8 @@ enum Command {
         threads: Option<usize>,
         /// `osl`: the checks that depend on the dialect, with the OSL basic set (its
         /// sums to beauty, its formal partition, the same images as RenderMan's).
-        #[arg(long, default_value_t = lpe::Dialect::RenderMan)]
-        dialect: lpe::Dialect,
+        #[arg(long, default_value_t = lpe::DialectName::RenderMan)]
+        dialect: lpe::DialectName,
     },
     /// Measure the cost of LPE tracking: 32 AOVs vs beauty only, same run.
     Bench {
@@ -56,8 +56,8 @@ enum Command {
         #[arg(long, default_value_t = 15, value_parser = positive_usize)]
         rounds: usize,
         /// The dialect of the 32 AOVs: `osl` starts from the OSL basic set.
-        #[arg(long, default_value_t = lpe::Dialect::RenderMan)]
-        dialect: lpe::Dialect,
+        #[arg(long, default_value_t = lpe::DialectName::RenderMan)]
+        dialect: lpe::DialectName,
     },
     /// Accuracy vs time: MSE, relMSE, log-log slope and efficiency per technique and
     /// AOV on scenes with known answers; CSV, Markdown and plots in --out.
@@ -113,8 +113,8 @@ pub struct RenderArgs {
     /// OSL: no prefixes, macros, lobe numbers or user lobes; vertices are `C`, `R`/`T`
     /// with `D` (diffuse), `G` (glossy) or `S` (delta), `L`, `O`, labelled with the
     /// object's lpegroup or the light's group; the defaults are the OSL basic set.
-    #[arg(long, default_value_t = lpe::Dialect::RenderMan)]
-    pub dialect: lpe::Dialect,
+    #[arg(long, default_value_t = lpe::DialectName::RenderMan)]
+    pub dialect: lpe::DialectName,
     /// Output directory.
     #[arg(long, default_value = "out")]
     pub out: PathBuf,

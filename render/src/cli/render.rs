@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
-use lpe::Dialect;
+use lpe::DialectName;
 use lpe_render::aov::{
     parse_display_channels, split_aov_arg, usd_render_vars, AovList, DisplayChannels,
 };
@@ -15,15 +15,15 @@ use lpe_render::verify::invariants::{self, Invariant};
 use crate::args::InputError;
 use crate::RenderArgs;
 
-fn load_config(ini: Option<&PathBuf>) -> Result<lpe::Config, InputError> {
+fn load_config(ini: Option<&PathBuf>) -> Result<lpe::renderman::Config, InputError> {
     let Some(path) = ini else {
-        return Ok(lpe::Config::default());
+        return Ok(lpe::renderman::Config::default());
     };
     let text = std::fs::read_to_string(path).map_err(|source| InputError::Read {
         path: path.clone(),
         source,
     })?;
-    lpe::Config::from_ini(&text).map_err(|source| InputError::Ini {
+    lpe::renderman::Config::from_ini(&text).map_err(|source| InputError::Ini {
         path: path.clone(),
         source,
     })
@@ -34,7 +34,7 @@ fn push_channels(
     aovs: &mut AovList,
     read: DisplayChannels,
     path: &Path,
-    parser: &lpe::Parser,
+    parser: &lpe::renderman::Parser,
 ) -> Result<(), InputError> {
     for w in read.warnings {
         eprintln!("warning: {w}");
@@ -62,11 +62,11 @@ pub fn print_invariants(list: &[Invariant]) -> bool {
 
 pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
     let t0 = Instant::now();
-    if args.dialect == Dialect::Osl && args.ini.is_some() {
+    if args.dialect == DialectName::Osl && args.ini.is_some() {
         return Err(InputError::IniWithOsl);
     }
     let config = load_config(args.ini.as_ref())?;
-    let parser = lpe::Parser::new(config.limits.clone(), config.macros.clone());
+    let parser = lpe::renderman::Parser::new(config.limits.clone(), config.macros.clone());
     let scene = Scene::load(&args.scene, &config.lobes)?;
 
     let mut aovs = AovList::new(args.dialect);

@@ -1,12 +1,13 @@
 //! Contributions: every vertex the scene can produce, classified once for the matcher,
 //! and the hand-over of each contribution (its path's AOV mask) to the film.
 
-use lpe::{Dialect, LobeCategory, LobeMap, Vertex, VertexType};
+use lpe::renderman::{LobeCategory, LobeMap, VertexType};
+use lpe::DialectName;
 
 use super::estimator::PathState;
 use super::{Integrator, USER_SIGNALS};
 use crate::aov::matcher::{AovMask, PathMatcher, RenderMatcher};
-use crate::aov::vertex::{SceneClassifier, SceneVertex};
+use crate::aov::vertex::{Scattering, SceneClassifier, SceneVertex};
 use crate::film::{Contribution, SampleValues, Strategy};
 use crate::geometry::Hit;
 use crate::material::Material;
@@ -64,7 +65,7 @@ impl<C: Copy> Vertices<C> {
         // User lobes are RenderMan's: OSL has no pseudo paths (docs/language.md §18.12).
         // Their vertices are RenderMan ones, whose class on an OSL set lpe leaves
         // unspecified, so they are not even asked for.
-        let user_lobes = m.dialect() == Dialect::RenderMan;
+        let user_lobes = m.dialect() == DialectName::RenderMan;
         let mut scatter = Vec::new();
         let mut glow = Vec::new();
         let mut user = Vec::new();
@@ -94,11 +95,17 @@ impl<C: Copy> Vertices<C> {
             }));
             let pseudo = |sig: UserSignal| {
                 let ev = lobes.event(LobeCategory::User, sig.name());
+                // Only asked of RenderMan sets, which ignore the scattering.
                 let s = m.step(
                     m.step(m.start(), camera),
-                    m.classify(&Vertex::scatter(VertexType::R, ev, group.as_deref())),
+                    m.classify_scene(&SceneVertex::Scatter {
+                        side: VertexType::R,
+                        event: ev,
+                        scattering: Scattering::Diffuse,
+                        group: group.as_deref(),
+                    }),
                 );
-                m.matches(m.step(s, m.classify(&Vertex::light(None))))
+                m.matches(m.step(s, m.classify_scene(&SceneVertex::Light { group: None })))
             };
             user.push(if mat.is_some() && user_lobes {
                 UserSignal::ALL.iter().map(|&s| (s, pseudo(s))).collect()

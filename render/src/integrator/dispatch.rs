@@ -1,6 +1,7 @@
 //! Render dispatch: the one place that picks the matcher a render uses.
 
-use lpe::{Dialect, LobeMap};
+use lpe::renderman::LobeMap;
+use lpe::DialectName;
 
 use super::{Integrator, Render, RenderError, Settings};
 use crate::aov::matcher::{Reference, ReferenceMatcher, RenderMatcher};
@@ -33,9 +34,9 @@ pub fn render_announcing(
     settings: &Settings,
     on_plan: &mut dyn FnMut(&crate::aov::plan::Plan),
 ) -> Result<Render, RenderError> {
-    if aovs.dialect == Dialect::Osl {
+    if aovs.dialect == DialectName::Osl {
         check_osl_labels(scene)?;
-        let set = lpe::AovSet::compile_osl(
+        let set = lpe::AovSet::compile_under(
             &aovs.named_osl(),
             &lpe::osl::Registered::none(),
             &lpe::Options::default(),

@@ -41,7 +41,7 @@
 //! Beauty is `beta * local * weight` of every non-holdout transport contribution, added
 //! independently of the matcher: that is what makes "AOVs sum to beauty" a real check.
 
-use lpe::LobeMap;
+use lpe::renderman::LobeMap;
 
 use crate::aov::matcher::{MatcherError, RenderMatcher};
 use crate::aov::plan::Plan;

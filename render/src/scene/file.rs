@@ -2,7 +2,7 @@
 //! are errors so that typos do not pass silently.
 
 use glam::Vec3;
-use lpe::LobeMap;
+use lpe::renderman::LobeMap;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 

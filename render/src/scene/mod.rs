@@ -3,7 +3,7 @@
 //! documented examples of the format; see `render/scenes/README.md`).
 
 use glam::Vec3;
-use lpe::LobeMap;
+use lpe::renderman::LobeMap;
 use std::fmt;
 
 use crate::geometry::{Bvh, Hit, Ray};

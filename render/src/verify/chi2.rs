@@ -464,7 +464,7 @@ mod tests {
     }
 
     fn ggx(alpha: f32) -> Lobe {
-        Lobe::white_ggx(alpha, &lpe::LobeMap::default())
+        Lobe::white_ggx(alpha, &lpe::renderman::LobeMap::default())
     }
 
     #[test]

@@ -11,7 +11,7 @@
 
 use super::{tables, VerifyError};
 use glam::DVec3;
-use lpe::LobeMap;
+use lpe::renderman::LobeMap;
 use serde::Serialize;
 use std::path::Path;
 

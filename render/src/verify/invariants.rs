@@ -11,7 +11,7 @@ use crate::aov::{AovList, Partition};
 use crate::film::Film;
 use crate::integrator::Render;
 use crate::scene::Scene;
-use lpe::Dialect;
+use lpe::DialectName;
 
 /// One checked property and its measured error.
 #[derive(Clone, Debug, Serialize)]
@@ -158,7 +158,7 @@ pub fn finite(film: &Film, aovs: &AovList) -> Invariant {
 /// universe, with a shortest witness path if not. This is a statement about every
 /// possible path, not about this scene.
 ///
-/// The universe is `C.*[<L.>O]` for RenderMan and `DEFAULT_OSL_UNIVERSE`,
+/// The universe is `C.*[<L.>O]` for RenderMan and `lpe::osl::UNIVERSE`,
 /// `C<[RT][DGS]>*[LO]`, for OSL: every OSL path the renderer produces is in it (camera
 /// `C,~`; events `R`/`T` scattering `D`, `G` or `S`; an `L` or `O` emitter; custom
 /// labels never built-in ones), so a partition of it partitions the renderer's paths.
@@ -174,9 +174,10 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
             .map(|p| (p.name.clone(), p.members.clone(), p.universal))
             .collect()
     };
-    let universe = lpe::analysis::default_universe();
+    let parser = lpe::renderman::Parser::default();
+    let universe = lpe::analysis::default_universe::<lpe::renderman::RenderMan>(&parser);
     let registered = lpe::osl::Registered::none();
-    let osl_universe = lpe::analysis::default_osl_universe(&registered);
+    let osl_universe = lpe::analysis::default_universe::<lpe::osl::Osl>(&registered);
     sets.into_iter()
         .map(|(name, members, universal)| {
             let names: Vec<&str> = members
@@ -184,17 +185,17 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
                 .map(|&i| aovs.aovs[i].name.as_str())
                 .collect();
             let checked = match aovs.dialect {
-                Dialect::RenderMan => {
-                    lpe::analysis::partition(&pick(aovs.named(), &members), &universe)
+                DialectName::RenderMan => {
+                    lpe::analysis::partition(&pick(aovs.named(), &members), &universe, &parser)
                         .map(|r| (universe.to_string(), failures(&r, &names)))
                 }
-                Dialect::Osl => lpe::analysis::partition_osl(
+                DialectName::Osl => lpe::analysis::partition(
                     &pick(aovs.named_osl(), &members),
                     &osl_universe,
                     &registered,
                 )
                 .map(|r| {
-                    let u = lpe::analysis::DEFAULT_OSL_UNIVERSE.to_string();
+                    let u = lpe::osl::UNIVERSE.to_string();
                     (u, failures(&r, &names))
                 }),
             };

@@ -5,7 +5,7 @@
 
 use super::VerifyError;
 use glam::{DVec3, Vec3};
-use lpe::{LobeMap, Parser};
+use lpe::renderman::{LobeMap, Parser};
 use std::path::Path;
 
 use super::converge::MatcherRow;

@@ -4,7 +4,7 @@
 
 use super::VerifyError;
 use glam::{DVec3, Vec3};
-use lpe::{LobeMap, Parser};
+use lpe::renderman::{LobeMap, Parser};
 
 use super::known::{
     intensities_scene, intensity_reference, sphere_over_plane, INTENSITIES, MIS_EXTREMES, MIXED,

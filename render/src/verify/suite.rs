@@ -1,7 +1,8 @@
 //! `lpe-render check`: every invariant on small renders of the built-in scenes.
 
 use super::VerifyError;
-use lpe::{Dialect, Parser};
+use lpe::renderman::Parser;
+use lpe::DialectName;
 
 use super::invariants::{self as check, invariants, Invariant, ALPHA};
 use super::stats::critical_z;
@@ -26,7 +27,7 @@ pub fn check_suite(
     threads: Option<usize>,
     log: &mut dyn FnMut(&str),
 ) -> Result<Vec<Invariant>, VerifyError> {
-    check_suite_in(Dialect::RenderMan, threads, log)
+    check_suite_in(DialectName::RenderMan, threads, log)
 }
 
 /// `lpe-render check --dialect D`. RenderMan: the whole suite. OSL: what depends on the
@@ -35,11 +36,11 @@ pub fn check_suite(
 /// the formal partition check over the OSL universe. The estimator, prefix and
 /// determinism checks are the RenderMan suite's: the dialect changes no sample.
 pub fn check_suite_in(
-    dialect: Dialect,
+    dialect: DialectName,
     threads: Option<usize>,
     log: &mut dyn FnMut(&str),
 ) -> Result<Vec<Invariant>, VerifyError> {
-    let cfg = lpe::Config::default();
+    let cfg = lpe::renderman::Config::default();
     let parser = Parser::new(cfg.limits.clone(), cfg.macros.clone());
     let load = |n: &str| Scene::load(n, &cfg.lobes);
     let mut out = Vec::new();
@@ -62,7 +63,7 @@ pub fn check_suite_in(
             i
         }));
     }
-    if dialect == Dialect::Osl {
+    if dialect == DialectName::Osl {
         let scene = load("still-life")?;
         let osl = AovList::basic_osl(&parser)?;
         let renderman = AovList::basic(&parser)?;

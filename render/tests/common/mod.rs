@@ -4,7 +4,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use lpe::{Config, Parser};
+use lpe::renderman::{Config, Parser};
 use lpe_render::aov::AovList;
 use lpe_render::integrator::{self, Render, Settings};
 use lpe_render::scene::Scene;

@@ -2,8 +2,8 @@
 //! shorter and less labelled paths, for as long as the engines still disagree.
 
 use lpe::algebra::{Algebra, SetExpr};
-use lpe::ast::{Atom, EventPos, Expr, Item, LabelPos, Repetition, TypePos};
-use lpe::{Lpe, Path};
+use lpe::renderman::ast::{Atom, EventPos, Expr, Item, LabelPos, Repetition, TypePos};
+use lpe::renderman::{Lpe, Path};
 
 use super::check::answers_in;
 use super::language::{Language, RenderMan};
@@ -125,7 +125,7 @@ pub fn minimize_by<L: Language>(
 /// simplified in place; for a plain expression, [`shrink_expr`].
 pub fn shrink_lpe(l: &Lpe) -> Vec<Lpe> {
     shrink_set_expr(l, shrink_expr, |t| {
-        Lpe::from_algebra(lpe::Prefixes::NONE, t)
+        Lpe::from_algebra(lpe::renderman::Prefixes::NONE, t)
     })
 }
 
@@ -170,9 +170,11 @@ pub fn shrink_path(path: &Path) -> Vec<Path> {
         if v[i].label().is_some() {
             let mut w = v.to_vec();
             w[i] = match w[i].event() {
-                Some(e) => lpe::Vertex::scatter(w[i].ty(), e, None),
-                None if w[i].ty() == lpe::VertexType::L => lpe::Vertex::light(None),
-                None => lpe::Vertex::emissive(None),
+                Some(e) => lpe::renderman::Vertex::scatter(w[i].ty(), e, None),
+                None if w[i].ty() == lpe::renderman::VertexType::L => {
+                    lpe::renderman::Vertex::light(None)
+                }
+                None => lpe::renderman::Vertex::emissive(None),
             };
             out.extend(Path::new(w).ok());
         }
@@ -341,7 +343,7 @@ mod tests {
     #[test]
     fn a_planted_bug_is_found_and_minimized() {
         let engines: Vec<&dyn Engine> = vec![&Reference, &LabelBlind];
-        let e = lpe::parse("unoccluded;C(<RD>|<TS>)*'floor'(.|U2)+[<L.>O]").unwrap();
+        let e = lpe::renderman::parse("unoccluded;C(<RD>|<TS>)*'floor'(.|U2)+[<L.>O]").unwrap();
         let p: Path = "C RD TS RD'wall' RS1 TS2 L".parse().unwrap();
         let Outcome::Disagree(c) = check_with(&engines, std::slice::from_ref(&e), &[p]) else {
             panic!("the planted bug went unnoticed");
@@ -362,7 +364,7 @@ mod tests {
         let engines: Vec<&dyn Engine> = vec![&Reference, &LabelBlind];
         let exprs: Vec<Lpe> = ["C<RD>[<L.>O]", "C'key'L", "CD+L"]
             .iter()
-            .map(|s| lpe::parse(s).unwrap())
+            .map(|s| lpe::renderman::parse(s).unwrap())
             .collect();
         let p: Path = "C RD'fill' L".parse().unwrap();
         let Outcome::Disagree(c) = check_with(&engines, &exprs, &[p]) else {
@@ -413,7 +415,7 @@ mod tests {
 
     #[test]
     fn shrinking_terminates_and_stays_normalized() {
-        let e = lpe::parse("C([^D'a'<T[^D2]['x']>]|(S{2,7})*)+L")
+        let e = lpe::renderman::parse("C([^D'a'<T[^D2]['x']>]|(S{2,7})*)+L")
             .unwrap()
             .expr;
         let mut frontier = vec![e];
@@ -424,7 +426,7 @@ mod tests {
             for y in shrink_expr(&x) {
                 assert!(measure(&y) < measure(&x), "{y} is no smaller than {x}");
                 let text = y.to_string();
-                assert_eq!(lpe::parse(&text).unwrap().expr, y, "{text}");
+                assert_eq!(lpe::renderman::parse(&text).unwrap().expr, y, "{text}");
                 if seen < 2000 {
                     frontier.push(y);
                 }

@@ -133,8 +133,8 @@ mod tests {
         fn name(&self) -> &'static str {
             "eater-blind"
         }
-        fn compile(&self, _: &[lpe::Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
-            Err(EngineError::Unsupported(lpe::Dialect::RenderMan))
+        fn compile(&self, _: &[lpe::renderman::Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
+            Err(EngineError::Unsupported(lpe::DialectName::RenderMan))
         }
         fn compile_osl(
             &self,

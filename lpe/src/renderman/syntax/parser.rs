@@ -12,7 +12,9 @@ use std::ops::Range;
 use super::error::{Error, ErrorKind};
 use super::lexer::{Tok, Token};
 use super::Limits;
-use crate::renderman::ast::{Atom, EventPattern, EventPos, Expr, Item, LabelPos, Repetition, Triple, TypePos};
+use crate::renderman::ast::{
+    Atom, EventPattern, EventPos, Expr, Item, LabelPos, Repetition, Triple, TypePos,
+};
 
 pub(crate) struct ExprParser<'a> {
     source: &'a str,
