@@ -11,9 +11,9 @@
 //!   RenderMan-dialect front end ([`syntax`]: lexer, parser, errors with spans) with
 //!   prefixes ([`prefix`]), macros ([`macros`]), lobe mappings ([`lobes`]) and
 //!   `rendermn.ini` loading ([`ini`]); the OSL-dialect front end ([`osl`]: its path
-//!   model, expanded tree and parser), and [`Dialect`] naming the two; set algebra over
-//!   whole expressions (`A & B`, `A - B`, `^A`: [`algebra`], a dialect-independent layer
-//!   above the front ends).
+//!   model, expanded tree and parser), and [`Dialect`] ([`dialect`]) naming the two; set
+//!   algebra over whole expressions (`A & B`, `A - B`, `^A`: [`algebra`], a
+//!   dialect-independent layer above the front ends).
 //! - The automata ([`automata`]): the shared ids in the leaf [`automata::mask`]
 //!   ([`AovMask`], [`Class`], [`State`], [`MAX_AOVS`]), then the compressed alphabet,
 //!   the bitset Glushkov NFA and the minimized DFA (crate-private).
@@ -24,8 +24,9 @@
 //! - The formal side ([`analysis`]): emptiness warnings (on the NFA alone), equivalence
 //!   and inclusion, partition checks, each with a shortest witness path.
 //! - Utilities: [`rng`] (the workspace's one SplitMix64), [`fxhash`] (fast maps for small
-//!   keys), and behind features the test generators `generate` (`arbitrary` or
-//!   `proptest`) and `strategy` (`proptest`).
+//!   keys), the crate-private `bits` (bitsets in `u64` words) and `print` (the printing
+//!   both dialects' trees and paths share), and behind features the test generators
+//!   `generate` (`arbitrary` or `proptest`) and `strategy` (`proptest`).
 //!
 //! The semantics are specified in the repository's docs/language.md and executed by the
 //! `lpe-reference` crate; the decisions this crate makes where a renderer could expect
