@@ -6,6 +6,8 @@
 //!   binary (`src/main.rs`) only dispatches.
 //! - [`input`]: what the subcommands share to read their input (`--engine`, `--ini`)
 //!   and the typed [`input::InputError`] they report (exit 2).
+//! - [`lint`]: the checks of `lpe-check lint` on what `lpe-lint` reads, and their text
+//!   and JSON reports.
 //! - [`witness`]: analysis witnesses re-checked with the reference matcher before
 //!   `equiv` and `partition` print them.
 //! - [`bench`](mod@bench): the matcher benchmark, workloads, path sampler, the

@@ -13,6 +13,10 @@
 //! Every reader has a documented size limit ([`read::Limits`]) and turns bad bytes into a
 //! [`ReadError`] with the file and, where there is one, the line; none panics.
 //!
+//! Modules: [`decl`] (what a file declares: AOVs, partitions, groups, lobe mappings),
+//! [`read`] (the readers, one per format, and their limits), [`error`] (why a file could
+//! not be read).
+//!
 //! The checks on the declarations (emptiness, equivalence, groups, partitions) are in
 //! `lpe-check lint`; `lpe-render --usd` takes its AOVs from [`read::usd`].
 

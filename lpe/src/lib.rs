@@ -28,8 +28,9 @@
 //! - The formal side ([`analysis`]): emptiness warnings (on the NFA alone), equivalence
 //!   and inclusion, partition checks, each with a shortest witness path.
 //! - Utilities: [`rng`] (the workspace's one SplitMix64), [`fxhash`] (fast maps for small
-//!   keys), and behind features the test generators `generate` (`arbitrary` or
-//!   `proptest`) and `strategy` (`proptest`).
+//!   keys), the crate-private `bits` (bitsets in `u64` words) and `print` (the printing
+//!   both dialects' trees and paths share), and behind features the test generators
+//!   `generate` (`arbitrary` or `proptest`) and `strategy` (`proptest`).
 //!
 //! The semantics are specified in the repository's docs/language.md and executed by the
 //! `lpe-reference` crate; the decisions this crate makes where a renderer could expect

@@ -1,6 +1,7 @@
 //! Cross-crate property tests and the data-driven conformance suite live in `tests/`;
 //! this library holds what the test files share, and the suite's loader and runner
-//! ([`conformance`]).
+//! ([`conformance`]), and the loader of the OSL verdict files `testdata/osl/*.tsv`
+//! ([`osl_rows`]).
 
 pub mod conformance;
 pub mod osl_rows;
