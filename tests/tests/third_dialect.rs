@@ -1,0 +1,258 @@
+//! A third dialect, written for this test only, checks the claim of docs/architecture.md:
+//! a new dialect is one implementation of `lpe::Dialect` and nothing below the seam
+//! changes. `Letters` is RenderMan with three letters swapped (`E` for the camera `C`,
+//! `B` for reflection `R`, `P` for transmission `T`, and back), no macros (their names
+//! would be swapped too). It lowers to RenderMan's tree and class alphabet, so its own
+//! code is only the surface: text in, text out.
+//!
+//! Through it run the layers written once: `AovSet` compile, step, warnings and
+//! `PathMatcher`; the analyses (comparison, partition, remainder, set-algebra
+//! warnings); and a differential check of the set against the reference matcher,
+//! which shares no automaton with it (both read RenderMan's parser, so that part is
+//! checked by RenderMan's own suites, not here).
+
+use std::fmt;
+use std::str::FromStr;
+
+use lpe::algebra::{Algebra, SetExpr};
+use lpe::analysis;
+use lpe::automata::ir::PathShape;
+use lpe::renderman::{self, alphabet::Alphabet, ast::Atom, Expr, RenderMan, Vertex};
+use lpe::{AovSet, CompileError, Dialect, DialectLpe, PathMatcher};
+
+/// Swaps `C`/`E`, `R`/`B` and `T`/`P` outside single-quoted labels: Letters text to
+/// RenderMan text and back (the swap is its own inverse).
+fn swap(text: &str) -> String {
+    let mut quoted = false;
+    text.chars()
+        .map(|c| {
+            if c == '\'' {
+                quoted = !quoted;
+            }
+            match (quoted, c) {
+                (false, 'C') => 'E',
+                (false, 'E') => 'C',
+                (false, 'R') => 'B',
+                (false, 'B') => 'R',
+                (false, 'T') => 'P',
+                (false, 'P') => 'T',
+                (_, c) => c,
+            }
+        })
+        .collect()
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+struct Letters;
+
+#[derive(Clone, Debug, PartialEq)]
+struct LettersLpe(renderman::Lpe);
+
+#[derive(Clone, Debug, PartialEq)]
+struct LettersPath(renderman::Path);
+
+impl fmt::Display for LettersLpe {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&swap(&self.0.to_string()))
+    }
+}
+
+impl fmt::Display for LettersPath {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&swap(&self.0.to_string()))
+    }
+}
+
+impl FromStr for LettersPath {
+    type Err = renderman::PathError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        swap(s).parse().map(LettersPath)
+    }
+}
+
+impl SetExpr for LettersLpe {
+    type Operand = Expr;
+    fn first(&self) -> &Expr {
+        self.0.first()
+    }
+    fn algebra(&self) -> Option<&Algebra<Expr>> {
+        self.0.algebra()
+    }
+}
+
+impl DialectLpe for LettersLpe {
+    type Dialect = Letters;
+}
+
+impl Dialect for Letters {
+    const NAME: &'static str = "letters";
+    const SHAPE: PathShape = PathShape::CameraScattersEmitter;
+    const DEFAULT_UNIVERSE: &'static str = "E.*[<L.>O]";
+
+    type Lpe = LettersLpe;
+    type Expr = Expr;
+    type Atom = Atom;
+    type Vertex = Vertex;
+    type Path = LettersPath;
+    type PathError = renderman::PathError;
+    type Registration = ();
+    type ParseError = renderman::Error;
+    type Classes = Alphabet;
+
+    fn parse(source: &str, _: &()) -> Result<LettersLpe, renderman::Error> {
+        renderman::parse(&swap(source)).map(LettersLpe)
+    }
+    fn vertices(path: &LettersPath) -> &[Vertex] {
+        path.0.vertices()
+    }
+    fn path(vertices: Vec<Vertex>) -> LettersPath {
+        LettersPath(RenderMan::path(vertices))
+    }
+    fn positions(e: &Expr, max_path_len: Option<u32>) -> u64 {
+        RenderMan::positions(e, max_path_len)
+    }
+    fn classes(atoms: &[&Atom], operands: &[&Expr]) -> Result<Alphabet, CompileError> {
+        RenderMan::classes(atoms, operands)
+    }
+    fn alt(alternatives: Vec<Expr>) -> Expr {
+        RenderMan::alt(alternatives)
+    }
+    fn from_algebra(tree: Algebra<Expr>) -> LettersLpe {
+        LettersLpe(RenderMan::from_algebra(tree))
+    }
+}
+
+fn lpe(src: &str) -> LettersLpe {
+    Letters::parse(src, &()).unwrap()
+}
+
+fn path(text: &str) -> LettersPath {
+    text.parse().unwrap()
+}
+
+fn named(srcs: &[(&str, &str)]) -> Vec<(String, LettersLpe)> {
+    srcs.iter().map(|(n, s)| (n.to_string(), lpe(s))).collect()
+}
+
+/// The basic set of docs/language.md in the swapped letters.
+const BASIC: [(&str, &str); 7] = [
+    ("directDiffuse", "E<BD>[<L.>O]"),
+    ("indirectDiffuse", "E<BD>.+[<L.>O]"),
+    ("subsurface", "E<PD>.*[<L.>O]"),
+    ("directSpecular", "E<BS>[<L.>O]"),
+    ("indirectSpecular", "E<BS>.+[<L.>O]"),
+    ("transmissive", "E<PS>.*[<L.>O]"),
+    ("emissive", "E[<L.>O]"),
+];
+
+#[test]
+fn the_surface_is_its_own() {
+    assert_eq!(lpe("E<BD>'a C'L").to_string(), "E<BD>'a C'L");
+    // RenderMan's letters are not this dialect's.
+    let err = Letters::parse("C<RD>L", &()).unwrap_err();
+    assert_eq!(err.span().start, 0, "{err}");
+    assert_eq!(
+        path("E BD2'floor' PS L'key'").to_string(),
+        "E BD2'floor' PS1 L'key'"
+    );
+    assert!("C RD L".parse::<LettersPath>().is_err());
+}
+
+#[test]
+fn sets_compile_step_and_warn_through_the_shared_layers() {
+    let set = AovSet::compile_under(&named(&BASIC), &(), &lpe::Options::default()).unwrap();
+    assert_eq!(set.dialect(), "letters");
+    assert!(set.uses_dfa());
+    let hits = |p: &str| set.match_path(&path(p)).iter().collect::<Vec<_>>();
+    assert_eq!(hits("E BD L"), [0]);
+    assert_eq!(hits("E BD BS L'key'"), [1]);
+    assert_eq!(hits("E PD O"), [2]);
+    assert_eq!(hits("E L"), [6]);
+    assert_eq!(hits("E BU1 L"), Vec::<usize>::new());
+    // The generic incremental seam answers the same.
+    let p = path("E PS BS L");
+    assert_eq!(
+        PathMatcher::match_vertices(&set, Letters::vertices(&p)),
+        set.match_path(&p)
+    );
+    // The lazy DFA, forced.
+    let lazy = AovSet::compile_under(
+        &named(&BASIC),
+        &(),
+        &lpe::Options {
+            dfa_budget: 0,
+            ..lpe::Options::default()
+        },
+    )
+    .unwrap();
+    assert!(!lazy.uses_dfa());
+    assert_eq!(lazy.match_path(&p), set.match_path(&p));
+    // Emptiness warnings come from the shared automata, worded by the path shape.
+    let dead = AovSet::compile(&named(&[("x", "E<BD>"), ("y", "E<BD>L - E<BD>L")])).unwrap();
+    let warned: Vec<String> = analysis::warnings(&dead)
+        .iter()
+        .map(|w| w.name.clone())
+        .collect();
+    assert_eq!(warned, ["x", "y"]);
+}
+
+#[test]
+fn the_analyses_run_on_it() {
+    let c = analysis::compare(&lpe("E<BD>.+L"), &lpe("E<BD>.*L")).unwrap();
+    assert_eq!(c.first_only, None);
+    assert_eq!(c.second_only.unwrap().to_string(), "E BD1 L");
+    let universe = analysis::default_universe::<Letters>(&());
+    assert_eq!(universe.to_string(), "E.*[<L.>O]");
+    let p = analysis::partition(&named(&BASIC), &universe, &()).unwrap();
+    assert!(p.is_clean(), "{p:?}");
+    // Without `emissive`, the remainder is exactly `E[<L.>O]`, printed in this dialect.
+    let six = named(&BASIC[..6]);
+    let gap = analysis::partition(&six, &universe, &())
+        .unwrap()
+        .gap
+        .unwrap();
+    assert_eq!(gap.to_string(), "E L");
+    let rest = analysis::remainder(&six, &universe);
+    assert!(rest.to_string().starts_with("E.*[<L.>O] - ("), "{rest}");
+    assert!(analysis::compare(&rest, &lpe("E[<L.>O]"))
+        .unwrap()
+        .equivalent());
+}
+
+/// Differential: the set against the reference matcher, on every path of up to four
+/// vertices over a small alphabet. The reference shares RenderMan's parser with this
+/// dialect, not its automata.
+#[test]
+fn the_set_agrees_with_the_reference_matcher() {
+    let exprs = [
+        "E<BD>.+[<L.>O]",
+        "E(B|P)*[DS]<L.'key'>",
+        "E[^<BS>]{1,2}O - E.*DO",
+        "^E.*L",
+    ];
+    let aovs: Vec<(String, LettersLpe)> = exprs.iter().map(|s| (s.to_string(), lpe(s))).collect();
+    let set = AovSet::compile(&aovs).unwrap();
+    let middle = ["BD", "BS", "PD", "PS'key'", "BU2"];
+    let ends = ["L", "L'key'", "O"];
+    let mut checked = 0;
+    let mut paths = vec![String::from("E")];
+    for _ in 0..3 {
+        for end in ends {
+            for p in &paths {
+                let text = format!("{p} {end}");
+                let lp = path(&text);
+                let want: Vec<usize> = (0..aovs.len())
+                    .filter(|&i| reference::is_match(&aovs[i].1 .0, &lp.0))
+                    .collect();
+                let got: Vec<usize> = set.match_path(&lp).iter().collect();
+                assert_eq!(got, want, "{text}");
+                checked += 1;
+            }
+        }
+        paths = paths
+            .iter()
+            .flat_map(|p| middle.iter().map(move |m| format!("{p} {m}")))
+            .collect();
+    }
+    assert_eq!(checked, 3 * (1 + 5 + 25));
+}
