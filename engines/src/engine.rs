@@ -13,7 +13,7 @@
 use lpe::osl::{self, Registered};
 use lpe::{Dialect, Lpe, Path};
 
-use crate::regex::BuildError;
+use crate::regex::error::BuildError;
 
 /// Why an engine produced no matcher. Displayed as `cannot build: <why>`.
 #[derive(Clone, Debug, thiserror::Error)]

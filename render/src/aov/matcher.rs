@@ -13,9 +13,9 @@
 //! it with any engine of the `lpe-engines` registry, which is how `converge` times the
 //! regex-automata engine (`oracle`).
 
-use lpe::{Lpe, Path, Vertex, VertexType};
+use lpe::{Dialect, Lpe, Path, Vertex, VertexType};
 
-use super::vertex::SceneClassifier;
+use super::vertex::{SceneClassifier, SceneVertex};
 use std::hash::{Hash, Hasher};
 use std::sync::{Mutex, RwLock};
 
@@ -280,6 +280,17 @@ impl<W: WholePath> PathMatcher for WholePathMatcher<W> {
     fn is_dead(&self, _: RefState) -> bool {
         // Deciding this needs the automaton; "never dead" is sound.
         false
+    }
+}
+
+/// The whole-path engines judge RenderMan expressions.
+impl<W: WholePath> SceneClassifier for WholePathMatcher<W> {
+    fn classify_scene(&self, v: &SceneVertex) -> u16 {
+        self.classify(&v.renderman())
+    }
+
+    fn dialect(&self) -> Dialect {
+        Dialect::RenderMan
     }
 }
 

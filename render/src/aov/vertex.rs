@@ -21,30 +21,7 @@
 use lpe::osl::{self, Symbol};
 use lpe::{AovSet, Dialect, Event, PathMatcher, VertexType};
 
-use super::matcher::{WholePath, WholePathMatcher};
-
-/// How a lobe scatters, as OSL's scattering labels tell lobes apart (RenderMan's events
-/// do not: its `S` lobes are glossy and delta alike).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Scattering {
-    /// OSL `D`.
-    Diffuse,
-    /// OSL `G`: a rough lobe with a density.
-    Glossy,
-    /// OSL `S`: a Dirac delta (mirror reflection, refraction).
-    Delta,
-}
-
-impl Scattering {
-    /// The OSL scattering label.
-    pub fn osl_label(self) -> &'static str {
-        match self {
-            Scattering::Diffuse => "D",
-            Scattering::Glossy => "G",
-            Scattering::Delta => "S",
-        }
-    }
-}
+use crate::material::Scattering;
 
 /// One kind of vertex the renderer produces.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -129,17 +106,6 @@ impl SceneClassifier for AovSet {
 
     fn dialect(&self) -> Dialect {
         AovSet::dialect(self)
-    }
-}
-
-/// The whole-path engines judge RenderMan expressions.
-impl<W: WholePath> SceneClassifier for WholePathMatcher<W> {
-    fn classify_scene(&self, v: &SceneVertex) -> u16 {
-        self.classify(&v.renderman())
-    }
-
-    fn dialect(&self) -> Dialect {
-        Dialect::RenderMan
     }
 }
 

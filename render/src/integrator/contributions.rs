@@ -3,7 +3,6 @@
 
 use lpe::{Dialect, LobeCategory, LobeMap, Vertex, VertexType};
 
-use super::estimator::PathState;
 use super::{Integrator, USER_SIGNALS};
 use crate::aov::matcher::{AovMask, PathMatcher, RenderMatcher};
 use crate::aov::vertex::{SceneClassifier, SceneVertex};
@@ -12,6 +11,19 @@ use crate::geometry::Hit;
 use crate::material::Material;
 use crate::scene::Scene;
 use glam::Vec3;
+
+/// The per-path state the integrator carries from vertex to vertex.
+pub(super) struct PathState<S> {
+    pub(super) matcher: S,
+    /// Throughput to reach the last scattering vertex.
+    pub(super) beta: Vec3,
+    /// `f cos / (p_pick pdf) / q` of the last scattering vertex.
+    pub(super) bounce: Vec3,
+    /// The last scattering vertex, for MIS: position and BSDF-strategy density
+    /// (`None` after the camera or a delta lobe: light sampling could not compete).
+    pub(super) prev: Option<(Vec3, f32)>,
+    pub(super) holdout: bool,
+}
 
 /// What one worker accumulates for the camera sample it traces: the sample's values
 /// and the rays cast.

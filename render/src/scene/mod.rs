@@ -11,6 +11,7 @@ use crate::light::{Light, LightKind};
 use crate::material::Material;
 
 mod file;
+pub mod furnace;
 
 /// A built-in scene: name and TOML source.
 pub const BUILTIN: [(&str, &str); 3] = [
