@@ -29,8 +29,19 @@
 //!   (`#[cfg(test)] mod tests;`, with everything below them), files named `tests.rs` or
 //!   `*_tests.rs`, and items under a plain `#[cfg(test)]` attribute (inline
 //!   `#[cfg(test)] mod tests { .. }` blocks, test-only helpers) are skipped.
-//! - `#[...]` attributes are not read for paths; `pub(in path)` is not used in the
-//!   workspace, and would be read as an edge.
+//!
+//! A child that takes an item from its parent module (`use super::Error`) while the
+//! parent calls into the child (`child::run()`, `pub use child::Item`) is a loop like any
+//! other: the shared item belongs in a leaf both import.
+//!
+//! Loops known and not yet cleared are listed in [`NOT_YET_CLEARED`]; the test fails on
+//! any other loop, and on an entry there that no longer is one (so the list only shrinks).
+//!
+//! `LAYERING_EDGES=1 cargo test -p lpe-tests --test layering -- --nocapture` prints every
+//! edge with the path that makes it.
+//!
+//! Not read: `#[...]` attributes (a path in one is no edge); `pub(in path)` is not used
+//! in the workspace, and would be read as an edge.
 
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
@@ -109,8 +120,9 @@ fn lex(src: &str) -> Vec<(Tok, usize)> {
             i = skip_string(i, false, 0, &mut line);
         } else if ch == '\'' {
             if at(i + 1) == '\\' {
-                // An escaped character literal: up to its closing quote.
-                i += 2;
+                // An escaped character literal (`'\''`, `'\u{..}'`): past the escaped
+                // character, then up to the closing quote.
+                i += 3;
                 while i < c.len() && c[i] != '\'' {
                     i += 1;
                 }
@@ -343,7 +355,14 @@ fn scan(src: &str, module: &ModPath) -> FileScan {
                 depth = depth.saturating_sub(1);
                 i += 1;
             }
-            Tok::Ident(w) if cfg_test && w != "pub" => {
+            Tok::Ident(w) if cfg_test && w == "pub" => {
+                // The visibility of a test-only item: `pub`, `pub(crate)`.
+                i += 1;
+                if is(toks.get(i), '(') {
+                    i = close_of(&toks, i, '(', ')');
+                }
+            }
+            Tok::Ident(w) if cfg_test => {
                 // A test-only item: skipped whole (a `mod x;` is recorded, its file
                 // excluded).
                 if w == "mod" && is(toks.get(i + 2), ';') {
@@ -881,38 +900,13 @@ fn no_file_imports_itself_through_others() {
 /// Loops that stand today and are to be cleared, each as its files in sorted order; the
 /// test fails on any other loop, and on an entry here that is no loop any more.
 const NOT_YET_CLEARED: &[&[&str]] = &[
-    // A parent module and its children, each using the other's items.
-    &[
-        "cli/src/bench/mod.rs",
-        "cli/src/bench/osl.rs",
-        "cli/src/bench/shapes.rs",
-    ],
+    // A parent module and its children, each using the other's items. `cli/src/lint/`
+    // is being moved into the `lint` crate, and `lpe/src/syntax/` into lpe's RenderMan
+    // dialect, elsewhere: each is to be cleared there.
     &[
         "cli/src/lint/aovs.rs",
         "cli/src/lint/mod.rs",
         "cli/src/lint/partition.rs",
     ],
-    &[
-        "lint/src/read/ini.rs",
-        "lint/src/read/mod.rs",
-        "lint/src/read/rib.rs",
-        "lint/src/read/usd.rs",
-    ],
     &["lpe/src/syntax/mod.rs", "lpe/src/syntax/parser.rs"],
-    &[
-        "render/src/cli/check.rs",
-        "render/src/cli/main.rs",
-        "render/src/cli/render.rs",
-    ],
-    &[
-        "render/src/integrator/contributions.rs",
-        "render/src/integrator/dispatch.rs",
-        "render/src/integrator/mod.rs",
-    ],
-    &[
-        "render/src/output/exr.rs",
-        "render/src/output/mod.rs",
-        "render/src/output/png.rs",
-    ],
-    &["render/src/scene/file.rs", "render/src/scene/mod.rs"],
 ];

@@ -12,7 +12,9 @@ use std::time::{Duration, Instant};
 use lpe::osl::{self, Registered, Symbol};
 use lpe::{AovMask, AovSet, Class, EventKind, Options, Path, VertexType};
 
-use super::{best_times, chunked, row, run_classes, BenchError, Disagreement, Flat, Job, Row};
+use super::harness::{
+    best_times, chunked, classify, row, run_classes, BenchError, Disagreement, Flat, Job, Row,
+};
 
 /// The workload name, as given to `--workload`.
 pub const WORKLOAD: &str = "osl-basic";
@@ -146,7 +148,7 @@ pub fn run(
     let fast_classes = chunked(&osl_paths, |c| classify(&fast, c));
     let nfa_classes = chunked(&osl_paths, |c| classify(&nfa, c));
     let redos_classes = chunked(&osl_paths, |c| classify(&redos, c));
-    let rm_classes = chunked(paths, |c| super::classify(&rm, c));
+    let rm_classes = chunked(paths, |c| classify(&rm, c));
     let mut jobs: Vec<Job<'_>> = vec![
         Box::new(|c| run_classes(&rm, &rm_classes[c])),
         Box::new(|c| run_classes(&fast, &fast_classes[c])),

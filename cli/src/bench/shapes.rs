@@ -9,7 +9,7 @@ use std::hint::black_box;
 use lpe::rng::SplitMix64;
 use lpe::{AovMask, AovSet, Cache, Class, Event, LabelId, Path, PathMatcher, VertexType};
 
-use super::{digest, Flat};
+use super::harness::{digest, Flat};
 
 /// A random transition table with the DFA's shape: `states` rows of `stride` entries
 /// (class count rounded up to a power of two), premultiplied row offsets, as

@@ -2,6 +2,7 @@
 
 use lpe::{Lpe, Path};
 
+use super::answers::answers_in;
 use super::counterexample::Counterexample;
 use super::language::{Language, RenderMan};
 use super::minimize::minimize_in;

@@ -4,7 +4,8 @@
 use glam::Vec3;
 
 use super::contributions::{PathState, Tally};
-use super::{Integrator, Technique};
+use super::settings::Technique;
+use super::setup::Integrator;
 use crate::aov::matcher::RenderMatcher;
 use crate::film::{Contribution, Strategy, ONLY_STRATEGY};
 use crate::geometry::{error_bound, Hit, Ray};
