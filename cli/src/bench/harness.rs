@@ -5,7 +5,7 @@
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
-use lpe::{AovMask, AovSet, Class, PathMatcher};
+use lpe::{AovMask, AovSet, Class};
 use lpe::{Lpe, Path, Vertex};
 use regex_automata::dfa::dense;
 use regex_automata::hybrid;
@@ -22,7 +22,7 @@ pub struct Flat<T> {
 }
 
 impl<T> Flat<T> {
-    fn build<P>(paths: &[P], mut f: impl FnMut(&P, &mut Vec<T>)) -> Flat<T> {
+    pub(super) fn build<P>(paths: &[P], mut f: impl FnMut(&P, &mut Vec<T>)) -> Flat<T> {
         let mut items = Vec::new();
         let mut ends = Vec::with_capacity(paths.len());
         for p in paths {

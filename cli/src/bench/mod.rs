@@ -23,9 +23,8 @@ pub mod workload;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
+use lpe::Path;
 use lpe::{AovMask, AovSet, Options, PathMatcher};
-use lpe::{Path, Vertex};
-use regex_automata::dfa::dense;
 use tabled::builder::Builder;
 use tabled::settings::object::Columns;
 use tabled::settings::{Alignment, Style};

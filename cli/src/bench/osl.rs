@@ -13,7 +13,7 @@ use lpe::osl::{self, Registered, Symbol};
 use lpe::{AovMask, AovSet, Class, EventKind, Options, Path, VertexType};
 
 use super::harness::{
-    best_times, chunked, classify, row, run_classes, BenchError, Disagreement, Flat, Job, Row,
+    best_times, chunked, row, run_classes, BenchError, Disagreement, Flat, Job, Row,
 };
 
 /// The workload name, as given to `--workload`.
@@ -148,7 +148,7 @@ pub fn run(
     let fast_classes = chunked(&osl_paths, |c| classify(&fast, c));
     let nfa_classes = chunked(&osl_paths, |c| classify(&nfa, c));
     let redos_classes = chunked(&osl_paths, |c| classify(&redos, c));
-    let rm_classes = chunked(paths, |c| classify(&rm, c));
+    let rm_classes = chunked(paths, |c| super::harness::classify(&rm, c));
     let mut jobs: Vec<Job<'_>> = vec![
         Box::new(|c| run_classes(&rm, &rm_classes[c])),
         Box::new(|c| run_classes(&fast, &fast_classes[c])),
