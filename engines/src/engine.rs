@@ -14,7 +14,7 @@ use lpe::osl::{self, Registered};
 use lpe::renderman::{Lpe, Path};
 use lpe::DialectName;
 
-use crate::regex::BuildError;
+use crate::regex::error::BuildError;
 
 /// Why an engine produced no matcher. Displayed as `cannot build: <why>`.
 #[derive(Clone, Debug, thiserror::Error)]

@@ -12,8 +12,30 @@ use glam::{Vec2, Vec3};
 use lpe::renderman::{Event, LobeCategory, LobeMap};
 use std::f32::consts::{FRAC_1_PI, PI};
 
-use crate::aov::vertex::Scattering;
 use crate::sampling::{cosine_hemisphere, luminance};
+
+/// How a lobe scatters, as OSL's scattering labels tell lobes apart (RenderMan's events
+/// do not: its `S` lobes are glossy and delta alike).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Scattering {
+    /// OSL `D`.
+    Diffuse,
+    /// OSL `G`: a rough lobe with a density.
+    Glossy,
+    /// OSL `S`: a Dirac delta (mirror reflection, refraction).
+    Delta,
+}
+
+impl Scattering {
+    /// The OSL scattering label.
+    pub fn osl_label(self) -> &'static str {
+        match self {
+            Scattering::Diffuse => "D",
+            Scattering::Glossy => "G",
+            Scattering::Delta => "S",
+        }
+    }
+}
 
 /// The BSDF model of a lobe.
 #[derive(Clone, Copy, Debug, PartialEq)]

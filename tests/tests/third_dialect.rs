@@ -1,5 +1,5 @@
 //! A third dialect, written for this test only, checks the claim of docs/architecture.md:
-//! a new dialect is one implementation of `lpe::Dialect` and nothing below the seam
+//! a new dialect is one implementation of `lpe::DialectName` and nothing below the seam
 //! changes. `Letters` is RenderMan with three letters swapped (`E` for the camera `C`,
 //! `B` for reflection `R`, `P` for transmission `T`, and back), no macros (their names
 //! would be swapped too). It lowers to RenderMan's tree and class alphabet, so its own

@@ -11,9 +11,11 @@ use std::time::{Duration, Instant};
 
 use lpe::osl::{self, Registered, Symbol};
 use lpe::renderman::{EventKind, Path, VertexType};
-use lpe::{AovMask, AovSet, Class, Options};
+use lpe::{AovMask, AovSet, Options};
 
-use super::{best_times, chunked, row, run_classes, BenchError, Disagreement, Flat, Job, Row};
+use super::harness::{
+    best_times, chunked, classify, row, run_classes, BenchError, Disagreement, Job, Row,
+};
 
 /// The workload name, as given to `--workload`.
 pub const WORKLOAD: &str = "osl-basic";
@@ -48,12 +50,6 @@ pub fn vertex(v: &lpe::renderman::Vertex) -> osl::Vertex {
 /// `p` as an OSL path.
 pub fn path(p: &Path) -> osl::Path {
     osl::Path::new(p.vertices().iter().map(vertex).collect())
-}
-
-fn classify(set: &AovSet<lpe::osl::Osl>, paths: &[osl::Path]) -> Flat<Class> {
-    Flat::build(paths, |p, out| {
-        out.extend(p.vertices.iter().map(|v| set.classify(v)))
-    })
 }
 
 /// The OSL reference's answers, one AOV at a time.
@@ -148,7 +144,7 @@ pub fn run(
     let fast_classes = chunked(&osl_paths, |c| classify(&fast, c));
     let nfa_classes = chunked(&osl_paths, |c| classify(&nfa, c));
     let redos_classes = chunked(&osl_paths, |c| classify(&redos, c));
-    let rm_classes = chunked(paths, |c| super::classify(&rm, c));
+    let rm_classes = chunked(paths, |c| classify(&rm, c));
     let mut jobs: Vec<Job<'_>> = vec![
         Box::new(|c| run_classes(&rm, &rm_classes[c])),
         Box::new(|c| run_classes(&fast, &fast_classes[c])),

@@ -10,7 +10,7 @@ use lpe::renderman::{Event, Path, VertexType};
 use lpe::rng::SplitMix64;
 use lpe::{AovMask, AovSet, Cache, Class, LabelId, PathMatcher};
 
-use super::{digest, Flat};
+use super::harness::{digest, Flat};
 
 /// A random transition table with the DFA's shape: `states` rows of `stride` entries
 /// (class count rounded up to a power of two), premultiplied row offsets, as

@@ -16,74 +16,13 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use engines::differential::{run_cases, run_osl_cases, Language, Run, Totals};
+use engines::differential::{run_cases, run_osl_cases, Language, Totals};
+use lpe::DialectName;
 
-use crate::input::{bad_input, select_engines, DialectArgs};
+use crate::input::{bad_input, select_engines};
 
-/// Arguments of `lpe-check diff`.
-#[derive(clap::Args, Debug)]
-#[command(mut_arg("register", |a| a.help(
-    "OSL, with --external and --expr only (generated cases register their own labels): \
-     user labels registered before parsing, `events=U;scatters=Y`"
-)))]
-pub struct Args {
-    /// Number of cases (expressions or AOV sets) to generate.
-    #[arg(long, default_value_t = 10_000)]
-    pub cases: u64,
-    /// Seed of the generator; the same seed gives the same cases.
-    #[arg(long, default_value_t = 0)]
-    pub seed: u64,
-    /// Index of the first case (to regenerate one case of a run).
-    #[arg(long, default_value_t = 0)]
-    pub first: u64,
-    /// Most atoms (OSL: vertex patterns) in one generated expression.
-    #[arg(long, default_value_t = 10)]
-    pub max_size: usize,
-    /// Paths generated per case.
-    #[arg(long, default_value_t = 4)]
-    pub paths: usize,
-    /// Engine to run: `all` (the harness needs at least two).
-    #[arg(long, default_value = "all")]
-    pub engine: String,
-    /// Stop after this many disagreements.
-    #[arg(long, default_value_t = 3)]
-    pub max_failures: usize,
-    /// `--dialect renderman|osl`; `--register` (OSL, with --external --expr only: a
-    /// generated case registers its own labels) for a replayed case.
-    #[command(flatten)]
-    pub lang: DialectArgs,
-    /// An external matcher to test: a command line (split like a shell does) speaking
-    /// the JSON Lines protocol of docs/protocol.md on stdin/stdout.
-    #[arg(long, value_name = "CMD ARGS")]
-    pub external: Option<String>,
-    /// Milliseconds the external matcher has to answer one request.
-    #[arg(long, default_value_t = 2000)]
-    pub timeout_ms: u64,
-    /// Stop after the external process was restarted this many times.
-    #[arg(long, default_value_t = 20)]
-    pub max_restarts: u64,
-    /// With --external: replay one given AOV set (repeat for several AOVs) instead of
-    /// generated cases.
-    #[arg(long, requires = "external")]
-    pub expr: Vec<String>,
-    /// With --external and --expr: the paths to ask about.
-    #[arg(long, requires = "expr")]
-    pub path: Vec<String>,
-}
-
-impl Args {
-    /// The run these arguments ask for.
-    pub fn run(&self) -> Run {
-        Run {
-            cases: self.cases,
-            seed: self.seed,
-            first: self.first,
-            max_size: self.max_size,
-            paths: self.paths,
-            max_failures: self.max_failures,
-        }
-    }
-}
+pub mod args;
+pub use args::Args;
 
 /// Runs `lpe-check diff`.
 pub fn run(args: Args) -> ExitCode {
@@ -107,10 +46,8 @@ pub fn run(args: Args) -> ExitCode {
     let names: Vec<&str> = engines.iter().map(|e| e.name()).collect();
     let start = Instant::now();
     match args.lang.dialect {
-        lpe::DialectName::RenderMan => {
-            report(&args, &names, run_cases(&args.run(), &engines), start)
-        }
-        lpe::DialectName::Osl => report(&args, &names, run_osl_cases(&args.run(), &engines), start),
+        DialectName::RenderMan => report(&args, &names, run_cases(&args.run(), &engines), start),
+        DialectName::Osl => report(&args, &names, run_osl_cases(&args.run(), &engines), start),
     }
 }
 

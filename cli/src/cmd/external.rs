@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 
 use engines::external::{self, Cases, Setup};
 
-use super::diff::Args;
+use super::diff::args::Args;
 use crate::input::{bad_input, select_engines};
 
 /// Runs `diff --external`.

@@ -16,7 +16,7 @@ use engines::differential::Osl;
 use engines::Engine;
 use lpe::osl::{self, Registered};
 
-use super::matching::{answer_paths, batch, verdict_in, Args, LineOutcome, Verdict};
+use super::matching::answer::{answer_paths, batch, verdict_in, Args, LineOutcome, Verdict};
 use crate::input::{bad_input, osl_error};
 
 /// Runs `lpe-check match --dialect osl`.

@@ -2,9 +2,10 @@
 
 use lpe::renderman::{Lpe, Path};
 
+use super::answers::answers_in;
 use super::counterexample::Counterexample;
 use super::language::{Language, RenderMan};
-use super::shrink::minimize_in;
+use super::minimize::minimize_in;
 use crate::engine::Engine;
 use crate::registry;
 
@@ -91,34 +92,6 @@ pub fn check_in<L: Language>(
         }
     }
     Outcome::Agree(agreement)
-}
-
-/// Each engine's answers on one path, or its build error.
-pub fn answers_of(
-    engines: &[&dyn Engine],
-    exprs: &[Lpe],
-    path: &Path,
-) -> Vec<(&'static str, Result<Vec<bool>, String>)> {
-    answers_in(&RenderMan, engines, exprs, path)
-}
-
-/// Each engine's answers on one path of `lang`, or its build error.
-pub fn answers_in<L: Language>(
-    lang: &L,
-    engines: &[&dyn Engine],
-    exprs: &[L::Expr],
-    path: &L::Path,
-) -> Vec<(&'static str, Result<Vec<bool>, String>)> {
-    engines
-        .iter()
-        .map(|e| {
-            let answer = lang
-                .compile(*e, exprs)
-                .map(|m| m.which(path))
-                .map_err(|why| why.to_string());
-            (e.name(), answer)
-        })
-        .collect()
 }
 
 #[cfg(test)]

@@ -7,9 +7,11 @@
 //!   run each engine and compare the answers path by path. Agreement comes back with counts (pairs compared, how
 //!   many matched, which engines could not build); a disagreement comes back as a
 //!   minimized [`Counterexample`].
-//! - [`shrink`]: the minimizer, expression subtrees dropped or simplified, set members
-//!   dropped, and path vertices dropped or unlabelled, for as long as the engines still
-//!   disagree, so what is printed is small enough to read.
+//! - [`minimize`](mod@minimize): the minimizer, which takes [`shrink`]'s steps
+//!   (expression subtrees dropped or simplified, set members dropped, and path vertices
+//!   dropped or unlabelled) for as long as the engines still disagree, so what is printed
+//!   is small enough to read; [`answers`]: each engine's answers on one path, which both
+//!   the comparison and the minimizer ask.
 //! - [`counterexample`]: what a disagreement reports, and how it prints.
 //! - [`cases`]: generated cases (expressions or AOV sets, with paths aimed at them),
 //!   deterministic per seed and index, and a run over a range of them (`lpe-check diff`).
@@ -18,21 +20,23 @@
 //! take part in that comparison; the skip is recorded in [`Agreement::skipped`] and
 //! reported by callers, never hidden.
 
+pub mod answers;
 pub mod cases;
 pub mod check;
 pub mod counterexample;
 pub mod language;
+pub mod minimize;
 pub mod shrink;
 
+pub use answers::{answers_in, answers_of};
 pub use cases::{
     case_rng, generate_case, generate_osl_case, run_cases, run_osl_cases, Case, Run, Totals,
 };
-pub use check::{
-    answers_in, answers_of, check, check_in, check_set, check_with, Agreement, Outcome,
-};
+pub use check::{check, check_in, check_set, check_with, Agreement, Outcome};
 pub use counterexample::Counterexample;
 pub use language::{Language, Osl, RenderMan};
-pub use shrink::{minimize, minimize_by, minimize_in, shrink_expr, shrink_path};
+pub use minimize::{minimize, minimize_by, minimize_in};
+pub use shrink::{shrink_expr, shrink_path};
 
 #[cfg(test)]
 pub(crate) mod tests {

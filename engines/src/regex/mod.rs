@@ -23,6 +23,7 @@
 //! counts as a skip.
 
 pub mod encode;
+pub mod error;
 pub mod osl;
 pub mod translate;
 
@@ -38,31 +39,7 @@ use regex_syntax::hir::{Hir, Look};
 
 use crate::engine::{Engine, EngineError, Matcher};
 use encode::Labels;
-
-/// Why the regex-automata engine cannot build a set. regex-automata's errors are boxed:
-/// they are large, and every `compile` result carries this type.
-#[derive(Clone, Debug, thiserror::Error)]
-pub enum BuildError {
-    /// The set mentions more distinct labels than the label byte can number.
-    #[error("{labels} distinct labels, the byte encoding holds {max}")]
-    TooManyLabels {
-        /// Distinct labels the set mentions.
-        labels: usize,
-        /// Most the encoding holds ([`encode::MAX_LABELS`], or [`osl::MAX_SYMBOLS`]
-        /// for an OSL set).
-        max: usize,
-    },
-    /// The Thompson NFA is over [`SizeLimits::nfa`] (or otherwise unbuildable).
-    #[error("NFA: {0}")]
-    Nfa(Box<thompson::BuildError>),
-    /// The dense DFA failed for a reason other than its size limit (over the limit,
-    /// the eager engine falls back to the lazy DFA).
-    #[error("DFA: {0}")]
-    Dfa(Box<dense::BuildError>),
-    /// The lazy DFA could not be configured.
-    #[error("lazy DFA: {0}")]
-    LazyDfa(Box<hybrid::BuildError>),
-}
+pub use error::BuildError;
 
 /// Limits on what one compile may allocate.
 #[derive(Clone, Copy, Debug)]

@@ -27,8 +27,8 @@ use lpe::osl::{Expr, Lpe, Path, Symbol, SymbolPattern};
 use lpe::renderman::ast::Repetition;
 use regex_syntax::hir::{Hir, Look};
 
+use super::error::BuildError;
 use super::translate::{byte_class, repeat};
-use super::BuildError;
 
 /// The STOP byte.
 pub const STOP: u8 = 0x00;

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use crate::decl::{split_members, Document, Format, Location, PartitionDecl};
 use crate::error::ReadError;
-use crate::read::{as_text, partition_comment, read_bounded, Limits};
+use crate::read::common::{as_text, partition_comment, read_bounded, Limits};
 
 /// Reads an ini file on top of the defaults.
 pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {

@@ -6,7 +6,7 @@ use std::path::Path;
 
 use crate::decl::{split_members, AovDecl, Document, Format, Location, PartitionDecl};
 use crate::error::{ReadError, RibProblem};
-use crate::read::{as_text, partition_comment, Limits};
+use crate::read::common::{as_text, partition_comment, Limits};
 
 /// Reads the LPE channels and partition comments of a RIB file.
 pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {

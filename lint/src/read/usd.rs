@@ -28,7 +28,7 @@ use openusd::{sdf, usd};
 
 use crate::decl::{split_members, AovDecl, Document, Format, Location, PartitionDecl};
 use crate::error::ReadError;
-use crate::read::{as_text, read_bounded, Limits};
+use crate::read::common::{as_text, read_bounded, Limits};
 
 /// Light attributes holding the light's group, per delegate (see the module docs).
 pub const LIGHT_GROUP_ATTRIBUTES: [&str; 4] = [

@@ -290,8 +290,8 @@ impl AovList {
             DialectName::RenderMan => AovList::defaults(scene, parser)?,
             DialectName::Osl => AovList::basic_osl(parser)?,
         };
-        if crate::verify::known::furnace_params(scene).is_some() {
-            for k in 0..=crate::verify::known::FURNACE_BOUNCES {
+        if crate::scene::furnace::furnace_params(scene).is_some() {
+            for k in 0..=crate::scene::furnace::FURNACE_BOUNCES {
                 let source = match (dialect, k) {
                     (DialectName::Osl, 0) => "CO".to_string(),
                     _ => format!("C<RD>{{{k}}}O"),

@@ -14,8 +14,9 @@
 //! regex-automata engine (`oracle`).
 
 use lpe::renderman::{Lpe, Path, Vertex, VertexType};
+use lpe::DialectName;
 
-use super::vertex::SceneClassifier;
+use super::vertex::{SceneClassifier, SceneVertex};
 use std::hash::{Hash, Hasher};
 use std::sync::{Mutex, RwLock};
 
@@ -281,6 +282,17 @@ impl<W: WholePath> PathMatcher for WholePathMatcher<W> {
     fn is_dead(&self, _: RefState) -> bool {
         // Deciding this needs the automaton; "never dead" is sound.
         false
+    }
+}
+
+/// The whole-path engines judge RenderMan expressions.
+impl<W: WholePath> SceneClassifier for WholePathMatcher<W> {
+    fn classify_scene(&self, v: &SceneVertex) -> u16 {
+        self.classify(&v.renderman())
+    }
+
+    fn dialect(&self) -> DialectName {
+        DialectName::RenderMan
     }
 }
 

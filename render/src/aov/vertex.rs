@@ -23,30 +23,7 @@ use lpe::renderman::RenderMan;
 use lpe::renderman::{Event, VertexType};
 use lpe::{AovSet, Dialect, DialectName, PathMatcher};
 
-use super::matcher::{WholePath, WholePathMatcher};
-
-/// How a lobe scatters, as OSL's scattering labels tell lobes apart (RenderMan's events
-/// do not: its `S` lobes are glossy and delta alike).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Scattering {
-    /// OSL `D`.
-    Diffuse,
-    /// OSL `G`: a rough lobe with a density.
-    Glossy,
-    /// OSL `S`: a Dirac delta (mirror reflection, refraction).
-    Delta,
-}
-
-impl Scattering {
-    /// The OSL scattering label.
-    pub fn osl_label(self) -> &'static str {
-        match self {
-            Scattering::Diffuse => "D",
-            Scattering::Glossy => "G",
-            Scattering::Delta => "S",
-        }
-    }
-}
+use crate::material::Scattering;
 
 /// One kind of vertex the renderer produces.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -147,17 +124,6 @@ impl<D: SceneDialect> SceneClassifier for AovSet<D> {
 
     fn dialect(&self) -> DialectName {
         DialectName::of::<D>().expect("the renderer's dialects are lpe's")
-    }
-}
-
-/// The whole-path engines judge RenderMan expressions.
-impl<W: WholePath> SceneClassifier for WholePathMatcher<W> {
-    fn classify_scene(&self, v: &SceneVertex) -> u16 {
-        self.classify(&v.renderman())
-    }
-
-    fn dialect(&self) -> DialectName {
-        DialectName::RenderMan
     }
 }
 

@@ -4,7 +4,7 @@
 //!
 //! Exit status: 0 success, 1 an invariant failed, 2 bad input.
 
-use clap::{Args, Parser, Subcommand};
+use clap::{Parser, Subcommand};
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -16,6 +16,7 @@ mod render;
 mod stress;
 
 use args::{parse_res, positive_u32, positive_usize};
+use render::RenderArgs;
 
 #[derive(Parser)]
 #[command(
@@ -77,50 +78,6 @@ enum Command {
         #[arg(long)]
         quick: bool,
     },
-}
-
-#[derive(Args)]
-pub struct RenderArgs {
-    /// Built-in scene (cornell, still-life, furnace) or a TOML scene file.
-    #[arg(long, default_value = "cornell")]
-    pub scene: String,
-    /// Samples per pixel.
-    #[arg(long, default_value_t = 64, value_parser = positive_u32)]
-    pub spp: u32,
-    /// Image size, WIDTHxHEIGHT.
-    #[arg(long, default_value = "256x256", value_parser = parse_res)]
-    pub res: (usize, usize),
-    /// Worker threads (default: one per core).
-    #[arg(long, value_parser = positive_usize)]
-    pub threads: Option<usize>,
-    #[arg(long, default_value_t = 0)]
-    pub seed: u64,
-    /// An AOV as NAME=LPE (repeatable), e.g. --aov 'key=C.*<L.'"'"'key'"'"'>'.
-    #[arg(long = "aov", value_name = "NAME=LPE")]
-    pub aovs: Vec<String>,
-    /// RenderMan DisplayChannel lines to read AOVs from.
-    #[arg(long, value_name = "FILE")]
-    pub display: Option<PathBuf>,
-    /// A USD stage (.usda/.usdc/.usdz) to take AOVs from: its RenderVars with
-    /// `sourceType = "lpe"`, picked and ordered by the first RenderProduct's `orderedVars`
-    /// when it has them; each becomes an EXR layer named after the RenderVar prim.
-    #[arg(long, value_name = "FILE")]
-    pub usd: Option<PathBuf>,
-    /// rendermn.ini with user macros and lobe mappings (RenderMan dialect only).
-    #[arg(long, value_name = "FILE")]
-    pub ini: Option<PathBuf>,
-    /// The language of every AOV (--aov, --display, --usd): `renderman` or `osl`.
-    /// OSL: no prefixes, macros, lobe numbers or user lobes; vertices are `C`, `R`/`T`
-    /// with `D` (diffuse), `G` (glossy) or `S` (delta), `L`, `O`, labelled with the
-    /// object's lpegroup or the light's group; the defaults are the OSL basic set.
-    #[arg(long, default_value_t = lpe::DialectName::RenderMan)]
-    pub dialect: lpe::DialectName,
-    /// Output directory.
-    #[arg(long, default_value = "out")]
-    pub out: PathBuf,
-    /// Simulate every effect (the generic path), ignoring the effects plan.
-    #[arg(long)]
-    pub all_effects: bool,
 }
 
 fn main() -> ExitCode {

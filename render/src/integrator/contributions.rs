@@ -1,145 +1,31 @@
-//! Contributions: every vertex the scene can produce, classified once for the matcher,
-//! and the hand-over of each contribution (its path's AOV mask) to the film.
+//! Contributions: the hand-over of each contribution (its path's AOV mask) to the film,
+//! from the vertices classified once for the matcher ([`super::setup::Vertices`]).
 
-use lpe::renderman::{LobeCategory, LobeMap, VertexType};
-use lpe::DialectName;
-
-use super::estimator::PathState;
-use super::{Integrator, USER_SIGNALS};
-use crate::aov::matcher::{AovMask, PathMatcher, RenderMatcher};
-use crate::aov::vertex::{Scattering, SceneClassifier, SceneVertex};
+use super::setup::{Integrator, UserSignal};
+use crate::aov::matcher::RenderMatcher;
 use crate::film::{Contribution, SampleValues, Strategy};
 use crate::geometry::Hit;
 use crate::material::Material;
-use crate::scene::Scene;
 use glam::Vec3;
+
+/// The per-path state the integrator carries from vertex to vertex.
+pub(super) struct PathState<S> {
+    pub(super) matcher: S,
+    /// Throughput to reach the last scattering vertex.
+    pub(super) beta: Vec3,
+    /// `f cos / (p_pick pdf) / q` of the last scattering vertex.
+    pub(super) bounce: Vec3,
+    /// The last scattering vertex, for MIS: position and BSDF-strategy density
+    /// (`None` after the camera or a delta lobe: light sampling could not compete).
+    pub(super) prev: Option<(Vec3, f32)>,
+    pub(super) holdout: bool,
+}
 
 /// What one worker accumulates for the camera sample it traces: the sample's values
 /// and the rays cast.
 pub(super) struct Tally<K> {
     pub(super) values: SampleValues<K>,
     pub(super) rays: u64,
-}
-
-/// The user signals a material emits as pseudo paths, with the lobe-map name of each.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(super) enum UserSignal {
-    Albedo,
-    Position,
-    Normal,
-}
-
-impl UserSignal {
-    const ALL: [UserSignal; 3] = [UserSignal::Albedo, UserSignal::Position, UserSignal::Normal];
-
-    fn name(self) -> &'static str {
-        USER_SIGNALS[self as usize]
-    }
-}
-
-/// Every vertex the scene can produce, classified once for the matcher.
-pub(super) struct Vertices<C> {
-    /// `[object][lobe]` -> classes of the lobe's `R` and `T` vertices.
-    pub(super) scatter: Vec<Vec<[C; 2]>>,
-    /// Per light: its `L` vertex (reached by a bounce or a light sample).
-    pub(super) light: Vec<C>,
-    /// Per light: its `O` vertex (its surface seen straight from the camera).
-    pub(super) light_seen: Vec<C>,
-    /// Per object: its glow `O` vertex.
-    pub(super) glow: Vec<C>,
-    /// The camera vertex `C`, every path's first.
-    pub(super) camera: C,
-    /// Per object: the AOVs each user-signal pseudo path `C <R Un> L` matches.
-    pub(super) user: Vec<Vec<(UserSignal, AovMask)>>,
-}
-
-impl<C: Copy> Vertices<C> {
-    pub(super) fn new<M: PathMatcher<Class = C> + SceneClassifier>(
-        scene: &Scene,
-        m: &M,
-        lobes: &LobeMap,
-        labels: bool,
-    ) -> Self {
-        let label = |l: &Option<String>| if labels { l.clone() } else { None };
-        let camera = m.classify_scene(&SceneVertex::Camera);
-        // User lobes are RenderMan's: OSL has no pseudo paths (docs/language.md §18.12).
-        // Their vertices are RenderMan ones, whose class on an OSL set lpe leaves
-        // unspecified, so they are not even asked for.
-        let user_lobes = m.dialect() == DialectName::RenderMan;
-        let mut scatter = Vec::new();
-        let mut glow = Vec::new();
-        let mut user = Vec::new();
-        for o in &scene.objects {
-            let group = label(&o.lpegroup);
-            let mat = o.material.map(|i| &scene.materials[i]);
-            scatter.push(
-                mat.map(|m2| {
-                    m2.lobes
-                        .iter()
-                        .map(|l| {
-                            [VertexType::R, VertexType::T].map(|side| {
-                                m.classify_scene(&SceneVertex::Scatter {
-                                    side,
-                                    event: l.event,
-                                    scattering: l.scattering(),
-                                    group: group.as_deref(),
-                                })
-                            })
-                        })
-                        .collect()
-                })
-                .unwrap_or_default(),
-            );
-            glow.push(m.classify_scene(&SceneVertex::Emissive {
-                group: group.as_deref(),
-            }));
-            let pseudo = |sig: UserSignal| {
-                let ev = lobes.event(LobeCategory::User, sig.name());
-                // Only asked of RenderMan sets, which ignore the scattering.
-                let s = m.step(
-                    m.step(m.start(), camera),
-                    m.classify_scene(&SceneVertex::Scatter {
-                        side: VertexType::R,
-                        event: ev,
-                        scattering: Scattering::Diffuse,
-                        group: group.as_deref(),
-                    }),
-                );
-                m.matches(m.step(s, m.classify_scene(&SceneVertex::Light { group: None })))
-            };
-            user.push(if mat.is_some() && user_lobes {
-                UserSignal::ALL.iter().map(|&s| (s, pseudo(s))).collect()
-            } else {
-                Vec::new()
-            });
-        }
-        let light = scene
-            .lights
-            .iter()
-            .map(|l| {
-                m.classify_scene(&SceneVertex::Light {
-                    group: label(&l.group).as_deref(),
-                })
-            })
-            .collect();
-        let light_seen = scene
-            .lights
-            .iter()
-            .map(|l| {
-                m.classify_scene(&SceneVertex::Emissive {
-                    group: label(&l.group).as_deref(),
-                })
-            })
-            .collect();
-        Vertices {
-            scatter,
-            light,
-            light_seen,
-            glow,
-            camera,
-            user,
-        }
-    }
 }
 
 impl<M: RenderMatcher> Integrator<'_, M> {

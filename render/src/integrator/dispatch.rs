@@ -3,7 +3,8 @@
 use lpe::renderman::LobeMap;
 use lpe::DialectName;
 
-use super::{Integrator, Render, RenderError, Settings};
+use super::settings::{Render, RenderError, Settings};
+use super::setup::Integrator;
 use crate::aov::matcher::{Reference, ReferenceMatcher, RenderMatcher};
 use crate::aov::osl::is_builtin_label;
 use crate::aov::AovList;

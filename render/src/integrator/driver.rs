@@ -6,7 +6,8 @@ use rayon::prelude::*;
 use std::time::Instant;
 
 use super::contributions::Tally;
-use super::{Integrator, Render, RenderError};
+use super::settings::{Render, RenderError};
+use super::setup::Integrator;
 use crate::aov::matcher::RenderMatcher;
 use crate::film::{Film, SampleValues};
 use crate::rng::Rng;

@@ -3,27 +3,15 @@
 
 use glam::Vec3;
 
-use super::contributions::Tally;
-use super::{Integrator, Technique};
+use super::contributions::{PathState, Tally};
+use super::settings::Technique;
+use super::setup::Integrator;
 use crate::aov::matcher::RenderMatcher;
 use crate::film::{Contribution, Strategy, ONLY_STRATEGY};
 use crate::geometry::{error_bound, Hit, Ray};
 use crate::material::Material;
 use crate::rng::Rng;
 use crate::sampling::{max_component, power_heuristic, Frame};
-
-/// The per-path state the integrator carries from vertex to vertex.
-pub(super) struct PathState<S> {
-    pub(super) matcher: S,
-    /// Throughput to reach the last scattering vertex.
-    pub(super) beta: Vec3,
-    /// `f cos / (p_pick pdf) / q` of the last scattering vertex.
-    pub(super) bounce: Vec3,
-    /// The last scattering vertex, for MIS: position and BSDF-strategy density
-    /// (`None` after the camera or a delta lobe: light sampling could not compete).
-    pub(super) prev: Option<(Vec3, f32)>,
-    pub(super) holdout: bool,
-}
 
 impl<M: RenderMatcher> Integrator<'_, M> {
     /// Traces one camera sample through pixel `(x, y)`.

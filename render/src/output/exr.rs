@@ -8,7 +8,7 @@ use exr::prelude::{
 use std::io::Cursor;
 use std::path::Path;
 
-use super::{layer_names, OutputError};
+use super::error::OutputError;
 use crate::aov::AovList;
 use crate::film::Film;
 
@@ -85,4 +85,11 @@ pub fn read_exr(path: &Path) -> Result<Vec<ExrLayer>, OutputError> {
         }
     }
     Ok(layers)
+}
+
+/// Layer names in file order: `None` is beauty.
+pub(crate) fn layer_names(aovs: &AovList) -> Vec<Option<&str>> {
+    std::iter::once(None)
+        .chain(aovs.aovs.iter().map(|a| Some(a.name.as_str())))
+        .collect()
 }

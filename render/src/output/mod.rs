@@ -9,51 +9,19 @@ use std::path::{Path, PathBuf};
 use crate::aov::AovList;
 use crate::film::Film;
 
-/// Why an output could not be written (or read back).
-#[derive(Debug, thiserror::Error)]
-pub enum OutputError {
-    #[error("writing {}: {source}", path.display())]
-    Write {
-        path: PathBuf,
-        source: std::io::Error,
-    },
-    #[error("reading {}: {source}", path.display())]
-    Read {
-        path: PathBuf,
-        source: ::exr::error::Error,
-    },
-    #[error("encoding EXR: {0}")]
-    Exr(#[from] ::exr::error::Error),
-    #[error("encoding PNG: {0}")]
-    Png(#[from] image::ImageError),
-    #[error("report JSON: {0}")]
-    Json(#[from] serde_json::Error),
-    #[error("CSV: {0}")]
-    Csv(#[from] ::csv::Error),
-    #[error("plot {}: {reason}", file.display())]
-    Plot { file: PathBuf, reason: String },
-}
-
-impl OutputError {
-    /// An I/O error writing `path`.
-    pub fn write(path: &Path) -> impl FnOnce(std::io::Error) -> OutputError + '_ {
-        move |source| OutputError::Write {
-            path: path.to_path_buf(),
-            source,
-        }
-    }
-}
-
 /// Writes `bytes` to `path` atomically, naming the file in the error.
 pub fn write_file(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
     atomic_write(path, bytes).map_err(OutputError::write(path))
 }
 
+mod error;
 mod exr;
 mod png;
 mod report;
 pub mod table;
 
+pub use error::OutputError;
+use exr::layer_names;
 pub use exr::{exr_bytes, read_exr, ExrLayer};
 pub use png::{contact_sheet, png_bytes, Tonemap};
 pub use report::{AovEntry, Report, Timing};
@@ -72,13 +40,6 @@ pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         let _ = std::fs::remove_file(&tmp);
     }
     result
-}
-
-/// Layer names in file order: `None` is beauty.
-pub(crate) fn layer_names(aovs: &AovList) -> Vec<Option<&str>> {
-    std::iter::once(None)
-        .chain(aovs.aovs.iter().map(|a| Some(a.name.as_str())))
-        .collect()
 }
 
 /// Writes the EXR, the PNG previews, the contact sheet and the report into `dir`;

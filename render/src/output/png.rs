@@ -4,7 +4,7 @@ use glam::DVec3;
 use image::{ImageFormat, Rgb, RgbImage};
 use std::io::Cursor;
 
-use super::OutputError;
+use super::error::OutputError;
 use crate::film::Film;
 
 /// Display transform shared by all previews: one exposure (from beauty) for every layer

@@ -6,7 +6,9 @@ use lpe::renderman::LobeMap;
 use serde::Deserialize;
 use std::collections::BTreeMap;
 
-use super::{CameraDesc, Object, Scene, SceneProblem, SceneSettings, MAX_DEPTH_LIMIT, MAX_LABELS};
+use super::{
+    CameraDesc, Object, Scene, SceneError, SceneProblem, SceneSettings, MAX_DEPTH_LIMIT, MAX_LABELS,
+};
 use crate::geometry::{Bvh, Shape};
 use crate::light::{Light, LightKind};
 use crate::material::{Lobe, Material, Model};
@@ -395,6 +397,27 @@ impl LightFile {
             },
             other => return Err(SceneProblem::UnknownLightKind { kind: other.into() }),
         })
+    }
+}
+
+impl Scene {
+    /// Parses a TOML scene; `file` names it in errors.
+    pub fn from_toml(text: &str, file: &str, lobes: &LobeMap) -> Result<Scene, SceneError> {
+        let err = |span: Option<std::ops::Range<usize>>, problem: SceneProblem| SceneError {
+            file: file.to_string(),
+            line: span.map(|s| 1 + text[..s.start.min(text.len())].matches('\n').count()),
+            problem,
+        };
+        let desc: SceneFile = toml::from_str(text).map_err(|e| {
+            err(
+                e.span(),
+                SceneProblem::Toml {
+                    message: e.message().to_string(),
+                },
+            )
+        })?;
+        desc.build(lobes)
+            .map_err(|(span, problem)| err(span, problem))
     }
 }
 

@@ -11,6 +11,7 @@ use crate::light::{Light, LightKind};
 use crate::material::Material;
 
 mod file;
+pub mod furnace;
 
 /// A built-in scene: name and TOML source.
 pub const BUILTIN: [(&str, &str); 3] = [
@@ -128,25 +129,6 @@ impl Scene {
             }
             s
         })
-    }
-
-    /// Parses a TOML scene; `file` names it in errors.
-    pub fn from_toml(text: &str, file: &str, lobes: &LobeMap) -> Result<Scene, SceneError> {
-        let err = |span: Option<std::ops::Range<usize>>, problem: SceneProblem| SceneError {
-            file: file.to_string(),
-            line: span.map(|s| 1 + text[..s.start.min(text.len())].matches('\n').count()),
-            problem,
-        };
-        let desc: file::SceneFile = toml::from_str(text).map_err(|e| {
-            err(
-                e.span(),
-                SceneProblem::Toml {
-                    message: e.message().to_string(),
-                },
-            )
-        })?;
-        desc.build(lobes)
-            .map_err(|(span, problem)| err(span, problem))
     }
 }
 

@@ -9,6 +9,8 @@
 //! the fitted log-log slope of MSE against spp (-1 for an unbiased estimator, flattening
 //! to 0 at a bias floor) and the efficiency `1 / (MSE x time)`.
 
+pub use super::matcher_row::MatcherRow;
+pub use super::tables::{Point, Summary};
 use super::{tables, VerifyError};
 use glam::DVec3;
 use lpe::renderman::LobeMap;
@@ -16,104 +18,9 @@ use serde::Serialize;
 use std::path::Path;
 
 use super::known::{cornell, furnace, point_over_plane, sphere_over_plane, Known, SPHERE};
-#[cfg(feature = "engines")]
-use crate::aov::matcher::CheckEngine;
-use crate::aov::matcher::{Reference, WholePathMatcher};
-use crate::aov::AovList;
 use crate::film::{Accumulation, Film};
-use crate::integrator::{Render, RenderError, Settings, Technique};
+use crate::integrator::{Settings, Technique};
 use crate::output::OutputError;
-use crate::scene::Scene;
-
-/// The matchers `converge` times, one row group each, named as the engine registry
-/// names them (`lpe-check --engine`). Each renders the same image (same paths, same AOV
-/// masks); only the cost differs. A new matcher is one arm in [`MatcherRow::render`] and
-/// one entry in [`MatcherRow::ALL`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-pub enum MatcherRow {
-    /// The fast matcher (`lpe::AovSet`) with its DFA, as renders use it (the default).
-    Fast,
-    /// The fast matcher with its DFA budget at 0: the bitset NFA stepped per vertex.
-    Nfa,
-    /// The regex-automata engine (lazy DFA over the encoded path), run on every emitter
-    /// reached. Only with the `engines` feature.
-    #[cfg(feature = "engines")]
-    Oracle,
-    /// `reference::is_match`, memoized per distinct vertex sequence.
-    ReferenceMemo,
-    /// `reference::is_match` on every emitter reached: the verification engine's cost.
-    Reference,
-}
-
-impl MatcherRow {
-    #[cfg(feature = "engines")]
-    pub const ALL: [MatcherRow; 5] = [
-        MatcherRow::Fast,
-        MatcherRow::Nfa,
-        MatcherRow::Oracle,
-        MatcherRow::ReferenceMemo,
-        MatcherRow::Reference,
-    ];
-    #[cfg(not(feature = "engines"))]
-    pub const ALL: [MatcherRow; 4] = [
-        MatcherRow::Fast,
-        MatcherRow::Nfa,
-        MatcherRow::ReferenceMemo,
-        MatcherRow::Reference,
-    ];
-
-    pub fn name(self) -> &'static str {
-        match self {
-            MatcherRow::Fast => "fast",
-            MatcherRow::Nfa => "nfa",
-            #[cfg(feature = "engines")]
-            MatcherRow::Oracle => "oracle",
-            MatcherRow::ReferenceMemo => "reference-memo",
-            MatcherRow::Reference => "reference",
-        }
-    }
-
-    pub fn render(
-        self,
-        scene: &Scene,
-        aovs: &AovList,
-        lobes: &LobeMap,
-        settings: &Settings,
-    ) -> Result<Render, RenderError> {
-        let lpes = aovs.lpes();
-        let fast = |dfa_budget| {
-            let opts = lpe::Options {
-                dfa_budget,
-                ..lpe::Options::default()
-            };
-            lpe::AovSet::compile_with(&aovs.named(), &opts).map_err(|e| RenderError::Compile {
-                reason: e.to_string(),
-            })
-        };
-        use crate::integrator::render_with;
-        let quiet = &mut |_: &crate::aov::plan::Plan| {};
-        match self {
-            MatcherRow::Fast => {
-                let set = fast(lpe::Options::default().dfa_budget)?;
-                render_with(&set, scene, aovs, lobes, settings, quiet)
-            }
-            MatcherRow::Nfa => render_with(&fast(0)?, scene, aovs, lobes, settings, quiet),
-            #[cfg(feature = "engines")]
-            MatcherRow::Oracle => {
-                let m = WholePathMatcher::direct(CheckEngine::new(&engines::regex::LAZY, &lpes)?);
-                render_with(&m, scene, aovs, lobes, settings, quiet)
-            }
-            MatcherRow::ReferenceMemo => {
-                let m = WholePathMatcher::memoized(Reference::new(&lpes)?);
-                render_with(&m, scene, aovs, lobes, settings, quiet)
-            }
-            MatcherRow::Reference => {
-                let m = WholePathMatcher::direct(Reference::new(&lpes)?);
-                render_with(&m, scene, aovs, lobes, settings, quiet)
-            }
-        }
-    }
-}
 
 /// One way of rendering: a row group of the table.
 #[derive(Clone, Debug, Serialize)]
@@ -198,20 +105,6 @@ pub fn layer_error(film: &Film, layer: usize, reference: &[DVec3]) -> LayerError
         mse: mse / n,
         rel_mse: rel / n,
     }
-}
-
-/// One measurement: a variant on a scene at one spp, one layer.
-#[derive(Clone, Debug, Serialize)]
-pub struct Point {
-    pub scene: String,
-    pub variant: String,
-    pub layer: String,
-    pub spp: u32,
-    pub seconds: f64,
-    pub mse: f64,
-    pub rel_mse: f64,
-    /// Largest relative error of the basic-AOV partition vs beauty (cornell only).
-    pub partition_error: Option<f64>,
 }
 
 /// Least-squares slope of `ln y` against `ln x` over points with `y > 0`; `None` with
@@ -336,18 +229,6 @@ pub fn run_variant(
         spp *= 2;
     }
     Ok(out)
-}
-
-/// One row of the summary: a (scene, variant, layer) series at its largest spp.
-#[derive(Clone, Debug, Serialize)]
-pub struct Summary {
-    /// The series' measurement at its largest spp.
-    #[serde(flatten)]
-    pub last: Point,
-    /// Slope of ln MSE vs ln spp (None: MSE is 0, the layer is exact).
-    pub slope: Option<f64>,
-    /// `1 / (MSE x seconds)` at the largest spp.
-    pub efficiency: f64,
 }
 
 pub fn summarize(points: &[Point]) -> Vec<Summary> {

@@ -5,11 +5,11 @@
 use glam::DVec3;
 use serde::Serialize;
 
-use super::known::{furnace_params, FURNACE_BOUNCES};
 use super::stats::{critical_z, mean_and_se, sidak};
 use crate::aov::{AovList, Partition};
 use crate::film::Film;
 use crate::integrator::Render;
+use crate::scene::furnace::{furnace_params, FURNACE_BOUNCES};
 use crate::scene::Scene;
 use lpe::DialectName;
 

@@ -8,30 +8,12 @@ use glam::{DVec3, Vec3};
 use lpe::renderman::{LobeMap, Parser};
 use std::path::Path;
 
-use super::converge::MatcherRow;
+use super::matcher_row::MatcherRow;
 use crate::aov::AovList;
 use crate::camera::Camera;
 use crate::integrator::Settings;
+pub use crate::scene::furnace::{furnace_params, FURNACE_BOUNCES};
 use crate::scene::Scene;
-
-/// The furnace's parameters `(albedo a, emission Le)` if `scene` is a furnace: one
-/// material, one Lambert lobe, grey albedo and glow.
-pub fn furnace_params(scene: &Scene) -> Option<(f64, f64)> {
-    if scene.name != "furnace" || scene.materials.len() != 1 {
-        return None;
-    }
-    let m = &scene.materials[0];
-    let [lobe] = m.lobes.as_slice() else {
-        return None;
-    };
-    let crate::material::Model::Lambert { albedo } = lobe.model else {
-        return None;
-    };
-    Some((albedo.x as f64, m.glow.x as f64))
-}
-
-/// Diffuse bounce counts the furnace AOVs cover.
-pub const FURNACE_BOUNCES: u32 = 4;
 
 /// A scene with a reference value for every pixel of beauty and of each AOV.
 pub struct Known {

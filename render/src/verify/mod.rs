@@ -6,6 +6,7 @@ pub mod chi2;
 pub mod converge;
 pub mod invariants;
 pub mod known;
+pub mod matcher_row;
 pub mod plot;
 pub mod stats;
 pub mod stress;

@@ -3,11 +3,36 @@
 
 use serde::Serialize;
 
-use super::converge::{Point, Summary};
 use super::stress::Row;
 use crate::film::Accumulation;
 use crate::output::table::markdown;
 use crate::output::OutputError;
+
+/// One measurement: a variant on a scene at one spp, one layer.
+#[derive(Clone, Debug, Serialize)]
+pub struct Point {
+    pub scene: String,
+    pub variant: String,
+    pub layer: String,
+    pub spp: u32,
+    pub seconds: f64,
+    pub mse: f64,
+    pub rel_mse: f64,
+    /// Largest relative error of the basic-AOV partition vs beauty (cornell only).
+    pub partition_error: Option<f64>,
+}
+
+/// One row of the summary: a (scene, variant, layer) series at its largest spp.
+#[derive(Clone, Debug, Serialize)]
+pub struct Summary {
+    /// The series' measurement at its largest spp.
+    #[serde(flatten)]
+    pub last: Point,
+    /// Slope of ln MSE vs ln spp (None: MSE is 0, the layer is exact).
+    pub slope: Option<f64>,
+    /// `1 / (MSE x seconds)` at the largest spp.
+    pub efficiency: f64,
+}
 
 /// One line of `converge.csv`: numbers formatted as before (seconds to the microsecond,
 /// errors in scientific notation), an empty cell when there is no partition.

@@ -1,124 +1,12 @@
-//! Greedy minimization of a disagreement: simpler expressions, fewer set members,
-//! shorter and less labelled paths, for as long as the engines still disagree.
+//! One-step simplifications of expressions, AOV sets and paths: what the minimizer
+//! ([`super::minimize`](mod@super::minimize)) tries, for as long as the engines still
+//! disagree.
 
 use lpe::algebra::{Algebra, SetExpr};
 use lpe::renderman::ast::{Atom, EventPos, Expr, Item, LabelPos, Repetition, TypePos};
 use lpe::renderman::{Lpe, Path};
 
-use super::check::answers_in;
-use super::language::{Language, RenderMan};
-use crate::engine::Engine;
-
 pub mod osl;
-
-/// Whether at least two engines that build give different answers on `path`.
-fn disagrees<L: Language>(
-    lang: &L,
-    engines: &[&dyn Engine],
-    exprs: &[L::Expr],
-    path: &L::Path,
-) -> bool {
-    let answers: Vec<Vec<bool>> = answers_in(lang, engines, exprs, path)
-        .into_iter()
-        .filter_map(|(_, a)| a.ok())
-        .collect();
-    answers.windows(2).any(|w| w[0] != w[1])
-}
-
-/// Most candidate inputs the minimizer tries (each compiles every engine once).
-const MAX_SHRINK_TRIES: usize = 20_000;
-
-/// Greedy minimization of a RenderMan disagreement ([`minimize_in`]).
-pub fn minimize(engines: &[&dyn Engine], exprs: Vec<Lpe>, path: Path) -> (Vec<Lpe>, Path) {
-    minimize_in(&RenderMan, engines, exprs, path)
-}
-
-/// Greedy minimization: take the first simpler input on which the engines still
-/// disagree, and start again from it, until no simpler input disagrees.
-pub fn minimize_in<L: Language>(
-    lang: &L,
-    engines: &[&dyn Engine],
-    exprs: Vec<L::Expr>,
-    path: L::Path,
-) -> (Vec<L::Expr>, L::Path) {
-    minimize_by(lang, exprs, path, |exprs, path| {
-        disagrees(lang, engines, exprs, path)
-    })
-}
-
-/// Greedy minimization against any failure test: take the first simpler input (fewer
-/// expressions, a simpler expression, a shorter or less labelled path, or an expression
-/// and a path step together) on which `fails` still holds, and start again from it,
-/// until no simpler input fails. `lpe-check diff --external` passes a test that re-asks
-/// the external process.
-pub fn minimize_by<L: Language>(
-    lang: &L,
-    mut exprs: Vec<L::Expr>,
-    mut path: L::Path,
-    mut fails: impl FnMut(&[L::Expr], &L::Path) -> bool,
-) -> (Vec<L::Expr>, L::Path) {
-    let mut tries = 0;
-    'outer: loop {
-        // Fewer expressions first: a set of one is easiest to read.
-        if exprs.len() > 1 {
-            for i in 0..exprs.len() {
-                let mut fewer = exprs.clone();
-                fewer.remove(i);
-                tries += 1;
-                if fails(&fewer, &path) {
-                    exprs = fewer;
-                    continue 'outer;
-                }
-            }
-        }
-        for i in 0..exprs.len() {
-            for smaller in lang.shrink_expr(&exprs[i]) {
-                if tries >= MAX_SHRINK_TRIES {
-                    break 'outer;
-                }
-                tries += 1;
-                let mut candidate = exprs.clone();
-                candidate[i] = smaller;
-                if fails(&candidate, &path) {
-                    exprs = candidate;
-                    continue 'outer;
-                }
-            }
-        }
-        let smaller_paths = lang.shrink_path(&path);
-        for smaller in &smaller_paths {
-            if tries >= MAX_SHRINK_TRIES {
-                break 'outer;
-            }
-            tries += 1;
-            if fails(&exprs, smaller) {
-                path = smaller.clone();
-                continue 'outer;
-            }
-        }
-        // Joint steps: dropping an atom often needs the vertex it matched dropped too
-        // (`C.'a'L` on `C RD RD'b' L` -> `C'a'L` on `C RD'b' L`).
-        for i in 0..exprs.len() {
-            for smaller in lang.shrink_expr(&exprs[i]) {
-                for smaller_path in &smaller_paths {
-                    if tries >= MAX_SHRINK_TRIES {
-                        break 'outer;
-                    }
-                    tries += 1;
-                    let mut candidate = exprs.clone();
-                    candidate[i] = smaller.clone();
-                    if fails(&candidate, smaller_path) {
-                        exprs = candidate;
-                        path = smaller_path.clone();
-                        continue 'outer;
-                    }
-                }
-            }
-        }
-        break;
-    }
-    (exprs, path)
-}
 
 /// Simpler expressions, without prefixes: for set algebra, each operand alone first (a
 /// disagreement that survives without the algebra is easier to read), then each operand
@@ -336,44 +224,6 @@ fn shrink_item(i: &Item) -> Vec<Item> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::adapters::Reference;
-    use crate::differential::tests::LabelBlind;
-    use crate::differential::{check_with, Outcome};
-
-    #[test]
-    fn a_planted_bug_is_found_and_minimized() {
-        let engines: Vec<&dyn Engine> = vec![&Reference, &LabelBlind];
-        let e = lpe::renderman::parse("unoccluded;C(<RD>|<TS>)*'floor'(.|U2)+[<L.>O]").unwrap();
-        let p: Path = "C RD TS RD'wall' RS1 TS2 L".parse().unwrap();
-        let Outcome::Disagree(c) = check_with(&engines, std::slice::from_ref(&e), &[p]) else {
-            panic!("the planted bug went unnoticed");
-        };
-        // Down to a label item against a vertex with another label, between the
-        // camera and the emitter (the joint expression+path steps drop the `.`s).
-        assert_eq!(c.exprs.len(), 1);
-        assert_eq!(c.exprs[0].to_string(), "C'floor'<L.>");
-        assert_eq!(c.path.len(), 3, "{}", c.path);
-        assert_ne!(c.path.vertices()[1].label(), Some("floor"));
-        let text = c.to_string();
-        assert!(text.contains("reference: no-match"), "{text}");
-        assert!(text.contains("label-blind: match"), "{text}");
-    }
-
-    #[test]
-    fn sets_shrink_to_the_member_that_disagrees() {
-        let engines: Vec<&dyn Engine> = vec![&Reference, &LabelBlind];
-        let exprs: Vec<Lpe> = ["C<RD>[<L.>O]", "C'key'L", "CD+L"]
-            .iter()
-            .map(|s| lpe::renderman::parse(s).unwrap())
-            .collect();
-        let p: Path = "C RD'fill' L".parse().unwrap();
-        let Outcome::Disagree(c) = check_with(&engines, &exprs, &[p]) else {
-            panic!("the planted bug went unnoticed");
-        };
-        assert_eq!(c.exprs.len(), 1);
-        assert_eq!(c.exprs[0].to_string(), "C'key'L");
-        assert_eq!(c.path.to_string(), "C RD1 L");
-    }
 
     /// What every step of [`shrink_expr`] lowers, compared lexicographically: nodes,
     /// then item slots (a class counts one more than its items, so `[x]` -> `x` is a
