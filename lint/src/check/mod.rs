@@ -1,14 +1,17 @@
-//! The checks of `lpe-check lint` on the declarations `lpe-lint` reads, and their text
-//! and JSON reports.
+//! The checks of `lpe-check lint` on the declarations [`crate::read`] reads, and their
+//! text and JSON reports.
 //!
-//! Per file: parse errors ([`aovs`]), AOVs that can match no path and AOVs equivalent to
-//! an earlier one ([`aovs`]), group labels no light or object of the stage carries and
-//! numbered lobes no mapping feeds ([`labels`], [`aovs`]), and the declared partitions
-//! ([`partition`]), each a [`Finding`]; [`text`] and [`json`] print them.
+//! [`inputs`] reads the files in the command's order. Per file: parse errors
+//! ([`aovs`]), AOVs that can match no path and AOVs equivalent to an earlier one
+//! ([`aovs`]), group labels no light or object of the stage carries and numbered lobes
+//! no mapping feeds ([`labels`], [`aovs`]), and the declared partitions ([`partition`]),
+//! each a [`Finding`]; [`text`] and [`json`] print them. [`dialect`] is what the checks
+//! ask of the expression language (RenderMan's or OSL's), so they are written once.
 
 pub mod aovs;
 pub mod dialect;
 pub mod finding;
+pub mod inputs;
 pub mod json;
 pub mod labels;
 pub mod partition;
@@ -17,11 +20,11 @@ pub mod text;
 pub use finding::{Finding, Kind};
 
 use lpe::Lpe;
-use lpe_lint::{AovDecl, Document, PartitionDecl};
 
 use dialect::Dialect;
 
 use crate::witness::Disagreement;
+use crate::{AovDecl, Document, PartitionDecl};
 
 /// One AOV as linted: its declaration and, when it parsed, its expression.
 #[derive(Clone, Debug)]

@@ -1,7 +1,7 @@
 //! Per-AOV checks of one file: parse errors, emptiness, equivalence, group labels, lobes.
 
+use crate::Document;
 use lpe::LobeCategory;
-use lpe_lint::Document;
 
 use super::dialect::Dialect;
 use super::finding::{Finding, Kind};
