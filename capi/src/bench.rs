@@ -49,7 +49,7 @@ pub extern "C" fn lpe_bench_rust_loop(
     let mut sum = 0u64;
     let t = Instant::now();
     for _ in 0..reps {
-        // The same loop as the Rust row of `cargo bench -p lpe-capi --bench step`.
+        // The same loop as the Rust row of `cargo bench -p lpe-bench --bench step`.
         for path in black_box(&paths) {
             let mut s = rust.start();
             for &c in path {

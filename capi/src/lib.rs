@@ -24,7 +24,8 @@
 //! failed compile), [`set`] (compile, names, warnings, free), [`classify`] (vertices
 //! to classes), [`step`] (states: start, step, matches, is_dead; caches), [`view`] (the
 //! step view the header's inline `lpe_view_step` reads), [`bench`] (a benchmark-only
-//! export, not in the header).
+//! export, not in the header, for `examples/c/step_bench.c`; the criterion step bench
+//! is `lpe-bench`'s, `cargo bench -p lpe-bench --bench step`).
 
 #![allow(non_camel_case_types)]
 // Every pointer argument is checked for null and documented in the header; marking the

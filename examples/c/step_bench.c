@@ -1,5 +1,5 @@
 /* A step through the C ABI against a step from Rust, same set, same class sequences, same
- * run. Rows, each stepping the four paths of `cargo bench -p lpe-capi --bench step`
+ * run. Rows, each stepping the four paths of `cargo bench -p lpe-bench --bench step`
  * (30 vertices, the basic AOVs, classes computed beforehand) from the start state and
  * summing the final state ids:
  *   rust         AovSet::step_class in a Rust loop inside the library

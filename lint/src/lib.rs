@@ -13,18 +13,23 @@
 //! Every reader has a documented size limit ([`read::Limits`]) and turns bad bytes into a
 //! [`ReadError`] with the file and, where there is one, the line; none panics.
 //!
-//! Modules: [`decl`] (what a file declares: AOVs, partitions, groups, lobe mappings),
-//! [`read`] (the readers, one per format, and their limits), [`error`] (why a file could
-//! not be read).
+//! The checks on the declarations are [`check`]'s (parse errors, emptiness, equivalence,
+//! group labels, lobes, partitions) with its text and JSON reports; `lpe-check lint`
+//! parses its arguments, calls them and prints. Every partition witness is re-checked
+//! with the reference matcher first ([`witness`], which `lpe-check equiv` and
+//! `partition` use too). `lpe-render --usd` takes its AOVs from [`read::usd`].
 //!
-//! The checks on the declarations (emptiness, equivalence, groups, partitions) are in
-//! `lpe-check lint`; `lpe-render --usd` takes its AOVs from [`read::usd`].
+//! Modules: [`decl`] (the document model), [`error`] (read errors), [`read`] (the three
+//! readers and their limits), [`check`] (the lint checks and reports), [`witness`]
+//! (the reference re-check).
 
 #![warn(missing_docs)]
 
+pub mod check;
 pub mod decl;
 pub mod error;
 pub mod read;
+pub mod witness;
 
 pub use decl::{AovDecl, Document, Format, Location, PartitionDecl};
 pub use error::{ReadError, RibProblem};

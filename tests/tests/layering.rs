@@ -899,12 +899,4 @@ fn no_file_imports_itself_through_others() {
 
 /// Loops that stand today and are to be cleared, each as its files in sorted order; the
 /// test fails on any other loop, and on an entry here that is no loop any more.
-const NOT_YET_CLEARED: &[&[&str]] = &[
-    // A parent module and its children, each using the other's items. `cli/src/lint/`
-    // is being moved into the `lint` crate: to be cleared there.
-    &[
-        "cli/src/lint/aovs.rs",
-        "cli/src/lint/mod.rs",
-        "cli/src/lint/partition.rs",
-    ],
-];
+const NOT_YET_CLEARED: &[&[&str]] = &[];

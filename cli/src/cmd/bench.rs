@@ -1,10 +1,10 @@
 //! `lpe-check bench`: the matcher benchmark as a Markdown table (see
-//! [`crate::bench`]). Build with `--release`; a debug build measures the debug build.
+//! [`lpe_bench`]: this module parses the arguments, runs it and prints). Build with `--release`; a debug build measures the debug build.
 //! Exits 1 if any engine disagrees with the reference on the checked paths.
 
 use std::process::ExitCode;
 
-use crate::bench::{self, Config};
+use lpe_bench::{self as bench, Config};
 
 /// Arguments of `lpe-check bench`.
 #[derive(clap::Args, Debug)]

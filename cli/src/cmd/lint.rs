@@ -11,17 +11,20 @@
 //! error: their macros and lobe mappings are RenderMan's).
 //! Exit 0 clean, 1 findings, 2 an unreadable file or bad argument, 3 a witness the
 //! reference matcher refused. docs/lint.md has the JSON schema.
+//!
+//! The reading, the checks and both reports are [`lpe_lint::check`]'s; this module
+//! parses the arguments, prints and gives the exit code.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 
-use lpe_lint::read::{self, Limits};
-use lpe_lint::{Document, Format, Location, PartitionDecl};
+use lpe_lint::check::dialect::{Dialect, Osl, RenderMan};
+use lpe_lint::check::json::FileStatus;
+use lpe_lint::check::{self, inputs, json, text};
+use lpe_lint::read::Limits;
+use lpe_lint::{Document, PartitionDecl};
 
 use crate::input::{bad_input, DialectArgs};
-use crate::lint::dialect::{Dialect, Osl, RenderMan};
-use crate::lint::json::FileStatus;
-use crate::lint::{self, json, text};
 use crate::witness::DISAGREE;
 
 /// Output format.
@@ -64,15 +67,7 @@ pub fn run(args: Args) -> ExitCode {
         Err(e) => return bad_input(format!("error: {e}")),
     };
     let limits = Limits::default();
-    let mut config = lpe::renderman::Config::default();
-    let mut statuses = Vec::new();
-    let mut docs = Vec::new();
-    let (inis, others): (Vec<&Path>, Vec<&Path>) = args
-        .ini
-        .iter()
-        .map(PathBuf::as_path)
-        .chain(args.files.iter().map(PathBuf::as_path))
-        .partition(|p| read::format_of(p) == Some(Format::Ini));
+    let (inis, others) = inputs::split(args.ini.as_deref(), &args.files);
     // An ini file holds RenderMan macros and lobe mappings (and RenderMan AOVs'
     // partitions): nothing an OSL expression can use.
     let registered = if osl {
@@ -87,42 +82,22 @@ pub fn run(args: Args) -> ExitCode {
     } else {
         None
     };
-    for path in inis {
-        let read = read::ini::read_into(path, &limits, &mut config);
-        record(path, read, &mut statuses, &mut docs);
-    }
-    for path in others {
-        record(
-            path,
-            read::read_file(path, &limits),
-            &mut statuses,
-            &mut docs,
-        );
-    }
-    let extra: Vec<PartitionDecl> = args
-        .partition
-        .iter()
-        .enumerate()
-        .map(|(i, list)| PartitionDecl {
-            name: format!("--partition #{}", i + 1),
-            members: lpe_lint::decl::split_members(list),
-            location: Location::Line { line: 0, column: 0 },
-        })
-        .collect();
+    let read = inputs::read_all(&inis, &others, &limits);
+    let extra = inputs::command_line_partitions(&args.partition);
     let ctx = Run {
-        docs: &docs,
+        docs: &read.docs,
         extra: &extra,
-        statuses: &statuses,
+        statuses: &read.statuses,
         universe: args.universe.as_deref(),
         format: args.format,
     };
     match registered {
         Some(registered) => ctx.lint(&Osl { registered }, lpe::osl::UNIVERSE),
         None => {
-            let parser = config.parser();
+            let parser = read.config.parser();
             let dialect = RenderMan {
                 parser: &parser,
-                lobes: &config.lobes,
+                lobes: &read.config.lobes,
             };
             ctx.lint(
                 &dialect,
@@ -147,7 +122,7 @@ impl Run<'_> {
             Ok(u) => u,
             Err(e) => return bad_input(format!("error: --universe: {}", e.message)),
         };
-        let out = match lint::lint(self.docs, dialect, &universe, self.extra) {
+        let out = match check::lint(self.docs, dialect, &universe, self.extra) {
             Ok(out) => out,
             Err(e) => {
                 eprintln!("{e}");
@@ -175,21 +150,5 @@ impl Run<'_> {
             u8::from(!out.findings.is_empty())
         };
         ExitCode::from(code)
-    }
-}
-
-fn record(
-    path: &Path,
-    read: Result<Document, lpe_lint::ReadError>,
-    statuses: &mut Vec<FileStatus>,
-    docs: &mut Vec<Document>,
-) {
-    statuses.push(FileStatus {
-        file: path.display().to_string(),
-        format: read::format_of(path).map(Format::name),
-        error: read.as_ref().err().map(ToString::to_string),
-    });
-    if let Ok(doc) = read {
-        docs.push(doc);
     }
 }

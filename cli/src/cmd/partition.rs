@@ -8,19 +8,21 @@
 //! none of these (exit 0), else exit 1. A gap comes with the remainder AOV that closes
 //! it, the universe minus every AOV in set algebra (`C.*[<L.>O] - (a|b|c)`), which
 //! parses as printed. Witnesses are re-checked with the reference
-//! matcher before printing ([`crate::witness`]); a failed re-check exits 3; errors exit 2.
+//! matcher before printing ([`report`], in `lpe-lint`); a failed re-check exits 3; errors
+//! exit 2.
 //!
 //! `--dialect osl [--register …]` checks OSL AOVs (default universe
 //! `C<[RT][DGS]>*[LO]`, which is also the domain every OSL search runs over).
 
 use std::process::ExitCode;
 
-use lpe::analysis::{self, Partition};
+use lpe::analysis;
 use lpe::renderman::Lpe;
 use lpe::{osl, AovSet, Options};
+use lpe_lint::check::partition::report;
 
 use crate::input::{bad_input, load_parser, osl_error, DialectArgs, InputError};
-use crate::witness::{self, Checked, Disagreement, Expect};
+use crate::witness;
 
 /// Arguments of `lpe-check partition`.
 #[derive(clap::Args, Debug)]
@@ -122,170 +124,4 @@ fn named<E, X>(
             }
         })
         .collect()
-}
-
-/// The text printed for a partition check, after re-checking every witness.
-pub fn report<E: Checked>(
-    aovs: &[(String, E)],
-    universe: &E,
-    p: &Partition<E::Path>,
-) -> Result<String, Disagreement> {
-    let uname = format!("universe {universe}");
-    let mut out = format!("partition of {universe} by {} AOVs\n", aovs.len());
-    for (i, j, path) in &p.overlaps {
-        let (a, b) = (&aovs[*i], &aovs[*j]);
-        witness::recheck(
-            path,
-            &[
-                Expect {
-                    name: &uname,
-                    lpe: universe,
-                    matches: true,
-                },
-                Expect {
-                    name: &a.0,
-                    lpe: &a.1,
-                    matches: true,
-                },
-                Expect {
-                    name: &b.0,
-                    lpe: &b.1,
-                    matches: true,
-                },
-            ],
-        )?;
-        out.push_str(&format!("overlap: {} & {}: {path}\n", a.0, b.0));
-    }
-    if let Some(path) = &p.gap {
-        let mut expects = vec![Expect {
-            name: &uname,
-            lpe: universe,
-            matches: true,
-        }];
-        expects.extend(aovs.iter().map(|(n, l)| Expect {
-            name: n,
-            lpe: l,
-            matches: false,
-        }));
-        witness::recheck(path, &expects)?;
-        out.push_str(&format!("gap: {path}\n"));
-        let rest = E::remainder(aovs, universe);
-        witness::recheck(
-            path,
-            &[Expect {
-                name: "remainder",
-                lpe: &rest,
-                matches: true,
-            }],
-        )?;
-        out.push_str(&format!("remainder: {rest}\n"));
-    }
-    for (i, path) in &p.outside {
-        let a = &aovs[*i];
-        witness::recheck(
-            path,
-            &[
-                Expect {
-                    name: &uname,
-                    lpe: universe,
-                    matches: false,
-                },
-                Expect {
-                    name: &a.0,
-                    lpe: &a.1,
-                    matches: true,
-                },
-            ],
-        )?;
-        out.push_str(&format!("outside: {}: {path}\n", a.0));
-    }
-    if p.is_clean() {
-        out.push_str("clean partition\n");
-    }
-    Ok(out)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use lpe::renderman::macros::BASIC;
-
-    fn basic() -> Named {
-        BASIC
-            .iter()
-            .map(|(n, s)| (n.to_string(), lpe::renderman::parse(s).unwrap()))
-            .collect()
-    }
-
-    #[test]
-    fn basic_set_is_clean() {
-        let u = analysis::default_universe::<lpe::renderman::RenderMan>(
-            &lpe::renderman::Parser::default(),
-        );
-        let p = analysis::partition(&basic(), &u, &lpe::renderman::Parser::default()).unwrap();
-        let text = report(&basic(), &u, &p).unwrap();
-        assert!(text.ends_with("clean partition\n"), "{text}");
-    }
-
-    #[test]
-    fn caustics_overlap_is_printed_with_its_witness() {
-        let mut aovs = basic();
-        aovs.push((
-            "caustics".into(),
-            lpe::renderman::parse("caustics").unwrap(),
-        ));
-        let u = analysis::default_universe::<lpe::renderman::RenderMan>(
-            &lpe::renderman::Parser::default(),
-        );
-        let p = analysis::partition(&aovs, &u, &lpe::renderman::Parser::default()).unwrap();
-        let text = report(&aovs, &u, &p).unwrap();
-        assert!(
-            text.contains("overlap: indirectDiffuse & caustics: C RD"),
-            "{text}"
-        );
-        assert!(!text.contains("clean"), "{text}");
-    }
-
-    #[test]
-    fn a_wrong_witness_is_refused_not_printed() {
-        let aovs = basic();
-        let u = analysis::default_universe::<lpe::renderman::RenderMan>(
-            &lpe::renderman::Parser::default(),
-        );
-        // `C RD L` is directDiffuse alone: not a gap.
-        let forged = Partition {
-            overlaps: Vec::new(),
-            gap: Some("C RD L".parse().unwrap()),
-            outside: Vec::new(),
-        };
-        let err = report(&aovs, &u, &forged).unwrap_err().to_string();
-        assert!(err.contains("directDiffuse"), "{err}");
-    }
-
-    #[test]
-    fn a_gap_comes_with_a_remainder_that_parses_and_closes_it() {
-        let mut aovs = basic();
-        aovs.retain(|(n, _)| n != "subsurface" && n != "emissive");
-        let u = analysis::default_universe::<lpe::renderman::RenderMan>(
-            &lpe::renderman::Parser::default(),
-        );
-        let p = analysis::partition(&aovs, &u, &lpe::renderman::Parser::default()).unwrap();
-        let text = report(&aovs, &u, &p).unwrap();
-        let line = text
-            .lines()
-            .find_map(|l| l.strip_prefix("remainder: "))
-            .unwrap_or_else(|| panic!("{text}"));
-        assert!(line.starts_with("C.*[<L.>O] - ((C<RD>[<L.>O])|"), "{line}");
-        // Added as an AOV, the printed text closes the gap (and overlaps nothing).
-        aovs.push(("rest".into(), lpe::renderman::parse(line).unwrap()));
-        let closed = analysis::partition(&aovs, &u, &lpe::renderman::Parser::default()).unwrap();
-        assert!(closed.is_clean(), "{closed:?}");
-        // It covers exactly the two AOVs left out (their union, within the universe).
-        let union = "C.*[<L.>O] - (C.*[<L.>O] - subsurface - emissive)";
-        let c = analysis::compare(
-            &lpe::renderman::parse(line).unwrap(),
-            &lpe::renderman::parse(union).unwrap(),
-        );
-        assert!(c.unwrap().equivalent(), "{line}");
-    }
 }

@@ -1,5 +1,5 @@
 //! A step through the C ABI against a step from Rust, same set, same classes, same run:
-//! `cargo bench -p lpe-capi --bench step`. The C-ABI row calls `lpe_step` through a
+//! `cargo bench -p lpe-bench --bench step`. The C-ABI row calls `lpe_step` through a
 //! function pointer hidden from the optimizer, as a C caller's call would be. The
 //! header's inline step (`lpe_view_step`) is C, so its row is in `examples/c/step_bench.c`,
 //! beside a Rust row run in the same process.

@@ -1,62 +1,30 @@
-//! The checks of `lpe-check lint` on the declarations `lpe-lint` reads, and their text
-//! and JSON reports.
+//! The checks of `lpe-check lint` on the declarations [`crate::read`] reads, and their
+//! text and JSON reports.
 //!
-//! Per file: parse errors ([`aovs`]), AOVs that can match no path and AOVs equivalent to
-//! an earlier one ([`aovs`]), group labels no light or object of the stage carries and
-//! numbered lobes no mapping feeds ([`labels`], [`aovs`]), and the declared partitions
-//! ([`partition`]), each a [`Finding`]; [`text`] and [`json`] print them.
+//! [`inputs`] reads the files in the command's order. Per file: parse errors
+//! ([`aovs`]), AOVs that can match no path and AOVs equivalent to an earlier one
+//! ([`aovs`]), group labels no light or object of the stage carries and numbered lobes
+//! no mapping feeds ([`labels`], [`aovs`]), and the declared partitions ([`partition`]),
+//! each a [`Finding`], collected in an [`outcome`]; [`text`] and [`json`] print them. [`dialect`] is what the checks
+//! ask of the expression language (RenderMan's or OSL's), so they are written once.
 
 pub mod aovs;
 pub mod dialect;
 pub mod finding;
+pub mod inputs;
 pub mod json;
 pub mod labels;
+pub mod outcome;
 pub mod partition;
 pub mod text;
 
 pub use finding::{Finding, Kind};
-
-use lpe::renderman::Lpe;
-use lpe_lint::{AovDecl, Document, PartitionDecl};
+pub use outcome::{CheckedPartition, Linted, Outcome};
 
 use dialect::Dialect;
 
 use crate::witness::Disagreement;
-
-/// One AOV as linted: its declaration and, when it parsed, its expression.
-#[derive(Clone, Debug)]
-pub struct Linted<E = Lpe> {
-    /// The file, as given.
-    pub file: String,
-    /// The declaration.
-    pub decl: AovDecl,
-    /// The parsed expression, `None` after a parse error.
-    pub lpe: Option<E>,
-}
-
-/// A partition as checked.
-#[derive(Clone, Debug)]
-pub struct CheckedPartition {
-    /// The file declaring it (`--partition`: `(command line)`).
-    pub file: String,
-    /// The declaration.
-    pub decl: PartitionDecl,
-    /// Whether it could be checked (every member known and parsed).
-    pub checked: bool,
-    /// Checked and clean.
-    pub clean: bool,
-}
-
-/// Everything lint found.
-#[derive(Clone, Debug)]
-pub struct Outcome<E = Lpe> {
-    /// Every LPE AOV read, in file order.
-    pub aovs: Vec<Linted<E>>,
-    /// Every partition.
-    pub partitions: Vec<CheckedPartition>,
-    /// The findings, per file in check order.
-    pub findings: Vec<Finding>,
-}
+use crate::{Document, PartitionDecl};
 
 /// Lints the documents read (ini documents contribute only partitions), then the
 /// `extra` partitions over the AOVs of every file. Partition witnesses are re-checked

@@ -1,6 +1,6 @@
 //! One lint finding: what, where, and the text to point at.
 
-use lpe_lint::Location;
+use crate::Location;
 
 /// What a finding reports. The JSON `kind` is [`Kind::name`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]

@@ -1,12 +1,12 @@
 //! Per-AOV checks of one file: parse errors, emptiness, equivalence, group labels, lobes.
 
+use crate::Document;
 use lpe::renderman::LobeCategory;
-use lpe_lint::Document;
 
 use super::dialect::Dialect;
 use super::finding::{Finding, Kind};
 use super::labels::Carrier;
-use super::Linted;
+use super::outcome::Linted;
 
 /// Parses the AOVs of `doc` into `linted` and appends the findings on them.
 pub fn check<D: Dialect>(

@@ -1,7 +1,7 @@
 //! The JSON report (schema `lpe-lint/1`, documented in docs/lint.md): stable keys, every
 //! key always present (`null` when it does not apply).
 
-use lpe_lint::Location;
+use crate::Location;
 use serde_json::{json, Value};
 
 use super::Outcome;

@@ -1,6 +1,19 @@
-//! The matcher benchmark shared by `lpe-check bench` (a table) and `cargo bench -p lpe-cli`
-//! (criterion): workloads, a path sampler, the regex-automata baseline, and one timed
-//! loop per engine.
+//! # lpe-bench — the benchmarks of lpe, in one place
+//!
+//! The matcher benchmark shared by `lpe-check bench` (a table, [`run`] and [`table`])
+//! and `cargo bench -p lpe-bench --bench matcher` (criterion): workloads, a path
+//! sampler, the regex-automata baseline, and one timed loop per engine. The C-ABI step
+//! bench is `cargo bench -p lpe-bench --bench step` (`benches/step.rs`: a step through
+//! `lpe-capi`'s extern fns against a step from Rust); the Rust row that
+//! `examples/c/step_bench.c` times stays an export of `lpe-capi` (`capi/src/bench.rs`),
+//! since C links it from that library. The renderer's bench (`lpe-render bench`) stays
+//! in `lpe-render`: it renders with the renderer's internals, and the `lpe-render`
+//! binary that runs it would make the two packages depend on each other.
+//!
+//! Modules: [`workload`] (the AOV sets), [`sample`] (the path sampler), [`baseline`]
+//! (regex-automata's DFAs on their own encoding), [`shapes`] (the caller shapes: a
+//! renderer's loop, a bare table, a lazy DFA's own cache), [`osl`] (the OSL rows),
+//! `harness` (the flattened paths and the timed loops every row shares).
 //!
 //! Every engine runs over the same sampled paths. The fast matcher is timed on
 //! [`Vertex`]es (classification included: a label hash lookup per labelled vertex) and on

@@ -1,7 +1,7 @@
-//! `cargo bench -p lpe-cli`: the fast matcher against regex-automata, per vertex and at
-//! compile time, with criterion's statistics. The workloads, path sampler and baseline
-//! are [`lpe_cli::bench`]'s, shared with `lpe-check bench` (which prints the benchmark
-//! table).
+//! `cargo bench -p lpe-bench --bench matcher`: the fast matcher against regex-automata,
+//! per vertex and at compile time, with criterion's statistics. The workloads, path
+//! sampler and baseline are [`lpe_bench`]'s, shared with `lpe-check bench` (which prints
+//! the benchmark table).
 //!
 //! Throughput is in vertices: criterion's `elem/s` is `1e9 / (ns per vertex)`.
 
@@ -9,7 +9,7 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use lpe::{AovSet, Options};
-use lpe_cli::bench::{self, baseline, sample, shapes, workload};
+use lpe_bench::{self as bench, baseline, sample, shapes, workload};
 
 /// Small enough for quick runs, large enough to leave the caches' comfort zone no more
 /// than a renderer's tile does.

@@ -1,6 +1,6 @@
 //! The human report: one block per finding, then a summary line.
 
-use lpe_lint::Location;
+use crate::Location;
 
 use super::{Finding, Outcome};
 
