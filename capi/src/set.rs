@@ -52,6 +52,9 @@ pub struct lpe_set {
 }
 
 /// A compiled set of either dialect: its vertex classes differ, its automaton does not.
+// The variants differ in size, but there is one per `lpe_set`, which the caller holds
+// behind a pointer already; boxing the larger would add a load to every OSL step.
+#[allow(clippy::large_enum_variant)]
 pub(crate) enum DialectSet {
     RenderMan(AovSet<RenderMan>),
     Osl(AovSet<Osl>),
