@@ -80,7 +80,7 @@ mod tests {
     }
 
     #[test]
-    fn osl_algebra_that_leaves_no_sequence_is_reported() {
+    fn algebra_that_leaves_no_sequence_is_reported_in_osl() {
         let reg = crate::osl::Registered::none();
         let aovs: Vec<(String, crate::osl::Lpe)> = [
             ("none", "C.*L - C.*L"),
