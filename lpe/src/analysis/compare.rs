@@ -115,29 +115,29 @@ mod tests {
         osl::parse(s, &osl::Registered::none()).unwrap()
     }
 
-    fn compare_in_osl(a: &str, b: &str) -> Comparison<osl::Path> {
+    fn compare_in_the_osl_dialect(a: &str, b: &str) -> Comparison<osl::Path> {
         compare(&osl(a), &osl(b)).unwrap()
     }
 
     #[test]
-    fn comparisons_in_osl() {
-        assert!(compare_in_osl("C<RD>[LO]", "(C<RD>L)|(C<RD>O)").equivalent());
-        assert!(compare_in_osl("CD|GL", "C(D|G)L").equivalent());
-        assert!(compare_in_osl("C{0}L", "L").equivalent());
+    fn comparisons_in_the_osl_dialect() {
+        assert!(compare_in_the_osl_dialect("C<RD>[LO]", "(C<RD>L)|(C<RD>O)").equivalent());
+        assert!(compare_in_the_osl_dialect("CD|GL", "C(D|G)L").equivalent());
+        assert!(compare_in_the_osl_dialect("C{0}L", "L").equivalent());
         // `|` takes one item each side: this is `C<RD>(L|C)<RD>O`. Witnesses are
         // shortest, built from each class's shortest vertex: NONE comes first, then
         // labels in byte order, so the camera is `C,~`.
-        let c = compare_in_osl("C<RD>[LO]", "C<RD>L|C<RD>O");
+        let c = compare_in_the_osl_dialect("C<RD>[LO]", "C<RD>L|C<RD>O");
         assert_eq!(c.first_only.unwrap().to_string(), "C,~ R,D L,~");
         assert_eq!(c.second_only.unwrap().to_string(), "C,~ R,D C,~ R,D O,~");
         // The eater: `R` skips non-basic custom labels only.
-        let c = compare_in_osl("C<R.>L", "CRL");
+        let c = compare_in_the_osl_dialect("C<R.>L", "CRL");
         assert!(c.equivalent());
-        let c = compare_in_osl("C<R.'a'>L", "CRL");
+        let c = compare_in_the_osl_dialect("C<R.'a'>L", "CRL");
         assert_eq!(c.first_only, None);
         assert_eq!(c.second_only.unwrap().to_string(), "C,~ R,~ L,~");
         // `.+L` needs two vertices; `.*L` does not.
-        let c = compare_in_osl(".+L", ".*L");
+        let c = compare_in_the_osl_dialect(".+L", ".*L");
         assert_eq!(c.first_only, None);
         assert_eq!(c.second_only.unwrap().to_string(), "L,~");
     }

@@ -239,7 +239,7 @@ mod tests {
         }
     }
 
-    fn set_in_osl(srcs: &[&str]) -> Vec<(String, osl::Lpe)> {
+    fn set_in_the_osl_dialect(srcs: &[&str]) -> Vec<(String, osl::Lpe)> {
         let reg = osl::Registered::none();
         srcs.iter()
             .map(|s| (s.to_string(), osl::parse(s, &reg).unwrap()))
@@ -247,10 +247,10 @@ mod tests {
     }
 
     #[test]
-    fn the_basic_set_partitions_the_universe_in_osl() {
+    fn the_basic_set_partitions_the_universe_in_the_osl_dialect() {
         let reg = osl::Registered::none();
         let p = partition(
-            &set_in_osl(&osl::BASIC.map(|(_, src)| src)),
+            &set_in_the_osl_dialect(&osl::BASIC.map(|(_, src)| src)),
             &default_universe::<Osl>(&reg),
             &reg,
         )
@@ -259,10 +259,10 @@ mod tests {
     }
 
     #[test]
-    fn partition_witnesses_in_osl() {
+    fn partition_witnesses_in_the_osl_dialect() {
         let reg = osl::Registered::none();
         // Without `C[LO]` the direct paths are a gap; doubling `C<RD>[LO]` overlaps.
-        let mut aovs = set_in_osl(&osl::BASIC.map(|(_, src)| src)[..6]);
+        let mut aovs = set_in_the_osl_dialect(&osl::BASIC.map(|(_, src)| src)[..6]);
         aovs.push(("again".into(), osl::parse("C<RD>L", &reg).unwrap()));
         let p = partition(&aovs, &default_universe::<Osl>(&reg), &reg).unwrap();
         assert_eq!(p.gap.unwrap().to_string(), "C,~ L,~");
@@ -275,7 +275,7 @@ mod tests {
         assert!(p.outside.is_empty());
         // A universe without glossy: glossy AOVs match outside it.
         let u = osl::parse("C<[RT]D>*[LO]", &reg).unwrap();
-        let p = partition(&set_in_osl(&osl::BASIC.map(|(_, src)| src)), &u, &reg).unwrap();
+        let p = partition(&set_in_the_osl_dialect(&osl::BASIC.map(|(_, src)| src)), &u, &reg).unwrap();
         let out: Vec<(usize, String)> =
             p.outside.iter().map(|(i, w)| (*i, w.to_string())).collect();
         // Each a shortest one: the glossy bounce comes first, or right after the
@@ -294,13 +294,13 @@ mod tests {
     }
 
     #[test]
-    fn algebra_members_and_the_remainder_in_osl() {
+    fn algebra_members_and_the_remainder_in_the_osl_dialect() {
         use crate::analysis::compare;
         let reg = osl::Registered::none();
         let universe = default_universe::<Osl>(&reg);
         // The basic set without `C[LO]`, its first member split: `C<RD>O` now goes
         // nowhere either.
-        let mut aovs = set_in_osl(&osl::BASIC.map(|(_, src)| src)[1..6]);
+        let mut aovs = set_in_the_osl_dialect(&osl::BASIC.map(|(_, src)| src)[1..6]);
         aovs.insert(
             0,
             (

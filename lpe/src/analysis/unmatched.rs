@@ -80,7 +80,7 @@ mod tests {
     }
 
     #[test]
-    fn algebra_that_leaves_no_sequence_is_reported_in_osl() {
+    fn algebra_that_leaves_no_sequence_is_reported_in_the_osl_dialect() {
         let reg = crate::osl::Registered::none();
         let aovs: Vec<(String, crate::osl::Lpe)> = [
             ("none", "C.*L - C.*L"),
