@@ -1,9 +1,8 @@
 //! Cross-crate property tests and the data-driven conformance suite live in `tests/`;
-//! this library holds what the test files share, and the suite's loader and runner
-//! ([`conformance`]).
+//! this library holds what the test files share, and the suite's in-process runner
+//! ([`conformance`]; the loader is `lpe_testkit::suite`).
 
 pub mod conformance;
-pub mod osl_rows;
 
 use lpe::ast::{Atom, Expr, Item, Triple, TypePos};
 use lpe::strategy::{self, LABELS};
