@@ -203,7 +203,9 @@ impl CaseDialect for RenderManCase {
     }
 
     fn parse(&self, src: &str) -> Result<Lpe, String> {
-        self.parser.parse(src).map_err(|e| format!("{:?}", e.to_string()))
+        self.parser
+            .parse(src)
+            .map_err(|e| format!("{:?}", e.to_string()))
     }
 
     fn parse_path(&self, text: &str) -> Result<Path, String> {

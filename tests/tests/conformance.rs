@@ -86,7 +86,10 @@ fn the_suite_is_loaded_whole_and_runs_on_every_registered_engine() {
         ("osl/algebra.toml", 32),
     ] {
         let of_file: Vec<Loaded> = cases.iter().filter(|c| c.file == file).cloned().collect();
-        assert!(of_file.iter().all(|c| c.dialect == lpe::Dialect::Osl), "{file}");
+        assert!(
+            of_file.iter().all(|c| c.dialect == lpe::Dialect::Osl),
+            "{file}"
+        );
         assert_eq!(lpe_testkit::suite::rows(&of_file).len(), rows, "{file}");
     }
     let subjects = subjects();

@@ -39,7 +39,10 @@ fn failures(rows: &[Row]) -> Vec<String> {
             let lpe = match osl::parse(&r.expr, &r.registered) {
                 Ok(l) => l,
                 Err(e) => {
-                    out.push(format!("{}: `{}` {mode}: `{}`: {e}", r.file, r.case, r.expr));
+                    out.push(format!(
+                        "{}: `{}` {mode}: `{}`: {e}",
+                        r.file, r.case, r.expr
+                    ));
                     continue;
                 }
             };
