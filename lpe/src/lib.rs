@@ -24,8 +24,8 @@
 //! - The formal side ([`analysis`]): emptiness warnings (on the NFA alone), equivalence
 //!   and inclusion, partition checks, each with a shortest witness path.
 //! - Utilities: [`rng`] (the workspace's one SplitMix64), [`fxhash`] (fast maps for small
-//!   keys), and behind features the test generators `generate` (`arbitrary` or
-//!   `proptest`) and `strategy` (`proptest`).
+//!   keys). The test generators (random expressions and paths, proptest strategies) are
+//!   in the `lpe-testkit` crate.
 //!
 //! The semantics are specified in the repository's docs/language.md and executed by the
 //! `lpe-reference` crate; the decisions this crate makes where a renderer could expect
@@ -123,11 +123,6 @@ pub mod prefix;
 mod print;
 pub mod rng;
 pub mod syntax;
-
-#[cfg(any(feature = "arbitrary", feature = "proptest"))]
-pub mod generate;
-#[cfg(feature = "proptest")]
-pub mod strategy;
 
 pub use aov::{AovSet, CompileError, Options};
 pub use aov::{Cache, NfaMatcher};

@@ -7,7 +7,15 @@
 //!   with what they run: the engines and `AovSet` in `lpe-tests`, the C ABI in
 //!   `lpe-capi`'s tests, the renderer's matcher in `lpe-render`'s, external matchers in
 //!   `lpe-check diff --external CMD --suite DIR`.
+//! - [`generate`]: random expressions, AOV sets and paths aimed at them, from any
+//!   source of choices (lpe's `SplitMix64`, or fuzz input through `arbitrary`); the
+//!   differential harness (`lpe-check diff`) and the fuzz bodies (`engines::fuzzing`)
+//!   draw their cases here, OSL's in [`generate::osl`].
+//! - `strategy` (feature `proptest`): proptest strategies for the same shapes.
 
 #![forbid(unsafe_code)]
 
+pub mod generate;
+#[cfg(feature = "proptest")]
+pub mod strategy;
 pub mod suite;

@@ -5,8 +5,8 @@
 pub mod conformance;
 
 use lpe::ast::{Atom, Expr, Item, Triple, TypePos};
-use lpe::strategy::{self, LABELS};
 use lpe::{Event, Lpe, Vertex, VertexType};
+use lpe_testkit::strategy::{self, LABELS};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 

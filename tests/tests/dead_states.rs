@@ -22,11 +22,11 @@
 
 use std::cell::Cell;
 
-use lpe::strategy;
 use lpe::{
     parse, AovSet, Class, Event, EventKind, Lpe, Options, Path, PathMatcher, Prefixes, State,
     Vertex, VertexType,
 };
+use lpe_testkit::strategy;
 use lpe_tests::{expr_set, framed, named, vertex_pool};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;

@@ -11,9 +11,9 @@
 use std::cell::Cell;
 
 use lpe::ast::{Expr, Repetition};
-use lpe::strategy;
 use lpe::Options;
 use lpe::{parse, AovSet, CompileError, Event, EventKind, Lpe, Path, Vertex, VertexType};
+use lpe_testkit::strategy;
 use lpe_tests::named;
 use proptest::prelude::*;
 

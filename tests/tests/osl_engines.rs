@@ -6,8 +6,8 @@ use engines::differential::{self, Outcome};
 use engines::Engine;
 use lpe::osl::{self, Registered};
 use lpe::rng::SplitMix64;
-use lpe_tests::cases;
 use lpe_testkit::suite::{distinct_rules, load_file, rows, Row};
+use lpe_tests::cases;
 use proptest::prelude::*;
 
 /// The registry plus the eager (dense DFA) oracle.
@@ -156,7 +156,7 @@ fn the_redos_expression_builds_and_matches_on_every_engine() {
 }
 
 fn assert_agree(seed: u64) -> Result<(), TestCaseError> {
-    let cfg = lpe::generate::osl::Config::default();
+    let cfg = lpe_testkit::generate::osl::Config::default();
     let case = differential::generate_osl_case(seed, 0, &cfg, 6);
     match differential::check_in(&case.lang, &engines(), &case.exprs, &case.paths) {
         Outcome::Agree(a) => {
@@ -182,9 +182,9 @@ proptest! {
     #[test]
     fn generated_osl_expressions_print_and_parse_back(seed in any::<u64>()) {
         let mut rng = SplitMix64::new(seed);
-        let reg = lpe::generate::osl::registered(&mut rng);
-        let cfg = lpe::generate::osl::Config::default();
-        let e = lpe::generate::osl::lpe(&mut rng, &reg, &cfg);
+        let reg = lpe_testkit::generate::osl::registered(&mut rng);
+        let cfg = lpe_testkit::generate::osl::Config::default();
+        let e = lpe_testkit::generate::osl::lpe(&mut rng, &reg, &cfg);
         let text = e.to_string();
         let back = osl::parse(&text, &reg)
             .map_err(|err| TestCaseError::fail(format!("`{text}` [{reg}]: {err}")))?;

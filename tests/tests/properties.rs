@@ -11,8 +11,8 @@ use engines::differential::{self, Outcome};
 use engines::{Engine, Reference};
 use lpe::ast::Expr;
 use lpe::macros::{MacroTable, BASIC};
-use lpe::strategy;
 use lpe::{Event, EventKind, Lpe, Path, Prefixes, Vertex};
+use lpe_testkit::strategy;
 use lpe_tests::cases;
 use proptest::prelude::*;
 
