@@ -16,6 +16,7 @@ use lpe_capi::step::{
 };
 use lpe_capi::view::lpe_set_step_view;
 use lpe_capi::{lpe_class, lpe_error, lpe_set, lpe_state, lpe_status, lpe_step_view, lpe_vertex};
+use lpe_testkit::suite::{load_dir, load_file, rows, testdata_dir, Loaded, Plan, Row};
 
 struct Set(*mut lpe_set);
 
@@ -367,39 +368,11 @@ fn one_set_serves_many_threads() {
     });
 }
 
-/// OSL's own unit test, one row per (rule, path): expression, registration, path in
-/// accum_test notation, and OSL's verdict.
-struct AccumRow {
-    expr: String,
-    registered: String,
-    path: String,
-    matches: bool,
-}
-
-fn accum_rows() -> Vec<AccumRow> {
-    let file = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../tests/testdata/osl/accum_test.tsv"
-    );
-    let text = std::fs::read_to_string(file).expect("accum_test.tsv");
-    let rows: Vec<AccumRow> = text
-        .lines()
-        .filter(|l| !l.starts_with('#') && !l.trim().is_empty())
-        .map(|l| {
-            let cols: Vec<&str> = l.split('\t').collect();
-            assert_eq!(cols.len(), 4, "{l}");
-            AccumRow {
-                expr: cols[0].into(),
-                registered: cols[1].into(),
-                path: cols[2].into(),
-                matches: match cols[3] {
-                    "MATCH" => true,
-                    "NOMATCH" => false,
-                    other => panic!("verdict {other}"),
-                },
-            }
-        })
-        .collect();
+/// OSL's own unit test (`tests/testdata/osl/accum_test.toml`), one row per (rule,
+/// path): expression, registration, path in accum_test notation, and OSL's verdict.
+fn accum_rows() -> Vec<Row> {
+    let cases = load_file("osl/accum_test.toml").unwrap_or_else(|e| panic!("{e}"));
+    let rows = rows(&cases);
     assert_eq!(rows.len(), 130);
     rows
 }
@@ -477,13 +450,12 @@ fn osl_accum_test_rows_answer_osl_and_the_reference_through_the_c_abi() {
     for (budget, cache, stepping) in modes {
         let mut matched = 0;
         for row in &rows {
-            let registered = CString::new(row.registered.as_str()).unwrap();
+            let registered = CString::new(row.registered.to_string()).unwrap();
             let opts = osl_options(&registered, budget, cache);
             let set = compile_in(LPE_DIALECT_OSL, &["rule"], &[&row.expr], None, Some(&opts))
                 .unwrap_or_else(|e| panic!("{}: {e:?}", row.expr));
             let got = route_osl(&set, &row.path, stepping) == 1;
-            let reg: lpe::osl::Registered = row.registered.parse().unwrap();
-            let lpe = lpe::osl::parse(&row.expr, &reg).unwrap();
+            let lpe = lpe::osl::parse(&row.expr, &row.registered).unwrap();
             let path: lpe::osl::Path = row.path.parse().unwrap();
             let reference = reference::osl::is_match(&lpe, &path);
             assert_eq!(
@@ -747,5 +719,132 @@ fn the_step_view_is_the_dfa_table_lpe_step_reads() {
     assert_eq!(
         lpe_set_step_view(set.0, null_mut()),
         lpe_status::LPE_ERR_NULL
+    );
+}
+
+/// One case of the conformance suite through the C ABI, compiled with `dfa_budget`
+/// (`None`: the default): its failures, and the answers it checked.
+fn suite_case(l: &Loaded, dfa_budget: Option<usize>) -> (Vec<String>, usize) {
+    let case = &l.case;
+    let plan = Plan::of(case);
+    let names: Vec<String> = (0..plan.sources.len()).map(|i| format!("e{i}")).collect();
+    let names: Vec<&str> = names.iter().map(String::as_str).collect();
+    let registered = CString::new(l.registered.to_string()).unwrap();
+    let cache = lpe_options_default().lazy_cache;
+    let (dialect, opts) = match l.dialect {
+        lpe::DialectName::RenderMan => {
+            let mut o = lpe_options_default();
+            if let Some(b) = dfa_budget {
+                o.dfa_budget = b;
+            }
+            (LPE_DIALECT_RENDERMAN, o)
+        }
+        lpe::DialectName::Osl => (LPE_DIALECT_OSL, osl_options(&registered, dfa_budget, cache)),
+    };
+    let at = format!("{} ({dfa_budget:?})", l.location());
+    let compiled = compile_in(
+        dialect,
+        &names,
+        &plan.sources,
+        case.ini.as_deref(),
+        Some(&opts),
+    );
+    let set = match (compiled, &case.error) {
+        (Err(f), Some(want)) => {
+            return if f.3 == want.at as i64 {
+                (vec![], 1)
+            } else {
+                (
+                    vec![format!(
+                        "{at}: a {} error at byte {}, got {f:?}",
+                        want.kind, want.at
+                    )],
+                    1,
+                )
+            };
+        }
+        (Ok(_), Some(want)) => {
+            return (
+                vec![format!("{at}: expected a {} error, got a set", want.kind)],
+                1,
+            );
+        }
+        // A refusal the case allows lpe's AOV set (over a size budget), which the C ABI
+        // compiles with.
+        (Err(_), None) if case.refused_by.iter().any(|r| r.starts_with("aovset")) => {
+            return (vec![], 0)
+        }
+        (Err(f), None) => return (vec![format!("{at}: expected a set, got {f:?}")], 0),
+        (Ok(set), None) => set,
+    };
+    let mut failures = Vec::new();
+    let mut checked = 0;
+    for (path, want) in &plan.expected {
+        let words = match l.dialect {
+            lpe::DialectName::RenderMan => {
+                let vertices: Vec<&str> = path.split(' ').collect();
+                route(&set, &vertices).0
+            }
+            lpe::DialectName::Osl => vec![route_osl(&set, path, Stepping::Plain)],
+        };
+        for (j, &w) in want.iter().enumerate() {
+            checked += 1;
+            let got = words[j / 64] >> (j % 64) & 1 == 1;
+            if got != w {
+                failures.push(format!(
+                    "{at}: `{}` on `{path}`: expected {w}, got {got}",
+                    plan.sources[j]
+                ));
+            }
+        }
+    }
+    (failures, checked)
+}
+
+#[test]
+fn every_suite_case_of_both_dialects_answers_through_the_c_abi() {
+    let cases = load_dir(&testdata_dir()).unwrap_or_else(|e| panic!("{e}"));
+    let mut failures = Vec::new();
+    let mut checked = [0usize; 2];
+    for l in &cases {
+        // Path-text checks (`bad_path`) are the path parser's, not the C ABI's.
+        if l.case.expr.is_none() && l.case.aovs.is_empty() {
+            continue;
+        }
+        for budget in [None, Some(0)] {
+            let (f, n) = suite_case(l, budget);
+            failures.extend(f);
+            checked[usize::from(l.dialect == lpe::DialectName::Osl)] += n;
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    eprintln!(
+        "C ABI: {} cases, {} RenderMan and {} OSL answers checked (DFA and lazy DFA)",
+        cases.len(),
+        checked[0],
+        checked[1]
+    );
+    // Every OSL verdict of the suite, in both modes: 130 accum_test rows and the
+    // hand-worked ones.
+    let osl: Vec<Loaded> = cases
+        .iter()
+        .filter(|l| l.dialect == lpe::DialectName::Osl)
+        .cloned()
+        .collect();
+    assert_eq!(checked[1], 2 * rows(&osl).len());
+    assert!(checked[0] > 600, "{}", checked[0]);
+}
+
+#[test]
+fn a_wrong_suite_verdict_fails_through_the_c_abi() {
+    let text = "dialect = \"osl\"\n[[case]]\nname = \"flipped\"\nexpr = \"C<RD>L\"\nno_match = [\"C,_ R,D L,_\"]\n";
+    let cases = lpe_testkit::suite::load_str("flipped.toml", text).unwrap();
+    let (failures, checked) = suite_case(&cases[0], None);
+    assert_eq!(checked, 1);
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert!(
+        failures[0].starts_with("flipped.toml: case `flipped`"),
+        "{}",
+        failures[0]
     );
 }

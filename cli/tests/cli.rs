@@ -155,13 +155,16 @@ fn diff_needs_two_engines() {
     assert!(err.contains("at least two engines"), "{err}");
 }
 
-/// The repository's copy of OSL's accum test (`EXPR<TAB>REGISTERED<TAB>PATH<TAB>RESULT`).
+/// OSL's accum test (`tests/testdata/osl/accum_test.toml`) as `--batch` input: a
+/// comment line, then one `EXPR<TAB>REGISTERED<TAB>PATH<TAB>MATCH|NOMATCH` line per verdict.
 fn accum_test() -> String {
-    let file = concat!(
-        env!("CARGO_MANIFEST_DIR"),
-        "/../tests/testdata/osl/accum_test.tsv"
-    );
-    std::fs::read_to_string(file).unwrap()
+    let cases = lpe_testkit::suite::load_file("osl/accum_test.toml").unwrap();
+    let mut text = String::from("# OSL's accum test, one line per (rule, path)\n");
+    for r in lpe_testkit::suite::rows(&cases) {
+        let verdict = if r.matches { "MATCH" } else { "NOMATCH" };
+        text += &format!("{}\t{}\t{}\t{verdict}\n", r.expr, r.registered, r.path);
+    }
+    text
 }
 
 #[test]

@@ -205,3 +205,126 @@ fn a_renderman_only_matcher_refuses_an_osl_run_with_exit_2() {
     assert_eq!(code, 2, "{err}");
     assert!(err.contains("refused the hello"), "{err}");
 }
+
+/// A suite directory of its own under the system's temp dir, with these files.
+fn suite_dir(tag: &str, files: &[(&str, &str)]) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("lpe-suite-{tag}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    for (name, text) in files {
+        let path = dir.join(name);
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, text).unwrap();
+    }
+    dir
+}
+
+#[test]
+fn the_osl_suite_replays_clean_through_the_osl_proxy() {
+    if !python() {
+        return;
+    }
+    let proxy = osl_proxy("");
+    let (code, out, err) = lpe_check(&[
+        "diff",
+        "--external",
+        &proxy,
+        "--suite",
+        "tests/testdata/osl",
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    // 59 cases, 228 verdicts (130 + 66 + 32 rows of the former TSV files).
+    assert!(
+        out.contains("suite: 59 cases run (228 answers checked), 0 failed"),
+        "{out}"
+    );
+    // The proxy that forgets registrations fails the cases that register labels, each
+    // named with its file and case.
+    let forgetful = osl_proxy("--forget-registration");
+    let (code, out, _) = lpe_check(&[
+        "diff",
+        "--external",
+        &forgetful,
+        "--suite",
+        "tests/testdata/osl",
+    ]);
+    assert_eq!(code, 3, "{out}");
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with("accum_test.toml: case `CDY+U [events=U;scatters=Y]`")),
+        "{out}"
+    );
+}
+
+#[test]
+fn a_planted_wrong_verdict_is_reported_with_its_file_and_case() {
+    if !python() {
+        return;
+    }
+    let dir = suite_dir(
+        "planted",
+        &[
+            (
+                "planted.toml",
+                "[[case]]\nname = \"right\"\nexpr = \"C<RD>L\"\nmatch = [\"C RD L\"]\n\
+                 no_match = [\"C RS L\"]\n\n\
+                 [[case]]\nname = \"wrong verdict\"\nexpr = \"C<RD>L\"\nno_match = [\"C RD L\"]\n\n\
+                 [[case]]\nname = \"a rejection\"\nexpr = \"C[]L\"\nerror = { kind = \"Empty\", at = 1 }\n",
+            ),
+            (
+                "sub/aovs.toml",
+                "[[case]]\nname = \"set\"\naovs = [{ name = \"d\", expr = \"C<RD>L\" }, \
+                 { name = \"s\", expr = \"C<RS>L\" }]\nlands = [{ path = \"C RD L\", in = [\"s\"] }]\n",
+            ),
+            // The naive matcher speaks RenderMan only: its OSL cases are not run.
+            (
+                "osl/one.toml",
+                "dialect = \"osl\"\n[[case]]\nname = \"o\"\nexpr = \"C.L\"\nmatch = [\"C,_ R,D L,_\"]\n",
+            ),
+        ],
+    );
+    let (code, out, err) = lpe_check(&[
+        "diff",
+        "--external",
+        "python3 examples/python/naive_matcher.py",
+        "--suite",
+        dir.to_str().unwrap(),
+    ]);
+    std::fs::remove_dir_all(&dir).unwrap();
+    assert_eq!(code, 3, "{out}{err}");
+    let failures: Vec<&str> = out
+        .lines()
+        .filter(|l| l.contains(".toml: case `"))
+        .collect();
+    assert_eq!(
+        failures,
+        [
+            "planted.toml: case `wrong verdict`: `C<RD>L` on `C RD L`: expected no-match, got match",
+            "sub/aovs.toml: case `set`: `d=C<RD>L` on `C RD L`: expected no-match, got match",
+            "sub/aovs.toml: case `set`: `s=C<RS>L` on `C RD L`: expected match, got no-match",
+        ],
+        "{out}"
+    );
+    assert!(
+        out.contains("osl: 1 cases not run: the matcher refused the hello"),
+        "{out}"
+    );
+    assert!(
+        out.contains("suite: 4 cases run (6 answers checked), 3 failed"),
+        "{out}"
+    );
+    // A suite that does not load is bad input.
+    let bad = suite_dir(
+        "bad",
+        &[("x.toml", "[[case]]\nname = \"x\"\nexpr = \"CL\"\n")],
+    );
+    let (code, _, err) = lpe_check(&[
+        "diff",
+        "--external",
+        "python3 examples/python/naive_matcher.py",
+        "--suite",
+        bad.to_str().unwrap(),
+    ]);
+    std::fs::remove_dir_all(&bad).unwrap();
+    assert_eq!(code, 2);
+    assert!(err.contains("x.toml: case `x`: no expectation"), "{err}");
+}

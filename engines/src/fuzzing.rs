@@ -15,9 +15,9 @@
 //! | `osl_differential` | a structured registration, 1-4 OSL expressions (a set) and paths aimed at them: every engine agrees |
 
 use arbitrary::Unstructured;
-use lpe::generate::{self, Choices, Config};
 use lpe::renderman::{Lpe, Path};
 use lpe::{osl, Options};
+use lpe_testkit::generate::{self, Choices, Config};
 
 use crate::adapters::{compile_set, Fast, Reference};
 use crate::differential::{self, Agreement, Osl, Outcome};

@@ -29,8 +29,8 @@
 //!   and inclusion, partition checks, each with a shortest witness path.
 //! - Utilities: [`rng`] (the workspace's one SplitMix64), [`fxhash`] (fast maps for small
 //!   keys), the crate-private `bits` (bitsets in `u64` words) and `print` (the printing
-//!   both dialects' trees and paths share), and behind features the test generators
-//!   `generate` (`arbitrary` or `proptest`) and `strategy` (`proptest`).
+//!   both dialects' trees and paths share). The test generators (random expressions and
+//!   paths, proptest strategies) are in the `lpe-testkit` crate.
 //!
 //! The semantics are specified in the repository's docs/language.md and executed by the
 //! `lpe-reference` crate; the decisions this crate makes where a renderer could expect
@@ -112,11 +112,6 @@ mod print;
 pub mod registry;
 pub mod renderman;
 pub mod rng;
-
-#[cfg(any(feature = "arbitrary", feature = "proptest"))]
-pub mod generate;
-#[cfg(feature = "proptest")]
-pub mod strategy;
 
 pub use aov::{AovSet, Options};
 pub use aov::{Cache, NfaMatcher};

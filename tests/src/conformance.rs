@@ -1,315 +1,28 @@
-//! The data-driven conformance suite: the cases in `tests/testdata/*.toml`, each run
-//! in-process against every registered engine and against lpe's [`AovSet`] under every
-//! [`Options`] configuration in [`configs`], the way regex-automata's `testdata/` drives
-//! its engines. `tests/testdata/README.md` describes the case format.
+//! The data-driven conformance suite's in-process runner: the cases of
+//! `tests/testdata/**/*.toml` (loaded by [`lpe_testkit::suite`], which also documents the
+//! format), each run against every registered engine and against lpe's [`AovSet`] under
+//! every [`Options`] configuration in [`configs`], in the case's dialect (RenderMan or
+//! OSL), the way regex-automata's `testdata/` drives its engines.
 //!
 //! A wrong vector must be loud: every mismatch becomes a [`Failure`] naming the file,
 //! the case, the engine, the configuration, the path, what was expected and what came
 //! back, and the runner never drops a case silently (an engine that refuses to build a
 //! case is a failure too, unless the case lists it in `refused_by`).
 
-use std::collections::BTreeSet;
 use std::fmt;
-use std::path::{Path as FsPath, PathBuf};
 
-use lpe::renderman::{ErrorKind, Lpe, Parser, Path};
-use lpe::{AovSet, Options};
-use serde::Deserialize;
+use engines::differential::{Language, Osl, RenderMan};
+use lpe::osl::{self, Registered};
+use lpe::renderman::{Lpe, Parser, Path};
+use lpe::{AovSet, DialectName, Options};
+
+pub use lpe_testkit::suite::{
+    kind_name, load_dir, load_str, testdata_dir, Aov, BadPath, Case, ExpectedError, Landing,
+    LoadError, Loaded, Plan,
+};
 
 // The one line to change when the engine registry moves crates.
 use engines as registry;
-
-/// One `tests/testdata/*.toml` file.
-#[derive(Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-struct CaseFile {
-    #[serde(rename = "case", default)]
-    cases: Vec<Case>,
-}
-
-/// One case: an expression (or an AOV set) with its expected answers, or an expected
-/// error. See `tests/testdata/README.md`.
-#[derive(Clone, Debug, Default, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Case {
-    /// Unique within its file.
-    pub name: String,
-    /// The expression under test.
-    pub expr: Option<String>,
-    /// Expressions that must answer exactly like `expr` on every path of the case.
-    #[serde(default)]
-    pub same_as: Vec<String>,
-    /// An AOV set (instead of `expr`), compiled as one set.
-    #[serde(default)]
-    pub aovs: Vec<Aov>,
-    /// `rendermn.ini` text whose macros the expressions may use.
-    pub ini: Option<String>,
-    /// Paths the expression matches.
-    #[serde(default, rename = "match")]
-    pub matches: Vec<String>,
-    /// Paths the expression does not match.
-    #[serde(default)]
-    pub no_match: Vec<String>,
-    /// For an AOV set: each path and the names of the AOVs it lands in.
-    #[serde(default)]
-    pub lands: Vec<Landing>,
-    /// `expr` must fail to parse, with this kind at this byte.
-    pub error: Option<ExpectedError>,
-    /// Path texts that must fail to parse.
-    #[serde(default)]
-    pub bad_path: Vec<BadPath>,
-    /// Subjects that may refuse to build this case (over a size budget), as an engine
-    /// name (`aovset` for lpe's AOV set under every configuration) or `engine/config`;
-    /// their refusal is then counted, not a failure.
-    #[serde(default)]
-    pub refused_by: Vec<String>,
-}
-
-impl Case {
-    /// Expectations the case states: one per (expression, path) answer, per landing,
-    /// per expected error and per malformed path.
-    pub fn vectors(&self) -> usize {
-        (self.matches.len() + self.no_match.len()) * (1 + self.same_as.len())
-            + self.lands.len()
-            + usize::from(self.error.is_some())
-            + self.bad_path.len()
-    }
-}
-
-/// One AOV of a set.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Aov {
-    /// The AOV's name, as `lands` refers to it.
-    pub name: String,
-    /// Its expression.
-    pub expr: String,
-}
-
-/// A path and the AOVs of the case's set it lands in.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Landing {
-    /// The path text.
-    pub path: String,
-    /// Names of the AOVs that match it (any order; empty for none).
-    #[serde(rename = "in")]
-    pub aovs: Vec<String>,
-}
-
-/// The parse error a case expects.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct ExpectedError {
-    /// The [`ErrorKind`] variant's name, e.g. `"Quantifier"`.
-    pub kind: String,
-    /// Byte offset where the error's span starts.
-    pub at: usize,
-    /// Text the rendered error (message, caret, help) must contain.
-    pub says: Option<String>,
-}
-
-/// A malformed path and where its parser must put the blame.
-#[derive(Clone, Debug, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct BadPath {
-    /// The path text.
-    pub path: String,
-    /// Zero-based index of the offending vertex (the vertex count when a vertex is
-    /// missing at the end).
-    pub vertex: usize,
-    /// Byte offset where the offending vertex starts; absent when there is no such
-    /// vertex in the text.
-    pub at: Option<usize>,
-}
-
-/// A case with the file it came from.
-#[derive(Clone, Debug)]
-pub struct Loaded {
-    /// File name, e.g. `atoms.toml`.
-    pub file: String,
-    /// The case.
-    pub case: Case,
-}
-
-/// Why the suite could not be loaded.
-#[derive(Debug)]
-pub enum LoadError {
-    /// The directory or a file could not be read.
-    Io {
-        /// The file or directory.
-        path: PathBuf,
-        /// The underlying error.
-        source: std::io::Error,
-    },
-    /// A file is not valid TOML for the case format.
-    Toml {
-        /// The file name.
-        file: String,
-        /// The parser's message, with line and column.
-        source: Box<toml::de::Error>,
-    },
-    /// A case is well-formed TOML but not a well-formed case.
-    Case {
-        /// The file name.
-        file: String,
-        /// The case name.
-        case: String,
-        /// What is wrong with it.
-        problem: String,
-    },
-}
-
-impl fmt::Display for LoadError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            LoadError::Io { path, source } => write!(f, "cannot read {}: {source}", path.display()),
-            LoadError::Toml { file, source } => write!(f, "{file}: {source}"),
-            LoadError::Case {
-                file,
-                case,
-                problem,
-            } => write!(f, "{file}: case `{case}`: {problem}"),
-        }
-    }
-}
-
-impl std::error::Error for LoadError {}
-
-/// The directory holding the suite.
-pub fn testdata_dir() -> PathBuf {
-    FsPath::new(env!("CARGO_MANIFEST_DIR")).join("testdata")
-}
-
-/// Every case of every `*.toml` file in `dir`, files in name order.
-pub fn load_dir(dir: &FsPath) -> Result<Vec<Loaded>, LoadError> {
-    let io = |path: &FsPath| {
-        let path = path.to_path_buf();
-        move |source| LoadError::Io { path, source }
-    };
-    let mut files: Vec<PathBuf> = std::fs::read_dir(dir)
-        .map_err(io(dir))?
-        .map(|e| e.map(|e| e.path()))
-        .collect::<Result<_, _>>()
-        .map_err(io(dir))?;
-    files.retain(|p| p.extension().is_some_and(|e| e == "toml"));
-    files.sort();
-    let mut out = Vec::new();
-    for path in files {
-        let text = std::fs::read_to_string(&path).map_err(io(&path))?;
-        let name = path.file_name().unwrap_or_default().to_string_lossy();
-        out.extend(load_str(&name, &text)?);
-    }
-    Ok(out)
-}
-
-/// The cases of one file's text; `file` names it in errors and failures.
-pub fn load_str(file: &str, text: &str) -> Result<Vec<Loaded>, LoadError> {
-    let parsed: CaseFile = toml::from_str(text).map_err(|e| LoadError::Toml {
-        file: file.to_string(),
-        source: Box::new(e),
-    })?;
-    let mut names = BTreeSet::new();
-    let mut out = Vec::new();
-    for case in parsed.cases {
-        let bad = |problem: &str| LoadError::Case {
-            file: file.to_string(),
-            case: case.name.clone(),
-            problem: problem.to_string(),
-        };
-        if !names.insert(case.name.clone()) {
-            return Err(bad("the name is used twice in this file"));
-        }
-        validate(&case).map_err(|p| bad(&p))?;
-        out.push(Loaded {
-            file: file.to_string(),
-            case,
-        });
-    }
-    Ok(out)
-}
-
-fn validate(case: &Case) -> Result<(), String> {
-    let answers = !case.matches.is_empty() || !case.no_match.is_empty();
-    match (&case.expr, case.aovs.is_empty()) {
-        (Some(_), false) => return Err("give `expr` or `aovs`, not both".into()),
-        (None, true) if !case.bad_path.is_empty() => {
-            return if answers || case.error.is_some() || !case.lands.is_empty() {
-                Err("a case without `expr` or `aovs` only checks `bad_path`".into())
-            } else {
-                Ok(())
-            };
-        }
-        (None, true) => return Err("give `expr`, `aovs` or `bad_path`".into()),
-        _ => {}
-    }
-    if case.expr.is_some() {
-        if !case.lands.is_empty() {
-            return Err("`lands` is for AOV sets; use `match` / `no_match`".into());
-        }
-        if case.error.is_some() && (answers || !case.same_as.is_empty()) {
-            return Err("an `error` case has no paths to answer".into());
-        }
-        if case.error.is_none() && !answers && case.bad_path.is_empty() {
-            return Err("no expectation: add `match`, `no_match`, `error` or `bad_path`".into());
-        }
-    } else {
-        if answers || !case.same_as.is_empty() || case.error.is_some() {
-            return Err("an AOV set case answers with `lands`".into());
-        }
-        if case.lands.is_empty() {
-            return Err("no expectation: add `lands`".into());
-        }
-        let names: BTreeSet<&str> = case.aovs.iter().map(|a| a.name.as_str()).collect();
-        if names.len() != case.aovs.len() {
-            return Err("two AOVs share a name".into());
-        }
-        for l in &case.lands {
-            if let Some(n) = l.aovs.iter().find(|n| !names.contains(n.as_str())) {
-                return Err(format!("`lands` names `{n}`, which is not in `aovs`"));
-            }
-        }
-    }
-    if let Some(e) = &case.error {
-        if kind_by_name(&e.kind).is_none() {
-            return Err(format!("`{}` is not an error kind", e.kind));
-        }
-    }
-    if let Some(p) = case.matches.iter().find(|p| case.no_match.contains(p)) {
-        return Err(format!("`{p}` is in both `match` and `no_match`"));
-    }
-    Ok(())
-}
-
-/// The name a case file uses for each [`ErrorKind`]; exhaustive, so a new kind cannot be
-/// left out of the suite's vocabulary.
-pub fn kind_name(kind: ErrorKind) -> &'static str {
-    match kind {
-        ErrorKind::Empty => "Empty",
-        ErrorKind::Syntax => "Syntax",
-        ErrorKind::TriplePosition => "TriplePosition",
-        ErrorKind::Quantifier => "Quantifier",
-        ErrorKind::Lobe => "Lobe",
-        ErrorKind::UnknownMacro => "UnknownMacro",
-        ErrorKind::UnknownPrefix => "UnknownPrefix",
-        ErrorKind::Limit => "Limit",
-    }
-}
-
-fn kind_by_name(name: &str) -> Option<ErrorKind> {
-    [
-        ErrorKind::Empty,
-        ErrorKind::Syntax,
-        ErrorKind::TriplePosition,
-        ErrorKind::Quantifier,
-        ErrorKind::Lobe,
-        ErrorKind::UnknownMacro,
-        ErrorKind::UnknownPrefix,
-        ErrorKind::Limit,
-    ]
-    .into_iter()
-    .find(|&k| kind_name(k) == name)
-}
 
 /// An `Options` configuration lpe's [`AovSet`] is checked under.
 #[derive(Clone, Debug)]
@@ -407,28 +120,143 @@ impl Subject {
     }
 
     /// For each expression, whether it matches each path, or why the subject refused.
-    fn answer(&self, exprs: &[Lpe], paths: &[&Path]) -> Result<Vec<Vec<bool>>, String> {
+    fn answer<D: CaseDialect>(
+        &self,
+        dialect: &D,
+        exprs: &[Expr<D>],
+        paths: &[&PathOf<D>],
+    ) -> Result<Vec<Vec<bool>>, String> {
         match self {
             Subject::Engine(e) => {
-                let m = e.compile(exprs).map_err(|e| e.to_string())?;
+                let m = dialect
+                    .lang()
+                    .compile(*e, exprs)
+                    .map_err(|e| e.to_string())?;
                 Ok(paths.iter().map(|p| m.which(p)).collect())
             }
-            Subject::AovSet(c) => {
-                let named: Vec<(String, Lpe)> = exprs
-                    .iter()
-                    .enumerate()
-                    .map(|(i, e)| (i.to_string(), e.clone()))
-                    .collect();
-                let set = AovSet::compile_with(&named, &c.options).map_err(|e| e.to_string())?;
-                Ok(paths
-                    .iter()
-                    .map(|p| {
-                        let hit = set.match_path(p);
-                        (0..exprs.len()).map(|i| hit.contains(i)).collect()
-                    })
-                    .collect())
-            }
+            Subject::AovSet(c) => dialect.aovset(exprs, paths, &c.options),
         }
+    }
+}
+
+type Expr<D> = <<D as CaseDialect>::Lang as Language>::Expr;
+type PathOf<D> = <<D as CaseDialect>::Lang as Language>::Path;
+
+/// A case's dialect as the runner needs it: the engines' view of it
+/// ([`Language`]: how an engine compiles a set), and how to parse a case's texts and
+/// compile them as an [`AovSet`]. [`run_case`] picks one per case, in one place.
+trait CaseDialect {
+    type Lang: Language;
+    /// The dialect with the case's context (OSL's registered labels).
+    fn lang(&self) -> &Self::Lang;
+    /// One expression of the case.
+    fn parse(&self, src: &str) -> Result<Expr<Self>, String>;
+    /// One path of the case.
+    fn parse_path(&self, text: &str) -> Result<PathOf<Self>, String>;
+    /// Vertices of a path.
+    fn path_len(path: &PathOf<Self>) -> usize;
+    /// Per path, whether each expression matches, on lpe's AOV set compiled with
+    /// `options`.
+    fn aovset(
+        &self,
+        exprs: &[Expr<Self>],
+        paths: &[&PathOf<Self>],
+        options: &Options,
+    ) -> Result<Vec<Vec<bool>>, String>;
+}
+
+/// The RenderMan dialect with the case's parser (its `ini` macros).
+struct RenderManCase {
+    lang: RenderMan,
+    parser: Parser,
+}
+
+/// The OSL dialect with the case's registered labels.
+struct OslCase {
+    lang: Osl,
+}
+
+/// The expressions named `0`, `1`, ... as an AOV list.
+fn numbered<E: Clone>(exprs: &[E]) -> Vec<(String, E)> {
+    exprs
+        .iter()
+        .enumerate()
+        .map(|(i, e)| (i.to_string(), e.clone()))
+        .collect()
+}
+
+/// Per path, which of the set's first `n` AOVs match, from a whole-path query.
+fn hits<P>(paths: &[&P], n: usize, query: impl Fn(&P) -> lpe::AovMask) -> Vec<Vec<bool>> {
+    paths
+        .iter()
+        .map(|p| {
+            let hit = query(p);
+            (0..n).map(|i| hit.contains(i)).collect()
+        })
+        .collect()
+}
+
+impl CaseDialect for RenderManCase {
+    type Lang = RenderMan;
+
+    fn lang(&self) -> &RenderMan {
+        &self.lang
+    }
+
+    fn parse(&self, src: &str) -> Result<Lpe, String> {
+        self.parser
+            .parse(src)
+            .map_err(|e| format!("{:?}", e.to_string()))
+    }
+
+    fn parse_path(&self, text: &str) -> Result<Path, String> {
+        text.parse::<Path>().map_err(|e| format!("`{e}`"))
+    }
+
+    fn path_len(path: &Path) -> usize {
+        path.len()
+    }
+
+    fn aovset(
+        &self,
+        exprs: &[Lpe],
+        paths: &[&Path],
+        options: &Options,
+    ) -> Result<Vec<Vec<bool>>, String> {
+        let set = AovSet::compile_with(&numbered(exprs), options).map_err(|e| e.to_string())?;
+        Ok(hits(paths, exprs.len(), |p| set.match_path(p)))
+    }
+}
+
+impl CaseDialect for OslCase {
+    type Lang = Osl;
+
+    fn lang(&self) -> &Osl {
+        &self.lang
+    }
+
+    fn parse(&self, src: &str) -> Result<osl::Lpe, String> {
+        osl::parse(src, &self.lang.registered).map_err(|e| format!("{:?}", e.to_string()))
+    }
+
+    fn parse_path(&self, text: &str) -> Result<osl::Path, String> {
+        text.parse::<osl::Path>().map_err(|e| format!("`{e}`"))
+    }
+
+    fn path_len(path: &osl::Path) -> usize {
+        path.len()
+    }
+
+    fn aovset(
+        &self,
+        exprs: &[osl::Lpe],
+        paths: &[&osl::Path],
+        options: &Options,
+    ) -> Result<Vec<Vec<bool>>, String> {
+        let reg: &Registered = &self.lang.registered;
+        let set =
+            AovSet::compile_under(&numbered(exprs), reg, options).map_err(|e| e.to_string())?;
+        Ok(hits(paths, exprs.len(), |p| set.match_path(p)))
     }
 }
 
@@ -516,66 +344,32 @@ fn answer_text(m: bool) -> String {
     if m { "match" } else { "no-match" }.to_string()
 }
 
-/// What a case compiles and asks: the expressions (compiled together, as one set), a
-/// label for failures, and per path the expected answer of each expression.
-struct Plan<'a> {
-    sources: Vec<&'a str>,
-    label: String,
-    expected: Vec<(&'a str, Vec<bool>)>,
-}
-
-impl<'a> Plan<'a> {
-    fn of(case: &'a Case) -> Plan<'a> {
-        if let Some(expr) = &case.expr {
-            let mut sources = vec![expr.as_str()];
-            sources.extend(case.same_as.iter().map(String::as_str));
-            let n = sources.len();
-            let expected = case
-                .matches
-                .iter()
-                .map(|p| (p.as_str(), vec![true; n]))
-                .chain(case.no_match.iter().map(|p| (p.as_str(), vec![false; n])))
-                .collect();
-            return Plan {
-                sources,
-                label: expr.clone(),
-                expected,
-            };
-        }
-        let label = case
-            .aovs
-            .iter()
-            .map(|a| format!("{}={}", a.name, a.expr))
-            .collect::<Vec<_>>()
-            .join(", ");
-        Plan {
-            sources: case.aovs.iter().map(|a| a.expr.as_str()).collect(),
-            label: format!("{{{label}}}"),
-            expected: case
-                .lands
-                .iter()
-                .map(|l| {
-                    let hit = case.aovs.iter().map(|a| l.aovs.contains(&a.name)).collect();
-                    (l.path.as_str(), hit)
-                })
-                .collect(),
-        }
+/// A failure of `loaded`'s case.
+fn failure(
+    loaded: &Loaded,
+    (engine, config): (&str, &str),
+    expr: &str,
+    path: Option<&str>,
+    expected: String,
+    got: String,
+) -> Failure {
+    Failure {
+        file: loaded.file.clone(),
+        case: loaded.case.name.clone(),
+        engine: engine.to_string(),
+        config: config.to_string(),
+        expr: expr.to_string(),
+        path: path.map(str::to_string),
+        expected,
+        got,
     }
 }
 
 fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
     let case = &loaded.case;
-    let fail =
-        |engine: &str, config: &str, expr: &str, path: Option<&str>, expected, got| Failure {
-            file: loaded.file.clone(),
-            case: case.name.clone(),
-            engine: engine.to_string(),
-            config: config.to_string(),
-            expr: expr.to_string(),
-            path: path.map(str::to_string),
-            expected,
-            got,
-        };
+    let fail = |engine: &str, config: &str, expr: &str, path: Option<&str>, expected, got| {
+        failure(loaded, (engine, config), expr, path, expected, got)
+    };
     let parser = match &case.ini {
         None => Parser::default(),
         Some(text) => match lpe::renderman::Config::from_ini(text) {
@@ -650,6 +444,35 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
         return;
     }
 
+    // The one place a case's dialect picks how its texts parse and compile.
+    match loaded.dialect {
+        DialectName::RenderMan => {
+            let dialect = RenderManCase {
+                lang: RenderMan,
+                parser,
+            };
+            answer_case(&dialect, loaded, subjects, report);
+        }
+        DialectName::Osl => {
+            let lang = Osl {
+                registered: loaded.registered.clone(),
+            };
+            answer_case(&OslCase { lang }, loaded, subjects, report);
+        }
+    }
+}
+
+/// Runs the case's paths on every subject, in `dialect`.
+fn answer_case<D: CaseDialect>(
+    dialect: &D,
+    loaded: &Loaded,
+    subjects: &[Subject],
+    report: &mut Report,
+) {
+    let case = &loaded.case;
+    let fail = |engine: &str, config: &str, expr: &str, path: Option<&str>, expected, got| {
+        failure(loaded, (engine, config), expr, path, expected, got)
+    };
     let Plan {
         sources,
         label,
@@ -662,7 +485,7 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
     let mut exprs = Vec::new();
     for src in &sources {
         report.checks += 1;
-        match parser.parse(src) {
+        match dialect.parse(src) {
             Ok(l) => exprs.push(l),
             Err(e) => {
                 report.failures.push(fail(
@@ -671,7 +494,7 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
                     src,
                     None,
                     "a valid expression".into(),
-                    format!("{:?}", e.to_string()),
+                    e,
                 ));
                 return;
             }
@@ -680,7 +503,7 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
     let mut paths = Vec::new();
     for (text, _) in &expected {
         report.checks += 1;
-        match text.parse::<Path>() {
+        match dialect.parse_path(text) {
             Ok(p) => paths.push(p),
             Err(e) => {
                 report.failures.push(fail(
@@ -689,7 +512,7 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
                     &label,
                     Some(text),
                     "a valid path".into(),
-                    format!("`{e}`"),
+                    e,
                 ));
                 return;
             }
@@ -701,11 +524,15 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
         let (engine, config) = (subject.engine(), subject.config());
         // Paths over the configuration's `max_path_len` have unspecified answers.
         let keep: Vec<usize> = (0..paths.len())
-            .filter(|&i| subject.max_path_len().is_none_or(|n| paths[i].len() <= n))
+            .filter(|&i| {
+                subject
+                    .max_path_len()
+                    .is_none_or(|n| D::path_len(&paths[i]) <= n)
+            })
             .collect();
         report.too_long += paths.len() - keep.len();
-        let kept: Vec<&Path> = keep.iter().map(|&i| &paths[i]).collect();
-        let answers = match subject.answer(&exprs, &kept) {
+        let kept: Vec<&PathOf<D>> = keep.iter().map(|&i| &paths[i]).collect();
+        let answers = match subject.answer(dialect, &exprs, &kept) {
             Ok(a) => a,
             Err(why) => {
                 let allowed = |n: &String| n == engine || *n == format!("{engine}/{config}");

@@ -1,14 +1,12 @@
 //! Cross-crate property tests and the data-driven conformance suite live in `tests/`;
-//! this library holds what the test files share, and the suite's loader and runner
-//! ([`conformance`]), and the loader of the OSL verdict files `testdata/osl/*.tsv`
-//! ([`osl_rows`]).
+//! this library holds what the test files share, and the suite's in-process runner
+//! ([`conformance`]; the loader is `lpe_testkit::suite`).
 
 pub mod conformance;
-pub mod osl_rows;
 
 use lpe::renderman::ast::{Atom, Expr, Item, Triple, TypePos};
 use lpe::renderman::{Event, Lpe, Vertex, VertexType};
-use lpe::strategy::{self, LABELS};
+use lpe_testkit::strategy::{self, LABELS};
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 

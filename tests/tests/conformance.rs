@@ -79,6 +79,19 @@ fn the_suite_is_loaded_whole_and_runs_on_every_registered_engine() {
             "no case loaded from {file}"
         );
     }
+    // The OSL dialect's files, converted from 228 TSV rows (130 + 66 + 32).
+    for (file, rows) in [
+        ("osl/accum_test.toml", 130),
+        ("osl/extra.toml", 66),
+        ("osl/algebra.toml", 32),
+    ] {
+        let of_file: Vec<Loaded> = cases.iter().filter(|c| c.file == file).cloned().collect();
+        assert!(
+            of_file.iter().all(|c| c.dialect == lpe::DialectName::Osl),
+            "{file}"
+        );
+        assert_eq!(lpe_testkit::suite::rows(&of_file).len(), rows, "{file}");
+    }
     let subjects = subjects();
     let engines: Vec<&str> = subjects.iter().map(Subject::engine).collect();
     for name in ["reference", "oracle", "fast", "nfa", "aovset"] {
@@ -184,6 +197,61 @@ fn a_wrong_vector_fails_on_every_subject() {
     assert_eq!(report.failures.len(), 3 * subjects.len() + 5, "{text}");
 }
 
+/// The same in the OSL dialect: the runner dispatches on the case's dialect, and a wrong
+/// OSL verdict fails on every subject too.
+const FLIPPED_OSL: &str = r#"
+dialect = "osl"
+
+[[case]]
+name = "flipped"
+expr = "CDY+U"
+registered = { events = ["U"], scatters = ["Y"] }
+match = ["C,_ R,D U,_"]
+no_match = ["C,_ R,D R,Y U,_"]
+
+[[case]]
+name = "wrong landing"
+aovs = [{ name = "d", expr = "C<R.>L" }, { name = "s", expr = "C<T.>L" }]
+lands = [{ path = "C,_ R,D L,_", in = ["s"] }]
+"#;
+
+#[test]
+fn a_wrong_osl_vector_fails_on_every_subject() {
+    let cases = load_str("flipped-osl.toml", FLIPPED_OSL).unwrap();
+    let subjects = subjects();
+    let report = run(&cases, &subjects);
+    let text = report.failures_text();
+    for s in &subjects {
+        let (engine, config) = (s.engine(), s.config());
+        for (path, want, got) in [
+            ("C,_ R,D U,_", "match", "no-match"),
+            ("C,_ R,D R,Y U,_", "no-match", "match"),
+        ] {
+            let f = report
+                .failures
+                .iter()
+                .find(|f| {
+                    f.case == "flipped"
+                        && f.engine == engine
+                        && f.config == config
+                        && f.path.as_deref() == Some(path)
+                })
+                .unwrap_or_else(|| panic!("{engine} ({config}) on {path}:\n{text}"));
+            assert_eq!(f.file, "flipped-osl.toml");
+            assert_eq!((f.expected.as_str(), f.got.as_str()), (want, got));
+        }
+        assert!(
+            report.failures.iter().any(|f| f.case == "wrong landing"
+                && f.engine == engine
+                && f.config == config
+                && f.expected == "[s]"
+                && f.got == "[d]"),
+            "{engine} ({config}):\n{text}"
+        );
+    }
+    assert_eq!(report.failures.len(), 3 * subjects.len(), "{text}");
+}
+
 #[test]
 fn a_refusal_fails_unless_the_case_allows_it() {
     // More AOVs than a set holds: the engines built on lpe's AOV set refuse it.
@@ -266,7 +334,7 @@ fn the_readme_examples_load_and_pass() {
         .skip(1)
         .map(|b| b.split("```").next().unwrap())
         .collect();
-    assert_eq!(blocks.len(), 3);
+    assert_eq!(blocks.len(), 4);
     for block in blocks {
         let cases = load_str("README.md", block).unwrap_or_else(|e| panic!("{e}"));
         let report = run(&cases, &subjects());

@@ -23,8 +23,8 @@
 use std::cell::Cell;
 
 use lpe::renderman::{parse, Event, EventKind, Lpe, Path, Prefixes, Vertex, VertexType};
-use lpe::strategy;
 use lpe::{AovSet, Class, Options, PathMatcher, State};
+use lpe_testkit::strategy;
 use lpe_tests::{expr_set, framed, named, vertex_pool};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;

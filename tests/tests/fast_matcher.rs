@@ -16,7 +16,7 @@ use lpe::renderman::macros::BASIC;
 use lpe::renderman::path::{Path, Vertex, VertexType};
 use lpe::renderman::{parse, Lpe};
 use lpe::rng::SplitMix64 as Rng;
-use lpe::strategy;
+use lpe_testkit::strategy;
 use lpe_tests::{expr_set, framed, named, vertex_pool};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;

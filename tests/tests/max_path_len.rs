@@ -12,9 +12,9 @@ use std::cell::Cell;
 
 use lpe::renderman::ast::{Expr, Repetition};
 use lpe::renderman::{parse, Event, EventKind, Lpe, Path, Vertex, VertexType};
-use lpe::strategy;
 use lpe::Options;
 use lpe::{AovSet, CompileError};
+use lpe_testkit::strategy;
 use lpe_tests::named;
 use proptest::prelude::*;
 

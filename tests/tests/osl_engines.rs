@@ -1,13 +1,13 @@
 //! The OSL dialect on every registered engine (and the eager form of `oracle`): OSL's
-//! own accum test (130 verdicts) and the hand-written `extra.tsv` rows, one set of all
+//! own accum test (130 verdicts) and the hand-written `extra.toml` rows, one set of all
 //! accum rules compiled at once, and the differential property on generated OSL cases.
 
 use engines::differential::{self, Outcome};
 use engines::Engine;
 use lpe::osl::{self, Registered};
 use lpe::rng::SplitMix64;
+use lpe_testkit::suite::{distinct_rules, load_file, rows, Row};
 use lpe_tests::cases;
-use lpe_tests::osl_rows::{distinct_rules, load_osl_rows, OslRow};
 use proptest::prelude::*;
 
 /// The registry plus the eager (dense DFA) oracle.
@@ -17,24 +17,36 @@ fn engines() -> Vec<&'static dyn Engine> {
     all
 }
 
-/// Each engine's wrong answers on `rows`, as `file:line engine: ...` lines, and the
+/// The verdicts of `testdata/<file>`, one per (expression, path).
+fn load_rows(file: &str) -> Vec<Row> {
+    rows(&load_file(file).unwrap_or_else(|e| panic!("{e}")))
+}
+
+fn path(r: &Row) -> osl::Path {
+    r.path
+        .parse()
+        .unwrap_or_else(|e| panic!("{}: `{}`: {e}", r.file, r.path))
+}
+
+/// Each engine's wrong answers on `rows`, as `file: case engine: ...` lines, and the
 /// number of answers checked.
-fn failures(file: &str, rows: &[OslRow]) -> (Vec<String>, usize) {
+fn failures(rows: &[Row]) -> (Vec<String>, usize) {
     let mut out = Vec::new();
     let mut checked = 0;
     for e in engines() {
         for r in rows {
             let lpe = osl::parse(&r.expr, &r.registered)
-                .unwrap_or_else(|err| panic!("{file}:{} `{}`: {err}", r.line, r.expr));
+                .unwrap_or_else(|err| panic!("{}: `{}`: {err}", r.file, r.case));
             let m = e
                 .compile_osl(std::slice::from_ref(&lpe), &r.registered)
-                .unwrap_or_else(|err| panic!("{file}:{} {}: {err}", r.line, e.name()));
-            let got = m.which(&r.path);
+                .unwrap_or_else(|err| panic!("{}: `{}` {}: {err}", r.file, r.case, e.name()));
+            let got = m.which(&path(r));
             checked += 1;
             if got != [r.matches] {
                 out.push(format!(
-                    "{file}:{} {}: `{}` [{}] on `{}`: got {got:?}, OSL says {}",
-                    r.line,
+                    "{}: `{}` {}: `{}` [{}] on `{}`: got {got:?}, OSL says {}",
+                    r.file,
+                    r.case,
                     e.name(),
                     r.expr,
                     r.registered,
@@ -49,9 +61,9 @@ fn failures(file: &str, rows: &[OslRow]) -> (Vec<String>, usize) {
 
 #[test]
 fn accum_test_answers_130_of_130_on_every_engine() {
-    let rows = load_osl_rows("accum_test.tsv").unwrap();
+    let rows = load_rows("osl/accum_test.toml");
     assert_eq!(rows.len(), 130);
-    let (fails, checked) = failures("accum_test.tsv", &rows);
+    let (fails, checked) = failures(&rows);
     assert!(fails.is_empty(), "{}", fails.join("\n"));
     assert_eq!(checked, 130 * engines().len());
     // Both verdicts occur, so an engine answering a constant could not pass.
@@ -60,16 +72,16 @@ fn accum_test_answers_130_of_130_on_every_engine() {
 
 #[test]
 fn extra_rows_on_every_engine() {
-    let rows = load_osl_rows("extra.tsv").unwrap();
-    let (fails, _) = failures("extra.tsv", &rows);
+    let rows = load_rows("osl/extra.toml");
+    let (fails, _) = failures(&rows);
     assert!(fails.is_empty(), "{}", fails.join("\n"));
 }
 
 #[test]
 fn algebra_rows_on_every_engine() {
-    let rows = load_osl_rows("algebra.tsv").unwrap();
+    let rows = load_rows("osl/algebra.toml");
     assert!(rows.len() >= 30, "{}", rows.len());
-    let (fails, _) = failures("algebra.tsv", &rows);
+    let (fails, _) = failures(&rows);
     assert!(fails.is_empty(), "{}", fails.join("\n"));
 }
 
@@ -77,7 +89,7 @@ fn algebra_rows_on_every_engine() {
 fn the_algebra_rules_as_one_set_per_registration_on_every_engine() {
     // Many set-algebra AOVs in one set: each AOV's answer combines its own operands
     // only, wherever they sit among the set's hidden AOVs.
-    let rows = load_osl_rows("algebra.tsv").unwrap();
+    let rows = load_rows("osl/algebra.toml");
     let mut regs: Vec<Registered> = Vec::new();
     for r in &rows {
         if !regs.contains(&r.registered) {
@@ -86,7 +98,7 @@ fn the_algebra_rules_as_one_set_per_registration_on_every_engine() {
     }
     assert_eq!(regs.len(), 2);
     for reg in regs {
-        let rows: Vec<OslRow> = rows
+        let rows: Vec<Row> = rows
             .iter()
             .filter(|r| r.registered == reg)
             .cloned()
@@ -97,7 +109,7 @@ fn the_algebra_rules_as_one_set_per_registration_on_every_engine() {
 
 #[test]
 fn all_accum_rules_as_one_set_on_every_engine() {
-    let rows = load_osl_rows("accum_test.tsv").unwrap();
+    let rows = load_rows("osl/accum_test.toml");
     let reg: Registered = "events=U;scatters=Y".parse().unwrap();
     assert!(rows.iter().all(|r| r.registered == reg));
     rows_as_one_set_on_every_engine(&rows, &reg);
@@ -105,21 +117,21 @@ fn all_accum_rules_as_one_set_on_every_engine() {
 
 /// Every distinct rule of `rows` compiled into one set on every engine; each row's rule
 /// answers as the row says (the other rules in the set must not disturb it).
-fn rows_as_one_set_on_every_engine(rows: &[OslRow], reg: &Registered) {
+fn rows_as_one_set_on_every_engine(rows: &[Row], reg: &Registered) {
     let rules = distinct_rules(rows);
     let lpes: Vec<osl::Lpe> = rules.iter().map(|e| osl::parse(e, reg).unwrap()).collect();
     for e in engines() {
         let m = e.compile_osl(&lpes, reg).unwrap();
         for r in rows {
             let i = rules.iter().position(|x| *x == r.expr).unwrap();
-            let got = m.which(&r.path);
+            let got = m.which(&path(r));
             assert_eq!(got.len(), rules.len());
             assert_eq!(
                 got[i],
                 r.matches,
-                "{} line {}: {}",
+                "{} case `{}`: {}",
                 e.name(),
-                r.line,
+                r.case,
                 r.expr
             );
         }
@@ -144,7 +156,7 @@ fn the_redos_expression_builds_and_matches_on_every_engine() {
 }
 
 fn assert_agree(seed: u64) -> Result<(), TestCaseError> {
-    let cfg = lpe::generate::osl::Config::default();
+    let cfg = lpe_testkit::generate::osl::Config::default();
     let case = differential::generate_osl_case(seed, 0, &cfg, 6);
     match differential::check_in(&case.lang, &engines(), &case.exprs, &case.paths) {
         Outcome::Agree(a) => {
@@ -170,9 +182,9 @@ proptest! {
     #[test]
     fn generated_osl_expressions_print_and_parse_back(seed in any::<u64>()) {
         let mut rng = SplitMix64::new(seed);
-        let reg = lpe::generate::osl::registered(&mut rng);
-        let cfg = lpe::generate::osl::Config::default();
-        let e = lpe::generate::osl::lpe(&mut rng, &reg, &cfg);
+        let reg = lpe_testkit::generate::osl::registered(&mut rng);
+        let cfg = lpe_testkit::generate::osl::Config::default();
+        let e = lpe_testkit::generate::osl::lpe(&mut rng, &reg, &cfg);
         let text = e.to_string();
         let back = osl::parse(&text, &reg)
             .map_err(|err| TestCaseError::fail(format!("`{text}` [{reg}]: {err}")))?;

@@ -105,8 +105,8 @@ fn renderman_sets_say_their_dialect_and_keep_their_expressions() {
 /// AOV matches that prefix spliced with the tail of any path.
 #[test]
 fn dead_states_of_osl_set_algebra_are_sound_and_dfa_dead_states_complete() {
-    use lpe::generate::osl as gen;
     use lpe::rng::SplitMix64;
+    use lpe_testkit::generate::osl as gen;
 
     let cfg = gen::Config::default().with_max_vertices(5);
     let modes = [

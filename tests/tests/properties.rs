@@ -12,7 +12,7 @@ use engines::{Engine, Reference};
 use lpe::renderman::ast::Expr;
 use lpe::renderman::macros::{MacroTable, BASIC};
 use lpe::renderman::{Event, EventKind, Lpe, Path, Prefixes, Vertex};
-use lpe::strategy;
+use lpe_testkit::strategy;
 use lpe_tests::cases;
 use proptest::prelude::*;
 

@@ -7,7 +7,7 @@ proptest! {
     #![proptest_config(lpe_tests::cases(2000))]
 
     #[test]
-    fn print_then_parse_is_identity(l in lpe::strategy::lpe()) {
+    fn print_then_parse_is_identity(l in lpe_testkit::strategy::lpe()) {
         let text = l.to_string();
         let back = lpe::renderman::parse(&text).map_err(|e| TestCaseError::fail(format!("{text}\n{e}")))?;
         prop_assert_eq!(back, l, "printed as {}", text);
@@ -19,7 +19,7 @@ proptest! {
     /// (Random text, below, almost never parses, so it cannot test this.)
     #[test]
     fn respelled_expressions_parse_to_the_same_ast_and_print_stably(
-        l in lpe::strategy::lpe(),
+        l in lpe_testkit::strategy::lpe(),
         flips in prop::collection::vec(any::<bool>(), 64),
         blanks in prop::collection::vec(0u8..8, 64),
         lpe_prefix in any::<bool>(),

@@ -11,7 +11,8 @@
 //! unmentioned labels.
 //!
 //! With `--external 'CMD ARGS'` the cases go to an external matcher over the protocol of
-//! docs/protocol.md instead (see [`super::external`]).
+//! docs/protocol.md instead (see [`super::external`]); with `--suite DIR` as well, the
+//! conformance suite's cases instead of generated ones (see [`super::external_suite`]).
 
 use std::process::ExitCode;
 use std::time::Instant;

@@ -5,6 +5,7 @@
 //! Exit 0: agreement; 3: any finding; 2: bad input (the command cannot start, refuses
 //! the hello, e.g. for a dialect it does not speak; a bad argument). `--dialect osl`
 //! generates OSL cases, each with its own registration, sent with every `compile`.
+//! `--suite DIR` replays the conformance suite instead ([`super::external_suite`]).
 
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
@@ -19,6 +20,9 @@ pub fn run(args: &Args) -> ExitCode {
     let Some(command) = args.external.clone() else {
         return bad_input("error: --external needs a command");
     };
+    if let Some(dir) = &args.suite {
+        return super::external_suite::run(args, &command, dir);
+    }
     let registered = match args.lang.is_osl() {
         Ok(true) => match args.lang.registered(None) {
             Ok(r) => r,

@@ -5,6 +5,7 @@ pub mod diff;
 pub mod equiv;
 pub mod explain;
 pub mod external;
+pub mod external_suite;
 pub mod lint;
 pub mod match_osl;
 pub mod matching;

@@ -2,14 +2,14 @@
 //!
 //! Each case is one expression (or, one time in five, an AOV set of 2-5 expressions
 //! compiled at once) and paths generated *from* it (walks of the expression, near
-//! misses, uniform noise; see `lpe::generate`).
+//! misses, uniform noise; see `lpe_testkit::generate`).
 //!
 //! Case `i` of seed `s` is generated from its own PRNG stream, so a run is deterministic
 //! for a seed and a reported case can be regenerated alone (`--first i --cases 1`).
 
-use lpe::generate::{self, Choices, Config};
 use lpe::renderman::Lpe;
 use lpe::rng::SplitMix64 as Rng;
+use lpe_testkit::generate::{self, Choices, Config};
 
 use super::check::{check_in, Outcome};
 use super::counterexample::Counterexample;

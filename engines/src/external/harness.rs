@@ -12,9 +12,9 @@
 use std::fmt;
 use std::time::Duration;
 
-use lpe::generate::{self, Config as GenConfig};
 use lpe::osl::Registered;
 use lpe::DialectName;
+use lpe_testkit::generate::{self, Config as GenConfig};
 
 use super::client::{Client, Fault, FaultKind, StartError};
 use super::dialect::Wire;

@@ -275,7 +275,12 @@ mod tests {
         assert!(p.outside.is_empty());
         // A universe without glossy: glossy AOVs match outside it.
         let u = osl::parse("C<[RT]D>*[LO]", &reg).unwrap();
-        let p = partition(&set_in_the_osl_dialect(&osl::BASIC.map(|(_, src)| src)), &u, &reg).unwrap();
+        let p = partition(
+            &set_in_the_osl_dialect(&osl::BASIC.map(|(_, src)| src)),
+            &u,
+            &reg,
+        )
+        .unwrap();
         let out: Vec<(usize, String)> =
             p.outside.iter().map(|(i, w)| (*i, w.to_string())).collect();
         // Each a shortest one: the glossy bounce comes first, or right after the

@@ -51,6 +51,11 @@ pub struct Args {
     /// generated cases.
     #[arg(long, requires = "external")]
     pub expr: Vec<String>,
+    /// With --external: replay the conformance suite, every `*.toml` case file under DIR
+    /// (e.g. tests/testdata), both dialects, instead of generated cases; prints each
+    /// failed case with its file and name, exits 3 on any failure.
+    #[arg(long, value_name = "DIR", requires = "external", conflicts_with_all = ["expr", "register"])]
+    pub suite: Option<std::path::PathBuf>,
     /// With --external and --expr: the paths to ask about.
     #[arg(long, requires = "expr")]
     pub path: Vec<String>,

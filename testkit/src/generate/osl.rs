@@ -1,7 +1,7 @@
 //! Random OSL expressions, registrations and paths (features `arbitrary` or `proptest`).
 //!
 //! The same approach as the RenderMan generators one level up: expressions are built as
-//! expanded trees ([`crate::osl::Expr`]) that keep the parser's invariants (two slot
+//! expanded trees ([`lpe::osl::Expr`]) that keep the parser's invariants (two slot
 //! patterns and up to a few custom items per vertex pattern, an eater excluding the
 //! registration's basic labels exactly when there are fewer than five custom items), and
 //! paths are built **from** an expression (a walk choosing symbols each slot accepts and
@@ -10,8 +10,8 @@
 //! labels with a space and one label ([`STRANGER`]) no expression mentions.
 
 use super::Choices;
-use crate::automata::ir::Repetition;
-use crate::osl::{Expr, Lpe, Path, Registered, Symbol, SymbolPattern, Vertex, VertexPattern};
+use lpe::osl::{Expr, Lpe, Path, Registered, Symbol, SymbolPattern, Vertex, VertexPattern};
+use lpe::renderman::ast::Repetition;
 
 /// A path label no generated expression mentions.
 pub const STRANGER: &str = "zz";

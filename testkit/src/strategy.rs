@@ -1,7 +1,7 @@
-//! proptest strategies for expressions and paths (feature `proptest`).
+//! proptest strategies for expressions and paths (feature `proptest` of lpe-testkit).
 //!
 //! Exported so a renderer can property-test its own matcher against these ASTs. The
-//! ASTs are normalized (see [`crate::renderman::ast`]) so they print and re-parse to themselves.
+//! ASTs are normalized (see [`lpe::ast`]) so they print and re-parse to themselves.
 //! Labels come from a small pool so that expressions and paths share them.
 //!
 //! To test your own matcher against the reference, draw an [`aov_expr`] (or [`expr`])
@@ -9,12 +9,12 @@
 
 use proptest::prelude::*;
 
-use crate::algebra::Algebra;
-use crate::renderman::ast::{
+use lpe::algebra::Algebra;
+use lpe::renderman::ast::{
     Atom, EventPattern, EventPos, Expr, Item, LabelPos, Lpe, Repetition, Triple, TypePos,
 };
-use crate::renderman::path::{Event, EventKind, Path, Vertex, VertexType};
-use crate::renderman::prefix::{Prefix, Prefixes};
+use lpe::renderman::path::{Event, EventKind, Path, Vertex, VertexType};
+use lpe::renderman::prefix::{Prefix, Prefixes};
 
 /// The label pool shared by expressions and paths.
 pub const LABELS: [&str; 4] = ["key", "fill", "floor", "a b"];
@@ -238,7 +238,7 @@ pub fn biased_paths(expr: &Expr, n: usize) -> impl Strategy<Value = Vec<Path>> {
             labels: LABELS.map(str::to_string).to_vec(),
             ..crate::generate::Config::default()
         };
-        let mut rng = crate::rng::SplitMix64::new(seed);
+        let mut rng = lpe::rng::SplitMix64::new(seed);
         (0..n)
             .map(|_| crate::generate::biased_path(&expr, &mut rng, &cfg))
             .collect()

@@ -1,4 +1,4 @@
-//! Random expressions and paths for testing matchers (features `arbitrary` or `proptest`).
+//! Random expressions and paths for testing matchers (moved here from `lpe::generate`).
 //!
 //! Differential testing needs cases where the answer is interesting: when the paths are
 //! uniform noise nearly every comparison is "no match" against "no match" and proves
@@ -9,7 +9,7 @@
 //! [`biased_path`] mixes the three.
 //!
 //! Every function draws its decisions from a [`Choices`] source: a seeded [`SplitMix64`]
-//! (deterministic runs, e.g. `lpe-check diff --seed`), or with feature `arbitrary` a
+//! (deterministic runs, e.g. `lpe-check diff --seed`), or a
 //! fuzzer's `arbitrary::Unstructured` (so a fuzzer's mutations steer the structure and
 //! an exhausted input still yields a small, valid value).
 //!
@@ -19,7 +19,7 @@
 //! # Testing your own matcher
 //!
 //! ```
-//! use lpe::generate::{self, Config};
+//! use lpe_testkit::generate::{self, Config};
 //! use lpe::rng::SplitMix64;
 //!
 //! let cfg = Config::default();
@@ -37,17 +37,18 @@
 //!
 //! The OSL dialect's generators are in [`osl`].
 //!
-//! With feature `arbitrary`, [`Expr`], [`Lpe`] and [`Path`] implement
-//! `arbitrary::Arbitrary` (use them as `fuzz_target!` inputs); with feature `proptest`,
-//! [`crate::strategy`] has strategies for the same shapes.
+//! `strategy` (feature `proptest` of this crate) has proptest strategies for the same
+//! shapes. (`lpe::renderman::Expr`, `Lpe` and `Path` no longer implement `arbitrary::Arbitrary`:
+//! the orphan rule keeps such impls in `lpe`, and no target used them; the fuzz bodies
+//! draw from `arbitrary::Unstructured` through [`Choices`].)
 
-use crate::algebra::Algebra;
-use crate::renderman::ast::{
+use lpe::algebra::Algebra;
+use lpe::renderman::ast::{
     Atom, EventPattern, EventPos, Expr, Item, LabelPos, Lpe, Repetition, Triple, TypePos,
 };
-use crate::renderman::path::{Event, EventKind, Path, Vertex, VertexType};
-use crate::renderman::prefix::{Prefix, Prefixes};
-use crate::rng::SplitMix64;
+use lpe::renderman::path::{Event, EventKind, Path, Vertex, VertexType};
+use lpe::renderman::prefix::{Prefix, Prefixes};
+use lpe::rng::SplitMix64;
 
 pub mod osl;
 
@@ -73,7 +74,6 @@ impl Choices for SplitMix64 {
     }
 }
 
-#[cfg(feature = "arbitrary")]
 impl Choices for arbitrary::Unstructured<'_> {
     fn below(&mut self, n: usize) -> usize {
         if n <= 1 {
@@ -760,36 +760,6 @@ pub fn biased_path(expr: &Expr, c: &mut impl Choices, cfg: &Config) -> Path {
     uniform_path(c, cfg)
 }
 
-#[cfg(feature = "arbitrary")]
-mod arbitrary_impls {
-    use super::*;
-    use arbitrary::{Arbitrary, Result, Unstructured};
-
-    impl<'a> Arbitrary<'a> for Expr {
-        /// A [`path_shaped_expr`] or a plain [`expr`] with the default [`Config`].
-        fn arbitrary(u: &mut Unstructured<'a>) -> Result<Expr> {
-            let cfg = Config::default();
-            Ok(if u.chance(70) {
-                path_shaped_expr(u, &cfg)
-            } else {
-                expr(u, &cfg)
-            })
-        }
-    }
-
-    impl<'a> Arbitrary<'a> for Lpe {
-        fn arbitrary(u: &mut Unstructured<'a>) -> Result<Lpe> {
-            Ok(lpe(u, &Config::default()))
-        }
-    }
-
-    impl<'a> Arbitrary<'a> for Path {
-        fn arbitrary(u: &mut Unstructured<'a>) -> Result<Path> {
-            Ok(uniform_path(u, &Config::default()))
-        }
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -813,7 +783,7 @@ mod tests {
                 "{e}"
             );
             let text = e.to_string();
-            let back = crate::renderman::parse(&text).unwrap_or_else(|err| panic!("{text}: {err}"));
+            let back = lpe::renderman::parse(&text).unwrap_or_else(|err| panic!("{text}: {err}"));
             assert_eq!(back.expr, e, "{text}");
         }
     }
@@ -836,7 +806,7 @@ mod tests {
         let e = expr(&mut Greedy, &cfg);
         assert!(matches!(e, Expr::Repeat(..)), "{e}");
         assert!(e.positions() <= cfg.max_positions, "{e}");
-        assert_eq!(crate::renderman::parse(&e.to_string()).unwrap().expr, e);
+        assert_eq!(lpe::renderman::parse(&e.to_string()).unwrap().expr, e);
     }
 
     #[test]
@@ -878,7 +848,7 @@ mod tests {
     fn walks_of_simple_expressions_give_the_expected_shapes() {
         let cfg = Config::default();
         let mut rng = SplitMix64::new(1);
-        let e = crate::renderman::parse("C<RD'floor'><TS8>[<L.'key'>]")
+        let e = lpe::renderman::parse("C<RD'floor'><TS8>[<L.'key'>]")
             .unwrap()
             .expr;
         let p = matching_path(&e, &mut rng, &cfg).unwrap();

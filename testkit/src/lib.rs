@@ -1,0 +1,21 @@
+//! Test support shared by the workspace's test suites, runners and tools.
+//!
+//! - [`suite`]: the conformance suite's loader: the case format of
+//!   `tests/testdata/**/*.toml` (both dialects, `tests/testdata/README.md`), file
+//!   discovery, validation with errors naming the file and the case, and the flat views
+//!   every runner checks ([`suite::Plan`], [`suite::Row`]). The runners themselves live
+//!   with what they run: the engines and `AovSet` in `lpe-tests`, the C ABI in
+//!   `lpe-capi`'s tests, the renderer's matcher in `lpe-render`'s, external matchers in
+//!   `lpe-check diff --external CMD --suite DIR`.
+//! - [`generate`]: random expressions, AOV sets and paths aimed at them, from any
+//!   source of choices (lpe's `SplitMix64`, or fuzz input through `arbitrary`); the
+//!   differential harness (`lpe-check diff`) and the fuzz bodies (`engines::fuzzing`)
+//!   draw their cases here, OSL's in [`generate::osl`].
+//! - `strategy` (feature `proptest`): proptest strategies for the same shapes.
+
+#![forbid(unsafe_code)]
+
+pub mod generate;
+#[cfg(feature = "proptest")]
+pub mod strategy;
+pub mod suite;
