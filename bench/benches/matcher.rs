@@ -28,7 +28,7 @@ fn matching(c: &mut Criterion) {
             b.iter(|| bench::run_vertices(&fast, &flat))
         });
         g.bench_function("fast, on classes", |b| {
-            b.iter(|| bench::run_classes(&fast, &classes))
+            b.iter(|| bench::run_classes(fast.automaton(), &classes))
         });
         let nfa_opts = Options {
             dfa_budget: 0,

@@ -155,7 +155,7 @@ pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
         let mut jobs: Vec<Job<'_>> = vec![
             Box::new(|c| run_vertices(&fast, &flat[c])),
             Box::new(|c| shapes::run_interned(&fast, &interned[c])),
-            Box::new(|c| run_classes(&fast, &fast_classes[c])),
+            Box::new(|c| run_classes(fast.automaton(), &fast_classes[c])),
             Box::new(|c| shapes::run_renderer(&fast, &fast_classes[c])),
             Box::new(|c| shapes::run_heap_record(&fast, &fast_classes[c])),
         ];

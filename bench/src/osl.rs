@@ -146,10 +146,10 @@ pub fn run(
     let redos_classes = chunked(&osl_paths, |c| classify(&redos, c));
     let rm_classes = chunked(paths, |c| classify(&rm, c));
     let mut jobs: Vec<Job<'_>> = vec![
-        Box::new(|c| run_classes(&rm, &rm_classes[c])),
-        Box::new(|c| run_classes(&fast, &fast_classes[c])),
-        Box::new(|c| run_classes(&nfa, &nfa_classes[c])),
-        Box::new(|c| run_classes(&redos, &redos_classes[c])),
+        Box::new(|c| run_classes(rm.automaton(), &rm_classes[c])),
+        Box::new(|c| run_classes(fast.automaton(), &fast_classes[c])),
+        Box::new(|c| run_classes(nfa.automaton(), &nfa_classes[c])),
+        Box::new(|c| run_classes(redos.automaton(), &redos_classes[c])),
     ];
     let times = best_times(reps, fast_classes.len(), &mut jobs);
     drop(jobs);
