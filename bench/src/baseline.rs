@@ -147,7 +147,7 @@ impl Encoding {
             let ls: Vec<u8> = (0..label_codes)
                 .filter(|&l| {
                     self.vertex(te, l)
-                        .is_some_and(|v| reference::atom_matches(a, &v))
+                        .is_some_and(|v| lpe_reference::atom_matches(a, &v))
                 })
                 .collect();
             if ls.is_empty() {

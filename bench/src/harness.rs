@@ -135,7 +135,7 @@ pub fn run_lazy(
 pub fn reference_mask(aovs: &[(String, Lpe)], p: &Path) -> AovMask {
     let mut m = AovMask::EMPTY;
     for (i, (_, l)) in aovs.iter().enumerate() {
-        if reference::is_match(l, p) {
+        if lpe_reference::is_match(l, p) {
             m.insert(i);
         }
     }

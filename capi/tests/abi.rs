@@ -457,7 +457,7 @@ fn osl_accum_test_rows_answer_osl_and_the_reference_through_the_c_abi() {
             let got = route_osl(&set, &row.path, stepping) == 1;
             let lpe = lpe::osl::parse(&row.expr, &row.registered).unwrap();
             let path: lpe::osl::Path = row.path.parse().unwrap();
-            let reference = reference::osl::is_match(&lpe, &path);
+            let reference = lpe_reference::osl::is_match(&lpe, &path);
             assert_eq!(
                 (got, reference),
                 (row.matches, row.matches),

@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use engines::Engine;
+use lpe_engines::Engine;
 
 /// Bad input to a subcommand: reported on stderr, exit status 2.
 #[derive(Debug, thiserror::Error)]
@@ -97,13 +97,13 @@ pub fn bad_input(message: impl std::fmt::Display) -> std::process::ExitCode {
 /// `--engine` values: one engine name, or `all`.
 pub fn select_engines(name: &str) -> Result<Vec<&'static dyn Engine>, InputError> {
     if name == "all" {
-        return Ok(engines::all());
+        return Ok(lpe_engines::all());
     }
-    engines::by_name(name)
+    lpe_engines::by_name(name)
         .map(|e| vec![e])
         .ok_or_else(|| InputError::UnknownEngine {
             name: name.to_string(),
-            available: engines::names(),
+            available: lpe_engines::names(),
         })
 }
 

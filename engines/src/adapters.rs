@@ -18,7 +18,7 @@ impl Matcher for ReferenceMatcher {
     fn which(&self, path: &Path) -> Vec<bool> {
         self.0
             .iter()
-            .map(|e| reference::is_match(e, path))
+            .map(|e| lpe_reference::is_match(e, path))
             .collect()
     }
 }
@@ -31,7 +31,7 @@ impl Matcher<osl::Path> for OslReferenceMatcher {
     fn which(&self, path: &osl::Path) -> Vec<bool> {
         self.0
             .iter()
-            .map(|e| reference::osl::is_match(e, path))
+            .map(|e| lpe_reference::osl::is_match(e, path))
             .collect()
     }
 }

@@ -8,8 +8,8 @@ use std::path::PathBuf;
 use std::process::Command;
 use std::time::Duration;
 
-use engines::differential::Run;
-use engines::external::{self, Answer, Cases, FaultKind, Finding, Report, Setup};
+use lpe_engines::differential::Run;
+use lpe_engines::external::{self, Answer, Cases, FaultKind, Finding, Report, Setup};
 
 fn python() -> bool {
     let found = Command::new("python3")
@@ -60,7 +60,7 @@ fn shell_quote(s: &str) -> String {
 }
 
 fn run(command: String, cases: &Cases, timeout_ms: u64) -> Report {
-    external::run(&setup(command, timeout_ms), cases, &engines::all()).expect("starts")
+    external::run(&setup(command, timeout_ms), cases, &lpe_engines::all()).expect("starts")
 }
 
 #[test]
@@ -231,7 +231,7 @@ fn a_command_that_cannot_start_is_bad_input() {
     let err = external::run(
         &setup("/nonexistent/matcher --flag".into(), 500),
         &generated(1, 0),
-        &engines::all(),
+        &lpe_engines::all(),
     )
     .expect_err("cannot start");
     assert!(err.to_string().contains("/nonexistent/matcher"), "{err}");

@@ -1,5 +1,5 @@
-//! Fuzz target `parse`: the property is `engines::fuzzing::parse` (see its docs), which
+//! Fuzz target `parse`: the property is `lpe_engines::fuzzing::parse` (see its docs), which
 //! `cargo test` also runs on every committed corpus and regression file.
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| engines::fuzzing::parse(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| lpe_engines::fuzzing::parse(data));

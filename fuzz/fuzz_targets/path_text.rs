@@ -1,5 +1,5 @@
-//! Fuzz target `path_text`: the property is `engines::fuzzing::path_text` (see its docs), which
+//! Fuzz target `path_text`: the property is `lpe_engines::fuzzing::path_text` (see its docs), which
 //! `cargo test` also runs on every committed corpus and regression file.
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| engines::fuzzing::path_text(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| lpe_engines::fuzzing::path_text(data));

@@ -25,7 +25,7 @@ pub trait Checked: Display {
 impl Checked for Lpe {
     type Path = Path;
     fn reference_match(&self, path: &Path) -> bool {
-        reference::is_match(self, path)
+        lpe_reference::is_match(self, path)
     }
     fn remainder(aovs: &[(String, Lpe)], universe: &Lpe) -> Lpe {
         lpe::analysis::remainder(aovs, universe)
@@ -35,7 +35,7 @@ impl Checked for Lpe {
 impl Checked for osl::Lpe {
     type Path = osl::Path;
     fn reference_match(&self, path: &osl::Path) -> bool {
-        reference::osl::is_match(self, path)
+        lpe_reference::osl::is_match(self, path)
     }
     fn remainder(aovs: &[(String, osl::Lpe)], universe: &osl::Lpe) -> osl::Lpe {
         lpe::analysis::remainder(aovs, universe)

@@ -3,7 +3,7 @@
 //! vector-by-vector conformance cases are in `tests/testdata/`.)
 
 use lpe::renderman::{parse, Event, EventKind, Path, Vertex, VertexType};
-use reference::is_match;
+use lpe_reference::is_match;
 
 /// A small alphabet: both scattering types with D1, D2, S2, S8, one or no label; both
 /// emitters with one or no label. No user lobes (user-lobe pseudo paths are outside the

@@ -41,7 +41,8 @@ fn basic_aovs_pass_and_basic_plus_caustics_fails_with_a_real_witness() {
         .expect("a quoted witness path")
         .parse()
         .unwrap();
-    let matches = |src: &str| reference::is_match(&lpe::renderman::parse(src).unwrap(), &witness);
+    let matches =
+        |src: &str| lpe_reference::is_match(&lpe::renderman::parse(src).unwrap(), &witness);
     assert!(matches("caustics"), "{detail}");
     let other = if detail.contains("indirectDiffuse") {
         "indirectDiffuse"

@@ -28,7 +28,7 @@
 //!     let expr = generate::path_shaped_expr(&mut rng, &cfg);
 //!     let path = generate::biased_path(&expr, &mut rng, &cfg);
 //!     // Compare your matcher with a reference on (expr, path) here, e.g. with
-//!     // `lpe-reference`'s `reference::is_expr_match(&expr, &path)`.
+//!     // `lpe-reference`'s `lpe_reference::is_expr_match(&expr, &path)`.
 //!     assert!(path.len() >= 2);
 //!     // Every generated expression prints to text that parses back to itself.
 //!     assert_eq!(lpe::renderman::parse(&expr.to_string()).unwrap().expr, expr);

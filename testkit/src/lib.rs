@@ -9,7 +9,7 @@
 //!   `lpe-check diff --external CMD --suite DIR`.
 //! - [`generate`]: random expressions, AOV sets and paths aimed at them, from any
 //!   source of choices (lpe's `SplitMix64`, or fuzz input through `arbitrary`); the
-//!   differential harness (`lpe-check diff`) and the fuzz bodies (`engines::fuzzing`)
+//!   differential harness (`lpe-check diff`) and the fuzz bodies (`lpe_engines::fuzzing`)
 //!   draw their cases here, OSL's in [`generate::osl`].
 //! - `strategy` (feature `proptest`): proptest strategies for the same shapes.
 

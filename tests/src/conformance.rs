@@ -11,10 +11,10 @@
 
 use std::fmt;
 
-use engines::differential::{Language, Osl, RenderMan};
 use lpe::osl::{self, Registered};
 use lpe::renderman::{Lpe, Parser, Path};
 use lpe::{AovSet, DialectName, Options};
+use lpe_engines::differential::{Language, Osl, RenderMan};
 
 pub use lpe_testkit::suite::{
     kind_name, load_dir, load_str, testdata_dir, Aov, BadPath, Case, ExpectedError, Landing,
@@ -22,7 +22,7 @@ pub use lpe_testkit::suite::{
 };
 
 // The one line to change when the engine registry moves crates.
-use engines as registry;
+use lpe_engines as registry;
 
 /// An `Options` configuration lpe's [`AovSet`] is checked under.
 #[derive(Clone, Debug)]

@@ -19,7 +19,7 @@ fn aovs(srcs: &[(&str, &str)]) -> Vec<(String, Lpe)> {
 }
 
 fn m(l: &Lpe, p: &Path) -> bool {
-    reference::is_match(l, p)
+    lpe_reference::is_match(l, p)
 }
 
 #[test]

@@ -138,7 +138,7 @@ fn check_paths(
             for e in &extensions {
                 for (i, x) in exprs.iter().enumerate() {
                     prop_assert!(
-                        !reference::is_match(x, e),
+                        !lpe_reference::is_match(x, e),
                         "{}: dead after `{}` but AOV {} `{}` matches `{}`",
                         what,
                         Path::new(prefix.to_vec()).map_or("(prefix)".into(), |p| p.to_string()),

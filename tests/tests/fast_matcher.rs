@@ -28,7 +28,7 @@ fn sample(e: &Expr, pool: &[Vertex], rng: &mut Rng, out: &mut Vec<Vertex>) -> Op
         Expr::Atom(a) => {
             let ok: Vec<&Vertex> = pool
                 .iter()
-                .filter(|v| reference::atom_matches(a, v))
+                .filter(|v| lpe_reference::atom_matches(a, v))
                 .collect();
             if ok.is_empty() {
                 return None;
@@ -117,7 +117,10 @@ fn check_set(exprs: &[Lpe], paths: &[Path], stats: &Stats) -> Result<(), TestCas
     };
     let empty: Vec<usize> = fast.warnings().iter().map(|w| w.aov).collect();
     for p in paths {
-        let want: Vec<bool> = exprs.iter().map(|e| reference::is_match(e, p)).collect();
+        let want: Vec<bool> = exprs
+            .iter()
+            .map(|e| lpe_reference::is_match(e, p))
+            .collect();
         let got_fast = fast.match_path(p);
         let got_nfa = nfa.match_path(p);
         for (i, &w) in want.iter().enumerate() {
@@ -154,7 +157,7 @@ fn check_set(exprs: &[Lpe], paths: &[Path], stats: &Stats) -> Result<(), TestCas
             for (i, e) in exprs.iter().enumerate() {
                 prop_assert_eq!(
                     m.contains(i),
-                    reference::is_match(e, &r),
+                    lpe_reference::is_match(e, &r),
                     "splice `{}` on `{}`",
                     e,
                     r
@@ -254,7 +257,7 @@ fn long_bounded_repeats_are_exact_within_max_path_len() {
             for p in &paths {
                 prop_assert_eq!(
                     set.match_path(p).contains(0),
-                    reference::is_match(&l, p),
+                    lpe_reference::is_match(&l, p),
                     "`{}` on `{}`",
                     l,
                     p
@@ -301,9 +304,17 @@ fn caustics_overlap_witnesses_hold_under_the_reference() {
     let p = analysis::partition(&aovs, &universe, &lpe::renderman::Parser::default()).unwrap();
     assert!(!p.overlaps.is_empty());
     for (i, j, w) in &p.overlaps {
-        assert!(reference::is_match(&universe, w), "{w}");
-        assert!(reference::is_match(&aovs[*i].1, w), "{} on {w}", aovs[*i].0);
-        assert!(reference::is_match(&aovs[*j].1, w), "{} on {w}", aovs[*j].0);
+        assert!(lpe_reference::is_match(&universe, w), "{w}");
+        assert!(
+            lpe_reference::is_match(&aovs[*i].1, w),
+            "{} on {w}",
+            aovs[*i].0
+        );
+        assert!(
+            lpe_reference::is_match(&aovs[*j].1, w),
+            "{} on {w}",
+            aovs[*j].0
+        );
         assert!(aovs[*j].0 == "caustics", "{}", aovs[*j].0);
     }
 }
@@ -337,7 +348,7 @@ fn comparison_witnesses_hold_under_the_reference() {
             };
             if let Some(w) = &c.first_only {
                 prop_assert!(
-                    reference::is_match(a, w) && !reference::is_match(b, w),
+                    lpe_reference::is_match(a, w) && !lpe_reference::is_match(b, w),
                     "{} vs {}: {}",
                     a,
                     b,
@@ -346,7 +357,7 @@ fn comparison_witnesses_hold_under_the_reference() {
             }
             if let Some(w) = &c.second_only {
                 prop_assert!(
-                    !reference::is_match(a, w) && reference::is_match(b, w),
+                    !lpe_reference::is_match(a, w) && lpe_reference::is_match(b, w),
                     "{} vs {}: {}",
                     a,
                     b,
@@ -359,7 +370,7 @@ fn comparison_witnesses_hold_under_the_reference() {
             let mut paths = random;
             paths.extend(sampled_paths(&exprs[..2], &pool, seed, 10));
             for p in &paths {
-                let (ma, mb) = (reference::is_match(a, p), reference::is_match(b, p));
+                let (ma, mb) = (lpe_reference::is_match(a, p), lpe_reference::is_match(b, p));
                 if c.first_only.is_none() {
                     prop_assert!(!ma || mb, "{} not in {}: {}", a, b, p);
                 }
@@ -406,7 +417,7 @@ fn blow_up_shapes_compile_in_bounded_time() {
         for p in &paths {
             assert_eq!(
                 set.match_path(p).contains(0),
-                reference::is_match(&l, p),
+                lpe_reference::is_match(&l, p),
                 "{src} on {p}"
             );
         }
@@ -416,13 +427,16 @@ fn blow_up_shapes_compile_in_bounded_time() {
 #[test]
 fn engines_are_registered() {
     for name in ["reference", "fast", "nfa"] {
-        assert!(engines::by_name(name).is_some(), "{name}");
+        assert!(lpe_engines::by_name(name).is_some(), "{name}");
     }
     let exprs: Vec<Lpe> = basic().into_iter().map(|(_, l)| l).collect();
     let p: Path = "C RD2 RS L'key'".parse().unwrap();
-    let want: Vec<bool> = exprs.iter().map(|e| reference::is_match(e, &p)).collect();
+    let want: Vec<bool> = exprs
+        .iter()
+        .map(|e| lpe_reference::is_match(e, &p))
+        .collect();
     for name in ["fast", "nfa"] {
-        let m = engines::by_name(name).unwrap().compile(&exprs).unwrap();
+        let m = lpe_engines::by_name(name).unwrap().compile(&exprs).unwrap();
         assert_eq!(m.which(&p), want, "{name}");
     }
 }

@@ -1,6 +1,6 @@
 //! Replays every committed fuzz input on stable: `fuzz/corpus/TARGET/*` and
 //! `fuzz/regressions/TARGET/*` through the same function the fuzz target calls
-//! (`engines::fuzzing`). A regression file is a crash input saved by a campaign; it
+//! (`lpe_engines::fuzzing`). A regression file is a crash input saved by a campaign; it
 //! must pass once the bug is fixed.
 
 use std::path::PathBuf;
@@ -18,7 +18,7 @@ fn replay(kind: &str) -> usize {
             continue; // README, .gitkeep
         }
         let name = dir.file_name().to_string_lossy().into_owned();
-        let Some(body) = engines::fuzzing::target(&name) else {
+        let Some(body) = lpe_engines::fuzzing::target(&name) else {
             panic!("{}: no fuzz target called `{name}`", root.display());
         };
         for file in std::fs::read_dir(dir.path()).unwrap().flatten() {
@@ -51,7 +51,7 @@ fn regression_files_pass() {
 fn differential_corpus_files_compare_engines() {
     let root = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../fuzz/corpus");
     for name in ["differential", "aov_set", "osl_differential"] {
-        let compared = engines::fuzzing::compared_target(name).unwrap();
+        let compared = lpe_engines::fuzzing::compared_target(name).unwrap();
         let (mut n, mut uncompared) = (0usize, 0usize);
         for file in std::fs::read_dir(root.join(name)).unwrap().flatten() {
             let data = std::fs::read(file.path()).unwrap();

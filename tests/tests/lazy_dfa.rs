@@ -65,7 +65,7 @@ fn reference_mask(exprs: &[Lpe], p: &Path) -> AovMask {
     exprs
         .iter()
         .enumerate()
-        .filter(|(_, e)| reference::is_match(e, p))
+        .filter(|(_, e)| lpe_reference::is_match(e, p))
         .map(|(i, _)| i)
         .collect()
 }
@@ -235,7 +235,7 @@ fn blow_up_sets_go_lazy_at_once_and_answer_right() {
     p.push_str(&" RS".repeat(20));
     p.push_str(" L");
     let p: Path = p.parse().unwrap();
-    assert!(reference::is_match(&exprs[0], &p));
+    assert!(lpe_reference::is_match(&exprs[0], &p));
     assert!(set.match_path(&p).contains(0));
     for p in random_paths(4, 200, 30) {
         assert_eq!(set.match_path(&p), reference_mask(&exprs, &p), "{p}");

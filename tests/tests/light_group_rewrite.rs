@@ -182,7 +182,7 @@ fn rewritten_macros_match_the_hand_decided_paths() {
         let lpe = expand(&config, body);
         let p: Path = path.parse().unwrap();
         assert_eq!(
-            reference::is_match(&lpe, &p),
+            lpe_reference::is_match(&lpe, &p),
             want,
             "reference: `{body}` (`{lpe}`) on `{p}`"
         );

@@ -212,7 +212,7 @@ fn rewrite_is_exact_up_to_the_bound_and_differs_only_as_documented_past_it() {
             for p in paths_of_len(l as usize).iter().step_by(7) {
                 assert_eq!(
                     exact.match_path(p).contains(0),
-                    reference::is_match(&lpe, p),
+                    lpe_reference::is_match(&lpe, p),
                     "`{src}` on `{p}`"
                 );
             }

@@ -83,7 +83,7 @@ fn positions_always_active_together_are_kept_once() {
         ] {
             let want: Vec<usize> = (0..2)
                 .filter(|&i| {
-                    reference::is_match(&lpe::renderman::parse(srcs[i].1).unwrap(), &path(p))
+                    lpe_reference::is_match(&lpe::renderman::parse(srcs[i].1).unwrap(), &path(p))
                 })
                 .collect();
             for s in [&dfa, &nfa] {

@@ -2,18 +2,18 @@
 //! own accum test (130 verdicts) and the hand-written `extra.toml` rows, one set of all
 //! accum rules compiled at once, and the differential property on generated OSL cases.
 
-use engines::differential::{self, Outcome};
-use engines::Engine;
 use lpe::osl::{self, Registered};
 use lpe::rng::SplitMix64;
+use lpe_engines::differential::{self, Outcome};
+use lpe_engines::Engine;
 use lpe_testkit::suite::{distinct_rules, load_file, rows, Row};
 use lpe_tests::cases;
 use proptest::prelude::*;
 
 /// The registry plus the eager (dense DFA) oracle.
 fn engines() -> Vec<&'static dyn Engine> {
-    let mut all = engines::all();
-    all.push(&engines::regex::EAGER);
+    let mut all = lpe_engines::all();
+    all.push(&lpe_engines::regex::EAGER);
     all
 }
 

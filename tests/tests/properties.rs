@@ -7,11 +7,11 @@
 //! because persisted seeds stop reproducing when a strategy changes, should also be
 //! copied into a named unit test.
 
-use engines::differential::{self, Outcome};
-use engines::{Engine, Reference};
 use lpe::renderman::ast::Expr;
 use lpe::renderman::macros::{MacroTable, BASIC};
 use lpe::renderman::{Event, EventKind, Lpe, Path, Prefixes, Vertex};
+use lpe_engines::differential::{self, Outcome};
+use lpe_engines::{Engine, Reference};
 use lpe_testkit::strategy;
 use lpe_tests::cases;
 use proptest::prelude::*;
@@ -22,8 +22,8 @@ use proptest::prelude::*;
 /// tests check that it really builds the dense DFA on the conformance cases and the
 /// basic AOVs.
 fn engines() -> Vec<&'static dyn Engine> {
-    let mut all = engines::all();
-    all.push(&engines::regex::EAGER);
+    let mut all = lpe_engines::all();
+    all.push(&lpe_engines::regex::EAGER);
     all
 }
 

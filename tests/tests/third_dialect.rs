@@ -242,7 +242,7 @@ fn the_set_agrees_with_the_reference_matcher() {
                 let text = format!("{p} {end}");
                 let lp = path(&text);
                 let want: Vec<usize> = (0..aovs.len())
-                    .filter(|&i| reference::is_match(&aovs[i].1 .0, &lp.0))
+                    .filter(|&i| lpe_reference::is_match(&aovs[i].1 .0, &lp.0))
                     .collect();
                 let got: Vec<usize> = set.match_path(&lp).iter().collect();
                 assert_eq!(got, want, "{text}");

@@ -2,7 +2,7 @@
 //!
 //! Each case is one expression (or, one time in five, an AOV set of 2-5 expressions
 //! compiled at once) and `--paths` paths generated *from* it; see
-//! `engines::differential::cases`. Every engine answers; the first disagreements are
+//! `lpe_engines::differential::cases`. Every engine answers; the first disagreements are
 //! minimized and printed, and the process exits 3.
 //!
 //! `--dialect osl` generates OSL cases instead: each with its own registration (often
@@ -17,8 +17,8 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use engines::differential::{run_cases, run_osl_cases, Language, Totals};
 use lpe::DialectName;
+use lpe_engines::differential::{run_cases, run_osl_cases, Language, Totals};
 
 use crate::input::{bad_input, select_engines};
 

@@ -10,7 +10,7 @@
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use engines::external::{self, Cases, Setup};
+use lpe_engines::external::{self, Cases, Setup};
 
 use super::diff::args::Args;
 use crate::input::{bad_input, select_engines};

@@ -17,8 +17,8 @@
 use std::process::ExitCode;
 use std::time::Duration;
 
-use engines::external::{AovSource, Client, Registration, Reply, StartError};
 use lpe::DialectName;
+use lpe_engines::external::{AovSource, Client, Registration, Reply, StartError};
 use lpe_testkit::suite::{load_dir, Loaded, Plan};
 
 use super::diff::Args;

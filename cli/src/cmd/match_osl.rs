@@ -12,9 +12,9 @@
 
 use std::process::ExitCode;
 
-use engines::differential::Osl;
-use engines::Engine;
 use lpe::osl::{self, Registered};
+use lpe_engines::differential::Osl;
+use lpe_engines::Engine;
 
 use super::matching::answer::{answer_paths, batch, verdict_in, Args, LineOutcome, Verdict};
 use crate::input::{bad_input, osl_error};

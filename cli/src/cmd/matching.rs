@@ -12,8 +12,8 @@ use std::process::ExitCode;
 
 use lpe::renderman::{Lpe, Parser, Path};
 
-use engines::differential::RenderMan;
-use engines::Engine;
+use lpe_engines::differential::RenderMan;
+use lpe_engines::Engine;
 
 use crate::input::{bad_input, load_parser, select_engines};
 

@@ -308,7 +308,11 @@ mod tests {
     fn some_osl_cases_hold_set_algebra_that_matches_some_of_their_paths() {
         let cfg = generate::osl::Config::default();
         let cases: Vec<Case<Osl>> = (0..400).map(|i| generate_osl_case(3, i, &cfg, 4)).collect();
-        assert_some_algebra_that_matches(&cases, |e| e.algebra.is_some(), reference::osl::is_match);
+        assert_some_algebra_that_matches(
+            &cases,
+            |e| e.algebra.is_some(),
+            lpe_reference::osl::is_match,
+        );
         // Without set algebra when asked (for matchers that do not speak it).
         let plain = generate::osl::Config::default().without_set_algebra();
         assert!((0..400).all(|i| generate_osl_case(3, i, &plain, 1)
@@ -321,6 +325,6 @@ mod tests {
     fn some_cases_hold_set_algebra_and_their_paths_aim_at_operands() {
         let cfg = Config::default();
         let cases: Vec<Case> = (0..400).map(|i| generate_case(3, i, &cfg, 4)).collect();
-        assert_some_algebra_that_matches(&cases, |e| e.algebra.is_some(), reference::is_match);
+        assert_some_algebra_that_matches(&cases, |e| e.algebra.is_some(), lpe_reference::is_match);
     }
 }

@@ -7,7 +7,7 @@
 //!
 //! Engines that only judge whole paths plug in through [`WholePathMatcher`]: its state
 //! records the vertices, and at an emitter the engine ([`WholePath`]) answers for the
-//! whole path. [`ReferenceMatcher`] does this with `reference::is_match`, memoized per
+//! whole path. [`ReferenceMatcher`] does this with `lpe_reference::is_match`, memoized per
 //! distinct path (renders revisit the same few vertex sequences millions of times) so
 //! a render on the fallback stays within budget; `CheckEngine` (feature `engines`) does
 //! it with any engine of the `lpe-engines` registry, which is how `converge` times the
@@ -96,7 +96,7 @@ pub trait WholePath: Sync {
     fn which(&self, path: &Path) -> AovMask;
 }
 
-/// `reference::is_match` on each expression.
+/// `lpe_reference::is_match` on each expression.
 pub struct Reference(Vec<Lpe>);
 
 impl Reference {
@@ -110,7 +110,7 @@ impl Reference {
 impl WholePath for Reference {
     fn which(&self, path: &Path) -> AovMask {
         (0..self.0.len())
-            .filter(|&i| reference::is_match(&self.0[i], path))
+            .filter(|&i| lpe_reference::is_match(&self.0[i], path))
             .collect()
     }
 }
@@ -130,9 +130,9 @@ fn check_count(aovs: &[Lpe]) -> Result<(), MatcherError> {
 /// compiles its own on first use.
 #[cfg(feature = "engines")]
 pub struct CheckEngine {
-    engine: &'static dyn engines::Engine,
+    engine: &'static dyn lpe_engines::Engine,
     aovs: Vec<Lpe>,
-    compiled: Vec<Mutex<Option<Box<dyn engines::Matcher>>>>,
+    compiled: Vec<Mutex<Option<Box<dyn lpe_engines::Matcher>>>>,
 }
 
 #[cfg(feature = "engines")]
@@ -140,7 +140,7 @@ impl CheckEngine {
     /// Compiles `aovs` with `engine` once up front, so an engine that cannot build the
     /// set says so here and not mid-render.
     pub fn new(
-        engine: &'static dyn engines::Engine,
+        engine: &'static dyn lpe_engines::Engine,
         aovs: &[Lpe],
     ) -> Result<CheckEngine, MatcherError> {
         check_count(aovs)?;
@@ -308,7 +308,7 @@ mod tests {
     }
 
     /// Steps `m` along each path and compares its answer (twice: a memo must not
-    /// change it) with `reference::is_match` per expression.
+    /// change it) with `lpe_reference::is_match` per expression.
     fn agrees_with_is_match(
         m: &(impl PathMatcher<Vertex = Vertex> + Sync),
         exprs: &[Lpe],
@@ -321,7 +321,7 @@ mod tests {
                 s = m.step(s, m.classify(v));
             }
             let want: AovMask = (0..exprs.len())
-                .filter(|&i| reference::is_match(&exprs[i], &path))
+                .filter(|&i| lpe_reference::is_match(&exprs[i], &path))
                 .collect();
             assert_eq!(m.matches(s), want, "{text}");
             assert_eq!(m.matches(s), want, "{text} (again)");
@@ -362,7 +362,8 @@ mod tests {
     #[test]
     fn the_oracle_through_check_engine_agrees_with_is_match_on_every_thread() {
         let exprs = exprs();
-        let m = WholePathMatcher::direct(CheckEngine::new(&engines::regex::LAZY, &exprs).unwrap());
+        let m =
+            WholePathMatcher::direct(CheckEngine::new(&lpe_engines::regex::LAZY, &exprs).unwrap());
         // Slot 0 holds the matcher compiled up front; rayon workers compile their own.
         agrees_with_is_match(&m, &exprs, &PATHS);
         rayon::scope(|s| {
@@ -377,6 +378,6 @@ mod tests {
         let many = vec![lpe::renderman::parse("CL").unwrap(); MAX_AOVS + 1];
         assert!(Reference::new(&many).is_err());
         #[cfg(feature = "engines")]
-        assert!(CheckEngine::new(&engines::regex::LAZY, &many).is_err());
+        assert!(CheckEngine::new(&lpe_engines::regex::LAZY, &many).is_err());
     }
 }

@@ -25,9 +25,9 @@ pub enum MatcherRow {
     /// reached. Only with the `engines` feature.
     #[cfg(feature = "engines")]
     Oracle,
-    /// `reference::is_match`, memoized per distinct vertex sequence.
+    /// `lpe_reference::is_match`, memoized per distinct vertex sequence.
     ReferenceMemo,
-    /// `reference::is_match` on every emitter reached: the verification engine's cost.
+    /// `lpe_reference::is_match` on every emitter reached: the verification engine's cost.
     Reference,
 }
 
@@ -86,7 +86,8 @@ impl MatcherRow {
             MatcherRow::Nfa => render_with(&fast(0)?, scene, aovs, lobes, settings, quiet),
             #[cfg(feature = "engines")]
             MatcherRow::Oracle => {
-                let m = WholePathMatcher::direct(CheckEngine::new(&engines::regex::LAZY, &lpes)?);
+                let m =
+                    WholePathMatcher::direct(CheckEngine::new(&lpe_engines::regex::LAZY, &lpes)?);
                 render_with(&m, scene, aovs, lobes, settings, quiet)
             }
             MatcherRow::ReferenceMemo => {

@@ -1,7 +1,7 @@
 //! The arguments of `lpe-check diff`, apart from the command so that `diff --external`
 //! ([`crate::cmd::external`]) reads them without importing the command that calls it.
 
-use engines::differential::Run;
+use lpe_engines::differential::Run;
 
 use crate::input::DialectArgs;
 

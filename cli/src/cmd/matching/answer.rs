@@ -6,8 +6,8 @@
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
 
-use engines::differential::Language;
-use engines::Engine;
+use lpe_engines::differential::Language;
+use lpe_engines::Engine;
 
 use crate::input::{bad_input, DialectArgs};
 
