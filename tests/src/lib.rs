@@ -1,8 +1,10 @@
 //! Cross-crate property tests and the data-driven conformance suite live in `tests/`;
-//! this library holds what the test files share, and the suite's in-process runner
-//! ([`conformance`]; the loader is `lpe_testkit::suite`).
+//! this library holds what the test files share, the suite's in-process runner
+//! ([`conformance`]; the loader is `lpe_testkit::suite`), and the workspace's file-level
+//! import graph that the layering test checks ([`imports`]).
 
 pub mod conformance;
+pub mod imports;
 
 use lpe::renderman::ast::{Atom, Expr, Item, Triple, TypePos};
 use lpe::renderman::{Event, Lpe, Vertex, VertexType};
