@@ -5,7 +5,7 @@
 
 use std::sync::OnceLock;
 
-use lpe_tests::conformance::{self, load_str, run, subjects, Loaded, Subject};
+use lpe_tests::conformance::{self, load_str, run, subjects, Loaded, Report, Subject};
 
 /// Cases in the suite when it was built from the earlier vector tables (design.tsv,
 /// reference/tests/design.rs, the AOV set's hand table, the parser's error table) plus
@@ -141,31 +141,29 @@ name = "valid path"
 bad_path = [{ path = "C RD L", vertex = 1 }]
 "#;
 
-#[test]
-fn a_wrong_vector_fails_on_every_subject() {
-    let cases = load_str("flipped.toml", FLIPPED).unwrap();
-    let subjects = subjects();
-    let report = run(&cases, &subjects);
+/// Asserts that every subject fails case `flipped` of `file` on each of `flips` (a path,
+/// the answer the case expects, the answer the subject gives) with a report line naming
+/// the file, case, engine, configuration and path, and fails case `wrong landing` (which
+/// expects the path in AOV `s` while it lands in `d`).
+fn assert_flipped_on_every_subject(report: &Report, file: &str, flips: &[(&str, &str, &str)]) {
     let text = report.failures_text();
-    for s in &subjects {
+    for s in &subjects() {
         let (engine, config) = (s.engine(), s.config());
-        for path in ["C RS L", "C RD L"] {
-            let hit = report.failures.iter().find(|f| {
-                f.case == "flipped"
-                    && f.engine == engine
-                    && f.config == config
-                    && f.path.as_deref() == Some(path)
-            });
-            let f = hit.unwrap_or_else(|| panic!("{engine} ({config}) on {path}:\n{text}"));
-            assert_eq!(f.file, "flipped.toml");
-            let (want, got) = if path == "C RS L" {
-                ("match", "no-match")
-            } else {
-                ("no-match", "match")
-            };
+        for &(path, want, got) in flips {
+            let f = report
+                .failures
+                .iter()
+                .find(|f| {
+                    f.case == "flipped"
+                        && f.engine == engine
+                        && f.config == config
+                        && f.path.as_deref() == Some(path)
+                })
+                .unwrap_or_else(|| panic!("{engine} ({config}) on {path}:\n{text}"));
+            assert_eq!(f.file, file);
             assert_eq!((f.expected.as_str(), f.got.as_str()), (want, got));
             let line = f.to_string();
-            for part in ["flipped.toml", "`flipped`", engine, config, path] {
+            for part in [file, "`flipped`", engine, config, path] {
                 assert!(line.contains(part), "{part} missing from {line}");
             }
         }
@@ -178,6 +176,22 @@ fn a_wrong_vector_fails_on_every_subject() {
             "{engine} ({config}):\n{text}"
         );
     }
+}
+
+#[test]
+fn a_wrong_vector_fails_on_every_subject() {
+    let cases = load_str("flipped.toml", FLIPPED).unwrap();
+    let subjects = subjects();
+    let report = run(&cases, &subjects);
+    let text = report.failures_text();
+    assert_flipped_on_every_subject(
+        &report,
+        "flipped.toml",
+        &[
+            ("C RS L", "match", "no-match"),
+            ("C RD L", "no-match", "match"),
+        ],
+    );
     for case in [
         "wrong error",
         "wrong error position",
@@ -216,40 +230,24 @@ lands = [{ path = "C,_ R,D L,_", in = ["s"] }]
 "#;
 
 #[test]
-fn a_wrong_osl_vector_fails_on_every_subject() {
+fn a_wrong_vector_fails_on_every_subject_in_osl() {
     let cases = load_str("flipped-osl.toml", FLIPPED_OSL).unwrap();
     let subjects = subjects();
     let report = run(&cases, &subjects);
-    let text = report.failures_text();
-    for s in &subjects {
-        let (engine, config) = (s.engine(), s.config());
-        for (path, want, got) in [
+    assert_flipped_on_every_subject(
+        &report,
+        "flipped-osl.toml",
+        &[
             ("C,_ R,D U,_", "match", "no-match"),
             ("C,_ R,D R,Y U,_", "no-match", "match"),
-        ] {
-            let f = report
-                .failures
-                .iter()
-                .find(|f| {
-                    f.case == "flipped"
-                        && f.engine == engine
-                        && f.config == config
-                        && f.path.as_deref() == Some(path)
-                })
-                .unwrap_or_else(|| panic!("{engine} ({config}) on {path}:\n{text}"));
-            assert_eq!(f.file, "flipped-osl.toml");
-            assert_eq!((f.expected.as_str(), f.got.as_str()), (want, got));
-        }
-        assert!(
-            report.failures.iter().any(|f| f.case == "wrong landing"
-                && f.engine == engine
-                && f.config == config
-                && f.expected == "[s]"
-                && f.got == "[d]"),
-            "{engine} ({config}):\n{text}"
-        );
-    }
-    assert_eq!(report.failures.len(), 3 * subjects.len(), "{text}");
+        ],
+    );
+    assert_eq!(
+        report.failures.len(),
+        3 * subjects.len(),
+        "{}",
+        report.failures_text()
+    );
 }
 
 #[test]
