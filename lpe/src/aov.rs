@@ -1,7 +1,8 @@
 //! AOV sets: many expressions compiled into one automaton, stepped once per vertex.
 //!
 //! [`AovSet::compile`] builds, for a list of `(name, expression)` pairs:
-//! 1. the compressed alphabet (module `automata::alphabet`): vertices grouped into [`Class`]es;
+//! 1. the dialect's vertex classes ([`Dialect::classes`]; RenderMan's compressed alphabet
+//!    is `renderman::alphabet`): vertices grouped into [`Class`]es;
 //! 2. one bitset Glushkov NFA holding every AOV's positions (module `automata::nfa`);
 //! 3. a minimized dense DFA over it (module `automata::dfa`), unless that would exceed
 //!    [`Options::dfa_budget`]; then the set is a lazy DFA (module [`crate::automata::lazy`]):
@@ -11,8 +12,8 @@
 //! A [`State`] is one `u32` either way. Sets over the DFA budget step fastest through a
 //! caller-owned [`Cache`] per thread ([`AovSet::cache`], [`AovSet::step_with`],
 //! [`AovSet::matches_with`]); the plain `State` API uses a per-thread cache of its own.
-//! Labels can be interned once ([`AovSet::label_id`]) so that classifying a vertex is
-//! index arithmetic ([`AovSet::classify_interned`]).
+//! A RenderMan set can intern labels once ([`AovSet::label_id`]) so that classifying a
+//! vertex is index arithmetic ([`AovSet::classify_interned`]).
 //!
 //! A renderer compiles once, shares the set across threads (`AovSet` is `Send + Sync`,
 //! immutable, lock-free), and per path calls [`AovSet::start`], then [`AovSet::step`] (or
