@@ -111,13 +111,17 @@ pub fn compile_with_dfa_budget(
 
 /// The states reachable from the start over `letters` and, for each, whether it can
 /// still reach a state whose `matches` is not empty. `None` past `cap` states.
-pub fn reachable_and_live<V>(
-    set: &dyn lpe::PathMatcher<Vertex = V, Class = lpe::Class, State = lpe::State>,
+pub fn reachable_and_live<M>(
+    set: &M,
     letters: &[lpe::Class],
     cap: usize,
-) -> Option<(Vec<lpe::State>, Vec<bool>)> {
+) -> Option<(Vec<M::State>, Vec<bool>)>
+where
+    M: lpe::PathMatcher<Class = lpe::Class> + ?Sized,
+    M::State: Eq + std::hash::Hash,
+{
     use std::collections::{HashMap, VecDeque};
-    let mut index: HashMap<lpe::State, usize> = HashMap::new();
+    let mut index: HashMap<M::State, usize> = HashMap::new();
     let mut states = vec![set.start()];
     index.insert(set.start(), 0);
     let mut preds: Vec<Vec<usize>> = vec![Vec::new()];

@@ -23,7 +23,7 @@
 use std::cell::Cell;
 
 use lpe::renderman::{parse, Event, EventKind, Lpe, Path, Prefixes, Vertex, VertexType};
-use lpe::{AovSet, Class, Options, PathMatcher, State};
+use lpe::{AovSet, Class, NfaState, Options, PathMatcher, State};
 use lpe_testkit::strategy;
 use lpe_tests::{expr_set, framed, named, vertex_pool};
 use proptest::prelude::*;
@@ -32,8 +32,8 @@ use proptest::test_runner::TestCaseError;
 /// One class per distinct answer of `classify` over the pool. A set may have classes no
 /// constructible vertex falls in (a labelled camera, which `Vertex` cannot build), so
 /// this can be fewer than `class_count()`.
-fn letters(
-    set: &dyn PathMatcher<Vertex = Vertex, Class = Class, State = State>,
+fn letters<M: PathMatcher<Vertex = Vertex, Class = Class> + ?Sized>(
+    set: &M,
     pool: &[Vertex],
 ) -> Vec<Class> {
     let mut out: Vec<Class> = pool.iter().map(|v| set.classify(v)).collect();
@@ -108,8 +108,8 @@ fn check_exact(
 
 /// Once a prefix is dead, the reference matches no AOV on any path that extends it:
 /// the path itself and the prefix spliced with the tails of the other paths.
-fn check_paths(
-    set: &dyn PathMatcher<Vertex = Vertex, Class = Class, State = State>,
+fn check_paths<M: PathMatcher<Vertex = Vertex> + ?Sized>(
+    set: &M,
     exprs: &[Lpe],
     paths: &[Path],
     what: &str,
@@ -159,7 +159,12 @@ fn check_paths(
 /// 1), so the drawn AOVs live in the higher words once it is dead. A chain, since
 /// positions always active together are merged (64 alternatives `<RU12>` would be one).
 fn padding() -> Lpe {
-    parse("C<RU12>{64}L").unwrap()
+    padding_words(1)
+}
+
+/// [`padding`] over `words` whole words of an NFA state: `64 * words + 2` positions.
+fn padding_words(words: usize) -> Lpe {
+    parse(&format!("C<RU12>{{{}}}L", 64 * words)).unwrap()
 }
 
 /// Every step runs the bitset NFA (no lazy cache).
@@ -326,4 +331,109 @@ fn a_wide_nfa_state_with_an_empty_first_word_is_alive() {
         let unlabelled = set.step(c, &Vertex::light(None));
         assert!(set.matches(unlabelled).is_empty() && set.is_dead(unlabelled));
     }
+}
+
+/// The plain bitset NFA matcher ([`AovSet::nfa`], stepped on its wide [`NfaState`] with
+/// no registry or cache), and the lazy DFA over it, on sets whose drawn AOVs sit behind a
+/// padding of one, two or three whole state words: once the padding dies, the live
+/// positions are in word 1, 2 or 3 alone. Every reachable state is explored: a state the
+/// matcher calls dead never reaches a match and matches nothing, and, on a set without
+/// set algebra (where no complement matches from the empty state), it is called dead
+/// exactly when no position is active. Against the reference: no extension of a dead prefix matches.
+#[test]
+fn the_wide_nfa_matchers_dead_states_are_sound_in_every_word() {
+    let pool = vertex_pool();
+    for words in 1..=3 {
+        let stats = Stats::default();
+        let later_words_only = Cell::new(0u32);
+        let skipped = Cell::new(0u32);
+        let mut runner = lpe_tests::runner(40);
+        let cases = runner.config().cases;
+        let strat = (expr_set(1..=2), prop::collection::vec(strategy::path(7), 6));
+        runner
+            .run(&strat, |(exprs, paths)| {
+                let mut padded = vec![padding_words(words)];
+                padded.extend(exprs.iter().cloned());
+                let Ok(set) = AovSet::compile_with(&named(&padded), &nfa_only()) else {
+                    bump(&skipped);
+                    return Ok(());
+                };
+                prop_assert!(set.nfa_positions() > 64 * words, "{}", set.nfa_positions());
+                let nfa = set.nfa().expect("a set without a DFA has its NFA");
+                let letters = letters(&nfa, &pool);
+                let Some((states, live)) = lpe_tests::reachable_and_live(&nfa, &letters, 20_000)
+                else {
+                    return Ok(());
+                };
+                bump(&stats.explored);
+                let plain = padded.iter().all(|l| l.algebra.is_none());
+                for (s, &l) in states.iter().zip(&live) {
+                    let active: Vec<usize> = s.active().collect();
+                    if plain {
+                        prop_assert_eq!(nfa.is_dead(*s), active.is_empty(), "{:?}", active);
+                    }
+                    if nfa.is_dead(*s) {
+                        bump(&stats.dead_seen);
+                        prop_assert!(!l, "words {}: a state called dead reaches a match", words);
+                        prop_assert!(nfa.matches(*s).is_empty());
+                    } else {
+                        bump(&stats.live_seen);
+                        if active.iter().all(|&p| p >= 64 * words) {
+                            bump(&later_words_only);
+                        }
+                    }
+                }
+                check_paths(&nfa, &padded, &paths, "wide nfa", &stats)?;
+                let lazy = AovSet::compile_with(&named(&padded), &lazy_two_rows());
+                let lazy = lazy.expect("the same set compiles lazily");
+                check_exact(&lazy, &pool, false, 20_000, "wide lazy", &stats)?;
+                check_paths(&lazy, &padded, &paths, "wide lazy", &stats)
+            })
+            .unwrap();
+        eprintln!(
+            "{words} padding word(s): {} matchers explored, {} dead and {} live NFA states, {} of \
+             them live in later words alone, {} dead prefixes, {} compiles skipped",
+            stats.explored.get(),
+            stats.dead_seen.get(),
+            stats.live_seen.get(),
+            later_words_only.get(),
+            stats.dead_prefixes.get(),
+            skipped.get()
+        );
+        // Most sets ran, and states living in the later words alone were checked.
+        assert!(
+            stats.explored.get() * 2 >= cases,
+            "{}",
+            stats.explored.get()
+        );
+        assert!(
+            later_words_only.get() >= cases,
+            "{}",
+            later_words_only.get()
+        );
+        assert!(stats.dead_seen.get() > 0 && stats.dead_prefixes.get() > 0);
+    }
+}
+
+/// [`NfaState::active`] lists a hand-built wide state's positions: after `C RD1` behind a
+/// one-word padding, only the second AOV's positions (past 64) are active.
+#[test]
+fn a_wide_nfa_state_lists_its_active_positions() {
+    let exprs = [padding(), parse("C.*<L.'key'>").unwrap()];
+    let set = AovSet::compile_with(&named(&exprs), &nfa_only()).unwrap();
+    let nfa = set.nfa().unwrap();
+    let start: NfaState = nfa.start();
+    assert_eq!(start.active().collect::<Vec<_>>(), [0]);
+    let rd1 = Vertex::scatter(VertexType::R, Event::new(EventKind::D, 1).unwrap(), None);
+    let c = nfa.step(start, nfa.classify(&Vertex::camera()));
+    let s = nfa.step(c, nfa.classify(&rd1));
+    let active: Vec<usize> = s.active().collect();
+    assert!(
+        !active.is_empty() && active.iter().all(|&p| p >= 64),
+        "{active:?}"
+    );
+    assert!(!nfa.is_dead(s));
+    let fill = nfa.step(s, nfa.classify(&Vertex::light(Some("fill"))));
+    assert_eq!(fill.active().count(), 0);
+    assert!(nfa.is_dead(fill));
 }

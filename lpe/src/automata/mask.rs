@@ -128,6 +128,17 @@ impl State {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct NfaState(pub(crate) [u64; NFA_STATE_WORDS]);
 
+impl NfaState {
+    /// The active NFA positions, in increasing order (position 0 is the start).
+    pub fn active(&self) -> impl Iterator<Item = usize> + '_ {
+        self.0.iter().enumerate().flat_map(|(w, &bits)| {
+            (0..64)
+                .filter(move |b| bits >> b & 1 == 1)
+                .map(move |b| 64 * w + b)
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
