@@ -848,3 +848,53 @@ fn a_wrong_suite_verdict_fails_through_the_c_abi() {
         failures[0]
     );
 }
+
+/// Labels one byte apart at every position and length, UTF-8 included
+/// (`lpe_testkit::labels`), through the C ABI: a set of `C<L.'label'>` per label of a
+/// group, DFA and lazy, routes a light carrying each label (classified from fields and
+/// from text) to its own AOV alone, and a light carrying a label the set does not name
+/// to none.
+#[test]
+fn labels_one_byte_apart_stay_apart_through_the_c_abi() {
+    let mut checked = 0;
+    for group in lpe_testkit::labels::groups() {
+        let names: Vec<String> = (0..group.named.len()).map(|i| format!("a{i}")).collect();
+        let exprs: Vec<String> = group.named.iter().map(|l| format!("C<L.'{l}'>")).collect();
+        let names: Vec<&str> = names.iter().map(String::as_str).collect();
+        let exprs: Vec<&str> = exprs.iter().map(String::as_str).collect();
+        let lazy = lpe_options {
+            dfa_budget: 0,
+            ..lpe_options_default()
+        };
+        for options in [None, Some(&lazy)] {
+            let set = compile_in(LPE_DIALECT_RENDERMAN, &names, &exprs, None, options).unwrap();
+            let land = |label: &str| -> Vec<usize> {
+                let c = CString::new(label).unwrap();
+                let v = lpe_vertex {
+                    vertex_type: b'L',
+                    event: 0,
+                    lobe: 0,
+                    label: c.as_ptr(),
+                };
+                let mut by_fields = lpe_class { id: u32::MAX };
+                assert_eq!(lpe_classify(set.0, &v, &mut by_fields), lpe_status::LPE_OK);
+                assert_eq!(by_fields, class(&set, &format!("L'{label}'")), "{label}");
+                let (words, count) = route(&set, &["C", &format!("L'{label}'")]);
+                let bits: Vec<usize> = (0..64 * words.len())
+                    .filter(|&i| words[i / 64] >> (i % 64) & 1 == 1)
+                    .collect();
+                assert_eq!(bits.len(), count, "{label}");
+                bits
+            };
+            for (i, label) in group.named.iter().enumerate() {
+                assert_eq!(land(label), [i], "`{label}`");
+                checked += 1;
+            }
+            for label in &group.unnamed {
+                assert!(land(label).is_empty(), "`{label}`");
+                checked += 1;
+            }
+        }
+    }
+    assert_eq!(checked, 2 * lpe_testkit::labels::LABELS_CHECKED);
+}
