@@ -898,3 +898,28 @@ fn labels_one_byte_apart_stay_apart_through_the_c_abi() {
     }
     assert_eq!(checked, 2 * lpe_testkit::labels::LABELS_CHECKED);
 }
+
+/// A set of 1 437 NFA positions, over its DFA budget, compiles through the C ABI and
+/// answers as the reference (the lazy DFA steps states of any width).
+#[test]
+fn a_set_of_thousands_of_positions_compiles_and_answers_through_the_c_abi() {
+    let src = "C((('fill'[^<T[^D2US]'fill'>R])U1)|(.[O<..'a b'>])*|\
+               U6((<.[^DD]'floor'><[^R].>){1,238}){1,3})'floor'L";
+    let set = compile(&["wide"], &[src], None).unwrap();
+    let lpe = lpe::renderman::parse(src).unwrap();
+    let mut matched = 0;
+    for k in [1, 238, 714, 715] {
+        let mut path = vec!["C".to_string(), "RU6".to_string()];
+        for _ in 0..k {
+            path.extend(["RS1'floor'".to_string(), "TD1".to_string()]);
+        }
+        path.extend(["RD1'floor'".to_string(), "L".to_string()]);
+        let text = path.join(" ");
+        let want = lpe_reference::is_match(&lpe, &text.parse().unwrap());
+        let refs: Vec<&str> = path.iter().map(String::as_str).collect();
+        let (words, count) = route(&set, &refs);
+        assert_eq!((words[0] & 1 == 1, count == 1), (want, want), "{k}");
+        matched += usize::from(want);
+    }
+    assert_eq!(matched, 3, "714 copies at most");
+}

@@ -281,7 +281,9 @@ impl<D: Dialect> AovSet<D> {
     }
 
     /// The bitset NFA of a lazy set, stepped on its wide state without registry or
-    /// cache; `None` for a set with a DFA (which drops its NFA).
+    /// cache; `None` for a set with a DFA (which drops its NFA) and for a set of more
+    /// positions than an [`crate::NfaState`] holds (`64 * NFA_STATE_WORDS`: such a set
+    /// steps its lazy DFA, whose states are registry ids of any width).
     pub fn nfa(&self) -> Option<NfaMatcher<'_, D::Classes>> {
         let (nfa, visible, empty_is_dead) = self.automaton.lazy_nfa()?;
         Some(NfaMatcher {
@@ -496,9 +498,9 @@ mod tests {
 
     #[test]
     fn sets_too_large_for_step_tables_still_get_a_dfa() {
-        // 302 positions: 5-word states, whose step tables (400 KiB) are over a 256 KiB
-        // NFA budget while the follow rows (12 KiB) fit; the DFA (a chain) is built by
-        // stepping rows instead.
+        // 302 positions: 5-word states, too wide for the inlined wide step and so given
+        // no step tables (they would take 400 KiB, over a 256 KiB NFA budget, while the
+        // follow rows take 12 KiB); the DFA (a chain) is built by stepping rows.
         let opts = Options {
             nfa_budget: 256 << 10,
             ..Options::default()
@@ -511,7 +513,7 @@ mod tests {
             AovSet::<RenderMan>::build_nfa(&[&e], opts).unwrap().1
         };
         assert!(!nfa_of(&opts).has_step_tables());
-        assert!(nfa_of(&Options::default()).has_step_tables());
+        assert!(!nfa_of(&Options::default()).has_step_tables());
         for (n, want) in [(300, true), (299, false), (301, false)] {
             let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
             assert_eq!(s.match_path(&p).contains(0), want, "{n}");
@@ -528,19 +530,16 @@ mod tests {
                 if positions > 50_000 && b > budget as u64 && budget == 16 << 20),
             "{err:?}"
         );
-        // 303 positions (the start included) are five words, one more than a stepping
-        // state holds: without a DFA the set cannot step.
+        // 303 positions (the start included) are five words, more than an `NfaState`
+        // holds: with no DFA the set steps its lazy DFA, whose states are of any width.
         let e = parse("C(.{100}){3}L").unwrap();
-        let err = AovSet::compile_with(&[("wide".into(), e)], &nfa_only()).unwrap_err();
-        assert_eq!(
-            err,
-            CompileError::TooManyPositions {
-                positions: 303,
-                max: 256,
-                dfa_budget: 0
-            }
-        );
-        assert!(err.to_string().contains("raise `dfa_budget`"), "{err}");
+        let wide = AovSet::compile_with(&[("wide".into(), e)], &nfa_only()).unwrap();
+        assert!(!wide.uses_dfa() && wide.nfa().is_none());
+        assert_eq!(wide.nfa_positions(), 303);
+        for (n, want) in [(300, true), (299, false), (301, false)] {
+            let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
+            assert_eq!(wide.match_path(&p).contains(0), want, "{n}");
+        }
         let many: Vec<(String, Lpe)> = (0..=MAX_AOVS)
             .map(|i| (i.to_string(), parse("CL").unwrap()))
             .collect();

@@ -64,7 +64,7 @@ fn a_set_of_no_aovs_compiles_and_matches_nothing() {
 }
 
 #[test]
-fn a_set_of_exactly_the_positions_a_state_holds_steps_its_nfa() {
+fn sets_at_and_past_the_positions_an_nfa_state_holds_step_lazily() {
     // C.{253}L: the start, C, 253 dots and L = 256 positions, four 64-bit words: what a
     // stepping state holds, so with no DFA budget the set steps its NFA.
     let set = AovSet::compile_with(&named(&["C.{253}L".to_string()]), &nfa_only()).unwrap();
@@ -74,15 +74,16 @@ fn a_set_of_exactly_the_positions_a_state_holds_steps_its_nfa() {
         let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
         assert_eq!(set.match_path(&p).contains(0), want, "{n}");
     }
-    // One more dot: 257 positions, five words.
-    assert_eq!(
-        AovSet::compile_with(&named(&["C.{254}L".to_string()]), &nfa_only()).unwrap_err(),
-        CompileError::TooManyPositions {
-            positions: 257,
-            max: 256,
-            dfa_budget: 0
-        }
-    );
+    assert!(set.nfa().is_some(), "an NfaState holds 256 positions");
+    // One more dot: 257 positions, five words. The lazy DFA steps states of any width;
+    // the plain NFA matcher, whose state is four words, is not offered.
+    let wider = AovSet::compile_with(&named(&["C.{254}L".to_string()]), &nfa_only()).unwrap();
+    assert!(!wider.uses_dfa() && wider.nfa().is_none());
+    assert_eq!(wider.nfa_positions(), 257);
+    for (n, want) in [(254, true), (253, false), (255, false)] {
+        let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
+        assert_eq!(wider.match_path(&p).contains(0), want, "{n}");
+    }
 }
 
 #[test]
@@ -105,5 +106,50 @@ fn the_nfa_budget_holds_the_follow_rows_to_the_byte() {
             bytes: Some(32),
             budget: 31
         }
+    );
+}
+
+/// A set of 1 437 NFA positions (a fuzzer's find: too wide for an `NfaState`, with a DFA
+/// far over the budget) compiles in the fast engine with default options and steps its
+/// lazy DFA. Its camera carries a label, which no path's does, so it matches nothing
+/// and says so; the same set with a plain camera answers as the reference on paths
+/// through each of its branches and at the bounds of its counts.
+#[test]
+fn a_set_of_thousands_of_positions_compiles_and_steps_lazily() {
+    let body = "((('fill'[^<T[^D2US]'fill'>R])U1)|(.[O<..'a b'>])*|\
+                U6((<.[^DD]'floor'><[^R].>){1,238}){1,3})'floor'";
+    let found = parse(&format!("nothruput;overwrite;[C'key']{body}")).unwrap();
+    let set = AovSet::compile(&[("found".to_string(), found)]).unwrap();
+    assert!(!set.uses_dfa() && set.nfa().is_none());
+    assert_eq!(set.nfa_positions(), 1437);
+    assert_eq!(set.warnings().len(), 1, "{:?}", set.warnings());
+    assert!(set.match_path(&"C RD L".parse().unwrap()).is_empty());
+
+    // With a light after the last `'floor'` scatter (a bare label names an object), and
+    // `|` binding tighter than concatenation: `C (A | B* | U6) (G{1,238}){1,3} 'floor' L`.
+    let lpe = parse(&format!("C{body}L")).unwrap();
+    let set = AovSet::compile(&[("wide".to_string(), lpe.clone())]).unwrap();
+    assert!(!set.uses_dfa() && set.nfa().is_none());
+    assert!(set.nfa_positions() > 1000, "{}", set.nfa_positions());
+    let mut paths = vec!["C RD L".to_string(), "C RD1'floor' L".to_string()];
+    // A first vertex of each alternative, then k copies of the group, then `'floor'`.
+    for first in ["RU6", "RS1'a b'", "RD1'fill' TD1 RU1"] {
+        for k in [0, 1, 2, 237, 238, 239, 476, 714, 715] {
+            let group = " RS1'floor' TD1".repeat(k);
+            paths.push(format!("C {first}{group} RD1'floor' L"));
+        }
+    }
+    let mut matched = 0;
+    for p in &paths {
+        let path: Path = p.parse().unwrap_or_else(|e| panic!("{p}: {e}"));
+        let want = lpe_reference::is_match(&lpe, &path);
+        assert_eq!(set.match_path(&path).contains(0), want, "{p}");
+        matched += usize::from(want);
+    }
+    // Both answers occur: matches within the counted bounds, none past them.
+    assert!(
+        matched >= 8 && matched < paths.len(),
+        "{matched} of {}",
+        paths.len()
     );
 }

@@ -104,13 +104,15 @@ fn nfa_memory_is_tables_rows_classes_finals_and_ids() {
     // entries of one word), one follow row per position (4 words), one accept row per
     // class (4 words), the finals (1 word): 2057 words = 16 456 bytes; and per position
     // its AOV and its atom (2 * 4 u32s = 32 bytes): 16 488. A set without a DFA steps
-    // lazily, and its registry starts with two NFA states (dead and start), each held
-    // twice as a 32-byte subset, with a u32 id and a map control byte: 2 * 69 = 138.
+    // lazily, and its registry starts with two NFA states (dead and start), each a
+    // one-word subset in a shared allocation (8 bytes and its two 8-byte counts) that the
+    // list and the map key point to (16 bytes each), with a u32 id and a map control
+    // byte: 2 * 61 = 122.
     // The DFA of the same set (see dfa_size.rs): 5 states of stride 4 u32s plus a
     // 32-byte mask each = 5 * 16 + 5 * 32 = 240 bytes. Both sets hold the same
-    // alphabet tables, so the difference is 16 488 + 138 - 240.
+    // alphabet tables, so the difference is 16 488 + 122 - 240.
     let [dfa, nfa] = both(&[("cdl", "CDL")]);
     assert_eq!((nfa.nfa_positions(), nfa.class_count()), (4, 4));
     assert_eq!(dfa.dfa_states(), Some(5));
-    assert_eq!(nfa.memory_bytes() - dfa.memory_bytes(), 16_488 + 138 - 240);
+    assert_eq!(nfa.memory_bytes() - dfa.memory_bytes(), 16_488 + 122 - 240);
 }

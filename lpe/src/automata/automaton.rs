@@ -12,6 +12,10 @@ use crate::automata::nfa::Nfa;
 use crate::automata::options::Options;
 use crate::automata::visible::Visible;
 
+/// NFA row reads (of one word each) the eager DFA of an NFA wider than
+/// [`NFA_STATE_WORDS`] words may spend before the set goes lazy: about 2 ms.
+const WIDE_DFA_WORK: usize = 1 << 20;
+
 /// A compiled set's automaton: one `u32` [`State`] per path, one table step per vertex.
 #[derive(Clone, Debug)]
 pub struct Automaton {
@@ -38,9 +42,8 @@ pub struct Automaton {
 
 impl Automaton {
     /// The automaton of `nfa` over `classes` vertex classes: its eager DFA when it fits
-    /// [`Options::dfa_budget`] and [`MAX_EAGER_STATES`], else a lazy DFA over the NFA
-    /// (which must then fit a lazy state). With set algebra, `visible` gives the visible
-    /// masks.
+    /// [`Options::dfa_budget`] and [`MAX_EAGER_STATES`], else a lazy DFA over the NFA.
+    /// With set algebra, `visible` gives the visible masks.
     pub(crate) fn build(
         nfa: Nfa,
         classes: usize,
@@ -67,36 +70,34 @@ impl Automaton {
     }
 
     /// The eager DFA of `nfa` when it fits [`Options::dfa_budget`] and
-    /// [`MAX_EAGER_STATES`]; `None` when the lazy DFA must step instead, an error when
-    /// the NFA is too wide for a lazy state too. With set algebra, `visible` gives the
-    /// visible masks.
+    /// [`MAX_EAGER_STATES`]; `None` when the lazy DFA steps instead, which it can for an
+    /// NFA of any width. With set algebra, `visible` gives the visible masks.
     fn engine(
         nfa: &Nfa,
         classes: usize,
         opts: &Options,
         visible: Option<&Visible>,
     ) -> Result<Option<Dfa>, CompileError> {
-        let dfa = if opts.dfa_budget > 0 {
-            // Past `MAX_EAGER_STATES`, a set the lazy DFA can step goes lazy rather than
-            // spend its budget's worth of construction first; a wider one has no other
-            // way to step and gets the whole budget.
-            let max_states = if nfa.words() <= NFA_STATE_WORDS {
-                MAX_EAGER_STATES
-            } else {
-                usize::MAX
-            };
-            Dfa::build(nfa, classes, opts.dfa_budget, visible, max_states)
-        } else {
-            None
-        };
-        if dfa.is_none() && nfa.words() > NFA_STATE_WORDS {
-            return Err(CompileError::TooManyPositions {
-                positions: nfa.positions,
-                max: 64 * NFA_STATE_WORDS,
-                dfa_budget: opts.dfa_budget,
-            });
+        if opts.dfa_budget == 0 {
+            return Ok(None);
         }
-        Ok(dfa)
+        // A state wider than the wide step holds is stepped by rows, one per active
+        // position and class: its subset construction is bounded by that work, so that
+        // a set of thousands of positions gives up on the eager DFA within milliseconds
+        // (the lazy DFA determinizes only the states paths reach).
+        let max_work = if nfa.words() <= NFA_STATE_WORDS {
+            usize::MAX
+        } else {
+            WIDE_DFA_WORK
+        };
+        Ok(Dfa::build(
+            nfa,
+            classes,
+            opts.dfa_budget,
+            visible,
+            MAX_EAGER_STATES,
+            max_work,
+        ))
     }
 
     /// A DFA's state 0 is always dead (`Dfa::build`); a lazy set's state 0 is the NFA
@@ -273,11 +274,13 @@ impl Automaton {
         self.nfa_positions
     }
 
-    /// The lazy DFA's NFA, for [`crate::AovSet::nfa`]: with the visible masks and whether
-    /// no active position is dead.
+    /// The lazy DFA's NFA when its state fits an [`crate::NfaState`] ([`NFA_STATE_WORDS`]
+    /// words), for [`crate::AovSet::nfa`]: with the visible masks and whether no active
+    /// position is dead.
     pub(crate) fn lazy_nfa(&self) -> Option<(&Nfa, Option<&Visible>, bool)> {
         self.lazy
             .as_ref()
+            .filter(|l| l.nfa().words() <= NFA_STATE_WORDS)
             .map(|l| (l.nfa(), self.visible.as_ref(), self.empty_is_dead))
     }
 

@@ -48,7 +48,10 @@ pub(crate) fn co_active_blocks<K: Hash + Eq + Copy>(
         .collect();
     let mut count = ids.len();
     let mut spent = 0usize;
-    let mut signature = Vec::new();
+    // Each round's signatures, one after another (`bounds[p]..bounds[p + 1]` is
+    // position `p`'s), so that the round's map borrows them instead of owning a copy each.
+    let mut signatures: Vec<u32> = Vec::with_capacity(edges);
+    let mut bounds: Vec<usize> = Vec::with_capacity(n + 1);
     loop {
         // A round reads every position and edge once (and counts one more, so that
         // rounds end even on nothing); the rounds are at most one per block.
@@ -56,26 +59,48 @@ pub(crate) fn co_active_blocks<K: Hash + Eq + Copy>(
         if spent > budget {
             return None;
         }
-        let mut ids: FxMap<(u32, Vec<u32>), u32> = FxMap::default();
+        signatures.clear();
+        bounds.clear();
+        bounds.push(0);
+        for ps in preds {
+            let start = signatures.len();
+            signatures.extend(ps.iter().map(|&q| block[q as usize]));
+            let sig = &mut signatures[start..];
+            sig.sort_unstable();
+            let len = dedup_sorted(sig);
+            signatures.truncate(start + len);
+            bounds.push(signatures.len());
+        }
+        let mut ids: FxMap<(u32, &[u32]), u32> = FxMap::default();
         let next: Vec<u32> = (0..n)
             .map(|p| {
-                signature.clear();
-                signature.extend(preds[p].iter().map(|&q| block[q as usize]));
-                signature.sort_unstable();
-                signature.dedup();
                 let fresh = ids.len() as u32;
-                *ids.entry((block[p], signature.clone())).or_insert(fresh)
+                let sig = &signatures[bounds[p]..bounds[p + 1]];
+                *ids.entry((block[p], sig)).or_insert(fresh)
             })
             .collect();
         // The new partition refines the old (a block is part of the signature), so an
         // unchanged count means an unchanged partition: every block is stable.
         let stable = ids.len() == count;
         count = ids.len();
+        drop(ids);
         block = next;
         if stable {
             return Some(block);
         }
     }
+}
+
+/// Moves the distinct values of sorted `xs` to its front; returns how many there are.
+fn dedup_sorted(xs: &mut [u32]) -> usize {
+    let mut len = 0;
+    for i in 0..xs.len() {
+        if len == 0 || xs[len - 1] != xs[i] {
+            xs[len] = xs[i];
+            len += 1;
+        }
+    }
+    len
 }
 
 /// Per position, the fewest steps from position 0 to it (`u32::MAX` if none), by a

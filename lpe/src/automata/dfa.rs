@@ -78,7 +78,8 @@ impl Dfa {
     }
 
     /// Determinizes `nfa` over `classes` classes, or `None` if the DFA would exceed
-    /// `budget` bytes or `max_states` states. With set algebra, `visible` turns the
+    /// `budget` bytes or `max_states` states, or its construction `max_work` NFA row
+    /// reads (each step of a state reads one row of `words` words per active position). With set algebra, `visible` turns the
     /// NFA's hidden masks into the states' visible masks, once per state.
     pub(crate) fn build(
         nfa: &Nfa,
@@ -86,6 +87,7 @@ impl Dfa {
         budget: usize,
         visible: Option<&Visible>,
         max_states: usize,
+        max_work: usize,
     ) -> Option<Dfa> {
         let stride = classes.next_power_of_two();
         let cost = Self::state_cost(stride, nfa.words());
@@ -109,7 +111,13 @@ impl Dfa {
         let mut trans: Vec<u32> = Vec::new();
         let mut next = vec![0u64; w];
         let mut i = 0;
+        let mut work = 0usize;
         while i < sets.len() {
+            let active: usize = sets[i].iter().map(|x| x.count_ones() as usize).sum();
+            work = work.saturating_add(classes.saturating_mul(active.max(1) * w));
+            if work > max_work {
+                return None;
+            }
             for c in 0..classes {
                 nfa.step(&sets[i], c, &mut next);
                 let id = match ids.get(&next[..]) {

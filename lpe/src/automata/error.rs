@@ -34,16 +34,6 @@ pub enum CompileError {
         /// The dialect's limit.
         max: usize,
     },
-    /// The DFA exceeds [`crate::Options::dfa_budget`], and the NFA has more positions than an
-    /// NFA state of the lazy DFA holds, so the set cannot step lazily either.
-    TooManyPositions {
-        /// NFA positions, the start included.
-        positions: usize,
-        /// Most positions a stepping state holds (`64 * NFA_STATE_WORDS`).
-        max: usize,
-        /// [`crate::Options::dfa_budget`].
-        dfa_budget: usize,
-    },
 }
 
 impl fmt::Display for CompileError {
@@ -80,17 +70,6 @@ impl fmt::Display for CompileError {
                 f,
                 "the set's vertex patterns need more than {max} states to classify a vertex \
                  (many long `<...>` groups with negations): split the set"
-            ),
-            CompileError::TooManyPositions {
-                positions,
-                max,
-                dfa_budget,
-            } => write!(
-                f,
-                "the set's DFA exceeds the budget of {} MiB and its NFA has {positions} \
-                 positions, more than the {max} a stepping state holds: raise `dfa_budget`, \
-                 or split the set",
-                dfa_budget >> 20
             ),
         }
     }

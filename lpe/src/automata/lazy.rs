@@ -11,7 +11,9 @@
 //!   `2^positions` and in practice the few hundred to few thousand states that sampled
 //!   paths reach. That growth is the price of states that survive a clear; the
 //!   alternatives (a generation check that invalidates in-flight states, or a state that
-//!   carries its 32-byte subset) either lose paths or undo the register-sized state.
+//!   carries its subset) either lose paths or undo the register-sized state. A subset is
+//!   as wide as the NFA needs (one bit per position, any number of positions), interned
+//!   once and shared by the id map and the list.
 //! - each thread owns a bounded [`Cache`] of transition rows over registry ids, like
 //!   regex-automata's hybrid DFA: a hit is two dependent loads (the state's row, then the
 //!   transition), a miss steps the bitset NFA and interns the result. When the rows pass
@@ -20,15 +22,15 @@
 
 use std::cell::RefCell;
 use std::sync::atomic::{AtomicU64, Ordering};
-use std::sync::{PoisonError, RwLock};
+use std::sync::{Arc, PoisonError, RwLock};
 
 use crate::automata::mask::{AovMask, Class, State, NFA_STATE_WORDS};
 use crate::automata::nfa::Nfa;
 use crate::automata::visible::Visible;
 use crate::fxhash::FxMap;
 
-/// A subset of NFA positions, padded to the widest state a lazy set steps.
-type Subset = [u64; NFA_STATE_WORDS];
+/// A subset of NFA positions: [`Nfa::words`] words, shared by the registry's map and list.
+type Subset = Arc<[u64]>;
 
 /// Marks "no row yet" in [`Cache::row_of`] and "not computed" in [`Cache::trans`].
 const NONE: u32 = u32::MAX;
@@ -65,15 +67,17 @@ struct Registry {
 }
 
 impl Registry {
-    fn new() -> Registry {
+    /// The dead state and the start, as subsets of `words` words.
+    fn new(words: usize) -> Registry {
         let mut r = Registry {
             ids: FxMap::default(),
             subsets: Vec::new(),
         };
-        let mut start = [0u64; NFA_STATE_WORDS];
+        let mut start = vec![0u64; words];
         start[0] = 1;
-        for s in [[0u64; NFA_STATE_WORDS], start] {
-            r.ids.insert(s, r.subsets.len() as u32);
+        for s in [vec![0u64; words], start] {
+            let s: Subset = s.into();
+            r.ids.insert(s.clone(), r.subsets.len() as u32);
             r.subsets.push(s);
         }
         r
@@ -117,14 +121,14 @@ impl Clone for Lazy {
 }
 
 impl Lazy {
-    /// `nfa` must have at most `64 * NFA_STATE_WORDS` positions.
+    /// The lazy DFA over `nfa`, of any number of positions.
     pub(crate) fn new(
         nfa: Nfa,
         classes: usize,
         cache_budget: usize,
         visible: Option<Visible>,
     ) -> Lazy {
-        debug_assert!(nfa.words() <= NFA_STATE_WORDS);
+        let words = nfa.words().max(1);
         Lazy {
             nfa,
             visible,
@@ -132,7 +136,7 @@ impl Lazy {
             shift: classes.next_power_of_two().trailing_zeros(),
             cache_budget,
             owner: NEXT_OWNER.fetch_add(1, Ordering::Relaxed),
-            registry: RwLock::new(Registry::new()),
+            registry: RwLock::new(Registry::new(words)),
         }
     }
 
@@ -140,22 +144,20 @@ impl Lazy {
         &self.nfa
     }
 
-    /// The subset of state `s`; an id this set never gave out reads as the dead state.
+    /// The subset of state `s`; an id this set never gave out reads as the dead state
+    /// (id 0).
     fn subset(&self, s: State) -> Subset {
         let r = self.registry.read().unwrap_or_else(PoisonError::into_inner);
-        r.subsets
-            .get(s.0 as usize)
-            .copied()
-            .unwrap_or([0; NFA_STATE_WORDS])
+        r.subsets.get(s.0 as usize).unwrap_or(&r.subsets[0]).clone()
     }
 
-    fn intern(&self, sub: Subset) -> State {
+    fn intern(&self, sub: &[u64]) -> State {
         if let Some(&id) = self
             .registry
             .read()
             .unwrap_or_else(PoisonError::into_inner)
             .ids
-            .get(&sub)
+            .get(sub)
         {
             return State(id);
         }
@@ -164,26 +166,36 @@ impl Lazy {
             .write()
             .unwrap_or_else(PoisonError::into_inner);
         // Another thread may have interned it between the two locks.
-        let next = r.subsets.len() as u32;
-        let id = *r.ids.entry(sub).or_insert(next);
-        if id == next {
-            r.subsets.push(sub);
+        if let Some(&id) = r.ids.get(sub) {
+            return State(id);
         }
+        let id = r.subsets.len() as u32;
+        let sub: Subset = sub.into();
+        r.ids.insert(sub.clone(), id);
+        r.subsets.push(sub);
         State(id)
     }
 
-    /// One step on the NFA, no cache: the registry only.
+    /// One step on the NFA, no cache: the registry only. A state that fits
+    /// [`NFA_STATE_WORDS`] words is stepped on the stack; a wider one in a buffer of its
+    /// width.
     pub(crate) fn step_uncached(&self, s: State, c: Class) -> State {
-        let w = self.nfa.words();
         let cur = self.subset(s);
-        let mut next = [0u64; NFA_STATE_WORDS];
-        self.nfa.step(&cur[..w], c.index(), &mut next[..w]);
+        let w = cur.len();
+        let mut small = [0u64; NFA_STATE_WORDS];
+        let mut wide = Vec::new();
+        let next: &mut [u64] = if w <= NFA_STATE_WORDS {
+            &mut small[..w]
+        } else {
+            wide.resize(w, 0);
+            &mut wide
+        };
+        self.nfa.step(&cur, c.index(), next);
         self.intern(next)
     }
 
     pub(crate) fn matches_uncached(&self, s: State) -> AovMask {
-        let w = self.nfa.words();
-        let hidden = self.nfa.matches(&self.subset(s)[..w]);
+        let hidden = self.nfa.matches(&self.subset(s));
         self.visible.as_ref().map_or(hidden, |v| v.mask(hidden))
     }
 
@@ -198,9 +210,11 @@ impl Lazy {
 
     /// Bytes of the NFA and the registry (caches are the caller's).
     pub(crate) fn memory_bytes(&self) -> usize {
-        // A registry entry: the subset in the list and as a map key, the id, and about
-        // one control byte of the map.
-        let entry = 2 * std::mem::size_of::<Subset>() + 4 + 1;
+        // A registry entry: the subset's words and its shared allocation's two counts,
+        // two pointers to it (the list and the map key), the id, and about one control
+        // byte of the map.
+        let words = self.nfa.words().max(1);
+        let entry = 8 * words + 16 + 2 * std::mem::size_of::<Subset>() + 4 + 1;
         self.nfa.memory_bytes() + self.registered() * entry
     }
 
