@@ -85,5 +85,14 @@ pub fn all() -> Vec<Workload> {
             about: "C.*D.{20}[LO]: over every DFA budget, NFA fallback",
             aovs: own(&[("blowup20", "C.*D.{20}[LO]")]),
         },
+        Workload {
+            name: "wide",
+            about: "a set of 1 437 NFA positions (a fuzzer's find): lazy DFA of any width",
+            aovs: own(&[(
+                "wide",
+                "C((('fill'[^<T[^D2US]'fill'>R])U1)|(.[O<..'a b'>])*|\
+                 U6((<.[^DD]'floor'><[^R].>){1,238}){1,3})'floor'L",
+            )]),
+        },
     ]
 }

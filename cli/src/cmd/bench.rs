@@ -22,7 +22,7 @@ pub struct Args {
     #[arg(long, default_value_t = 1)]
     pub seed: u64,
     /// Run only these workloads (basic, per-lobe, groups, nested, blowup12, blowup20,
-    /// osl-basic).
+    /// wide, osl-basic).
     #[arg(long)]
     pub workload: Vec<String>,
 }
