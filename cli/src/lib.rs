@@ -6,6 +6,9 @@
 //! - [`cmd`]: one module per subcommand (`parse`, `match`, `equiv`, `partition`,
 //!   `bench`, `diff`, `lint`, `explain`), each with its clap `Args` and a `run` giving
 //!   the exit code; the binary (`src/main.rs`) only dispatches.
+//! - [`dialect`]: what the subcommands ask of an expression language
+//!   ([`dialect::CliDialect`], on `lpe`'s RenderMan and OSL markers): registration from
+//!   `--ini` or `--register`, how its errors print.
 //! - [`input`]: what the subcommands share to read their input (`--engine`, `--ini`)
 //!   and the typed [`input::InputError`] they report (exit 2).
 //! - [`witness`]: the exit code and printing of reports whose witnesses
@@ -13,5 +16,6 @@
 //!   `lint`).
 
 pub mod cmd;
+pub mod dialect;
 pub mod input;
 pub mod witness;
