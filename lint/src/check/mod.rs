@@ -4,7 +4,7 @@
 //! [`inputs`] reads the files in the command's order. Per file: parse errors
 //! ([`aovs`]), AOVs that can match no path and AOVs equivalent to an earlier one
 //! ([`aovs`]), group labels no light or object of the stage carries and numbered lobes
-//! no mapping feeds ([`labels`], [`aovs`]), and the declared partitions ([`partition`]),
+//! no mapping feeds ([`labels`], [`dialect`], [`aovs`]), and the declared partitions ([`partition`]),
 //! each a [`Finding`], collected in an [`outcome`]; [`text`] and [`json`] print them. [`dialect`] is what the checks
 //! ask of the expression language ([`dialect::LintDialect`], implemented on `lpe`'s
 //! RenderMan and OSL markers), so they are written once.
