@@ -1,54 +1,13 @@
 //! Reading the subcommands' shared input: `--engine`, `--dialect` with `--ini` or
-//! `--register` (read by each dialect's [`CliDialect`]), and the errors they report.
-
-use std::path::PathBuf;
+//! `--register` (read by each dialect's [`CliDialect`]); the errors they report are
+//! [`InputError`]'s.
 
 use lpe::osl::Osl;
 use lpe::renderman::RenderMan;
 use lpe_engines::Engine;
 
 use crate::dialect::CliDialect;
-
-/// Bad input to a subcommand: reported on stderr, exit status 2.
-#[derive(Debug, thiserror::Error)]
-pub enum InputError {
-    /// `--engine` names no registered engine.
-    #[error("unknown engine `{name}`: available engines are {}, or `all`", .available.join(", "))]
-    UnknownEngine {
-        /// What was asked for.
-        name: String,
-        /// The registered names.
-        available: Vec<&'static str>,
-    },
-    /// The `--ini` file cannot be read.
-    #[error("cannot read {}: {error}", .path.display())]
-    ReadIni {
-        /// The file.
-        path: PathBuf,
-        /// Why.
-        error: std::io::Error,
-    },
-    /// The `--ini` file has a bad line (the line number is in `error`).
-    #[error("{}: {error}", .path.display())]
-    Ini {
-        /// The file.
-        path: PathBuf,
-        /// Which line, and what.
-        error: lpe::renderman::IniError,
-    },
-    /// An expression does not parse (the error shows the byte position with a caret).
-    #[error("{0}")]
-    Expr(lpe::renderman::Error),
-    /// `--ini` with `--dialect osl`: its macros and lobe mappings are RenderMan's.
-    #[error("--ini holds RenderMan macros; it does not apply to --dialect osl")]
-    IniWithOsl,
-    /// `--register` without `--dialect osl`.
-    #[error("--register is for --dialect osl")]
-    RegisterWithoutOsl,
-    /// `--register` does not parse (the error gives the byte position).
-    #[error("--register: {0}")]
-    Register(lpe::osl::RegisteredError),
-}
+pub use crate::error::InputError;
 
 /// `--dialect` and OSL's `--register`, shared by the subcommands that read expressions.
 #[derive(clap::Args, Debug, Clone)]
@@ -88,12 +47,6 @@ impl DialectArgs {
         ini: Option<&std::path::Path>,
     ) -> Result<lpe::osl::Registered, InputError> {
         self.registration::<Osl>(ini)
-    }
-}
-
-impl From<lpe::renderman::Error> for InputError {
-    fn from(e: lpe::renderman::Error) -> Self {
-        InputError::Expr(e)
     }
 }
 

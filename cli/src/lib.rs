@@ -9,13 +9,16 @@
 //! - [`dialect`]: what the subcommands ask of an expression language
 //!   ([`dialect::CliDialect`], on `lpe`'s RenderMan and OSL markers): registration from
 //!   `--ini` or `--register`, how its errors print.
-//! - [`input`]: what the subcommands share to read their input (`--engine`, `--ini`)
-//!   and the typed [`input::InputError`] they report (exit 2).
+//! - [`error`]: [`error::InputError`], what the subcommands report as bad input
+//!   (exit 2).
+//! - [`input`]: what the subcommands share to read their input (`--engine`,
+//!   `--dialect` with `--ini` or `--register`).
 //! - [`witness`]: the exit code and printing of reports whose witnesses
 //!   [`lpe_lint::witness`] re-checked with the reference matcher (`equiv`, `partition`,
 //!   `lint`).
 
 pub mod cmd;
 pub mod dialect;
+pub mod error;
 pub mod input;
 pub mod witness;

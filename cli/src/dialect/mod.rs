@@ -10,7 +10,7 @@ use std::path::Path;
 
 use lpe_lint::check::dialect::LintDialect;
 
-use crate::input::InputError;
+use crate::error::InputError;
 
 /// An expression language as the command line reads and reports it.
 pub trait CliDialect: LintDialect {

@@ -8,7 +8,7 @@ use lpe::osl::{self, Error, Osl, PathError, Registered};
 use lpe::renderman::Config;
 
 use super::CliDialect;
-use crate::input::InputError;
+use crate::error::InputError;
 
 impl CliDialect for Osl {
     const READS_INI: bool = false;

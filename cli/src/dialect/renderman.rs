@@ -7,7 +7,7 @@ use std::path::Path;
 use lpe::renderman::{Config, Error, LobeMap, Lpe, Parser, PathError, RenderMan};
 
 use super::CliDialect;
-use crate::input::InputError;
+use crate::error::InputError;
 
 impl CliDialect for RenderMan {
     const READS_INI: bool = true;
