@@ -2,11 +2,12 @@
 
 use std::ffi::c_char;
 
-use lpe::osl::{self, Symbol};
-use lpe::renderman::{Event, EventKind, Path, Vertex, VertexType};
+use lpe::osl::Osl;
+use lpe::renderman::{RenderMan, Vertex};
 use lpe::Class;
 
-use crate::set::{lpe_set, text, DialectSet};
+use crate::dialect::{osl, renderman, CDialect};
+use crate::set::{lpe_set, text};
 use crate::status::{guard, lpe_status};
 
 /// A vertex after classification. Plain data, only meaningful for the set that made it;
@@ -59,26 +60,33 @@ pub struct lpe_vertex {
     pub label: *const c_char,
 }
 
+/// The vertex of `v`'s fields.
 fn vertex_of(v: &lpe_vertex) -> Result<Vertex, lpe_status> {
     let label = if v.label.is_null() {
         None
     } else {
         Some(text(v.label)?)
     };
-    let ty = VertexType::from_letter(char::from(v.vertex_type)).ok_or(lpe_status::LPE_ERR_RANGE)?;
-    let no_event = v.event == 0 && v.lobe == 0;
-    match ty {
-        VertexType::C if no_event && label.is_none() => Ok(Vertex::camera()),
-        VertexType::L if no_event => Ok(Vertex::light(label)),
-        VertexType::O if no_event => Ok(Vertex::emissive(label)),
-        VertexType::R | VertexType::T => {
-            let kind =
-                EventKind::from_letter(char::from(v.event)).ok_or(lpe_status::LPE_ERR_RANGE)?;
-            let event = Event::new(kind, v.lobe).ok_or(lpe_status::LPE_ERR_RANGE)?;
-            Ok(Vertex::scatter(ty, event, label))
+    renderman::vertex_of(v.vertex_type, v.event, v.lobe, label)
+}
+
+/// Classifies the vertex `vertex` gives in `set`, which must be of dialect `D`, into
+/// `*out`.
+fn classify_into<D: CDialect>(
+    set: &lpe_set,
+    out: &mut lpe_class,
+    vertex: impl FnOnce() -> Result<D::Vertex, lpe_status>,
+) -> lpe_status {
+    let Some(set) = D::set_of(&set.set) else {
+        return lpe_status::LPE_ERR_UNSUPPORTED;
+    };
+    guard(lpe_status::LPE_ERR_PANIC, || match vertex() {
+        Ok(v) => {
+            *out = lpe_class::from_class(set.classify(&v));
+            lpe_status::LPE_OK
         }
-        _ => Err(lpe_status::LPE_ERR_RANGE),
-    }
+        Err(s) => s,
+    })
 }
 
 /// The class of a vertex, into `*out`. Classify every kind of scene vertex once, at
@@ -99,16 +107,7 @@ pub extern "C" fn lpe_classify(
     ) else {
         return lpe_status::LPE_ERR_NULL;
     };
-    let DialectSet::RenderMan(rm) = &set.set else {
-        return lpe_status::LPE_ERR_UNSUPPORTED;
-    };
-    guard(lpe_status::LPE_ERR_PANIC, || match vertex_of(vertex) {
-        Ok(v) => {
-            *out = lpe_class::from_class(rm.classify(&v));
-            lpe_status::LPE_OK
-        }
-        Err(s) => s,
-    })
+    classify_into::<RenderMan>(set, out, || vertex_of(vertex))
 }
 
 /// The class of one vertex written in path text form (docs/language.md §2.3), such as
@@ -124,38 +123,16 @@ pub extern "C" fn lpe_classify_text(
     let (Some(set), Some(out)) = (unsafe { set.as_ref() }, unsafe { out.as_mut() }) else {
         return lpe_status::LPE_ERR_NULL;
     };
-    let DialectSet::RenderMan(rm) = &set.set else {
+    if RenderMan::set_of(&set.set).is_none() {
         return lpe_status::LPE_ERR_UNSUPPORTED;
-    };
+    }
     let src = match text(vertex) {
         Ok(s) => s,
         Err(e) => return e,
     };
-    guard(lpe_status::LPE_ERR_PANIC, || match vertex_from_text(src) {
-        Some(v) => {
-            *out = lpe_class::from_class(rm.classify(&v));
-            lpe_status::LPE_OK
-        }
-        None => lpe_status::LPE_ERR_PARSE,
+    classify_into::<RenderMan>(set, out, || {
+        renderman::vertex_from_text(src).ok_or(lpe_status::LPE_ERR_PARSE)
     })
-}
-
-/// One vertex in path text: parsed inside the shortest path that can hold it (a camera
-/// before an emitter, an emitter after a camera, both around a scattering vertex).
-fn vertex_from_text(src: &str) -> Option<Vertex> {
-    let first = src.trim_start().chars().next()?.to_ascii_uppercase();
-    let (text, at) = match first {
-        'C' => (format!("{src} L"), 0),
-        'L' | 'O' => (format!("C {src}"), 1),
-        _ => (format!("C {src} L"), 1),
-    };
-    let path: Path = text.parse().ok()?;
-    let expected = if at == 1 && !matches!(first, 'L' | 'O') {
-        3
-    } else {
-        2
-    };
-    (path.len() == expected).then(|| path.vertices()[at].clone())
 }
 
 /// The class of an OSL vertex, into `*out`: `count` symbols, in OSL's order: the event
@@ -183,52 +160,10 @@ pub extern "C" fn lpe_classify_osl(
     if count == 0 {
         return lpe_status::LPE_ERR_RANGE;
     }
-    let DialectSet::Osl(osl_set) = &set.set else {
+    if Osl::set_of(&set.set).is_none() {
         return lpe_status::LPE_ERR_UNSUPPORTED;
-    };
+    }
     // SAFETY: the caller passes `count` readable pointers (checked non-null).
     let symbols = unsafe { std::slice::from_raw_parts(symbols, count) };
-    let vertex = match osl_vertex_of(symbols) {
-        Ok(v) => v,
-        Err(s) => return s,
-    };
-    guard(lpe_status::LPE_ERR_PANIC, || {
-        *out = lpe_class::from_class(osl_set.classify(&vertex));
-        lpe_status::LPE_OK
-    })
-}
-
-/// The OSL vertex of C symbols, NULL being NONE.
-fn osl_vertex_of(symbols: &[*const c_char]) -> Result<osl::Vertex, lpe_status> {
-    symbols
-        .iter()
-        .map(|&p| {
-            if p.is_null() {
-                Ok(Symbol::None)
-            } else {
-                text(p).map(Symbol::label)
-            }
-        })
-        .collect::<Result<_, _>>()
-        .map(osl::Vertex::new)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn one_vertex_of_text_and_nothing_else() {
-        let v = vertex_from_text("RD2'a b'").unwrap();
-        assert_eq!(v.to_string(), "RD2'a b'");
-        assert_eq!(vertex_from_text("C").unwrap(), Vertex::camera());
-        assert_eq!(
-            vertex_from_text("l'key'").unwrap(),
-            Vertex::light(Some("key"))
-        );
-        assert_eq!(vertex_from_text("O").unwrap(), Vertex::emissive(None));
-        for bad in ["", "RD RS", "C L", "RX", "L O", "RD9", "C'x'"] {
-            assert!(vertex_from_text(bad).is_none(), "{bad}");
-        }
-    }
+    classify_into::<Osl>(set, out, || osl::vertex_of(symbols))
 }

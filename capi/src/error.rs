@@ -14,6 +14,11 @@ pub struct lpe_error {
 }
 
 impl lpe_error {
+    /// An error with no byte position.
+    pub(crate) fn plain(status: lpe_status, message: &str, aov: Option<usize>) -> lpe_error {
+        lpe_error::new(status, message.into(), aov, None)
+    }
+
     pub(crate) fn new(
         status: lpe_status,
         message: String,

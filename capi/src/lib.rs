@@ -21,7 +21,9 @@
 //! symbols (`lpe_classify_osl`). Stepping is the same for both.
 //!
 //! Modules: [`status`] (codes and the panic guard), [`error`] (the error object of a
-//! failed compile), [`set`] (compile, names, warnings, free), [`classify`] (vertices
+//! failed compile), [`set`] (compile, names, warnings, free), `dialect` (what the ABI
+//! asks of each dialect, `CDialect` on `lpe`'s RenderMan and OSL markers, one file each;
+//! the set of any dialect), [`classify`] (vertices
 //! to classes), [`step`] (states: start, step, matches, is_dead; caches), [`view`] (the
 //! step view the header's inline `lpe_view_step` reads), [`bench`] (a benchmark-only
 //! export, not in the header, for `examples/c/step_bench.c`; the criterion step bench
@@ -34,6 +36,7 @@
 
 pub mod bench;
 pub mod classify;
+mod dialect;
 pub mod error;
 pub mod set;
 pub mod status;

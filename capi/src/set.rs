@@ -2,13 +2,9 @@
 
 use std::ffi::{c_char, CStr, CString};
 
-use lpe::aov::Automaton;
-use lpe::osl::Osl;
-use lpe::osl::{self, Registered};
-use lpe::renderman::RenderMan;
-use lpe::renderman::{Config, Lpe};
-use lpe::{AovSet, Options};
+use lpe::{with_dialect, AovSet, Options};
 
+use crate::dialect::{self, CDialect, DialectSet};
 use crate::error::lpe_error;
 use crate::status::{guard, lpe_status};
 
@@ -49,47 +45,6 @@ pub struct lpe_set {
     pub(crate) class_count: usize,
     names: Vec<CString>,
     warnings: Vec<CString>,
-}
-
-/// A compiled set of either dialect: its vertex classes differ, its automaton does not.
-// The variants differ in size, but there is one per `lpe_set`, which the caller holds
-// behind a pointer already; boxing the larger would add a load to every OSL step.
-#[allow(clippy::large_enum_variant)]
-pub(crate) enum DialectSet {
-    RenderMan(AovSet<RenderMan>),
-    Osl(AovSet<Osl>),
-}
-
-impl DialectSet {
-    /// What every dialect's set steps.
-    #[inline(always)]
-    pub(crate) fn automaton(&self) -> &Automaton {
-        match self {
-            DialectSet::RenderMan(s) => s.automaton(),
-            DialectSet::Osl(s) => s.automaton(),
-        }
-    }
-
-    pub(crate) fn len(&self) -> usize {
-        match self {
-            DialectSet::RenderMan(s) => s.len(),
-            DialectSet::Osl(s) => s.len(),
-        }
-    }
-
-    pub(crate) fn warnings(&self) -> &[lpe::analysis::Warning] {
-        match self {
-            DialectSet::RenderMan(s) => s.warnings(),
-            DialectSet::Osl(s) => s.warnings(),
-        }
-    }
-
-    fn class_count(&self) -> usize {
-        match self {
-            DialectSet::RenderMan(s) => s.class_count(),
-            DialectSet::Osl(s) => s.class_count(),
-        }
-    }
 }
 
 /// The defaults: 16 MiB DFA and NFA budgets, a 2 MiB lazy-DFA cache, no path length
@@ -183,11 +138,15 @@ fn compile(
     ini_text: *const c_char,
     options: *const lpe_options,
 ) -> Result<lpe_set, lpe_error> {
-    if dialect != LPE_DIALECT_RENDERMAN && dialect != LPE_DIALECT_OSL {
-        return Err(plain(lpe_status::LPE_ERR_RANGE, "unknown dialect", None));
-    }
+    let Some(dialect) = dialect::by_id(dialect) else {
+        return Err(lpe_error::plain(
+            lpe_status::LPE_ERR_RANGE,
+            "unknown dialect",
+            None,
+        ));
+    };
     if count > 0 && (names.is_null() || exprs.is_null()) {
-        return Err(plain(
+        return Err(lpe_error::plain(
             lpe_status::LPE_ERR_NULL,
             "`names` or `exprs` is NULL",
             None,
@@ -203,25 +162,7 @@ fn compile(
     });
     let registered = given.map_or(std::ptr::null(), |o| o.osl_registered);
     let sources = read_sources(names, exprs, count)?;
-    let set = if dialect == LPE_DIALECT_OSL {
-        if !ini_text.is_null() {
-            return Err(plain(
-                lpe_status::LPE_ERR_UNSUPPORTED,
-                "a rendermn.ini applies to LPE_DIALECT_RENDERMAN only",
-                None,
-            ));
-        }
-        DialectSet::Osl(compile_osl(&sources, registered, &opts)?)
-    } else {
-        if !registered.is_null() {
-            return Err(plain(
-                lpe_status::LPE_ERR_UNSUPPORTED,
-                "`osl_registered` applies to LPE_DIALECT_OSL only",
-                None,
-            ));
-        }
-        DialectSet::RenderMan(compile_renderman(&sources, ini_text, &opts)?)
-    };
+    let set = with_dialect!(dialect, D => compile_in::<D>(&sources, ini_text, registered, &opts)?);
     let warnings = set
         .warnings()
         .iter()
@@ -233,11 +174,6 @@ fn compile(
         warnings,
         set,
     })
-}
-
-/// An error with no byte position.
-fn plain(status: lpe_status, message: &str, aov: Option<usize>) -> lpe_error {
-    lpe_error::new(status, message.into(), aov, None)
 }
 
 /// One AOV as the caller passed it.
@@ -257,10 +193,10 @@ fn read_sources<'a>(
     for i in 0..count {
         // SAFETY: the caller passes arrays of `count` pointers (checked non-null).
         let (name_p, expr_p) = unsafe { (*names.add(i), *exprs.add(i)) };
-        let name =
-            text(name_p).map_err(|s| plain(s, "an AOV name is NULL or not UTF-8", Some(i)))?;
-        let expr =
-            text(expr_p).map_err(|s| plain(s, "an expression is NULL or not UTF-8", Some(i)))?;
+        let name = text(name_p)
+            .map_err(|s| lpe_error::plain(s, "an AOV name is NULL or not UTF-8", Some(i)))?;
+        let expr = text(expr_p)
+            .map_err(|s| lpe_error::plain(s, "an expression is NULL or not UTF-8", Some(i)))?;
         out.push(Source {
             // SAFETY: `name_p` is a valid C string (read above).
             c_name: unsafe { CStr::from_ptr(name_p) }.to_owned(),
@@ -290,61 +226,26 @@ fn compile_error(e: lpe::CompileError) -> lpe_error {
     lpe_error::new(lpe_status::LPE_ERR_COMPILE, e.to_string(), None, None)
 }
 
-fn compile_renderman(
+/// The set of `sources` in dialect `D`, under the registration of `ini_text` or
+/// `registered`.
+fn compile_in<D: CDialect>(
     sources: &[Source],
     ini_text: *const c_char,
-    opts: &Options,
-) -> Result<AovSet<RenderMan>, lpe_error> {
-    let config = if ini_text.is_null() {
-        Config::default()
-    } else {
-        let ini =
-            text(ini_text).map_err(|s| plain(s, "the rendermn.ini text is not UTF-8", None))?;
-        Config::from_ini(ini).map_err(|e| {
-            lpe_error::new(
-                lpe_status::LPE_ERR_INI,
-                format!("rendermn.ini: {e}"),
-                None,
-                Some(e.line),
-            )
-        })?
-    };
-    let parser = config.parser();
-    let mut aovs: Vec<(String, Lpe)> = Vec::with_capacity(sources.len());
-    for (i, s) in sources.iter().enumerate() {
-        let lpe = parser
-            .parse(s.expr)
-            .map_err(|e| parse_error(i, s.name, e.one_line(), e.span().start))?;
-        aovs.push((s.name.to_string(), lpe));
-    }
-    AovSet::compile_with(&aovs, opts).map_err(compile_error)
-}
-
-fn compile_osl(
-    sources: &[Source],
     registered: *const c_char,
     opts: &Options,
-) -> Result<AovSet<Osl>, lpe_error> {
-    let registered: Registered = if registered.is_null() {
-        Registered::none()
-    } else {
-        let t = text(registered)
-            .map_err(|s| plain(s, "the `osl_registered` text is not UTF-8", None))?;
-        t.parse().map_err(|e: lpe::osl::RegisteredError| {
-            lpe_error::new(
-                lpe_status::LPE_ERR_PARSE,
-                format!("osl_registered: {e}"),
-                None,
-                Some(e.pos),
-            )
-        })?
-    };
-    let mut aovs: Vec<(String, osl::Lpe)> = Vec::with_capacity(sources.len());
+) -> Result<DialectSet, lpe_error> {
+    let registration = D::registration(ini_text, registered)?;
+    let mut aovs: Vec<(String, D::Lpe)> = Vec::with_capacity(sources.len());
     for (i, s) in sources.iter().enumerate() {
-        let lpe = osl::parse(s.expr, &registered).map_err(|e| parse_error(i, s.name, &e, e.pos))?;
+        let lpe = D::parse(s.expr, &registration).map_err(|e| {
+            let (message, position) = D::parse_error(&e);
+            parse_error(i, s.name, message, position)
+        })?;
         aovs.push((s.name.to_string(), lpe));
     }
-    AovSet::compile_under(&aovs, &registered, opts).map_err(compile_error)
+    AovSet::<D>::compile_under(&aovs, &registration, opts)
+        .map(D::wrap)
+        .map_err(compile_error)
 }
 
 /// Releases a set. NULL is ignored. No state or class of it may be used after.

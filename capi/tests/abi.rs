@@ -389,7 +389,7 @@ enum Stepping {
 /// Steps an OSL path given in accum_test notation (no quotes in that file: vertices split
 /// on spaces, symbols on commas, `~` for NONE), each vertex classified from its symbols
 /// as C strings, and returns the match mask's first word.
-fn route_osl(set: &Set, path: &str, stepping: Stepping) -> u64 {
+fn route_by_symbols(set: &Set, path: &str, stepping: Stepping) -> u64 {
     let cache = lpe_cache_new(set.0);
     assert!(!cache.is_null());
     let mut s = lpe_state { opaque: 12345 };
@@ -425,7 +425,11 @@ fn route_osl(set: &Set, path: &str, stepping: Stepping) -> u64 {
     w[0]
 }
 
-fn osl_options(registered: &CString, dfa_budget: Option<usize>, lazy_cache: usize) -> lpe_options {
+fn options_with_registration(
+    registered: &CString,
+    dfa_budget: Option<usize>,
+    lazy_cache: usize,
+) -> lpe_options {
     let mut o = lpe_options_default();
     o.osl_registered = registered.as_ptr();
     if let Some(b) = dfa_budget {
@@ -436,7 +440,7 @@ fn osl_options(registered: &CString, dfa_budget: Option<usize>, lazy_cache: usiz
 }
 
 #[test]
-fn osl_accum_test_rows_answer_osl_and_the_reference_through_the_c_abi() {
+fn accum_test_rows_answer_as_osl_and_the_reference_do_through_the_c_abi() {
     let default_cache = lpe_options_default().lazy_cache;
     // The eager DFA; the lazy DFA (budget 0) through the thread-local cache, through a
     // cache of the caller's, and with caching off (every step on the bitset NFA).
@@ -451,10 +455,10 @@ fn osl_accum_test_rows_answer_osl_and_the_reference_through_the_c_abi() {
         let mut matched = 0;
         for row in &rows {
             let registered = CString::new(row.registered.to_string()).unwrap();
-            let opts = osl_options(&registered, budget, cache);
+            let opts = options_with_registration(&registered, budget, cache);
             let set = compile_in(LPE_DIALECT_OSL, &["rule"], &[&row.expr], None, Some(&opts))
                 .unwrap_or_else(|e| panic!("{}: {e:?}", row.expr));
-            let got = route_osl(&set, &row.path, stepping) == 1;
+            let got = route_by_symbols(&set, &row.path, stepping) == 1;
             let lpe = lpe::osl::parse(&row.expr, &row.registered).unwrap();
             let path: lpe::osl::Path = row.path.parse().unwrap();
             let reference = lpe_reference::osl::is_match(&lpe, &path);
@@ -475,7 +479,7 @@ fn osl_accum_test_rows_answer_osl_and_the_reference_through_the_c_abi() {
 #[test]
 fn an_osl_set_of_several_rules_routes_each_path_to_its_rules() {
     let registered = CString::new("events=U;scatters=Y").unwrap();
-    let opts = osl_options(&registered, None, lpe_options_default().lazy_cache);
+    let opts = options_with_registration(&registered, None, lpe_options_default().lazy_cache);
     // OSL's basic set plus two rules on the registered labels and a custom label.
     let mut names: Vec<&str> = lpe::osl::BASIC.iter().map(|(n, _)| *n).collect();
     let mut exprs: Vec<&str> = lpe::osl::BASIC.iter().map(|(_, e)| *e).collect();
@@ -494,7 +498,7 @@ fn an_osl_set_of_several_rules_routes_each_path_to_its_rules() {
         // A NONE scattering: no AOV's `<R...>`-style pattern takes it.
         ("C,_ R,~ L,_", &[]),
     ] {
-        let mask = route_osl(&set, path, Stepping::Plain);
+        let mask = route_by_symbols(&set, path, Stepping::Plain);
         let got: Vec<&str> = (0..names.len())
             .filter(|i| mask >> i & 1 == 1)
             .map(|i| names[i])
@@ -504,9 +508,9 @@ fn an_osl_set_of_several_rules_routes_each_path_to_its_rules() {
 }
 
 #[test]
-fn osl_compile_errors_name_the_aov_the_byte_and_the_registration() {
+fn compile_errors_name_the_aov_the_byte_and_the_registration_in_the_osl_dialect() {
     let registered = CString::new("events=U;colors=Y").unwrap();
-    let opts = osl_options(&registered, None, 0);
+    let opts = options_with_registration(&registered, None, 0);
     let (st, msg, aov, pos) = compile_in(LPE_DIALECT_OSL, &["a"], &["CDL"], None, Some(&opts))
         .err()
         .unwrap();
@@ -533,7 +537,7 @@ fn osl_compile_errors_name_the_aov_the_byte_and_the_registration() {
     // A registered label parses only when registered.
     assert!(compile_in(LPE_DIALECT_OSL, &["u"], &["CDY+U"], None, None).is_err());
     let registered = CString::new("events=U;scatters=Y").unwrap();
-    let opts = osl_options(&registered, None, 0);
+    let opts = options_with_registration(&registered, None, 0);
     assert!(compile_in(LPE_DIALECT_OSL, &["u"], &["CDY+U"], None, Some(&opts)).is_ok());
     // Each dialect's configuration belongs to that dialect only.
     let (st, msg, _, _) = compile_in(LPE_DIALECT_OSL, &["a"], &["CDL"], Some(""), None)
@@ -547,7 +551,7 @@ fn osl_compile_errors_name_the_aov_the_byte_and_the_registration() {
 }
 
 #[test]
-fn osl_classify_checks_its_arguments_and_the_dialect() {
+fn classifying_symbols_checks_its_arguments_and_the_dialect() {
     let set = compile_in(LPE_DIALECT_OSL, &["d"], &["C<RD>L"], None, None).unwrap();
     let mut c = lpe_class { id: 0 };
     let r = CString::new("R").unwrap();
@@ -739,7 +743,10 @@ fn suite_case(l: &Loaded, dfa_budget: Option<usize>) -> (Vec<String>, usize) {
             }
             (LPE_DIALECT_RENDERMAN, o)
         }
-        lpe::DialectName::Osl => (LPE_DIALECT_OSL, osl_options(&registered, dfa_budget, cache)),
+        lpe::DialectName::Osl => (
+            LPE_DIALECT_OSL,
+            options_with_registration(&registered, dfa_budget, cache),
+        ),
     };
     let at = format!("{} ({dfa_budget:?})", l.location());
     let compiled = compile_in(
@@ -785,7 +792,7 @@ fn suite_case(l: &Loaded, dfa_budget: Option<usize>) -> (Vec<String>, usize) {
                 let vertices: Vec<&str> = path.split(' ').collect();
                 route(&set, &vertices).0
             }
-            lpe::DialectName::Osl => vec![route_osl(&set, path, Stepping::Plain)],
+            lpe::DialectName::Osl => vec![route_by_symbols(&set, path, Stepping::Plain)],
         };
         for (j, &w) in want.iter().enumerate() {
             checked += 1;

@@ -1,49 +1,13 @@
-//! Reading the subcommands' shared input: `--engine`, `--ini`, expressions.
+//! Reading the subcommands' shared input: `--engine`, `--dialect` with `--ini` or
+//! `--register` (read by each dialect's [`CliDialect`]); the errors they report are
+//! [`InputError`]'s.
 
-use std::path::PathBuf;
-
+use lpe::osl::Osl;
+use lpe::renderman::RenderMan;
 use lpe_engines::Engine;
 
-/// Bad input to a subcommand: reported on stderr, exit status 2.
-#[derive(Debug, thiserror::Error)]
-pub enum InputError {
-    /// `--engine` names no registered engine.
-    #[error("unknown engine `{name}`: available engines are {}, or `all`", .available.join(", "))]
-    UnknownEngine {
-        /// What was asked for.
-        name: String,
-        /// The registered names.
-        available: Vec<&'static str>,
-    },
-    /// The `--ini` file cannot be read.
-    #[error("cannot read {}: {error}", .path.display())]
-    ReadIni {
-        /// The file.
-        path: PathBuf,
-        /// Why.
-        error: std::io::Error,
-    },
-    /// The `--ini` file has a bad line (the line number is in `error`).
-    #[error("{}: {error}", .path.display())]
-    Ini {
-        /// The file.
-        path: PathBuf,
-        /// Which line, and what.
-        error: lpe::renderman::IniError,
-    },
-    /// An expression does not parse (the error shows the byte position with a caret).
-    #[error("{0}")]
-    Expr(lpe::renderman::Error),
-    /// `--ini` with `--dialect osl`: its macros and lobe mappings are RenderMan's.
-    #[error("--ini holds RenderMan macros; it does not apply to --dialect osl")]
-    IniWithOsl,
-    /// `--register` without `--dialect osl`.
-    #[error("--register is for --dialect osl")]
-    RegisterWithoutOsl,
-    /// `--register` does not parse (the error gives the byte position).
-    #[error("--register: {0}")]
-    Register(lpe::osl::RegisteredError),
-}
+use crate::dialect::CliDialect;
+pub use crate::error::InputError;
 
 /// `--dialect` and OSL's `--register`, shared by the subcommands that read expressions.
 #[derive(clap::Args, Debug, Clone)]
@@ -57,7 +21,17 @@ pub struct DialectArgs {
 }
 
 impl DialectArgs {
+    /// The registration of dialect `D` from `--ini` and `--register`
+    /// ([`CliDialect::registration`]).
+    pub fn registration<D: CliDialect>(
+        &self,
+        ini: Option<&std::path::Path>,
+    ) -> Result<D::Registration, InputError> {
+        D::registration(ini, self.register.as_deref())
+    }
+
     /// Whether the OSL dialect is asked for; with RenderMan, `--register` is an error.
+    /// For `match` and `external`, which do not go through [`CliDialect`] yet.
     pub fn is_osl(&self) -> Result<bool, InputError> {
         match (self.dialect, &self.register) {
             (lpe::DialectName::Osl, _) => Ok(true),
@@ -66,25 +40,13 @@ impl DialectArgs {
         }
     }
 
-    /// The OSL registration (`-` when not given); `--ini` is an error with OSL.
+    /// The OSL registration (`-` when not given); `--ini` is an error with OSL. For
+    /// `match` and `external`, which do not go through [`CliDialect`] yet.
     pub fn registered(
         &self,
         ini: Option<&std::path::Path>,
     ) -> Result<lpe::osl::Registered, InputError> {
-        if ini.is_some() {
-            return Err(InputError::IniWithOsl);
-        }
-        self.register
-            .as_deref()
-            .unwrap_or("-")
-            .parse()
-            .map_err(InputError::Register)
-    }
-}
-
-impl From<lpe::renderman::Error> for InputError {
-    fn from(e: lpe::renderman::Error) -> Self {
-        InputError::Expr(e)
+        self.registration::<Osl>(ini)
     }
 }
 
@@ -107,25 +69,15 @@ pub fn select_engines(name: &str) -> Result<Vec<&'static dyn Engine>, InputError
         })
 }
 
-/// The parser for the built-in macros, or for those plus an ini file's.
+/// The parser for the built-in macros, or for those plus an ini file's. For `match`,
+/// which does not go through [`CliDialect`] yet.
 pub fn load_parser(ini: Option<&std::path::Path>) -> Result<lpe::renderman::Parser, InputError> {
-    let Some(path) = ini else {
-        return Ok(lpe::renderman::Parser::default());
-    };
-    let text = std::fs::read_to_string(path).map_err(|error| InputError::ReadIni {
-        path: path.to_path_buf(),
-        error,
-    })?;
-    lpe::renderman::Config::from_ini(&text)
-        .map(|c| c.parser())
-        .map_err(|error| InputError::Ini {
-            path: path.to_path_buf(),
-            error,
-        })
+    RenderMan::registration(ini, None)
 }
 
-/// An OSL parse error with the expression and a caret under the byte it points at.
+/// An OSL parse error with the expression and a caret under the byte it points at
+/// ([`CliDialect::show_error`]). For `match`, which does not go through [`CliDialect`]
+/// yet.
 pub fn osl_error(src: &str, e: &lpe::osl::Error) -> String {
-    let col = src.get(..e.pos).map_or(e.pos, |s| s.chars().count());
-    format!("error: {e}\n  {src}\n  {}^", " ".repeat(col))
+    Osl::show_error(src, e)
 }

@@ -6,12 +6,19 @@
 //! - [`cmd`]: one module per subcommand (`parse`, `match`, `equiv`, `partition`,
 //!   `bench`, `diff`, `lint`, `explain`), each with its clap `Args` and a `run` giving
 //!   the exit code; the binary (`src/main.rs`) only dispatches.
-//! - [`input`]: what the subcommands share to read their input (`--engine`, `--ini`)
-//!   and the typed [`input::InputError`] they report (exit 2).
+//! - [`dialect`]: what the subcommands ask of an expression language
+//!   ([`dialect::CliDialect`], on `lpe`'s RenderMan and OSL markers): registration from
+//!   `--ini` or `--register`, how its errors print.
+//! - [`error`]: [`error::InputError`], what the subcommands report as bad input
+//!   (exit 2).
+//! - [`input`]: what the subcommands share to read their input (`--engine`,
+//!   `--dialect` with `--ini` or `--register`).
 //! - [`witness`]: the exit code and printing of reports whose witnesses
 //!   [`lpe_lint::witness`] re-checked with the reference matcher (`equiv`, `partition`,
 //!   `lint`).
 
 pub mod cmd;
+pub mod dialect;
+pub mod error;
 pub mod input;
 pub mod witness;

@@ -5,7 +5,7 @@
 
 use std::process::ExitCode;
 
-pub use lpe_lint::witness::{recheck, Checked, Disagreement, Expect};
+pub use lpe_lint::witness::{recheck, Checked, Disagreement, Expect, PathOf};
 
 /// Exit code for a witness that failed its re-check.
 pub const DISAGREE: u8 = 3;

@@ -168,7 +168,7 @@ fn accum_test() -> String {
 }
 
 #[test]
-fn osl_batch_answers_accum_test_and_checks_its_fourth_column() {
+fn batch_answers_accum_test_and_checks_its_fourth_column_in_the_osl_dialect() {
     let text = accum_test();
     let (code, out, err) = lpe_check(&["match", "--dialect", "osl", "--batch"], &text);
     assert_eq!(code, 0, "{err}");
@@ -220,7 +220,7 @@ fn rows_with(text: &str, end: &str) -> usize {
 }
 
 #[test]
-fn osl_batch_reports_bad_lines_in_place() {
+fn batch_reports_bad_lines_in_place_in_the_osl_dialect() {
     let input = "C<RD\t-\tC,_ R,D\n\
                  CRL\tevents\tC,_ R,D L,_\n\
                  CRL\t-\tC,_ R,'D\n\
@@ -258,7 +258,7 @@ fn diff_help_says_register_is_for_a_given_case() {
 }
 
 #[test]
-fn osl_sources_may_carry_the_pipelines_lpe_mark() {
+fn sources_may_carry_the_pipelines_lpe_mark_in_the_osl_dialect() {
     let osl = |args: &[&str]| lpe_check(args, "");
     // Read as OSL, `lpe:` would be the custom labels l, p, e and a syntax error at `:`.
     let (code, out, err) = osl(&["parse", "--dialect", "osl", "lpe:C[^RD]L"]);
@@ -277,7 +277,7 @@ fn osl_sources_may_carry_the_pipelines_lpe_mark() {
 }
 
 #[test]
-fn osl_match_parse_equiv_and_partition_with_arguments() {
+fn match_parse_equiv_and_partition_with_arguments_in_the_osl_dialect() {
     let osl = |args: &[&str]| lpe_check(args, "");
     let (code, out, _) = osl(&[
         "match",
@@ -368,7 +368,7 @@ fn osl_match_parse_equiv_and_partition_with_arguments() {
 }
 
 #[test]
-fn osl_diff_agrees_and_is_deterministic() {
+fn diff_agrees_and_is_deterministic_in_the_osl_dialect() {
     let args = ["diff", "--dialect", "osl", "--cases", "300", "--seed", "5"];
     let (code, out, err) = lpe_check(&args, "");
     assert_eq!(code, 0, "{out}{err}");

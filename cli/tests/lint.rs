@@ -378,7 +378,7 @@ fn set_algebra_members_make_a_clean_osl_partition() {
 }
 
 #[test]
-fn osl_lint_refuses_ini_files_and_renderman_refuses_register() {
+fn lint_in_the_osl_dialect_refuses_ini_files_and_renderman_refuses_register() {
     // An ini file holds RenderMan macros and lobe mappings: nothing OSL can use.
     let (code, _, err) = lpe_check(&[
         "lint",

@@ -5,42 +5,19 @@
 //! user's expressions. So every witness goes through [`recheck`] first, and a failure is
 //! reported as an internal disagreement (`lpe-check` exits 3), not as the answer.
 
-use std::fmt::Display;
+use lpe::renderman::Lpe;
+use lpe::{Dialect, DialectLpe};
 
-use lpe::osl;
-use lpe::renderman::{Lpe, Path};
-
-/// An expression of either dialect, as the reference matcher of its dialect reads it.
-pub trait Checked: Display {
-    /// The dialect's path.
-    type Path: Display;
-    /// The reference matcher's answer on `path`.
-    fn reference_match(&self, path: &Self::Path) -> bool;
-    /// The expression that closes a partition's gap: the universe minus every AOV.
-    fn remainder(aovs: &[(String, Self)], universe: &Self) -> Self
-    where
-        Self: Sized;
+/// A dialect whose expressions the reference matcher reads: the executable semantics
+/// every witness is re-checked against. Implemented on `lpe`'s dialect markers
+/// ([`crate::check::dialect::renderman`], [`crate::check::dialect::osl`]).
+pub trait Checked: Dialect {
+    /// The reference matcher's answer for `lpe` on `path`.
+    fn reference_match(lpe: &Self::Lpe, path: &Self::Path) -> bool;
 }
 
-impl Checked for Lpe {
-    type Path = Path;
-    fn reference_match(&self, path: &Path) -> bool {
-        lpe_reference::is_match(self, path)
-    }
-    fn remainder(aovs: &[(String, Lpe)], universe: &Lpe) -> Lpe {
-        lpe::analysis::remainder(aovs, universe)
-    }
-}
-
-impl Checked for osl::Lpe {
-    type Path = osl::Path;
-    fn reference_match(&self, path: &osl::Path) -> bool {
-        lpe_reference::osl::is_match(self, path)
-    }
-    fn remainder(aovs: &[(String, osl::Lpe)], universe: &osl::Lpe) -> osl::Lpe {
-        lpe::analysis::remainder(aovs, universe)
-    }
-}
+/// The path type of the dialect of the expression `L`.
+pub type PathOf<L> = <<L as DialectLpe>::Dialect as Dialect>::Path;
 
 /// What one expression must answer on a witness.
 pub struct Expect<'a, E = Lpe> {
@@ -72,9 +49,13 @@ pub struct Disagreement {
 
 /// `Ok` if the reference agrees with every expectation on `path`, else the first
 /// expression it disagrees on.
-pub fn recheck<E: Checked>(path: &E::Path, expects: &[Expect<'_, E>]) -> Result<(), Disagreement> {
+pub fn recheck<L>(path: &PathOf<L>, expects: &[Expect<'_, L>]) -> Result<(), Disagreement>
+where
+    L: DialectLpe,
+    L::Dialect: Checked,
+{
     for e in expects {
-        let got = e.lpe.reference_match(path);
+        let got = L::Dialect::reference_match(e.lpe, path);
         if got != e.matches {
             return Err(Disagreement {
                 name: e.name.to_string(),

@@ -85,7 +85,11 @@ pub fn aovs(dialect: DialectName, scene: &Scene, parser: &Parser) -> Result<AovL
             &RENDERMAN_EXTRA[..],
             "[<L.>O]",
         ),
-        DialectName::Osl => (AovList::basic_osl(parser)?, &OSL_EXTRA[..], "[LO]"),
+        DialectName::Osl => (
+            AovList::basic::<lpe::osl::Osl>(parser)?,
+            &OSL_EXTRA[..],
+            "[LO]",
+        ),
     };
     for (n, s) in extra {
         if aovs.aovs.len() >= 32 {
@@ -168,8 +172,8 @@ fn median(xs: &mut [f64]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lpe::osl::Registered;
     use lpe::renderman::Config;
+    use lpe::with_dialect;
     use lpe::{AovSet, Options};
 
     /// The bench measures the eager DFA step in both dialects: a padding AOV that blew
@@ -189,21 +193,15 @@ mod tests {
                 names.sort_unstable();
                 names.dedup();
                 assert_eq!(names.len(), 32, "{name} {dialect}: duplicate names");
-                let (uses_dfa, warnings) = match dialect {
-                    DialectName::RenderMan => {
-                        let set = AovSet::compile(&list.named()).unwrap();
-                        (set.uses_dfa(), set.warnings().to_vec())
-                    }
-                    DialectName::Osl => {
-                        let set = AovSet::compile_under(
-                            &list.named_osl(),
-                            &Registered::none(),
-                            &Options::default(),
-                        )
-                        .unwrap();
-                        (set.uses_dfa(), set.warnings().to_vec())
-                    }
-                };
+                let (uses_dfa, warnings) = with_dialect!(dialect, D => {
+                    let set = AovSet::<D>::compile_under(
+                        &list.named::<D>(),
+                        &Default::default(),
+                        &Options::default(),
+                    )
+                    .unwrap();
+                    (set.uses_dfa(), set.warnings().to_vec())
+                });
                 assert!(uses_dfa, "{name} {dialect}: lazy");
                 assert!(warnings.is_empty(), "{name} {dialect}: {warnings:?}");
             }

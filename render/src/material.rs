@@ -26,17 +26,6 @@ pub enum Scattering {
     Delta,
 }
 
-impl Scattering {
-    /// The OSL scattering label.
-    pub fn osl_label(self) -> &'static str {
-        match self {
-            Scattering::Diffuse => "D",
-            Scattering::Glossy => "G",
-            Scattering::Delta => "S",
-        }
-    }
-}
-
 /// The BSDF model of a lobe.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Model {

@@ -27,7 +27,7 @@ fn route<M: PathMatcher>(m: &M, classes: impl IntoIterator<Item = M::Class>) -> 
 type Masks = Result<Vec<Option<AovMask>>, String>;
 
 /// The RenderMan matchers on a case: (name, masks).
-fn renderman(l: &Loaded, plan: &Plan) -> Vec<(&'static str, Masks)> {
+fn matchers_in_the_renderman_dialect(l: &Loaded, plan: &Plan) -> Vec<(&'static str, Masks)> {
     let parser = match &l.case.ini {
         Some(ini) => lpe::renderman::Config::from_ini(ini).unwrap().parser(),
         None => lpe::renderman::Parser::default(),
@@ -76,7 +76,7 @@ fn renderman(l: &Loaded, plan: &Plan) -> Vec<(&'static str, Masks)> {
 }
 
 /// The OSL matcher on a case.
-fn osl_dialect(l: &Loaded, plan: &Plan) -> Vec<(&'static str, Masks)> {
+fn matchers_in_the_osl_dialect(l: &Loaded, plan: &Plan) -> Vec<(&'static str, Masks)> {
     let named: Vec<(String, osl::Lpe)> = plan
         .sources
         .iter()
@@ -113,8 +113,8 @@ fn run(cases: &[Loaded]) -> (Vec<String>, [usize; 2], usize) {
             continue; // error and path-text cases: the parser's, not a matcher's
         }
         let matchers = match l.dialect {
-            DialectName::RenderMan => renderman(l, &plan),
-            DialectName::Osl => osl_dialect(l, &plan),
+            DialectName::RenderMan => matchers_in_the_renderman_dialect(l, &plan),
+            DialectName::Osl => matchers_in_the_osl_dialect(l, &plan),
         };
         for (name, masks) in matchers {
             let masks = match masks {

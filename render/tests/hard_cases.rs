@@ -385,7 +385,7 @@ fn spawned_rays_never_hit_their_own_surface_at_scales_1e_minus_6_to_1e6() {
             for shape in shapes {
                 let bvh = Bvh::new(vec![(shape, 0)]);
                 let target = shape.centroid();
-                let mut rng = Rng::for_sample(e as u64 + 100, at as u64, 0);
+                let mut rng = Rng::for_sample((e + 100) as u64, at as u64, 0);
                 let mut hits = 0;
                 for i in 0..400 {
                     // Rays from a few sizes away, aimed near the centroid.

@@ -114,7 +114,7 @@ const SAME_MEANING: [(&str, &str, &str); 10] = [
 ];
 
 #[test]
-fn osl_aovs_give_the_images_of_the_renderman_aovs_that_mean_the_same() {
+fn aovs_in_the_osl_dialect_give_the_images_of_the_renderman_aovs_that_mean_the_same() {
     let s = scene("still-life");
     let mut renderman = AovList::default();
     let mut osl = AovList::new(DialectName::Osl);

@@ -9,11 +9,14 @@
 
 use std::process::ExitCode;
 
-use lpe::analysis::{self, Comparison};
-use lpe::osl;
+use std::fmt::Display;
 
-use crate::input::{bad_input, load_parser, osl_error, DialectArgs};
-use crate::witness::{self, Checked, Disagreement, Expect};
+use lpe::analysis::{self, Comparison};
+use lpe::{with_dialect, DialectLpe};
+
+use crate::dialect::CliDialect;
+use crate::input::{bad_input, DialectArgs};
+use crate::witness::{self, Checked, Disagreement, Expect, PathOf};
 
 /// Arguments of `lpe-check equiv`.
 #[derive(clap::Args, Debug)]
@@ -32,37 +35,15 @@ pub struct Args {
 
 /// Runs `lpe-check equiv`.
 pub fn run(args: Args) -> ExitCode {
-    match args.lang.is_osl() {
-        Ok(true) => return run_osl(&args),
-        Ok(false) => {}
-        Err(e) => return bad_input(format!("error: {e}")),
-    }
-    let parser = match load_parser(args.ini.as_deref()) {
-        Ok(p) => p,
-        Err(e) => return bad_input(format!("error: {e}")),
-    };
-    let parse = |s: &str| parser.parse(s).map_err(|e| format!("error: {e}"));
-    let (a, b) = match (parse(&args.a), parse(&args.b)) {
-        (Ok(a), Ok(b)) => (a, b),
-        (Err(e), _) | (_, Err(e)) => {
-            eprintln!("{e}");
-            return ExitCode::from(2);
-        }
-    };
-    let c = match analysis::compare(&a, &b) {
-        Ok(c) => c,
-        Err(e) => return bad_input(format!("error: {e}")),
-    };
-    witness::exit_with(report(&a, &b, &c), c.equivalent())
+    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
 }
 
-/// `equiv --dialect osl`.
-fn run_osl(args: &Args) -> ExitCode {
-    let registered = match args.lang.registered(args.ini.as_deref()) {
+fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
+    let registration = match args.lang.registration::<D>(args.ini.as_deref()) {
         Ok(r) => r,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    let parse = |s: &str| osl::parse_source(s, &registered).map_err(|e| osl_error(s, &e));
+    let parse = |s: &str| D::parse_arg(s, &registration).map_err(|e| D::error_line(s, &e));
     let (a, b) = match (parse(&args.a), parse(&args.b)) {
         (Ok(a), Ok(b)) => (a, b),
         (Err(e), _) | (_, Err(e)) => return bad_input(e),
@@ -75,9 +56,13 @@ fn run_osl(args: &Args) -> ExitCode {
 }
 
 /// The text printed for a comparison, after re-checking its witnesses.
-pub fn report<E: Checked>(a: &E, b: &E, c: &Comparison<E::Path>) -> Result<String, Disagreement> {
+pub fn report<L>(a: &L, b: &L, c: &Comparison<PathOf<L>>) -> Result<String, Disagreement>
+where
+    L: DialectLpe + Display,
+    L::Dialect: Checked,
+{
     let (sa, sb) = (a.to_string(), b.to_string());
-    let check = |path: &E::Path, in_a: bool| {
+    let check = |path: &PathOf<L>, in_a: bool| {
         witness::recheck(
             path,
             &[

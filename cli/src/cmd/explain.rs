@@ -13,17 +13,16 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use lpe::osl::{self, Osl};
 #[cfg(test)]
-use lpe::renderman::{Lpe, Parser};
-use lpe::renderman::{Path, RenderMan};
-use lpe::{AovSet, Dialect, State};
+use lpe::renderman::{Lpe, Parser, RenderMan};
+use lpe::{with_dialect, AovSet, Dialect, State};
 use lpe_lint::read::{self, Limits};
 use lpe_lint::Document;
 use tabled::builder::Builder;
 use tabled::settings::Style;
 
-use crate::input::{bad_input, load_parser, osl_error, DialectArgs};
+use crate::dialect::CliDialect;
+use crate::input::{bad_input, DialectArgs};
 
 /// Arguments of `lpe-check explain`.
 #[derive(clap::Args, Debug)]
@@ -52,12 +51,7 @@ pub struct Args {
 
 /// Runs `lpe-check explain`.
 pub fn run(args: Args) -> ExitCode {
-    let result = match args.lang.is_osl() {
-        Ok(false) => run_renderman(&args),
-        Ok(true) => run_osl(&args),
-        Err(e) => Err(e.to_string()),
-    };
-    match result {
+    match with_dialect!(args.lang.dialect, D => run_in::<D>(&args)) {
         Ok(e) => {
             print!("{}", e.text);
             ExitCode::from(u8::from(e.landed.is_empty()))
@@ -66,26 +60,19 @@ pub fn run(args: Args) -> ExitCode {
     }
 }
 
-fn run_renderman(args: &Args) -> Result<Explanation, String> {
-    let path: Path = args.path.parse().map_err(|e| format!("{e}"))?;
-    let parser = load_parser(args.ini.as_deref()).map_err(|e| e.to_string())?;
-    let aovs = load(args, |src| parser.parse(src).map_err(|e| e.to_string()))?;
-    explain::<RenderMan>(&aovs, &parser, &path).map_err(|e| e.to_string())
-}
-
-fn run_osl(args: &Args) -> Result<Explanation, String> {
-    let registered = args
+fn run_in<D: CliDialect>(args: &Args) -> Result<Explanation, String> {
+    let registration = args
         .lang
-        .registered(args.ini.as_deref())
+        .registration::<D>(args.ini.as_deref())
         .map_err(|e| e.to_string())?;
-    let path: osl::Path = args
+    let path: D::Path = args
         .path
         .parse()
-        .map_err(|e| format!("path `{}`: {e}", args.path))?;
+        .map_err(|e| D::path_error(&args.path, &e))?;
     let aovs = load(args, |src| {
-        osl::parse_source(src, &registered).map_err(|e| osl_error(src, &e))
+        D::parse_arg(src, &registration).map_err(|e| D::show_error(src, &e))
     })?;
-    explain::<Osl>(&aovs, &registered, &path).map_err(|e| e.to_string())
+    explain::<D>(&aovs, &registration, &path).map_err(|e| e.to_string())
 }
 
 /// The AOVs of the arguments, each parsed by `parse` (its error with a caret).

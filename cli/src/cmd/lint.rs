@@ -18,12 +18,12 @@
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use lpe_lint::check::dialect::{Dialect, Osl, RenderMan};
-use lpe_lint::check::json::FileStatus;
+use lpe::with_dialect;
+use lpe_lint::check::dialect::Lint;
 use lpe_lint::check::{self, inputs, json, text};
 use lpe_lint::read::Limits;
-use lpe_lint::{Document, PartitionDecl};
 
+use crate::dialect::CliDialect;
 use crate::input::{bad_input, DialectArgs};
 use crate::witness::DISAGREE;
 
@@ -62,93 +62,64 @@ pub struct Args {
 
 /// Runs `lpe-check lint`.
 pub fn run(args: Args) -> ExitCode {
-    let osl = match args.lang.is_osl() {
-        Ok(osl) => osl,
-        Err(e) => return bad_input(format!("error: {e}")),
-    };
+    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
+}
+
+fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
     let limits = Limits::default();
     let (inis, others) = inputs::split(args.ini.as_deref(), &args.files);
-    // An ini file holds RenderMan macros and lobe mappings (and RenderMan AOVs'
-    // partitions): nothing an OSL expression can use.
-    let registered = if osl {
-        let ini = inis.first().copied();
-        match args.lang.registered(ini) {
-            Ok(r) => Some(r),
-            Err(e) => {
-                let file = ini.map_or(String::new(), |p| format!("{}: ", p.display()));
-                return bad_input(format!("error: {file}{e}"));
-            }
-        }
-    } else {
+    // A dialect that reads ini files reads them with the others; for any other an ini
+    // file (RenderMan macros, lobe mappings and partitions) is an error.
+    let ini = if D::READS_INI {
         None
+    } else {
+        inis.first().copied()
+    };
+    let registration = match args.lang.registration::<D>(ini) {
+        Ok(r) => r,
+        Err(e) => {
+            let file = ini.map_or(String::new(), |p| format!("{}: ", p.display()));
+            return bad_input(format!("error: {file}{e}"));
+        }
     };
     let read = inputs::read_all(&inis, &others, &limits);
-    let extra = inputs::command_line_partitions(&args.partition);
-    let ctx = Run {
-        docs: &read.docs,
-        extra: &extra,
-        statuses: &read.statuses,
-        universe: args.universe.as_deref(),
-        format: args.format,
+    let (registration, lobes) = D::configured(registration, &read.config);
+    let dialect = Lint::<D> {
+        registration: &registration,
+        lobes: &lobes,
     };
-    match registered {
-        Some(registered) => ctx.lint(&Osl { registered }, lpe::osl::UNIVERSE),
-        None => {
-            let parser = read.config.parser();
-            let dialect = RenderMan {
-                parser: &parser,
-                lobes: &read.config.lobes,
-            };
-            ctx.lint(
-                &dialect,
-                <lpe::renderman::RenderMan as lpe::Dialect>::DEFAULT_UNIVERSE,
-            )
+    let universe = args.universe.as_deref().unwrap_or(D::DEFAULT_UNIVERSE);
+    let universe = match dialect.parse(universe) {
+        Ok(u) => u,
+        Err(e) => return bad_input(format!("error: --universe: {}", e.message)),
+    };
+    let extra = inputs::command_line_partitions(&args.partition);
+    let out = match check::lint(&read.docs, &dialect, &universe, &extra) {
+        Ok(out) => out,
+        Err(e) => {
+            eprintln!("{e}");
+            return ExitCode::from(DISAGREE);
         }
-    }
-}
-
-/// What every dialect's run shares once the files are read.
-struct Run<'a> {
-    docs: &'a [Document],
-    extra: &'a [PartitionDecl],
-    statuses: &'a [FileStatus],
-    universe: Option<&'a str>,
-    format: OutputFormat,
-}
-
-impl Run<'_> {
-    fn lint<D: Dialect>(&self, dialect: &D, default_universe: &str) -> ExitCode {
-        let universe = match dialect.parse(self.universe.unwrap_or(default_universe)) {
-            Ok(u) => u,
-            Err(e) => return bad_input(format!("error: --universe: {}", e.message)),
-        };
-        let out = match check::lint(self.docs, dialect, &universe, self.extra) {
-            Ok(out) => out,
-            Err(e) => {
-                eprintln!("{e}");
-                return ExitCode::from(DISAGREE);
-            }
-        };
-        match self.format {
-            OutputFormat::Text => {
-                for s in self.statuses {
-                    if let Some(e) = &s.error {
-                        eprintln!("error: {e}");
-                    }
+    };
+    match args.format {
+        OutputFormat::Text => {
+            for s in &read.statuses {
+                if let Some(e) = &s.error {
+                    eprintln!("error: {e}");
                 }
-                print!("{}", text::render(&out));
             }
-            OutputFormat::Json => println!(
-                "{}",
-                serde_json::to_string_pretty(&json::render(&out, self.statuses))
-                    .expect("JSON values serialize")
-            ),
+            print!("{}", text::render(&out));
         }
-        let code = if self.statuses.iter().any(|s| s.error.is_some()) {
-            2
-        } else {
-            u8::from(!out.findings.is_empty())
-        };
-        ExitCode::from(code)
+        OutputFormat::Json => println!(
+            "{}",
+            serde_json::to_string_pretty(&json::render(&out, &read.statuses))
+                .expect("JSON values serialize")
+        ),
     }
+    let code = if read.statuses.iter().any(|s| s.error.is_some()) {
+        2
+    } else {
+        u8::from(!out.findings.is_empty())
+    };
+    ExitCode::from(code)
 }

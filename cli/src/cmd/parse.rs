@@ -6,9 +6,10 @@
 
 use std::process::ExitCode;
 
-use lpe::osl;
+use lpe::with_dialect;
 
-use crate::input::{bad_input, load_parser, osl_error, DialectArgs};
+use crate::dialect::CliDialect;
+use crate::input::{bad_input, DialectArgs};
 
 /// Arguments of `lpe-check parse`.
 #[derive(clap::Args, Debug)]
@@ -25,41 +26,22 @@ pub struct Args {
 
 /// Prints the canonical form of the expression.
 pub fn run(args: Args) -> ExitCode {
-    match args.lang.is_osl() {
-        Ok(true) => return run_osl(&args),
-        Ok(false) => {}
-        Err(e) => return bad_input(format!("error: {e}")),
-    }
-    let parser = match load_parser(args.ini.as_deref()) {
-        Ok(p) => p,
-        Err(e) => return bad_input(format!("error: {e}")),
-    };
-    match parser.parse(&args.expr) {
-        Ok(lpe) => {
-            println!("{lpe}");
-            ExitCode::SUCCESS
-        }
-        Err(e) => {
-            eprintln!("{e}");
-            ExitCode::from(2)
-        }
-    }
+    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
 }
 
-/// `parse --dialect osl`.
-fn run_osl(args: &Args) -> ExitCode {
-    let registered = match args.lang.registered(args.ini.as_deref()) {
+fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
+    let registration = match args.lang.registration::<D>(args.ini.as_deref()) {
         Ok(r) => r,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    match osl::parse_source(&args.expr, &registered) {
+    match D::parse_arg(&args.expr, &registration) {
         Ok(lpe) => {
-            for w in &lpe.warnings {
+            for w in D::parse_warnings(&lpe) {
                 eprintln!("warning: {w}");
             }
             println!("{lpe}");
             ExitCode::SUCCESS
         }
-        Err(e) => bad_input(osl_error(&args.expr, &e)),
+        Err(e) => bad_input(D::show_error(&args.expr, &e)),
     }
 }

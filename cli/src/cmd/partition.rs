@@ -17,11 +17,11 @@
 use std::process::ExitCode;
 
 use lpe::analysis;
-use lpe::renderman::Lpe;
-use lpe::{osl, AovSet, Options};
+use lpe::{with_dialect, AovSet, Options};
 use lpe_lint::check::partition::report;
 
-use crate::input::{bad_input, load_parser, osl_error, DialectArgs, InputError};
+use crate::dialect::CliDialect;
+use crate::input::{bad_input, DialectArgs};
 use crate::witness;
 
 /// Arguments of `lpe-check partition`.
@@ -43,66 +43,31 @@ pub struct Args {
 
 /// Runs `lpe-check partition`.
 pub fn run(args: Args) -> ExitCode {
-    match args.lang.is_osl() {
-        Ok(true) => return run_osl(&args),
-        Ok(false) => {}
-        Err(e) => return bad_input(format!("error: {e}")),
-    }
-    match prepare(&args) {
-        Ok((aovs, universe)) => {
-            let warnings = AovSet::compile(&aovs)
-                .map(|s| analysis::warnings(&s))
-                .unwrap_or_default();
-            for w in warnings {
-                println!("warning: {w}");
-            }
-            let p = match analysis::partition(&aovs, &universe, &lpe::renderman::Parser::default())
-            {
-                Ok(p) => p,
-                Err(e) => return bad_input(format!("error: {e}")),
-            };
-            witness::exit_with(report(&aovs, &universe, &p), p.is_clean())
-        }
-        Err(e) => bad_input(format!("error: {e}")),
-    }
+    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
 }
 
-/// `partition --dialect osl`.
-fn run_osl(args: &Args) -> ExitCode {
-    let registered = match args.lang.registered(args.ini.as_deref()) {
+fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
+    let registration = match args.lang.registration::<D>(args.ini.as_deref()) {
         Ok(r) => r,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    let parse = |s: &str| osl::parse_source(s, &registered).map_err(|e| osl_error(s, &e));
-    let universe_text = args.universe.as_deref().unwrap_or(lpe::osl::UNIVERSE);
-    let prepared = parse(universe_text).and_then(|u| Ok((named(&args.aovs, |e| parse(e))?, u)));
+    let parse = |s: &str| D::parse_arg(s, &registration).map_err(|e| D::error_line(s, &e));
+    let universe_text = args.universe.as_deref().unwrap_or(D::DEFAULT_UNIVERSE);
+    let prepared = parse(universe_text).and_then(|u| Ok((named(&args.aovs, parse)?, u)));
     let (aovs, universe) = match prepared {
         Ok(p) => p,
         Err(e) => return bad_input(e),
     };
-    if let Ok(set) = AovSet::compile_under(&aovs, &registered, &Options::default()) {
-        for w in set.warnings() {
+    if let Ok(set) = AovSet::<D>::compile_under(&aovs, &registration, &Options::default()) {
+        for w in analysis::warnings(&set) {
             println!("warning: {w}");
         }
     }
-    let p = match analysis::partition(&aovs, &universe, &registered) {
+    let p = match analysis::partition(&aovs, &universe, &registration) {
         Ok(p) => p,
         Err(e) => return bad_input(format!("error: {e}")),
     };
     witness::exit_with(report(&aovs, &universe, &p), p.is_clean())
-}
-
-type Named = Vec<(String, Lpe)>;
-
-fn prepare(args: &Args) -> Result<(Named, Lpe), InputError> {
-    let parser = load_parser(args.ini.as_deref())?;
-    let parse = |s: &str| parser.parse(s).map_err(InputError::from);
-    let universe = parse(
-        args.universe
-            .as_deref()
-            .unwrap_or(<lpe::renderman::RenderMan as lpe::Dialect>::DEFAULT_UNIVERSE),
-    )?;
-    Ok((named(&args.aovs, parse)?, universe))
 }
 
 /// The AOV arguments, each `name=expression` or an expression named by its text.

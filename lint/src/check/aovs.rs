@@ -3,16 +3,16 @@
 use crate::Document;
 use lpe::renderman::LobeCategory;
 
-use super::dialect::Dialect;
+use super::dialect::{Lint, LintDialect};
 use super::finding::{Finding, Kind};
 use super::labels::Carrier;
 use super::outcome::Linted;
 
 /// Parses the AOVs of `doc` into `linted` and appends the findings on them.
-pub fn check<D: Dialect>(
+pub fn check<D: LintDialect>(
     doc: &Document,
-    linted: &mut [Linted<D::Expr>],
-    dialect: &D,
+    linted: &mut [Linted<D::Lpe>],
+    dialect: &Lint<'_, D>,
     findings: &mut Vec<Finding>,
 ) {
     for l in linted.iter_mut() {
@@ -65,13 +65,16 @@ pub fn check<D: Dialect>(
 }
 
 /// `(index, reason)` of the parsed AOVs that can match no path.
-fn empty_aovs<D: Dialect>(linted: &[Linted<D::Expr>], dialect: &D) -> Vec<(usize, String)> {
-    let parsed: Vec<(usize, (String, D::Expr))> = linted
+fn empty_aovs<D: LintDialect>(
+    linted: &[Linted<D::Lpe>],
+    dialect: &Lint<'_, D>,
+) -> Vec<(usize, String)> {
+    let parsed: Vec<(usize, (String, D::Lpe))> = linted
         .iter()
         .enumerate()
         .filter_map(|(i, l)| l.lpe.clone().map(|lpe| (i, (l.decl.name.clone(), lpe))))
         .collect();
-    let named: Vec<(String, D::Expr)> = parsed.iter().map(|(_, n)| n.clone()).collect();
+    let named: Vec<(String, D::Lpe)> = parsed.iter().map(|(_, n)| n.clone()).collect();
     let warnings = match dialect.warnings(&named) {
         Some(w) => w,
         // Too many or too large together: each alone (its emptiness does not depend on

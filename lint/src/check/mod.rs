@@ -4,9 +4,10 @@
 //! [`inputs`] reads the files in the command's order. Per file: parse errors
 //! ([`aovs`]), AOVs that can match no path and AOVs equivalent to an earlier one
 //! ([`aovs`]), group labels no light or object of the stage carries and numbered lobes
-//! no mapping feeds ([`labels`], [`aovs`]), and the declared partitions ([`partition`]),
+//! no mapping feeds ([`labels`], [`dialect`], [`aovs`]), and the declared partitions ([`partition`]),
 //! each a [`Finding`], collected in an [`outcome`]; [`text`] and [`json`] print them. [`dialect`] is what the checks
-//! ask of the expression language (RenderMan's or OSL's), so they are written once.
+//! ask of the expression language ([`dialect::LintDialect`], implemented on `lpe`'s
+//! RenderMan and OSL markers), so they are written once.
 
 pub mod aovs;
 pub mod dialect;
@@ -21,7 +22,7 @@ pub mod text;
 pub use finding::{Finding, Kind};
 pub use outcome::{CheckedPartition, Linted, Outcome};
 
-use dialect::Dialect;
+use dialect::{Lint, LintDialect};
 
 use crate::witness::Disagreement;
 use crate::{Document, PartitionDecl};
@@ -29,12 +30,12 @@ use crate::{Document, PartitionDecl};
 /// Lints the documents read (ini documents contribute only partitions), then the
 /// `extra` partitions over the AOVs of every file. Partition witnesses are re-checked
 /// with the reference matcher; a failed re-check is an engine bug, returned as the error.
-pub fn lint<D: Dialect>(
+pub fn lint<D: LintDialect>(
     docs: &[Document],
-    dialect: &D,
-    universe: &D::Expr,
+    dialect: &Lint<'_, D>,
+    universe: &D::Lpe,
     extra: &[PartitionDecl],
-) -> Result<Outcome<D::Expr>, Disagreement> {
+) -> Result<Outcome<D::Lpe>, Disagreement> {
     let mut out = Outcome {
         aovs: Vec::new(),
         partitions: Vec::new(),

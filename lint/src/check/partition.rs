@@ -3,21 +3,24 @@
 //! [`report`] is the text `lpe-check partition` prints, every witness re-checked first;
 //! [`check`] runs it for the re-check.
 
-use lpe::analysis::Partition;
+use std::fmt::Display;
 
-use super::dialect::Dialect;
+use lpe::analysis::Partition;
+use lpe::DialectLpe;
+
+use super::dialect::{Lint, LintDialect};
 use super::finding::{Finding, Kind};
 use super::outcome::{CheckedPartition, Linted};
-use crate::witness::{self, Checked, Disagreement, Expect};
+use crate::witness::{self, Checked, Disagreement, Expect, PathOf};
 use crate::PartitionDecl;
 
 /// Checks one partition over `aovs` (members are looked up by name, first match).
-pub fn check<D: Dialect>(
+pub fn check<D: LintDialect>(
     file: &str,
     decl: &PartitionDecl,
-    aovs: &[Linted<D::Expr>],
-    dialect: &D,
-    universe: &D::Expr,
+    aovs: &[Linted<D::Lpe>],
+    dialect: &Lint<'_, D>,
+    universe: &D::Lpe,
     findings: &mut Vec<Finding>,
 ) -> Result<CheckedPartition, Disagreement> {
     let new = |kind, message| Finding::new(kind, file, &decl.name, &decl.location, message);
@@ -95,11 +98,15 @@ pub fn check<D: Dialect>(
 
 /// The text printed for a partition check (`lpe-check partition`), after re-checking
 /// every witness.
-pub fn report<E: Checked>(
-    aovs: &[(String, E)],
-    universe: &E,
-    p: &Partition<E::Path>,
-) -> Result<String, Disagreement> {
+pub fn report<L>(
+    aovs: &[(String, L)],
+    universe: &L,
+    p: &Partition<PathOf<L>>,
+) -> Result<String, Disagreement>
+where
+    L: DialectLpe + Display,
+    L::Dialect: Checked,
+{
     let uname = format!("universe {universe}");
     let mut out = format!("partition of {universe} by {} AOVs\n", aovs.len());
     for (i, j, path) in &p.overlaps {
@@ -139,7 +146,7 @@ pub fn report<E: Checked>(
         }));
         witness::recheck(path, &expects)?;
         out.push_str(&format!("gap: {path}\n"));
-        let rest = E::remainder(aovs, universe);
+        let rest = lpe::analysis::remainder(aovs, universe);
         witness::recheck(
             path,
             &[Expect {

@@ -3,14 +3,17 @@
 //! partitions of beauty the defaults are known to form. A list is in one dialect:
 //! RenderMan's, or OSL's (`--dialect osl`, whose defaults are the OSL basic set).
 
+use std::any::Any;
 use std::fmt;
 
-use lpe::renderman::macros::{BASIC, OTHER, PER_LOBE};
-use lpe::renderman::{EventKind, Lpe, Parser, Prefix};
-use lpe::{osl, DialectName};
+use lpe::osl::{self, Osl};
+use lpe::renderman::macros::{OTHER, PER_LOBE};
+use lpe::renderman::{EventKind, Lpe, Parser, Prefix, RenderMan};
+use lpe::DialectName;
 use lpe_lint::read::rib::{display_channel, Channel};
 use lpe_lint::{AovDecl, Location, RibProblem};
 
+use super::vertex::SceneDialect;
 use crate::scene::Scene;
 
 /// Why an AOV list could not be built.
@@ -94,20 +97,13 @@ impl AovExpr {
         }
     }
 
-    /// The RenderMan expression, if the AOV is one.
-    pub fn renderman(&self) -> Option<&Lpe> {
-        match self {
-            AovExpr::RenderMan(l) => Some(l),
-            AovExpr::Osl(_) => None,
-        }
-    }
-
-    /// The OSL expression, if the AOV is one.
-    pub fn osl(&self) -> Option<&osl::Lpe> {
-        match self {
-            AovExpr::Osl(l) => Some(l),
-            AovExpr::RenderMan(_) => None,
-        }
+    /// The expression as an `L` (a dialect's `Lpe`), if the AOV is in that dialect.
+    pub fn get<L: Any>(&self) -> Option<&L> {
+        let any: &dyn Any = match self {
+            AovExpr::RenderMan(l) => l,
+            AovExpr::Osl(l) => l,
+        };
+        any.downcast_ref()
     }
 
     /// Whether the expression can tell vertices apart by their labels (else the
@@ -213,58 +209,42 @@ impl AovList {
         Ok(self.aovs.len() - 1)
     }
 
-    /// `(name, expression)` pairs of the RenderMan AOVs, as `lpe::AovSet::compile` takes
-    /// them (none in an OSL list).
-    pub fn named(&self) -> Vec<(String, Lpe)> {
+    /// `(name, expression)` pairs of the AOVs in dialect `D`, as `lpe::AovSet::compile`
+    /// takes them (none in a list of another dialect).
+    pub fn named<D: SceneDialect>(&self) -> Vec<(String, D::Lpe)>
+    where
+        D::Lpe: 'static,
+    {
         self.aovs
             .iter()
-            .filter_map(|a| Some((a.name.clone(), a.expr.renderman()?.clone())))
-            .collect()
-    }
-
-    /// `(name, expression)` pairs of the OSL AOVs, as `lpe::AovSet::compile_osl` takes
-    /// them (none in a RenderMan list).
-    pub fn named_osl(&self) -> Vec<(String, osl::Lpe)> {
-        self.aovs
-            .iter()
-            .filter_map(|a| Some((a.name.clone(), a.expr.osl()?.clone())))
+            .filter_map(|a| Some((a.name.clone(), a.expr.get::<D::Lpe>()?.clone())))
             .collect()
     }
 
     /// The RenderMan expressions (none in an OSL list).
     pub fn lpes(&self) -> Vec<Lpe> {
-        self.named().into_iter().map(|(_, l)| l).collect()
+        self.named::<RenderMan>()
+            .into_iter()
+            .map(|(_, l)| l)
+            .collect()
     }
 
     pub fn index(&self, name: &str) -> Option<usize> {
         self.aovs.iter().position(|a| a.name == name)
     }
 
-    /// The seven basic AOVs, declared as the partition of beauty they are.
-    pub fn basic(parser: &Parser) -> Result<AovList, AovError> {
-        let mut list = AovList::default();
-        let members = BASIC
-            .iter()
-            .map(|(n, _)| list.push(n, &format!("lpe:{n}"), parser))
-            .collect::<Result<_, _>>()?;
-        list.partitions.push(Partition {
-            name: "basic AOVs".into(),
-            members,
-            universal: true,
-        });
-        Ok(list)
-    }
-
-    /// The OSL basic set (`lpe::osl::BASIC`, under RenderMan's basic names), declared as
-    /// the partition of beauty it is.
-    pub fn basic_osl(parser: &Parser) -> Result<AovList, AovError> {
-        let mut list = AovList::new(DialectName::Osl);
-        let members = lpe::osl::BASIC
+    /// The basic AOVs of dialect `D` ([`SceneDialect::basic_aovs`]: RenderMan's seven
+    /// basic macros, OSL's `lpe::osl::BASIC` under the same names), declared as the
+    /// partition of beauty they are.
+    pub fn basic<D: SceneDialect>(parser: &Parser) -> Result<AovList, AovError> {
+        let dialect = DialectName::of::<D>().expect("the renderer's dialects are lpe's");
+        let mut list = AovList::new(dialect);
+        let members = D::basic_aovs()
             .iter()
             .map(|(n, src)| list.push(n, src, parser))
             .collect::<Result<_, _>>()?;
         list.partitions.push(Partition {
-            name: "OSL basic AOVs".into(),
+            name: D::BASIC_PARTITION.into(),
             members,
             universal: true,
         });
@@ -288,7 +268,7 @@ impl AovList {
     ) -> Result<AovList, AovError> {
         let mut list = match dialect {
             DialectName::RenderMan => AovList::defaults(scene, parser)?,
-            DialectName::Osl => AovList::basic_osl(parser)?,
+            DialectName::Osl => AovList::basic::<Osl>(parser)?,
         };
         if crate::scene::furnace::furnace_params(scene).is_some() {
             for k in 0..=crate::scene::furnace::FURNACE_BOUNCES {
@@ -304,7 +284,7 @@ impl AovList {
 
     /// The default AOVs for `scene` and the partitions they form.
     pub fn defaults(scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
-        let mut list = AovList::basic(parser)?;
+        let mut list = AovList::basic::<RenderMan>(parser)?;
         let basic = list.partitions[0].members.clone();
 
         let glass_t = OTHER.iter().find(|(n, _)| *n == "transmissiveGlassLobe");

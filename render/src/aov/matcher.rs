@@ -13,10 +13,10 @@
 //! it with any engine of the `lpe-engines` registry, which is how `converge` times the
 //! regex-automata engine (`oracle`).
 
-use lpe::renderman::{Lpe, Path, Vertex, VertexType};
+use lpe::renderman::{Lpe, Path, RenderMan, Vertex, VertexType};
 use lpe::DialectName;
 
-use super::vertex::{SceneClassifier, SceneVertex};
+use super::vertex::{SceneClassifier, SceneDialect, SceneVertex};
 use std::hash::{Hash, Hasher};
 use std::sync::{Mutex, RwLock};
 
@@ -288,7 +288,7 @@ impl<W: WholePath> PathMatcher for WholePathMatcher<W> {
 /// The whole-path engines judge RenderMan expressions.
 impl<W: WholePath> SceneClassifier for WholePathMatcher<W> {
     fn classify_scene(&self, v: &SceneVertex) -> u16 {
-        self.classify(&v.renderman())
+        self.classify(&RenderMan::scene_vertex(v))
     }
 
     fn dialect(&self) -> DialectName {

@@ -19,6 +19,7 @@
 //! other vertex has a light group. Emitters and the camera scatter NONE (`~`).
 
 use lpe::osl::{self, Osl, Symbol};
+use lpe::renderman::macros::BASIC;
 use lpe::renderman::RenderMan;
 use lpe::renderman::{Event, VertexType};
 use lpe::{AovSet, Dialect, DialectName, PathMatcher};
@@ -48,44 +49,6 @@ pub enum SceneVertex<'a> {
     Emissive { group: Option<&'a str> },
 }
 
-impl SceneVertex<'_> {
-    /// The vertex as the RenderMan dialect sees it.
-    pub fn renderman(&self) -> lpe::renderman::Vertex {
-        match *self {
-            SceneVertex::Camera => lpe::renderman::Vertex::camera(),
-            SceneVertex::Scatter {
-                side, event, group, ..
-            } => lpe::renderman::Vertex::scatter(side, event, group),
-            SceneVertex::Light { group } => lpe::renderman::Vertex::light(group),
-            SceneVertex::Emissive { group } => lpe::renderman::Vertex::emissive(group),
-        }
-    }
-
-    /// The vertex as the OSL dialect sees it (see the module docs for the mapping).
-    pub fn osl(&self) -> osl::Vertex {
-        let (event, scattering, group) = match *self {
-            SceneVertex::Camera => ("C", None, None),
-            SceneVertex::Scatter {
-                side,
-                scattering,
-                group,
-                ..
-            } => {
-                let event = if side == VertexType::T { "T" } else { "R" };
-                (event, Some(scattering.osl_label()), group)
-            }
-            SceneVertex::Light { group } => ("L", None, group),
-            SceneVertex::Emissive { group } => ("O", None, group),
-        };
-        let mut symbols = vec![
-            Symbol::label(event),
-            scattering.map_or(Symbol::None, Symbol::label),
-        ];
-        symbols.extend(group.map(Symbol::label));
-        osl::Vertex::new(symbols)
-    }
-}
-
 /// A matcher the integrator can hand the renderer's vertices: it shows each one in its
 /// own dialect.
 pub trait SceneClassifier: PathMatcher {
@@ -97,22 +60,85 @@ pub trait SceneClassifier: PathMatcher {
     fn dialect(&self) -> DialectName;
 }
 
-/// How a dialect sees the renderer's vertices: the one thing the renderer needs per
-/// dialect.
+/// What the renderer needs per dialect: how the dialect sees the renderer's vertices,
+/// and its basic AOV set (the default AOVs, a partition of beauty).
 pub trait SceneDialect: Dialect {
+    /// What the renderer's report calls the basic set's partition.
+    const BASIC_PARTITION: &'static str;
+
     /// The vertex `v` as this dialect sees it.
     fn scene_vertex(v: &SceneVertex) -> Self::Vertex;
+
+    /// The basic AOVs, `(name, source)`.
+    fn basic_aovs() -> Vec<(&'static str, String)>;
 }
 
 impl SceneDialect for RenderMan {
+    const BASIC_PARTITION: &'static str = "basic AOVs";
+
+    /// Type, the event the lobe map gives the lobe (with its number), one label.
     fn scene_vertex(v: &SceneVertex) -> lpe::renderman::Vertex {
-        v.renderman()
+        match *v {
+            SceneVertex::Camera => lpe::renderman::Vertex::camera(),
+            SceneVertex::Scatter {
+                side, event, group, ..
+            } => lpe::renderman::Vertex::scatter(side, event, group),
+            SceneVertex::Light { group } => lpe::renderman::Vertex::light(group),
+            SceneVertex::Emissive { group } => lpe::renderman::Vertex::emissive(group),
+        }
+    }
+
+    /// The basic macros, by name.
+    fn basic_aovs() -> Vec<(&'static str, String)> {
+        BASIC
+            .iter()
+            .map(|(n, _)| (*n, format!("lpe:{n}")))
+            .collect()
     }
 }
 
 impl SceneDialect for Osl {
+    const BASIC_PARTITION: &'static str = "OSL basic AOVs";
+
+    /// See the module docs for the mapping.
     fn scene_vertex(v: &SceneVertex) -> osl::Vertex {
-        v.osl()
+        let (event, scattering, group) = match *v {
+            SceneVertex::Camera => ("C", None, None),
+            SceneVertex::Scatter {
+                side,
+                scattering,
+                group,
+                ..
+            } => {
+                let event = if side == VertexType::T { "T" } else { "R" };
+                (event, Some(scattering_label(scattering)), group)
+            }
+            SceneVertex::Light { group } => ("L", None, group),
+            SceneVertex::Emissive { group } => ("O", None, group),
+        };
+        let mut symbols = vec![
+            Symbol::label(event),
+            scattering.map_or(Symbol::None, Symbol::label),
+        ];
+        symbols.extend(group.map(Symbol::label));
+        osl::Vertex::new(symbols)
+    }
+
+    /// `lpe::osl::BASIC`, under RenderMan's basic names.
+    fn basic_aovs() -> Vec<(&'static str, String)> {
+        osl::BASIC
+            .iter()
+            .map(|(n, s)| (*n, s.to_string()))
+            .collect()
+    }
+}
+
+/// OSL's scattering label of a lobe.
+fn scattering_label(s: Scattering) -> &'static str {
+    match s {
+        Scattering::Diffuse => "D",
+        Scattering::Glossy => "G",
+        Scattering::Delta => "S",
     }
 }
 
@@ -143,7 +169,7 @@ mod tests {
 
     /// Hand-written OSL path text of each kind of vertex (§18.1's notation).
     #[test]
-    fn osl_vertices_are_the_documented_ones() {
+    fn vertices_are_the_documented_ones_in_the_osl_dialect() {
         let cases = [
             (SceneVertex::Camera, "C,~"),
             (
@@ -167,20 +193,16 @@ mod tests {
             (SceneVertex::Emissive { group: None }, "O,~"),
         ];
         for (v, want) in cases {
-            assert_eq!(v.osl().to_string(), want, "{v:?}");
+            assert_eq!(Osl::scene_vertex(&v).to_string(), want, "{v:?}");
         }
     }
 
     #[test]
     fn renderman_vertices_keep_the_lobe_event_and_label() {
         let v = scatter(VertexType::T, Scattering::Delta, Some("glass"));
-        assert_eq!(v.renderman().to_string(), "TS4'glass'");
-        assert_eq!(
-            SceneVertex::Emissive { group: Some("key") }
-                .renderman()
-                .to_string(),
-            "O'key'"
-        );
-        assert_eq!(SceneVertex::Camera.renderman().to_string(), "C");
+        let rm = |v: &SceneVertex| RenderMan::scene_vertex(v).to_string();
+        assert_eq!(rm(&v), "TS4'glass'");
+        assert_eq!(rm(&SceneVertex::Emissive { group: Some("key") }), "O'key'");
+        assert_eq!(rm(&SceneVertex::Camera), "C");
     }
 }

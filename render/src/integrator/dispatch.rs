@@ -38,7 +38,7 @@ pub fn render_announcing(
     if aovs.dialect == DialectName::Osl {
         check_osl_labels(scene)?;
         let set = lpe::AovSet::compile_under(
-            &aovs.named_osl(),
+            &aovs.named::<lpe::osl::Osl>(),
             &lpe::osl::Registered::none(),
             &lpe::Options::default(),
         )
@@ -47,7 +47,7 @@ pub fn render_announcing(
         })?;
         return render_with(&set, scene, aovs, lobes, settings, on_plan);
     }
-    match lpe::AovSet::compile(&aovs.named()) {
+    match lpe::AovSet::compile(&aovs.named::<lpe::renderman::RenderMan>()) {
         Ok(set) => render_with(&set, scene, aovs, lobes, settings, on_plan),
         Err(e) => {
             eprintln!(

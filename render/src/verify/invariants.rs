@@ -185,12 +185,14 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
                 .map(|&i| aovs.aovs[i].name.as_str())
                 .collect();
             let checked = match aovs.dialect {
-                DialectName::RenderMan => {
-                    lpe::analysis::partition(&pick(aovs.named(), &members), &universe, &parser)
-                        .map(|r| (universe.to_string(), failures(&r, &names)))
-                }
+                DialectName::RenderMan => lpe::analysis::partition(
+                    &pick(aovs.named::<lpe::renderman::RenderMan>(), &members),
+                    &universe,
+                    &parser,
+                )
+                .map(|r| (universe.to_string(), failures(&r, &names))),
                 DialectName::Osl => lpe::analysis::partition(
-                    &pick(aovs.named_osl(), &members),
+                    &pick(aovs.named::<lpe::osl::Osl>(), &members),
                     &osl_universe,
                     &registered,
                 )

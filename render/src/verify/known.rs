@@ -233,7 +233,7 @@ pub fn cornell(
 ) -> Result<Known, VerifyError> {
     let scene = Scene::load("cornell", lobes)?;
     let parser = Parser::default();
-    let aovs = AovList::basic(&parser)?;
+    let aovs = AovList::basic::<lpe::renderman::RenderMan>(&parser)?;
     const REF_SEED: u64 = 0x5EED_CAFE;
     let file = cache_dir.join(format!(
         "converge_ref_cornell_{width}x{height}_{ref_spp}spp_{REF_SEED:x}.bin"

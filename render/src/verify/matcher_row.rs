@@ -72,9 +72,11 @@ impl MatcherRow {
                 dfa_budget,
                 ..lpe::Options::default()
             };
-            lpe::AovSet::compile_with(&aovs.named(), &opts).map_err(|e| RenderError::Compile {
-                reason: e.to_string(),
-            })
+            lpe::AovSet::compile_with(&aovs.named::<lpe::renderman::RenderMan>(), &opts).map_err(
+                |e| RenderError::Compile {
+                    reason: e.to_string(),
+                },
+            )
         };
         use crate::integrator::render_with;
         let quiet = &mut |_: &crate::aov::plan::Plan| {};

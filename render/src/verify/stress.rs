@@ -55,7 +55,7 @@ pub fn mixed_partition(
     lobes: &LobeMap,
 ) -> Result<(Vec<(Accumulation, f64)>, DVec3), VerifyError> {
     let scene = Scene::from_toml(MIXED, "mixed", lobes)?;
-    let aovs = AovList::basic(&Parser::default())?;
+    let aovs = AovList::basic::<lpe::renderman::RenderMan>(&Parser::default())?;
     let basic = &aovs.partitions[0];
     let render = |accumulation| {
         let settings = Settings {

@@ -65,8 +65,8 @@ pub fn check_suite_in(
     }
     if dialect == DialectName::Osl {
         let scene = load("still-life")?;
-        let osl = AovList::basic_osl(&parser)?;
-        let renderman = AovList::basic(&parser)?;
+        let osl = AovList::basic::<lpe::osl::Osl>(&parser)?;
+        let renderman = AovList::basic::<lpe::renderman::RenderMan>(&parser)?;
         let a = render(&scene, &osl, &cfg.lobes, &small(24, 4, threads))?;
         let b = render(&scene, &renderman, &cfg.lobes, &small(24, 4, threads))?;
         out.push(identical(
