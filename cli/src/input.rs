@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use lpe_engines::Engine;
+use lpe_engines::{Engine, EngineDialect};
 
 /// Bad input to a subcommand: reported on stderr, exit status 2.
 #[derive(Debug, thiserror::Error)]
@@ -94,12 +94,14 @@ pub fn bad_input(message: impl std::fmt::Display) -> std::process::ExitCode {
     std::process::ExitCode::from(2)
 }
 
-/// `--engine` values: one engine name, or `all`.
-pub fn select_engines(name: &str) -> Result<Vec<&'static dyn Engine>, InputError> {
+/// `--engine` values: one engine name, or `all`, of dialect `D`'s registry.
+pub fn select_engines<D: EngineDialect>(
+    name: &str,
+) -> Result<Vec<&'static dyn Engine<D>>, InputError> {
     if name == "all" {
-        return Ok(lpe_engines::all());
+        return Ok(lpe_engines::all::<D>());
     }
-    lpe_engines::by_name(name)
+    lpe_engines::by_name::<D>(name)
         .map(|e| vec![e])
         .ok_or_else(|| InputError::UnknownEngine {
             name: name.to_string(),

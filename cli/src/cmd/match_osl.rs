@@ -12,15 +12,19 @@
 
 use std::process::ExitCode;
 
-use lpe::osl::{self, Registered};
-use lpe_engines::differential::Osl;
+use lpe::osl::{self, Osl, Registered};
 use lpe_engines::Engine;
 
-use super::matching::answer::{answer_paths, batch, verdict_in, Args, LineOutcome, Verdict};
-use crate::input::{bad_input, osl_error};
+use super::matching::answer::{answer_paths, batch, verdict, Args, LineOutcome, Verdict};
+use crate::input::{bad_input, osl_error, select_engines};
 
 /// Runs `lpe-check match --dialect osl`.
-pub fn run(args: &Args, engines: &[&'static dyn Engine]) -> ExitCode {
+pub fn run(args: &Args) -> ExitCode {
+    let engines = match select_engines::<Osl>(&args.engine) {
+        Ok(e) => e,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    let engines = &engines;
     let registered = match args.lang.registered(args.ini.as_deref()) {
         Ok(r) => r,
         Err(e) => return bad_input(format!("error: {e}")),
@@ -41,15 +45,14 @@ pub fn run(args: &Args, engines: &[&'static dyn Engine]) -> ExitCode {
     for w in &lpe.warnings {
         eprintln!("warning: {w}");
     }
-    let lang = Osl { registered };
     answer_paths(&args.paths, "C,_ R,D L,_", |text| {
         let p = text.parse::<osl::Path>().map_err(|e| e.to_string())?;
-        Ok(verdict_in(&lang, engines, &lpe, &p))
+        Ok(verdict(engines, &registered, &lpe, &p))
     })
 }
 
 /// Answers one `EXPR<TAB>REGISTERED<TAB>PATH[<TAB>MATCH|NOMATCH]` line.
-pub fn batch_line(engines: &[&dyn Engine], line: &str) -> LineOutcome {
+pub fn batch_line(engines: &[&dyn Engine<Osl>], line: &str) -> LineOutcome {
     let cols: Vec<&str> = line.split('\t').collect();
     let (expr, reg, path, expected) = match cols[..] {
         [e, r, p] => (e, r, p, None),
@@ -81,7 +84,7 @@ pub fn batch_line(engines: &[&dyn Engine], line: &str) -> LineOutcome {
         Ok(p) => p,
         Err(e) => return LineOutcome::Error(format!("path: {e}")),
     };
-    let v = verdict_in(&Osl { registered }, engines, &lpe, &path);
+    let v = verdict(engines, &registered, &lpe, &path);
     LineOutcome::Ran(match (expected, &v) {
         (Some(want), Verdict::Match | Verdict::NoMatch) if want != (v == Verdict::Match) => {
             let shown = |b: bool| if b { "match" } else { "no-match" }.to_string();

@@ -10,24 +10,17 @@
 
 use std::process::ExitCode;
 
-use lpe::renderman::{Lpe, Parser, Path};
+use lpe::renderman::{Parser, Path, RenderMan};
 
-use lpe_engines::differential::RenderMan;
 use lpe_engines::Engine;
 
 use crate::input::{bad_input, load_parser, select_engines};
 
 pub mod answer;
-pub use answer::{answer_paths, batch, verdict_in, Args, LineOutcome, Verdict};
-
-/// Runs every engine on one expression and path. An engine that cannot build the
-/// expression is reported but does not count as disagreeing.
-pub fn verdict(engines: &[&dyn Engine], lpe: &Lpe, path: &Path) -> Verdict {
-    verdict_in(&RenderMan, engines, lpe, path)
-}
+pub use answer::{answer_paths, batch, verdict, Args, LineOutcome, Verdict};
 
 /// Answers one `EXPR<TAB>PATH` line (not blank, not a comment).
-pub fn batch_line(parser: &Parser, engines: &[&dyn Engine], line: &str) -> LineOutcome {
+pub fn batch_line(parser: &Parser, engines: &[&dyn Engine<RenderMan>], line: &str) -> LineOutcome {
     let Some((expr, path)) = line.split_once('\t') else {
         return LineOutcome::Error("expected `EXPR<TAB>PATH`, found no tab".into());
     };
@@ -36,19 +29,20 @@ pub fn batch_line(parser: &Parser, engines: &[&dyn Engine], line: &str) -> LineO
         Err(e) => return LineOutcome::Error(format!("expression: {}", e.one_line())),
     };
     match path.parse::<Path>() {
-        Ok(p) => LineOutcome::Ran(verdict(engines, &lpe, &p)),
+        Ok(p) => LineOutcome::Ran(verdict(engines, parser, &lpe, &p)),
         Err(e) => LineOutcome::Error(format!("path: {e}")),
     }
 }
 
 /// Runs `lpe-check match`.
 pub fn run(args: Args) -> ExitCode {
-    let engines = match select_engines(&args.engine) {
+    // The engine name is checked before the dialect arguments, in either dialect.
+    let engines = match select_engines::<RenderMan>(&args.engine) {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),
     };
     match args.lang.is_osl() {
-        Ok(true) => return super::match_osl::run(&args, &engines),
+        Ok(true) => return super::match_osl::run(&args),
         Ok(false) => {}
         Err(e) => return bad_input(format!("error: {e}")),
     }
@@ -65,6 +59,6 @@ pub fn run(args: Args) -> ExitCode {
     };
     answer_paths(&args.paths, "C RD L", |text| {
         let p = text.parse::<Path>().map_err(|e| e.to_string())?;
-        Ok(verdict(&engines, &lpe, &p))
+        Ok(verdict(&engines, &parser, &lpe, &p))
     })
 }
