@@ -5,14 +5,20 @@
 //! stable `cargo test` that replays every committed corpus and regression file
 //! (`tests/tests/fuzz_replay.rs`).
 //!
-//! | target | property |
-//! |---|---|
-//! | `parse` | any bytes: the parser never panics; a parsed expression prints to text that parses back to the same AST and prints the same again |
-//! | `path_text` | any bytes: the path parser never panics; a parsed path prints and re-parses to itself |
-//! | `differential` | a structured expression and paths aimed at it: every engine agrees |
-//! | `aov_set` | 2-6 structured expressions compiled as one set, paths aimed at them: every engine agrees |
-//! | `osl_parse` | any bytes (a first line that parses as a registration applies): the OSL parser never panics; a parsed expression prints to text that parses back to the same tree |
-//! | `osl_differential` | a structured registration, 1-4 OSL expressions (a set) and paths aimed at them: every engine agrees |
+//! The bodies are written once over the dialect ([`parse`], [`path_text`],
+//! [`differential()`]); a target is a body applied to a dialect (and, for the
+//! differential ones, a set size and generator bounds), one row of the table that
+//! [`run`] (the `fuzz/fuzz_targets/*.rs` files), [`target`] and [`compared_target`]
+//! (the replay) read:
+//!
+//! | target | body | property |
+//! |---|---|---|
+//! | `parse` | `parse::<RenderMan>` | any bytes: the parser never panics; a parsed expression prints to text that parses back to the same AST and prints the same again |
+//! | `path_text` | `path_text::<RenderMan>` | any bytes: the path parser never panics; a parsed path prints and re-parses to itself |
+//! | `differential` | `differential::<RenderMan>`, 1 | a structured expression and paths aimed at it: every engine agrees |
+//! | `aov_set` | `differential::<RenderMan>`, 2-6 | 2-6 structured expressions compiled as one set, paths aimed at them: every engine agrees |
+//! | `osl_parse` | `parse::<Osl>` | any bytes (a first line that parses as a registration applies): the OSL parser never panics; a parsed expression prints to text that parses back to the same tree |
+//! | `osl_differential` | `differential::<Osl>`, 1-4 | a structured registration, 1-4 OSL expressions (a set) and paths aimed at them: every engine agrees |
 
 use std::ops::RangeInclusive;
 

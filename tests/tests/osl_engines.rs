@@ -175,13 +175,13 @@ proptest! {
     /// Every engine agrees on generated OSL cases (a registration, one expression or a
     /// set, paths aimed at them).
     #[test]
-    fn engines_agree_in_osl(seed in any::<u64>()) {
+    fn engines_agree_in_the_osl_dialect(seed in any::<u64>()) {
         assert_agree(seed)?;
     }
 
     /// A generated expression prints to text that parses back to the same tree.
     #[test]
-    fn generated_expressions_print_and_parse_back_in_osl(seed in any::<u64>()) {
+    fn generated_expressions_print_and_parse_back_in_the_osl_dialect(seed in any::<u64>()) {
         let mut rng = SplitMix64::new(seed);
         let reg = lpe_testkit::generate::osl::registered(&mut rng);
         let cfg = lpe_testkit::generate::osl::Config::default();

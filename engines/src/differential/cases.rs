@@ -205,7 +205,7 @@ mod tests {
     }
 
     #[test]
-    fn a_small_run_agrees_with_a_useful_match_rate_in_osl() {
+    fn a_small_run_agrees_with_a_useful_match_rate_in_the_osl_dialect() {
         let args = Run {
             cases: 400,
             seed: 1,
@@ -225,7 +225,7 @@ mod tests {
     }
 
     #[test]
-    fn cases_are_deterministic_and_vary_the_registration_in_osl() {
+    fn cases_are_deterministic_and_vary_the_registration_in_the_osl_dialect() {
         let cfg = generate::osl::Config::default();
         let a = generate_case::<Osl>(5, 17, &cfg, 4);
         let b = generate_case::<Osl>(5, 17, &cfg, 4);
@@ -270,7 +270,7 @@ mod tests {
     }
 
     #[test]
-    fn some_cases_hold_set_algebra_that_matches_some_of_their_paths_in_osl() {
+    fn some_cases_hold_set_algebra_that_matches_some_of_their_paths_in_the_osl_dialect() {
         let cfg = generate::osl::Config::default();
         let cases: Vec<Case<Osl>> = (0..400)
             .map(|i| generate_case::<Osl>(3, i, &cfg, 4))

@@ -145,7 +145,7 @@ mod tests {
     }
 
     #[test]
-    fn a_planted_bug_is_found_and_minimized_in_osl() {
+    fn a_planted_bug_is_found_and_minimized_in_the_osl_dialect() {
         let engines: Vec<&dyn Engine<Osl>> = vec![&Reference, &EaterBlind];
         let reg: Registered = "events=U".parse().unwrap();
         let exprs: Vec<osl::Lpe> = ["C<RD>[LO]", "C(<.[GS]>|'foo')*<TD'key'>.*[LO]"]
