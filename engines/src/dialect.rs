@@ -16,9 +16,9 @@
 
 use lpe::Dialect;
 
-use crate::engine::EngineError;
+use crate::error::EngineError;
 use crate::external::protocol::Registration;
-use crate::regex::Translation;
+use crate::regex::translation::Translation;
 
 /// A dialect as the engines, the harnesses and the fuzz bodies see it.
 pub trait EngineDialect: Dialect {

@@ -14,46 +14,7 @@
 use lpe::{AovMask, Dialect, MAX_AOVS};
 
 use crate::dialect::EngineDialect;
-use crate::regex::error::BuildError;
-
-/// Why an engine produced no matcher. Displayed as `cannot build: <why>`.
-#[derive(Clone, Debug, thiserror::Error)]
-pub enum EngineError {
-    /// lpe's compiler refused the set (the `fast` and `nfa` engines): too many AOVs, or
-    /// an automaton over a limit.
-    #[error("cannot build: {0}")]
-    Compile(lpe::CompileError),
-    /// The regex-automata translation refused the set (the `oracle` engine).
-    #[error("cannot build: {0}")]
-    Regex(BuildError),
-    /// The engine does not speak this dialect (its name, [`Dialect::NAME`]: a name
-    /// rather than a `DialectName`, so that a dialect outside the registry can be
-    /// refused too).
-    #[error("cannot build: this engine does not support the {0} dialect")]
-    Unsupported(&'static str),
-}
-
-impl EngineError {
-    /// The refusal of dialect `D`.
-    pub fn unsupported<D: Dialect>() -> EngineError {
-        EngineError::Unsupported(D::NAME)
-    }
-}
-
-// Written out rather than `#[from]`, which would also make the inner error the
-// `source()`: its text is already in the message, and error-chain printers would show
-// it twice.
-impl From<lpe::CompileError> for EngineError {
-    fn from(e: lpe::CompileError) -> Self {
-        EngineError::Compile(e)
-    }
-}
-
-impl From<BuildError> for EngineError {
-    fn from(e: BuildError) -> Self {
-        EngineError::Regex(e)
-    }
-}
+pub use crate::error::EngineError;
 
 /// A compiled expression set over `D`'s paths. `Send`, so a multi-threaded caller (the
 /// renderer's `converge`) can keep one per thread; not `Sync`, since matchers may keep

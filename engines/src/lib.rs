@@ -6,7 +6,7 @@
 //!   with their case generators.
 //! - [`engine`]: the seam, [`Engine<D>`] compiles a set of `D`'s expressions into a
 //!   [`Matcher<D>`] that answers, per whole path, which of them match (an
-//!   `lpe::AovMask`); [`EngineError`] says why an engine refused a set.
+//!   `lpe::AovMask`); [`error`]: [`EngineError`], why an engine refused a set.
 //! - [`adapters`]: the workspace's own matchers behind that seam, the backtracking
 //!   [`Reference`], lpe's [`Fast`] matcher (minimized DFA, NFA over budget) and its
 //!   [`BitsetNfa`] alone.
@@ -27,6 +27,7 @@ pub mod adapters;
 pub mod dialect;
 pub mod differential;
 pub mod engine;
+pub mod error;
 pub mod external;
 pub mod fuzzing;
 pub mod osl;

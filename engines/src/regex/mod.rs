@@ -3,7 +3,9 @@
 //! algebra over the finite vertex universe ([`translate`](mod@translate)); OSL
 //! expressions translated over a byte encoding of the path's *symbol stream* ([`osl`]),
 //! a different model from the fast matcher's vertex classes, so the two check each
-//! other.
+//! other. The engine is written once: each dialect hands it a [`Translation`]
+//! ([`translation`]: patterns, and the [`Encoder`] of its paths) through
+//! [`EngineDialect::oracle`]; a dialect without one is refused.
 //!
 //! One compile builds **one** multi-pattern automaton for the whole set of expressions
 //! (`MatchKind::All`, anchored start, `$` at the end of every pattern); one overlapping
@@ -26,6 +28,7 @@ pub mod encode;
 pub mod error;
 pub mod osl;
 pub mod translate;
+pub mod translation;
 
 use std::cell::RefCell;
 
@@ -42,6 +45,7 @@ use crate::dialect::EngineDialect;
 use crate::engine::{fits_mask, Engine, EngineError, Matcher};
 use encode::Labels;
 pub use error::BuildError;
+pub use translation::{Encoder, Translation};
 
 /// Limits on what one compile may allocate.
 #[derive(Clone, Copy, Debug)]
@@ -147,23 +151,6 @@ impl Program {
             .map(|i| set.contains(regex_automata::PatternID::new_unchecked(i)))
             .collect()
     }
-}
-
-/// The oracle's view of a set of `D`'s expressions ([`EngineDialect::oracle`]): one
-/// anchored pattern per operand (in [`lpe::algebra::SetExpr::operands`] order), and the
-/// byte encoding of the paths they are searched on.
-pub struct Translation<D: Dialect> {
-    /// How a path becomes the bytes the patterns read.
-    pub encoder: Box<dyn Encoder<D>>,
-    /// One pattern per operand, each ending in `$`.
-    pub hirs: Vec<Hir>,
-}
-
-/// A dialect's path as the bytes its translated patterns read (RenderMan: fixed-width
-/// vertices, [`encode`]; OSL: the symbol stream, [`osl`]).
-pub trait Encoder<D: Dialect>: Send {
-    /// The bytes of the whole path.
-    fn encode(&self, path: &D::Path) -> Vec<u8>;
 }
 
 /// A compiled set: the path encoding, the automaton over it, and how operands combine.

@@ -29,7 +29,7 @@ use regex_syntax::hir::{Hir, Look};
 
 use super::error::BuildError;
 use super::translate::{byte_class, repeat};
-use super::Encoder;
+use super::translation::Encoder;
 
 /// The STOP byte.
 pub const STOP: u8 = 0x00;

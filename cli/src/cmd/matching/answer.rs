@@ -1,7 +1,7 @@
-//! What both dialects of `lpe-check match` share: the arguments, the verdict over every
+//! What every dialect of `lpe-check match` shares: the arguments, the verdict over every
 //! engine, and the answering of paths and batch lines. Apart from the command, so that
-//! the OSL side ([`crate::cmd::match_osl`]) reads it without importing the command that
-//! dispatches to it.
+//! the dialects' files ([`super::renderman`], [`super::osl`]) read it without importing
+//! the command that dispatches to them.
 
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
