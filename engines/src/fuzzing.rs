@@ -210,43 +210,43 @@ impl<D: EngineDialect> Engine<D> for ForPaths {
     }
 }
 
-/// Each fuzz target's body, returning whether engines were compared (differential
-/// targets) or `true`: the one table of target names, which `fuzz/fuzz_targets/*.rs`
-/// ([`run`]) and the corpus replay ([`target`], [`compared_target`]) read.
-fn body(name: &str) -> Option<(fn(&[u8]) -> bool, bool)> {
-    Some(match name {
-        "parse" => (
-            |d| {
-                parse::<RenderMan>(d);
-                true
-            },
-            false,
-        ),
-        "path_text" => (
-            |d| {
-                path_text::<RenderMan>(d);
-                true
-            },
-            false,
-        ),
-        "differential" => (
-            |d| differential::<RenderMan>(d, 1..=1, &renderman_config()),
-            true,
-        ),
-        "aov_set" => (
-            |d| differential::<RenderMan>(d, 2..=6, &renderman_config().with_max_atoms(6)),
-            true,
-        ),
-        "osl_parse" => (
-            |d| {
-                parse::<Osl>(d);
-                true
-            },
-            false,
-        ),
-        "osl_differential" => (|d| differential::<Osl>(d, 1..=4, &Default::default()), true),
-        _ => return None,
-    })
+/// A fuzz target's body: it panics when its property fails, and answers whether
+/// engines were compared (a differential target) or `true` (a property alone).
+pub type Body = fn(&[u8]) -> bool;
+
+/// The one table of target names and their bodies (`true`: a differential target),
+/// which `fuzz/fuzz_targets/*.rs` ([`run`]) and the corpus replay ([`target`],
+/// [`compared_target`]) read.
+fn table(name: &str) -> Option<(Body, bool)> {
+    let parses: [(&str, Body); 3] = [
+        ("parse", |d| {
+            parse::<RenderMan>(d);
+            true
+        }),
+        ("path_text", |d| {
+            path_text::<RenderMan>(d);
+            true
+        }),
+        ("osl_parse", |d| {
+            parse::<Osl>(d);
+            true
+        }),
+    ];
+    let differentials: [(&str, Body); 3] = [
+        ("differential", |d| {
+            differential::<RenderMan>(d, 1..=1, &renderman_config())
+        }),
+        ("aov_set", |d| {
+            differential::<RenderMan>(d, 2..=6, &renderman_config().with_max_atoms(6))
+        }),
+        ("osl_differential", |d| {
+            differential::<Osl>(d, 1..=4, &Default::default())
+        }),
+    ];
+    let find = |list: &[(&str, Body)]| list.iter().find(|(n, _)| *n == name).map(|(_, b)| *b);
+    find(&parses)
+        .map(|b| (b, false))
+        .or_else(|| find(&differentials).map(|b| (b, true)))
 }
 
 fn renderman_config() -> <RenderMan as Generate>::Config {
@@ -256,22 +256,22 @@ fn renderman_config() -> <RenderMan as Generate>::Config {
 /// Runs the fuzz target called `name` on `data` (what `fuzz/fuzz_targets/NAME.rs`
 /// calls); panics on an unknown name.
 pub fn run(name: &str, data: &[u8]) {
-    let (body, _) = body(name).unwrap_or_else(|| panic!("no fuzz target `{name}`"));
+    let (body, _) = table(name).unwrap_or_else(|| panic!("no fuzz target `{name}`"));
     body(data);
 }
 
 /// The differential target called `name`, returning whether engines were compared,
 /// so a replay can count inputs that only one engine could build.
-pub fn compared_target(name: &str) -> Option<fn(&[u8]) -> bool> {
-    body(name)
+pub fn compared_target(name: &str) -> Option<Body> {
+    table(name)
         .filter(|(_, differential)| *differential)
         .map(|(f, _)| f)
 }
 
 /// The target called `name`, for replaying files by directory name; it panics when
 /// its property fails.
-pub fn target(name: &str) -> Option<fn(&[u8]) -> bool> {
-    body(name).map(|(f, _)| f)
+pub fn target(name: &str) -> Option<Body> {
+    table(name).map(|(f, _)| f)
 }
 
 #[cfg(test)]

@@ -6,7 +6,7 @@
 use lpe::Dialect;
 use regex_syntax::hir::Hir;
 
-/// The oracle's view of a set of `D`'s expressions ([`EngineDialect::oracle`]): one
+/// The oracle's view of a set of `D`'s expressions ([`EngineDialect::oracle`](crate::EngineDialect::oracle)): one
 /// anchored pattern per operand (in [`lpe::algebra::SetExpr::operands`] order), and the
 /// byte encoding of the paths they are searched on.
 pub struct Translation<D: Dialect> {
@@ -17,7 +17,7 @@ pub struct Translation<D: Dialect> {
 }
 
 /// A dialect's path as the bytes its translated patterns read (RenderMan: fixed-width
-/// vertices, [`encode`]; OSL: the symbol stream, [`osl`]).
+/// vertices, [`encode`](super::encode); OSL: the symbol stream, [`osl`](super::osl)).
 pub trait Encoder<D: Dialect>: Send {
     /// The bytes of the whole path.
     fn encode(&self, path: &D::Path) -> Vec<u8>;
