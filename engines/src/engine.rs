@@ -49,3 +49,33 @@ pub(crate) fn fits_mask(exprs: usize) -> Result<(), EngineError> {
 pub fn bits(mask: AovMask, n: usize) -> Vec<bool> {
     (0..n).map(|i| mask.contains(i)).collect()
 }
+
+#[cfg(test)]
+mod tests {
+    use lpe::renderman::{Parser, RenderMan};
+
+    use super::*;
+    use crate::registry;
+
+    /// Answers are `AovMask`s: a set wider than one is refused by every engine, those
+    /// that answer one expression at a time too (as the reference and the oracle do on
+    /// a set that fits).
+    #[test]
+    fn a_set_wider_than_a_mask_is_refused_by_every_engine() {
+        let cl = lpe::renderman::parse("CL").unwrap();
+        let path = "C L".parse().unwrap();
+        for e in registry::all::<RenderMan>() {
+            let why = match e.compile(&vec![cl.clone(); MAX_AOVS + 1], &Parser::default()) {
+                Ok(_) => panic!("{} built a set wider than a mask", e.name()),
+                Err(why) => why,
+            };
+            assert!(why.to_string().contains("257 AOVs"), "{}: {why}", e.name());
+            if ["reference", "oracle"].contains(&e.name()) {
+                let m = e
+                    .compile(&vec![cl.clone(); MAX_AOVS], &Parser::default())
+                    .unwrap();
+                assert_eq!(m.which(&path).count(), MAX_AOVS, "{}", e.name());
+            }
+        }
+    }
+}

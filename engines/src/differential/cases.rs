@@ -68,7 +68,7 @@ pub fn generate_case<D: Generate>(seed: u64, index: u64, cfg: &D::Config, paths:
 }
 
 /// Totals of a run.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub struct Totals<D: EngineDialect> {
     /// Cases run.
     pub cases: u64,
@@ -82,21 +82,6 @@ pub struct Totals<D: EngineDialect> {
     pub uncompared: u64,
     /// Minimized disagreements.
     pub failures: Vec<(u64, Counterexample<D>)>,
-}
-
-// By hand: a derive would ask `D: Default` of the marker only, and not of what the
-// fields need.
-impl<D: EngineDialect> Default for Totals<D> {
-    fn default() -> Self {
-        Totals {
-            cases: 0,
-            pairs: 0,
-            matched: 0,
-            skips: Vec::new(),
-            uncompared: 0,
-            failures: Vec::new(),
-        }
-    }
 }
 
 /// Which cases a run generates, and when it stops.
