@@ -4,7 +4,7 @@
 
 use lpe::osl::Osl;
 use lpe::renderman::RenderMan;
-use lpe_engines::Engine;
+use lpe_engines::{Engine, EngineDialect};
 
 use crate::dialect::CliDialect;
 pub use crate::error::InputError;
@@ -56,12 +56,14 @@ pub fn bad_input(message: impl std::fmt::Display) -> std::process::ExitCode {
     std::process::ExitCode::from(2)
 }
 
-/// `--engine` values: one engine name, or `all`.
-pub fn select_engines(name: &str) -> Result<Vec<&'static dyn Engine>, InputError> {
+/// `--engine` values: one engine name, or `all`, of dialect `D`'s registry.
+pub fn select_engines<D: EngineDialect>(
+    name: &str,
+) -> Result<Vec<&'static dyn Engine<D>>, InputError> {
     if name == "all" {
-        return Ok(lpe_engines::all());
+        return Ok(lpe_engines::all::<D>());
     }
-    lpe_engines::by_name(name)
+    lpe_engines::by_name::<D>(name)
         .map(|e| vec![e])
         .ok_or_else(|| InputError::UnknownEngine {
             name: name.to_string(),

@@ -119,7 +119,7 @@ fn agreement_exits_0_and_the_planted_bug_3_with_a_replay_that_replays() {
 }
 
 /// The OSL test adapter (cli/tests/adapters/osl_proxy.py) over this build's lpe-check.
-fn osl_proxy(flags: &str) -> String {
+fn proxy_in_the_osl_dialect(flags: &str) -> String {
     format!(
         "python3 cli/tests/adapters/osl_proxy.py {} {flags}",
         env!("CARGO_BIN_EXE_lpe-check")
@@ -127,11 +127,11 @@ fn osl_proxy(flags: &str) -> String {
 }
 
 #[test]
-fn osl_runs_send_each_registration_and_replay_it() {
+fn runs_send_each_registration_and_replay_it_in_the_osl_dialect() {
     if !python() {
         return;
     }
-    let clean = osl_proxy("");
+    let clean = proxy_in_the_osl_dialect("");
     let (code, out, err) = lpe_check(&[
         "diff",
         "--external",
@@ -145,7 +145,7 @@ fn osl_runs_send_each_registration_and_replay_it() {
     assert!(out.contains("osl dialect") && out.contains("agrees with every engine"));
     // An adapter that drops `registered` from `compile` parses and matches as if nothing
     // were registered: found, minimized, and replayed with the case's registration.
-    let forgetful = osl_proxy("--forget-registration");
+    let forgetful = proxy_in_the_osl_dialect("--forget-registration");
     let (code, out, _) = lpe_check(&[
         "diff",
         "--external",
@@ -223,7 +223,7 @@ fn the_osl_suite_replays_clean_through_the_osl_proxy() {
     if !python() {
         return;
     }
-    let proxy = osl_proxy("");
+    let proxy = proxy_in_the_osl_dialect("");
     let (code, out, err) = lpe_check(&[
         "diff",
         "--external",
@@ -239,7 +239,7 @@ fn the_osl_suite_replays_clean_through_the_osl_proxy() {
     );
     // The proxy that forgets registrations fails the cases that register labels, each
     // named with its file and case.
-    let forgetful = osl_proxy("--forget-registration");
+    let forgetful = proxy_in_the_osl_dialect("--forget-registration");
     let (code, out, _) = lpe_check(&[
         "diff",
         "--external",

@@ -1,57 +1,43 @@
 //! The workspace's own matchers behind [`Engine`]: the backtracking reference and lpe's
-//! AOV set in its two stepping modes.
+//! AOV set in its two stepping modes, each written once for every dialect.
 
-use lpe::osl::{self, Registered};
-use lpe::renderman::{Lpe, Path};
-use lpe::{AovSet, Dialect, Options};
+use lpe::{AovMask, AovSet, Options};
 
-use crate::engine::{Engine, EngineError, Matcher};
+use crate::dialect::EngineDialect;
+use crate::engine::{fits_mask, Engine, EngineError, Matcher};
 
-/// The backtracking reference matcher, one expression at a time.
+/// The backtracking reference matcher ([`EngineDialect::reference`]), one expression at
+/// a time.
 pub struct Reference;
 
-/// Crate-visible so the harness's planted-bug engine (differential tests) answers like
-/// the reference on its rewritten expressions without a copy of this type.
-pub(crate) struct ReferenceMatcher(pub(crate) Vec<Lpe>);
+/// Crate-visible so the harness's planted-bug engines (differential tests) answer like
+/// the reference on their rewritten expressions without a copy of this type.
+pub(crate) struct ReferenceMatcher<D: EngineDialect>(pub(crate) Vec<D::Lpe>);
 
-impl Matcher for ReferenceMatcher {
-    fn which(&self, path: &Path) -> Vec<bool> {
+impl<D: EngineDialect> Matcher<D> for ReferenceMatcher<D> {
+    fn which(&self, path: &D::Path) -> AovMask {
         self.0
             .iter()
-            .map(|e| lpe_reference::is_match(e, path))
+            .enumerate()
+            .filter(|(_, e)| D::reference(e, path))
+            .map(|(i, _)| i)
             .collect()
     }
 }
 
-/// The OSL reference matcher (symbol stream with STOP), one expression at a time.
-/// Crate-visible for the same reason as [`ReferenceMatcher`].
-pub(crate) struct OslReferenceMatcher(pub(crate) Vec<osl::Lpe>);
-
-impl Matcher<osl::Path> for OslReferenceMatcher {
-    fn which(&self, path: &osl::Path) -> Vec<bool> {
-        self.0
-            .iter()
-            .map(|e| lpe_reference::osl::is_match(e, path))
-            .collect()
-    }
-}
-
-impl Engine for Reference {
+impl<D: EngineDialect> Engine<D> for Reference {
     fn name(&self) -> &'static str {
         "reference"
     }
 
-    fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
-        Ok(Box::new(ReferenceMatcher(exprs.to_vec())))
-    }
-
-    // The registration is already in the parsed trees (the eaters' exclusions).
-    fn compile_osl(
+    // The registration is already in the parsed trees (macros, the eaters' exclusions).
+    fn compile(
         &self,
-        exprs: &[osl::Lpe],
-        _: &Registered,
-    ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
-        Ok(Box::new(OslReferenceMatcher(exprs.to_vec())))
+        exprs: &[D::Lpe],
+        _: &D::Registration,
+    ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+        fits_mask(exprs.len())?;
+        Ok(Box::new(ReferenceMatcher::<D>(exprs.to_vec())))
     }
 }
 
@@ -63,12 +49,11 @@ pub struct Fast;
 /// and not only on sets whose DFA is too large.
 pub struct BitsetNfa;
 
-struct AovSetMatcher<D: Dialect>(AovSet<D>);
+struct AovSetMatcher<D: EngineDialect>(AovSet<D>);
 
-impl<D: Dialect> Matcher<D::Path> for AovSetMatcher<D> {
-    fn which(&self, path: &D::Path) -> Vec<bool> {
-        let m = self.0.match_path(path);
-        (0..self.0.len()).map(|i| m.contains(i)).collect()
+impl<D: EngineDialect> Matcher<D> for AovSetMatcher<D> {
+    fn which(&self, path: &D::Path) -> AovMask {
+        self.0.match_path(path)
     }
 }
 
@@ -81,22 +66,18 @@ fn numbered<T: Clone>(exprs: &[T]) -> Vec<(String, T)> {
         .collect()
 }
 
-pub(crate) fn compile_set(exprs: &[Lpe], opts: &Options) -> Result<Box<dyn Matcher>, EngineError> {
-    let set = AovSet::compile_with(&numbered(exprs), opts)?;
-    Ok(Box::new(AovSetMatcher(set)))
-}
-
-fn compile_osl_set(
-    exprs: &[osl::Lpe],
-    registered: &Registered,
+/// lpe's AOV set of `exprs` under `registration`, compiled with `opts`.
+pub(crate) fn compile_set<D: EngineDialect>(
+    exprs: &[D::Lpe],
+    registration: &D::Registration,
     opts: &Options,
-) -> Result<Box<dyn Matcher<osl::Path>>, EngineError> {
-    let set = AovSet::compile_under(&numbered(exprs), registered, opts)?;
+) -> Result<Box<dyn Matcher<D>>, EngineError> {
+    let set = AovSet::<D>::compile_under(&numbered(exprs), registration, opts)?;
     Ok(Box::new(AovSetMatcher(set)))
 }
 
 /// Every step on the bitset NFA: no DFA, and no lazy cache to remember transitions.
-fn nfa_only() -> Options {
+pub(crate) fn nfa_only() -> Options {
     Options {
         dfa_budget: 0,
         lazy_cache: 0,
@@ -104,38 +85,30 @@ fn nfa_only() -> Options {
     }
 }
 
-impl Engine for Fast {
+impl<D: EngineDialect> Engine<D> for Fast {
     fn name(&self) -> &'static str {
         "fast"
     }
 
-    fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
-        compile_set(exprs, &Options::default())
-    }
-
-    fn compile_osl(
+    fn compile(
         &self,
-        exprs: &[osl::Lpe],
-        registered: &Registered,
-    ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
-        compile_osl_set(exprs, registered, &Options::default())
+        exprs: &[D::Lpe],
+        registration: &D::Registration,
+    ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+        compile_set(exprs, registration, &Options::default())
     }
 }
 
-impl Engine for BitsetNfa {
+impl<D: EngineDialect> Engine<D> for BitsetNfa {
     fn name(&self) -> &'static str {
         "nfa"
     }
 
-    fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
-        compile_set(exprs, &nfa_only())
-    }
-
-    fn compile_osl(
+    fn compile(
         &self,
-        exprs: &[osl::Lpe],
-        registered: &Registered,
-    ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
-        compile_osl_set(exprs, registered, &nfa_only())
+        exprs: &[D::Lpe],
+        registration: &D::Registration,
+    ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+        compile_set(exprs, registration, &nfa_only())
     }
 }

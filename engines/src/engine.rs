@@ -1,72 +1,81 @@
 //! The seam between engines and the tools that run them.
 //!
 //! Each engine compiles a *set* of expressions (a single expression is a set of one) and
-//! then answers, per path, which of them match. An engine that cannot build a set (a
-//! size limit) says so with an [`EngineError`]; callers count such skips and report
+//! then answers, per path, which of them match, as an [`AovMask`] (bit `i`: expression
+//! `i`). An engine that cannot build a set (a size limit, a dialect it has no
+//! translation for) says so with an [`EngineError`]; callers count such skips and report
 //! them, never hide them.
 //!
-//! Two dialects share the seam: [`Engine::compile`] takes RenderMan expressions and gives
-//! a [`Matcher`] over [`lpe::renderman::Path`], [`Engine::compile_osl`] takes OSL expressions and
-//! gives a `Matcher<lpe::osl::Path>`. An engine written for one dialect only keeps the
-//! default `compile_osl`, which refuses with [`EngineError::Unsupported`].
+//! The seam is generic over the dialect: [`Engine<D>`] compiles `D`'s expressions under
+//! `D`'s registration into a [`Matcher<D>`] over `D`'s paths. Every engine of the
+//! workspace implements it once for every [`EngineDialect`], so a dialect joins the
+//! registry by implementing that trait, not by a method per dialect here.
 
-use lpe::osl::{self, Registered};
-use lpe::renderman::{Lpe, Path};
-use lpe::DialectName;
+use lpe::{AovMask, Dialect, MAX_AOVS};
 
-use crate::regex::error::BuildError;
+use crate::dialect::EngineDialect;
+pub use crate::error::EngineError;
 
-/// Why an engine produced no matcher. Displayed as `cannot build: <why>`.
-#[derive(Clone, Debug, thiserror::Error)]
-pub enum EngineError {
-    /// lpe's compiler refused the set (the `fast` and `nfa` engines): too many AOVs, or
-    /// an automaton over a limit.
-    #[error("cannot build: {0}")]
-    Compile(lpe::CompileError),
-    /// The regex-automata translation refused the set (the `oracle` engine).
-    #[error("cannot build: {0}")]
-    Regex(BuildError),
-    /// The engine does not speak this dialect.
-    #[error("cannot build: this engine does not support the {0} dialect")]
-    Unsupported(DialectName),
+/// A compiled expression set over `D`'s paths. `Send`, so a multi-threaded caller (the
+/// renderer's `converge`) can keep one per thread; not `Sync`, since matchers may keep
+/// a mutable cache.
+pub trait Matcher<D: Dialect>: Send {
+    /// Which compiled expressions match the whole path: bit `i` is expression `i`.
+    fn which(&self, path: &D::Path) -> AovMask;
 }
 
-// Written out rather than `#[from]`, which would also make the inner error the
-// `source()`: its text is already in the message, and error-chain printers would show
-// it twice.
-impl From<lpe::CompileError> for EngineError {
-    fn from(e: lpe::CompileError) -> Self {
-        EngineError::Compile(e)
-    }
-}
-
-impl From<BuildError> for EngineError {
-    fn from(e: BuildError) -> Self {
-        EngineError::Regex(e)
-    }
-}
-
-/// A compiled expression set over paths of type `P` (RenderMan's [`Path`] unless
-/// named). `Send`, so a multi-threaded caller (the renderer's `converge`) can keep one
-/// per thread; not `Sync`, since matchers may keep a mutable cache.
-pub trait Matcher<P = Path>: Send {
-    /// For each compiled expression, in order, whether it matches the whole path.
-    fn which(&self, path: &P) -> Vec<bool>;
-}
-
-/// A matching engine.
-pub trait Engine: Sync {
+/// A matching engine for dialect `D`.
+pub trait Engine<D: EngineDialect>: Sync {
     /// Short name, as given to `--engine`.
     fn name(&self) -> &'static str;
-    /// Compiles a set of expressions.
-    fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError>;
-    /// Compiles a set of OSL expressions, parsed with `registered` user labels.
-    fn compile_osl(
+    /// Compiles a set of expressions, parsed under `registration`.
+    fn compile(
         &self,
-        exprs: &[osl::Lpe],
-        registered: &Registered,
-    ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
-        let _ = (exprs, registered);
-        Err(EngineError::Unsupported(DialectName::Osl))
+        exprs: &[D::Lpe],
+        registration: &D::Registration,
+    ) -> Result<Box<dyn Matcher<D> + '_>, EngineError>;
+}
+
+/// Refuses a set wider than an [`AovMask`]: the engines that answer one expression at a
+/// time have no limit of their own, but their answers must fit the mask.
+pub(crate) fn fits_mask(exprs: usize) -> Result<(), EngineError> {
+    if exprs > MAX_AOVS {
+        return Err(lpe::CompileError::TooManyAovs(exprs).into());
+    }
+    Ok(())
+}
+
+/// The first `n` bits of `mask`, as the reports print them (one answer per expression).
+pub fn bits(mask: AovMask, n: usize) -> Vec<bool> {
+    (0..n).map(|i| mask.contains(i)).collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use lpe::renderman::{Parser, RenderMan};
+
+    use super::*;
+    use crate::registry;
+
+    /// Answers are `AovMask`s: a set wider than one is refused by every engine, those
+    /// that answer one expression at a time too (as the reference and the oracle do on
+    /// a set that fits).
+    #[test]
+    fn a_set_wider_than_a_mask_is_refused_by_every_engine() {
+        let cl = lpe::renderman::parse("CL").unwrap();
+        let path = "C L".parse().unwrap();
+        for e in registry::all::<RenderMan>() {
+            let why = match e.compile(&vec![cl.clone(); MAX_AOVS + 1], &Parser::default()) {
+                Ok(_) => panic!("{} built a set wider than a mask", e.name()),
+                Err(why) => why,
+            };
+            assert!(why.to_string().contains("257 AOVs"), "{}: {why}", e.name());
+            if ["reference", "oracle"].contains(&e.name()) {
+                let m = e
+                    .compile(&vec![cl.clone(); MAX_AOVS], &Parser::default())
+                    .unwrap();
+                assert_eq!(m.which(&path).count(), MAX_AOVS, "{}", e.name());
+            }
+        }
     }
 }

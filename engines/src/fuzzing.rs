@@ -5,49 +5,69 @@
 //! stable `cargo test` that replays every committed corpus and regression file
 //! (`tests/tests/fuzz_replay.rs`).
 //!
-//! | target | property |
-//! |---|---|
-//! | `parse` | any bytes: the parser never panics; a parsed expression prints to text that parses back to the same AST and prints the same again |
-//! | `path_text` | any bytes: the path parser never panics; a parsed path prints and re-parses to itself |
-//! | `differential` | a structured expression and paths aimed at it: every engine agrees |
-//! | `aov_set` | 2-6 structured expressions compiled as one set, paths aimed at them: every engine agrees |
-//! | `osl_parse` | any bytes (a first line that parses as a registration applies): the OSL parser never panics; a parsed expression prints to text that parses back to the same tree |
-//! | `osl_differential` | a structured registration, 1-4 OSL expressions (a set) and paths aimed at them: every engine agrees |
+//! The bodies are written once over the dialect ([`parse`], [`path_text`],
+//! [`differential()`]); a target is a body applied to a dialect (and, for the
+//! differential ones, a set size and generator bounds), one row of the table that
+//! [`run`] (the `fuzz/fuzz_targets/*.rs` files), [`target`] and [`compared_target`]
+//! (the replay) read:
+//!
+//! | target | body | property |
+//! |---|---|---|
+//! | `parse` | `parse::<RenderMan>` | any bytes: the parser never panics; a parsed expression prints to text that parses back to the same AST and prints the same again |
+//! | `path_text` | `path_text::<RenderMan>` | any bytes: the path parser never panics; a parsed path prints and re-parses to itself |
+//! | `differential` | `differential::<RenderMan>`, 1 | a structured expression and paths aimed at it: every engine agrees |
+//! | `aov_set` | `differential::<RenderMan>`, 2-6 | 2-6 structured expressions compiled as one set, paths aimed at them: every engine agrees |
+//! | `osl_parse` | `parse::<Osl>` | any bytes (a first line that parses as a registration applies): the OSL parser never panics; a parsed expression prints to text that parses back to the same tree |
+//! | `osl_differential` | `differential::<Osl>`, 1-4 | a structured registration, 1-4 OSL expressions (a set) and paths aimed at them: every engine agrees |
+
+use std::ops::RangeInclusive;
 
 use arbitrary::Unstructured;
-use lpe::renderman::{Lpe, Path};
-use lpe::{osl, Options};
-use lpe_testkit::generate::{self, Choices, Config};
+use lpe::algebra::SetExpr;
+use lpe::osl::Osl;
+use lpe::renderman::RenderMan;
+use lpe::Options;
+use lpe_testkit::generate::Choices;
 
-use crate::adapters::{compile_set, Fast, Reference};
-use crate::differential::{self, Agreement, Osl, Outcome};
+use crate::adapters::{compile_set, nfa_only, Fast, Reference};
+use crate::dialect::EngineDialect;
+use crate::differential::{self, Agreement, Generate, Outcome};
 use crate::engine::{Engine, EngineError, Matcher};
 use crate::registry;
 
-/// `parse`: never panics; parse -> print -> parse is the identity on the AST.
-pub fn parse(data: &[u8]) {
+/// `parse`, `osl_parse`: never panics; parse -> print -> parse gives the same tree
+/// ([`EngineDialect::same_tree`]) and prints the same again. A first line that is a
+/// registration ([`EngineDialect::registration_line`], OSL's `events=U;scatters=Y`)
+/// applies to the rest.
+pub fn parse<D: EngineDialect>(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
-    let Ok(lpe) = lpe::renderman::parse(&text) else {
+    let (registration, src) = text
+        .split_once('\n')
+        .and_then(|(first, rest)| Some((D::registration_line(first)?, rest)))
+        .unwrap_or_else(|| (D::Registration::default(), &*text));
+    let context = D::context(&registration);
+    let Ok(lpe) = D::parse(src, &registration) else {
         return;
     };
     let printed = lpe.to_string();
-    let again = lpe::renderman::parse(&printed)
-        .unwrap_or_else(|e| panic!("`{text}` printed as `{printed}`, which does not parse: {e}"));
-    assert_eq!(
-        again, lpe,
-        "`{text}` printed as `{printed}` parses differently"
+    let again = D::parse(&printed, &registration).unwrap_or_else(|e| {
+        panic!("`{src}` [{context}] printed as `{printed}`, which does not parse: {e}")
+    });
+    assert!(
+        D::same_tree(&again, &lpe),
+        "`{src}` [{context}] printed as `{printed}` parses differently"
     );
     assert_eq!(again.to_string(), printed, "printing is not stable");
 }
 
 /// `path_text`: never panics; a parsed path prints and re-parses to itself.
-pub fn path_text(data: &[u8]) {
+pub fn path_text<D: EngineDialect>(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
-    let Ok(path) = text.parse::<Path>() else {
+    let Ok(path) = text.parse::<D::Path>() else {
         return;
     };
     let printed = path.to_string();
-    let again: Path = printed
+    let again: D::Path = printed
         .parse()
         .unwrap_or_else(|e| panic!("`{text}` printed as `{printed}`, which does not parse: {e}"));
     assert_eq!(
@@ -56,67 +76,83 @@ pub fn path_text(data: &[u8]) {
     );
 }
 
-fn paths_for(exprs: &[Lpe], u: &mut Unstructured<'_>, cfg: &Config) -> Vec<Path> {
-    let n = 1 + u.below(8);
-    (0..n)
+/// `differential`, `aov_set`, `osl_differential`: a registration, a set of `sizes`
+/// structured expressions under it, and 1-8 paths aimed at them; every engine agrees.
+/// Returns whether engines were compared: the reference and at least one other built
+/// the set. Fuzzed sets may exceed an engine's size limits, so fewer engines is not a
+/// failure; it is just not an agreement, and the caller can count it.
+pub fn differential<D: Generate>(
+    data: &[u8],
+    sizes: RangeInclusive<usize>,
+    cfg: &D::Config,
+) -> bool {
+    let mut u = Unstructured::new(data);
+    let registration = D::registration(&mut u);
+    // A fixed size draws nothing, so the input's bytes all go to the expressions.
+    let n = if sizes.start() == sizes.end() {
+        *sizes.start()
+    } else {
+        sizes.start() + u.below(sizes.end() - sizes.start() + 1)
+    };
+    let exprs: Vec<D::Lpe> = (0..n).map(|_| D::lpe(&mut u, &registration, cfg)).collect();
+    let paths: Vec<D::Path> = (0..1 + u.below(8))
         .map(|_| {
             let operands = exprs[u.below(exprs.len())].operands();
             let target = operands[u.below(operands.len())];
-            generate::biased_path(target, u, cfg)
+            D::biased_path(target, &mut u, &registration, cfg)
         })
-        .collect()
-}
-
-/// Whether the engines were compared: the reference and at least one other engine
-/// built the set. Fuzzed sets may exceed an engine's size limits, so fewer engines is
-/// not a failure; it is just not an agreement, and the caller can count it.
-fn agree(exprs: &[Lpe], paths: &[Path]) -> bool {
-    compare(exprs, paths).engines >= 2
+        .collect();
+    compare::<D>(&registration, &exprs, &paths).engines >= 2
 }
 
 /// The agreement of every engine on `paths` (panics with the counterexample if two
 /// differ, or if the reference refused the set).
-fn compare(exprs: &[Lpe], paths: &[Path]) -> differential::Agreement {
+fn compare<D: EngineDialect>(
+    registration: &D::Registration,
+    exprs: &[D::Lpe],
+    paths: &[D::Path],
+) -> Agreement {
     // The expression must survive its own canonical text, or the counterexample printed
     // below would not reproduce.
     for e in exprs {
         let text = e.to_string();
-        match lpe::renderman::parse(&text) {
-            Ok(back) => assert_eq!(&back, e, "`{text}` parses to another expression"),
+        match D::parse(&text, registration) {
+            Ok(back) => assert!(
+                D::same_tree(&back, e),
+                "`{text}` parses to another expression"
+            ),
             Err(err) => panic!("generated `{text}` does not parse: {err}"),
         }
     }
-    let longest = paths.iter().map(Path::len).max().unwrap_or(0);
+    let longest = paths
+        .iter()
+        .map(|p| D::vertices(p).len())
+        .max()
+        .unwrap_or(0);
     let bounded: Vec<ForPaths> = ["fast", "nfa"]
         .map(|name| ForPaths::new(name, longest))
         .into();
-    let engines: Vec<&dyn Engine> = if needs_bounding(exprs) {
-        registry::all()
+    let engines: Vec<&dyn Engine<D>> = if needs_bounding::<D>(exprs) {
+        registry::all::<D>()
             .into_iter()
             .map(|e| match bounded.iter().find(|b| b.name == e.name()) {
-                Some(b) => b as &dyn Engine,
+                Some(b) => b as &dyn Engine<D>,
                 None => e,
             })
             .collect()
     } else {
-        registry::all()
+        registry::all::<D>()
     };
-    agreement(differential::check_with(&engines, exprs, paths))
-}
-
-/// Whether an outcome compared the reference with at least one other engine; panics on
-/// a disagreement, or if the reference refused.
-fn compared<L: differential::Language>(outcome: Outcome<L>) -> bool {
-    agreement(outcome).engines >= 2
+    agreement(differential::check_in(&engines, registration, exprs, paths))
 }
 
 /// The agreement of an outcome; panics on a disagreement, or if the reference refused.
-fn agreement<L: differential::Language>(outcome: Outcome<L>) -> Agreement {
+fn agreement<D: EngineDialect>(outcome: Outcome<D>) -> Agreement {
     match outcome {
         Outcome::Disagree(c) => panic!("{c}"),
         Outcome::Agree(a) => {
             // The reference has no size limit; without it nothing says who is right.
-            let reference = Reference.name();
+            let reference = Engine::<D>::name(&Reference);
             assert!(
                 a.skipped.iter().all(|(name, _)| *name != reference),
                 "the reference refused: {:?}",
@@ -127,63 +163,6 @@ fn agreement<L: differential::Language>(outcome: Outcome<L>) -> Agreement {
     }
 }
 
-/// `osl_parse`: never panics; parse -> print -> parse gives the same tree. A first line
-/// that parses as a registration (`events=U;scatters=Y`) applies to the rest.
-pub fn osl_parse(data: &[u8]) {
-    let text = String::from_utf8_lossy(data);
-    let (registered, src) = match text.split_once('\n') {
-        Some((first, rest)) => match first.parse::<osl::Registered>() {
-            Ok(r) => (r, rest),
-            Err(_) => (osl::Registered::none(), &*text),
-        },
-        None => (osl::Registered::none(), &*text),
-    };
-    let Ok(lpe) = osl::parse(src, &registered) else {
-        return;
-    };
-    let printed = lpe.to_string();
-    let again = osl::parse(&printed, &registered).unwrap_or_else(|e| {
-        panic!("`{src}` [{registered}] printed as `{printed}`, which does not parse: {e}")
-    });
-    assert_eq!(
-        again.expr, lpe.expr,
-        "`{src}` [{registered}] printed as `{printed}` parses differently"
-    );
-    assert_eq!(again.to_string(), printed, "printing is not stable");
-}
-
-/// `osl_differential`: a registration, a set of 1-4 OSL expressions and paths aimed at
-/// them; every engine agrees.
-pub fn osl_differential(data: &[u8]) {
-    osl_differential_compared(data);
-}
-
-/// [`osl_differential`], returning whether at least two engines (the reference and
-/// another) were compared.
-pub fn osl_differential_compared(data: &[u8]) -> bool {
-    let mut u = Unstructured::new(data);
-    let cfg = generate::osl::Config::default();
-    let registered = generate::osl::registered(&mut u);
-    let n = 1 + u.below(4);
-    let exprs: Vec<osl::Lpe> = (0..n)
-        .map(|_| generate::osl::lpe(&mut u, &registered, &cfg))
-        .collect();
-    let paths: Vec<osl::Path> = (0..1 + u.below(8))
-        .map(|_| {
-            let operands = exprs[u.below(exprs.len())].operands();
-            let target = operands[u.below(operands.len())];
-            generate::osl::biased_path(target, &mut u, &registered, &cfg)
-        })
-        .collect();
-    let lang = Osl { registered };
-    compared(differential::check_in(
-        &lang,
-        &registry::all(),
-        &exprs,
-        &paths,
-    ))
-}
-
 /// Sets that unroll to more atom positions than this (counted repetitions such as
 /// `{0,123}`) compile the `fast` and `nfa` engines for the case's own paths only
 /// ([`ForPaths`]). Such sets are about 5 % of fuzzed cases but took over 90 % of the
@@ -191,9 +170,9 @@ pub fn osl_differential_compared(data: &[u8]) -> bool {
 /// the case's paths have at most a dozen; smaller sets, most cases, still compile exact.
 const EXACT_POSITIONS: u64 = 32;
 
-fn needs_bounding(exprs: &[Lpe]) -> bool {
+fn needs_bounding<D: EngineDialect>(exprs: &[D::Lpe]) -> bool {
     let operands = exprs.iter().flat_map(|e| e.operands());
-    operands.map(|o| o.positions()).sum::<u64>() > EXACT_POSITIONS
+    operands.map(|o| D::positions(o, None)).sum::<u64>() > EXACT_POSITIONS
 }
 
 /// The `fast` or `nfa` engine (same name, same options otherwise) compiled with
@@ -206,96 +185,101 @@ struct ForPaths {
 
 impl ForPaths {
     fn new(name: &'static str, longest: usize) -> ForPaths {
-        let base = Options::default();
+        // Engine names are the same in every dialect.
+        let fast = name == Engine::<RenderMan>::name(&Fast);
         ForPaths {
             name,
             opts: Options {
-                dfa_budget: if name == Fast.name() {
-                    base.dfa_budget
-                } else {
-                    0
-                },
-                lazy_cache: if name == Fast.name() {
-                    base.lazy_cache
-                } else {
-                    0
-                },
                 max_path_len: Some(u32::try_from(longest).unwrap_or(u32::MAX)),
-                ..base
+                ..if fast { Options::default() } else { nfa_only() }
             },
         }
     }
 }
 
-impl Engine for ForPaths {
+impl<D: EngineDialect> Engine<D> for ForPaths {
     fn name(&self) -> &'static str {
         self.name
     }
 
-    fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
-        compile_set(exprs, &self.opts)
+    fn compile(
+        &self,
+        exprs: &[D::Lpe],
+        registration: &D::Registration,
+    ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+        compile_set(exprs, registration, &self.opts)
     }
 }
 
-/// `differential`: one structured expression, paths aimed at it, every engine agrees.
-pub fn differential(data: &[u8]) {
-    differential_compared(data);
+/// A fuzz target's body: it panics when its property fails, and answers whether
+/// engines were compared (a differential target) or `true` (a property alone).
+pub type Body = fn(&[u8]) -> bool;
+
+/// The one table of target names and their bodies (`true`: a differential target),
+/// which `fuzz/fuzz_targets/*.rs` ([`run`]) and the corpus replay ([`target`],
+/// [`compared_target`]) read.
+fn table(name: &str) -> Option<(Body, bool)> {
+    let parses: [(&str, Body); 3] = [
+        ("parse", |d| {
+            parse::<RenderMan>(d);
+            true
+        }),
+        ("path_text", |d| {
+            path_text::<RenderMan>(d);
+            true
+        }),
+        ("osl_parse", |d| {
+            parse::<Osl>(d);
+            true
+        }),
+    ];
+    let differentials: [(&str, Body); 3] = [
+        ("differential", |d| {
+            differential::<RenderMan>(d, 1..=1, &renderman_config())
+        }),
+        ("aov_set", |d| {
+            differential::<RenderMan>(d, 2..=6, &renderman_config().with_max_atoms(6))
+        }),
+        ("osl_differential", |d| {
+            differential::<Osl>(d, 1..=4, &Default::default())
+        }),
+    ];
+    let find = |list: &[(&str, Body)]| list.iter().find(|(n, _)| *n == name).map(|(_, b)| *b);
+    find(&parses)
+        .map(|b| (b, false))
+        .or_else(|| find(&differentials).map(|b| (b, true)))
 }
 
-/// [`differential()`], returning whether at least two engines (the reference and
-/// another) were compared.
-pub fn differential_compared(data: &[u8]) -> bool {
-    let mut u = Unstructured::new(data);
-    let cfg = Config::default();
-    let e = generate::lpe(&mut u, &cfg);
-    let paths = paths_for(std::slice::from_ref(&e), &mut u, &cfg);
-    agree(std::slice::from_ref(&e), &paths)
+fn renderman_config() -> <RenderMan as Generate>::Config {
+    lpe_testkit::generate::Config::default()
 }
 
-/// `aov_set`: 2-6 structured expressions compiled as one set; every engine agrees on
-/// which of them match each path.
-pub fn aov_set(data: &[u8]) {
-    aov_set_compared(data);
-}
-
-/// [`aov_set`], returning whether at least two engines (the reference and another)
-/// were compared.
-pub fn aov_set_compared(data: &[u8]) -> bool {
-    let mut u = Unstructured::new(data);
-    let cfg = Config::default().with_max_atoms(6);
-    let n = 2 + u.below(5);
-    let exprs: Vec<Lpe> = (0..n).map(|_| generate::lpe(&mut u, &cfg)).collect();
-    let paths = paths_for(&exprs, &mut u, &cfg);
-    agree(&exprs, &paths)
+/// Runs the fuzz target called `name` on `data` (what `fuzz/fuzz_targets/NAME.rs`
+/// calls); panics on an unknown name.
+pub fn run(name: &str, data: &[u8]) {
+    let (body, _) = table(name).unwrap_or_else(|| panic!("no fuzz target `{name}`"));
+    body(data);
 }
 
 /// The differential target called `name`, returning whether engines were compared,
 /// so a replay can count inputs that only one engine could build.
-pub fn compared_target(name: &str) -> Option<fn(&[u8]) -> bool> {
-    Some(match name {
-        "differential" => differential_compared,
-        "aov_set" => aov_set_compared,
-        "osl_differential" => osl_differential_compared,
-        _ => return None,
-    })
+pub fn compared_target(name: &str) -> Option<Body> {
+    table(name)
+        .filter(|(_, differential)| *differential)
+        .map(|(f, _)| f)
 }
 
-/// The target called `name`, for replaying files by directory name.
-pub fn target(name: &str) -> Option<fn(&[u8])> {
-    Some(match name {
-        "parse" => parse,
-        "path_text" => path_text,
-        "differential" => differential,
-        "aov_set" => aov_set,
-        "osl_parse" => osl_parse,
-        "osl_differential" => osl_differential,
-        _ => return None,
-    })
+/// The target called `name`, for replaying files by directory name; it panics when
+/// its property fails.
+pub fn target(name: &str) -> Option<Body> {
+    table(name).map(|(f, _)| f)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    use lpe::renderman::{Lpe, Parser, Path};
 
     fn set(srcs: &[&str]) -> Vec<Lpe> {
         srcs.iter()
@@ -310,9 +294,12 @@ mod tests {
     #[test]
     fn only_sets_over_the_exact_limit_are_bounded() {
         // 2 positions per repetition of `(<RD>|<RS>)`, and C and L: 2 + 2n.
-        assert!(!needs_bounding(&set(&["C(<RD>|<RS>){0,15}L"])));
-        assert!(needs_bounding(&set(&["C(<RD>|<RS>){0,16}L"])));
-        assert!(needs_bounding(&set(&["C<RD>{0,20}L", "C<RS>{0,20}L"])));
+        assert!(!needs_bounding::<RenderMan>(&set(&["C(<RD>|<RS>){0,15}L"])));
+        assert!(needs_bounding::<RenderMan>(&set(&["C(<RD>|<RS>){0,16}L"])));
+        assert!(needs_bounding::<RenderMan>(&set(&[
+            "C<RD>{0,20}L",
+            "C<RS>{0,20}L"
+        ])));
     }
 
     #[test]
@@ -326,7 +313,7 @@ mod tests {
             "C(<RD>|<RS>){0,100}<RS>{2}L",
             "C<RD>{1,4}L",
         ]);
-        assert!(needs_bounding(&exprs));
+        assert!(needs_bounding::<RenderMan>(&exprs));
         let rd = |n: usize| vec!["RD"; n].join(" ");
         let texts = [
             "C RD RD L".to_string(),
@@ -336,8 +323,13 @@ mod tests {
             "C RS L".to_string(),
         ];
         let texts: Vec<&str> = texts.iter().map(String::as_str).collect();
-        let a = compare(&exprs, &paths(&texts));
-        assert_eq!(a.engines, registry::all().len(), "skipped: {:?}", a.skipped);
+        let a = compare::<RenderMan>(&Parser::default(), &exprs, &paths(&texts));
+        assert_eq!(
+            a.engines,
+            registry::all::<RenderMan>().len(),
+            "skipped: {:?}",
+            a.skipped
+        );
         assert_eq!(a.pairs, 3 * texts.len());
         // Matches: the 3- and 12-RD paths (first), the RD..RS RS path (second), the 2-
         // and 3-RD paths (third).

@@ -1,14 +1,18 @@
 //! LPE matching engines behind one trait, and the tools that run them side by side.
 //!
-//! - [`engine`]: the seam, [`Engine`] compiles a set of expressions into a [`Matcher`]
-//!   that answers, per whole path, which of them match; [`EngineError`] says why an
-//!   engine refused a set.
+//! - [`dialect`]: [`EngineDialect`], what the engines and harnesses need of a dialect
+//!   beyond `lpe::Dialect` (reference verdict, oracle translation, shrinking, the
+//!   external protocol's view); [`renderman`] and [`osl`]: its two implementations,
+//!   with their case generators.
+//! - [`engine`]: the seam, [`Engine<D>`] compiles a set of `D`'s expressions into a
+//!   [`Matcher<D>`] that answers, per whole path, which of them match (an
+//!   `lpe::AovMask`); [`error`]: [`EngineError`], why an engine refused a set.
 //! - [`adapters`]: the workspace's own matchers behind that seam, the backtracking
 //!   [`Reference`], lpe's [`Fast`] matcher (minimized DFA, NFA over budget) and its
 //!   [`BitsetNfa`] alone.
 //! - [`regex`]: the independent second engine, LPE translated to `regex-automata` over a
 //!   byte encoding of vertices ([`regex::RegexEngine`], registered as `oracle`).
-//! - [`registry`]: [`all()`] and [`by_name()`], the one list of engines every tool uses;
+//! - [`registry`]: [`all()`] and [`by_name()`] (per dialect), the one list of engines every tool uses;
 //!   the names (`reference`, `oracle`, `fast`, `nfa`) are what `lpe-check --engine` takes.
 //! - [`differential`]: the differential harness, generated cases, and the shrinker that
 //!   minimizes a disagreement before it is printed.
@@ -20,13 +24,18 @@
 #![forbid(unsafe_code)]
 
 pub mod adapters;
+pub mod dialect;
 pub mod differential;
 pub mod engine;
+pub mod error;
 pub mod external;
 pub mod fuzzing;
+pub mod osl;
 pub mod regex;
 pub mod registry;
+pub mod renderman;
 
 pub use adapters::{BitsetNfa, Fast, Reference};
+pub use dialect::EngineDialect;
 pub use engine::{Engine, EngineError, Matcher};
 pub use registry::{all, by_name, names};

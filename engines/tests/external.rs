@@ -8,6 +8,7 @@ use std::path::PathBuf;
 use std::process::Command;
 use std::time::Duration;
 
+use lpe::renderman::RenderMan;
 use lpe_engines::differential::Run;
 use lpe_engines::external::{self, Answer, Cases, FaultKind, Finding, Report, Setup};
 
@@ -27,11 +28,10 @@ fn repo(rel: &str) -> String {
     p.to_string_lossy().into_owned()
 }
 
-fn setup(command: String, timeout_ms: u64) -> Setup {
+fn setup(command: String, timeout_ms: u64) -> Setup<RenderMan> {
     Setup {
         command,
-        dialect: lpe::DialectName::RenderMan,
-        registered: lpe::osl::Registered::none(),
+        registration: lpe::renderman::Parser::default(),
         timeout: Duration::from_millis(timeout_ms),
         max_restarts: 20,
     }
@@ -60,7 +60,12 @@ fn shell_quote(s: &str) -> String {
 }
 
 fn run(command: String, cases: &Cases, timeout_ms: u64) -> Report {
-    external::run(&setup(command, timeout_ms), cases, &lpe_engines::all()).expect("starts")
+    external::run(
+        &setup(command, timeout_ms),
+        cases,
+        &lpe_engines::all::<RenderMan>(),
+    )
+    .expect("starts")
 }
 
 #[test]

@@ -1,5 +1,6 @@
-//! Fuzz target `aov_set`: the property is `lpe_engines::fuzzing::aov_set` (see its docs), which
-//! `cargo test` also runs on every committed corpus and regression file.
+//! Fuzz target `aov_set`: the property is the body `lpe_engines::fuzzing::target("aov_set")`
+//! names (see `lpe_engines::fuzzing`), which `cargo test` also runs on every committed
+//! corpus and regression file.
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| lpe_engines::fuzzing::aov_set(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| lpe_engines::fuzzing::run("aov_set", data));

@@ -1,5 +1,6 @@
-//! Fuzz target `osl_parse`: the property is `lpe_engines::fuzzing::osl_parse` (see its docs), which
-//! `cargo test` also runs on every committed corpus and regression file.
+//! Fuzz target `osl_parse`: the property is the body `lpe_engines::fuzzing::target("osl_parse")`
+//! names (see `lpe_engines::fuzzing`), which `cargo test` also runs on every committed
+//! corpus and regression file.
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| lpe_engines::fuzzing::osl_parse(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| lpe_engines::fuzzing::run("osl_parse", data));

@@ -1,5 +1,6 @@
-//! Fuzz target `path_text`: the property is `lpe_engines::fuzzing::path_text` (see its docs), which
-//! `cargo test` also runs on every committed corpus and regression file.
+//! Fuzz target `path_text`: the property is the body `lpe_engines::fuzzing::target("path_text")`
+//! names (see `lpe_engines::fuzzing`), which `cargo test` also runs on every committed
+//! corpus and regression file.
 #![no_main]
 
-libfuzzer_sys::fuzz_target!(|data: &[u8]| lpe_engines::fuzzing::path_text(data));
+libfuzzer_sys::fuzz_target!(|data: &[u8]| lpe_engines::fuzzing::run("path_text", data));

@@ -11,10 +11,11 @@
 
 use std::fmt;
 
-use lpe::osl::{self, Registered};
-use lpe::renderman::{Lpe, Parser, Path};
+use lpe::osl::Osl;
+use lpe::renderman::{Parser, Path, RenderMan};
 use lpe::{AovSet, DialectName, Options};
-use lpe_engines::differential::{Language, Osl, RenderMan};
+use lpe_engines::engine::bits;
+use lpe_engines::EngineDialect;
 
 pub use lpe_testkit::suite::{
     kind_name, load_dir, load_str, testdata_dir, Aov, BadPath, Case, ExpectedError, Landing,
@@ -88,8 +89,9 @@ pub fn configs() -> Vec<Config> {
 
 /// What a case runs on: a registered engine, or lpe's [`AovSet`] under one [`Config`].
 pub enum Subject {
-    /// An engine of the registry, as registered.
-    Engine(&'static dyn registry::Engine),
+    /// An engine of the registry, as registered, by name (the registry holds it for
+    /// every dialect).
+    Engine(&'static str),
     /// lpe's AOV set compiled with these options.
     AovSet(Config),
 }
@@ -98,7 +100,7 @@ impl Subject {
     /// The engine's name (`aovset` for the configured AOV sets).
     pub fn engine(&self) -> &'static str {
         match self {
-            Subject::Engine(e) => e.name(),
+            Subject::Engine(name) => name,
             Subject::AovSet(_) => "aovset",
         }
     }
@@ -120,60 +122,33 @@ impl Subject {
     }
 
     /// For each expression, whether it matches each path, or why the subject refused.
-    fn answer<D: CaseDialect>(
+    fn answer<D: EngineDialect>(
         &self,
-        dialect: &D,
-        exprs: &[Expr<D>],
-        paths: &[&PathOf<D>],
+        registration: &D::Registration,
+        exprs: &[D::Lpe],
+        paths: &[&D::Path],
     ) -> Result<Vec<Vec<bool>>, String> {
         match self {
-            Subject::Engine(e) => {
-                let m = dialect
-                    .lang()
-                    .compile(*e, exprs)
+            Subject::Engine(name) => {
+                let engine = registry::by_name::<D>(name).expect("a registered name");
+                let m = engine
+                    .compile(exprs, registration)
                     .map_err(|e| e.to_string())?;
-                Ok(paths.iter().map(|p| m.which(p)).collect())
+                Ok(paths
+                    .iter()
+                    .map(|p| bits(m.which(p), exprs.len()))
+                    .collect())
             }
-            Subject::AovSet(c) => dialect.aovset(exprs, paths, &c.options),
+            Subject::AovSet(c) => {
+                let set = AovSet::<D>::compile_under(&numbered(exprs), registration, &c.options)
+                    .map_err(|e| e.to_string())?;
+                Ok(paths
+                    .iter()
+                    .map(|p| bits(set.match_path(p), exprs.len()))
+                    .collect())
+            }
         }
     }
-}
-
-type Expr<D> = <<D as CaseDialect>::Lang as Language>::Expr;
-type PathOf<D> = <<D as CaseDialect>::Lang as Language>::Path;
-
-/// A case's dialect as the runner needs it: the engines' view of it
-/// ([`Language`]: how an engine compiles a set), and how to parse a case's texts and
-/// compile them as an [`AovSet`]. [`run_case`] picks one per case, in one place.
-trait CaseDialect {
-    type Lang: Language;
-    /// The dialect with the case's context (OSL's registered labels).
-    fn lang(&self) -> &Self::Lang;
-    /// One expression of the case.
-    fn parse(&self, src: &str) -> Result<Expr<Self>, String>;
-    /// One path of the case.
-    fn parse_path(&self, text: &str) -> Result<PathOf<Self>, String>;
-    /// Vertices of a path.
-    fn path_len(path: &PathOf<Self>) -> usize;
-    /// Per path, whether each expression matches, on lpe's AOV set compiled with
-    /// `options`.
-    fn aovset(
-        &self,
-        exprs: &[Expr<Self>],
-        paths: &[&PathOf<Self>],
-        options: &Options,
-    ) -> Result<Vec<Vec<bool>>, String>;
-}
-
-/// The RenderMan dialect with the case's parser (its `ini` macros).
-struct RenderManCase {
-    lang: RenderMan,
-    parser: Parser,
-}
-
-/// The OSL dialect with the case's registered labels.
-struct OslCase {
-    lang: Osl,
 }
 
 /// The expressions named `0`, `1`, ... as an AOV list.
@@ -185,84 +160,9 @@ fn numbered<E: Clone>(exprs: &[E]) -> Vec<(String, E)> {
         .collect()
 }
 
-/// Per path, which of the set's first `n` AOVs match, from a whole-path query.
-fn hits<P>(paths: &[&P], n: usize, query: impl Fn(&P) -> lpe::AovMask) -> Vec<Vec<bool>> {
-    paths
-        .iter()
-        .map(|p| {
-            let hit = query(p);
-            (0..n).map(|i| hit.contains(i)).collect()
-        })
-        .collect()
-}
-
-impl CaseDialect for RenderManCase {
-    type Lang = RenderMan;
-
-    fn lang(&self) -> &RenderMan {
-        &self.lang
-    }
-
-    fn parse(&self, src: &str) -> Result<Lpe, String> {
-        self.parser
-            .parse(src)
-            .map_err(|e| format!("{:?}", e.to_string()))
-    }
-
-    fn parse_path(&self, text: &str) -> Result<Path, String> {
-        text.parse::<Path>().map_err(|e| format!("`{e}`"))
-    }
-
-    fn path_len(path: &Path) -> usize {
-        path.len()
-    }
-
-    fn aovset(
-        &self,
-        exprs: &[Lpe],
-        paths: &[&Path],
-        options: &Options,
-    ) -> Result<Vec<Vec<bool>>, String> {
-        let set = AovSet::compile_with(&numbered(exprs), options).map_err(|e| e.to_string())?;
-        Ok(hits(paths, exprs.len(), |p| set.match_path(p)))
-    }
-}
-
-impl CaseDialect for OslCase {
-    type Lang = Osl;
-
-    fn lang(&self) -> &Osl {
-        &self.lang
-    }
-
-    fn parse(&self, src: &str) -> Result<osl::Lpe, String> {
-        osl::parse(src, &self.lang.registered).map_err(|e| format!("{:?}", e.to_string()))
-    }
-
-    fn parse_path(&self, text: &str) -> Result<osl::Path, String> {
-        text.parse::<osl::Path>().map_err(|e| format!("`{e}`"))
-    }
-
-    fn path_len(path: &osl::Path) -> usize {
-        path.len()
-    }
-
-    fn aovset(
-        &self,
-        exprs: &[osl::Lpe],
-        paths: &[&osl::Path],
-        options: &Options,
-    ) -> Result<Vec<Vec<bool>>, String> {
-        let reg: &Registered = &self.lang.registered;
-        let set =
-            AovSet::compile_under(&numbered(exprs), reg, options).map_err(|e| e.to_string())?;
-        Ok(hits(paths, exprs.len(), |p| set.match_path(p)))
-    }
-}
-
 /// Every registered engine, then the AOV set under every configuration.
 pub fn subjects() -> Vec<Subject> {
-    registry::all()
+    registry::names()
         .into_iter()
         .map(Subject::Engine)
         .chain(configs().into_iter().map(Subject::AovSet))
@@ -444,27 +344,17 @@ fn run_case(loaded: &Loaded, subjects: &[Subject], report: &mut Report) {
         return;
     }
 
-    // The one place a case's dialect picks how its texts parse and compile.
+    // The one place a case's dialect picks its type and registration (RenderMan: the
+    // case's parser, with its `ini` macros; OSL: its registered labels).
     match loaded.dialect {
-        DialectName::RenderMan => {
-            let dialect = RenderManCase {
-                lang: RenderMan,
-                parser,
-            };
-            answer_case(&dialect, loaded, subjects, report);
-        }
-        DialectName::Osl => {
-            let lang = Osl {
-                registered: loaded.registered.clone(),
-            };
-            answer_case(&OslCase { lang }, loaded, subjects, report);
-        }
+        DialectName::RenderMan => answer_case::<RenderMan>(&parser, loaded, subjects, report),
+        DialectName::Osl => answer_case::<Osl>(&loaded.registered, loaded, subjects, report),
     }
 }
 
-/// Runs the case's paths on every subject, in `dialect`.
-fn answer_case<D: CaseDialect>(
-    dialect: &D,
+/// Runs the case's paths on every subject, in dialect `D` under `registration`.
+fn answer_case<D: EngineDialect>(
+    registration: &D::Registration,
     loaded: &Loaded,
     subjects: &[Subject],
     report: &mut Report,
@@ -485,7 +375,7 @@ fn answer_case<D: CaseDialect>(
     let mut exprs = Vec::new();
     for src in &sources {
         report.checks += 1;
-        match dialect.parse(src) {
+        match D::parse(src, registration).map_err(|e| format!("{:?}", e.to_string())) {
             Ok(l) => exprs.push(l),
             Err(e) => {
                 report.failures.push(fail(
@@ -503,7 +393,7 @@ fn answer_case<D: CaseDialect>(
     let mut paths = Vec::new();
     for (text, _) in &expected {
         report.checks += 1;
-        match dialect.parse_path(text) {
+        match text.parse::<D::Path>().map_err(|e| format!("`{e}`")) {
             Ok(p) => paths.push(p),
             Err(e) => {
                 report.failures.push(fail(
@@ -527,12 +417,12 @@ fn answer_case<D: CaseDialect>(
             .filter(|&i| {
                 subject
                     .max_path_len()
-                    .is_none_or(|n| D::path_len(&paths[i]) <= n)
+                    .is_none_or(|n| D::vertices(&paths[i]).len() <= n)
             })
             .collect();
         report.too_long += paths.len() - keep.len();
-        let kept: Vec<&PathOf<D>> = keep.iter().map(|&i| &paths[i]).collect();
-        let answers = match subject.answer(dialect, &exprs, &kept) {
+        let kept: Vec<&D::Path> = keep.iter().map(|&i| &paths[i]).collect();
+        let answers = match subject.answer::<D>(registration, &exprs, &kept) {
             Ok(a) => a,
             Err(why) => {
                 let allowed = |n: &String| n == engine || *n == format!("{engine}/{config}");

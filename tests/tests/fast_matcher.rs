@@ -14,7 +14,7 @@ use lpe::aov::{AovSet, Options};
 use lpe::renderman::ast::{Expr, Repetition};
 use lpe::renderman::macros::BASIC;
 use lpe::renderman::path::{Path, Vertex, VertexType};
-use lpe::renderman::{parse, Lpe};
+use lpe::renderman::{parse, Lpe, Parser, RenderMan};
 use lpe::rng::SplitMix64 as Rng;
 use lpe_testkit::strategy;
 use lpe_tests::{expr_set, framed, named, vertex_pool};
@@ -427,7 +427,7 @@ fn blow_up_shapes_compile_in_bounded_time() {
 #[test]
 fn engines_are_registered() {
     for name in ["reference", "fast", "nfa"] {
-        assert!(lpe_engines::by_name(name).is_some(), "{name}");
+        assert!(lpe_engines::by_name::<RenderMan>(name).is_some(), "{name}");
     }
     let exprs: Vec<Lpe> = basic().into_iter().map(|(_, l)| l).collect();
     let p: Path = "C RD2 RS L'key'".parse().unwrap();
@@ -436,7 +436,14 @@ fn engines_are_registered() {
         .map(|e| lpe_reference::is_match(e, &p))
         .collect();
     for name in ["fast", "nfa"] {
-        let m = lpe_engines::by_name(name).unwrap().compile(&exprs).unwrap();
-        assert_eq!(m.which(&p), want, "{name}");
+        let m = lpe_engines::by_name::<RenderMan>(name)
+            .unwrap()
+            .compile(&exprs, &Parser::default())
+            .unwrap();
+        assert_eq!(
+            lpe_engines::engine::bits(m.which(&p), exprs.len()),
+            want,
+            "{name}"
+        );
     }
 }

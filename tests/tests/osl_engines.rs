@@ -2,17 +2,18 @@
 //! own accum test (130 verdicts) and the hand-written `extra.toml` rows, one set of all
 //! accum rules compiled at once, and the differential property on generated OSL cases.
 
-use lpe::osl::{self, Registered};
+use lpe::osl::{self, Osl, Registered};
 use lpe::rng::SplitMix64;
 use lpe_engines::differential::{self, Outcome};
+use lpe_engines::engine::bits;
 use lpe_engines::Engine;
 use lpe_testkit::suite::{distinct_rules, load_file, rows, Row};
 use lpe_tests::cases;
 use proptest::prelude::*;
 
 /// The registry plus the eager (dense DFA) oracle.
-fn engines() -> Vec<&'static dyn Engine> {
-    let mut all = lpe_engines::all();
+fn engines() -> Vec<&'static dyn Engine<Osl>> {
+    let mut all = lpe_engines::all::<Osl>();
     all.push(&lpe_engines::regex::EAGER);
     all
 }
@@ -38,9 +39,9 @@ fn failures(rows: &[Row]) -> (Vec<String>, usize) {
             let lpe = osl::parse(&r.expr, &r.registered)
                 .unwrap_or_else(|err| panic!("{}: `{}`: {err}", r.file, r.case));
             let m = e
-                .compile_osl(std::slice::from_ref(&lpe), &r.registered)
+                .compile(std::slice::from_ref(&lpe), &r.registered)
                 .unwrap_or_else(|err| panic!("{}: `{}` {}: {err}", r.file, r.case, e.name()));
-            let got = m.which(&path(r));
+            let got = bits(m.which(&path(r)), 1);
             checked += 1;
             if got != [r.matches] {
                 out.push(format!(
@@ -121,10 +122,10 @@ fn rows_as_one_set_on_every_engine(rows: &[Row], reg: &Registered) {
     let rules = distinct_rules(rows);
     let lpes: Vec<osl::Lpe> = rules.iter().map(|e| osl::parse(e, reg).unwrap()).collect();
     for e in engines() {
-        let m = e.compile_osl(&lpes, reg).unwrap();
+        let m = e.compile(&lpes, reg).unwrap();
         for r in rows {
             let i = rules.iter().position(|x| *x == r.expr).unwrap();
-            let got = m.which(&path(r));
+            let got = bits(m.which(&path(r)), rules.len());
             assert_eq!(got.len(), rules.len());
             assert_eq!(
                 got[i],
@@ -149,16 +150,16 @@ fn the_redos_expression_builds_and_matches_on_every_engine() {
     let yes: osl::Path = "C,_ R,D L,_ B,_ O,_".parse().unwrap();
     let no: osl::Path = "C,_ R,D L,_ L,_".parse().unwrap();
     for e in engines() {
-        let m = e.compile_osl(std::slice::from_ref(&lpe), &reg).unwrap();
-        assert_eq!(m.which(&yes), [true], "{}", e.name());
-        assert_eq!(m.which(&no), [false], "{}", e.name());
+        let m = e.compile(std::slice::from_ref(&lpe), &reg).unwrap();
+        assert_eq!(bits(m.which(&yes), 1), [true], "{}", e.name());
+        assert_eq!(bits(m.which(&no), 1), [false], "{}", e.name());
     }
 }
 
 fn assert_agree(seed: u64) -> Result<(), TestCaseError> {
     let cfg = lpe_testkit::generate::osl::Config::default();
-    let case = differential::generate_osl_case(seed, 0, &cfg, 6);
-    match differential::check_in(&case.lang, &engines(), &case.exprs, &case.paths) {
+    let case = differential::generate_case::<Osl>(seed, 0, &cfg, 6);
+    match differential::check_in(&engines(), &case.registration, &case.exprs, &case.paths) {
         Outcome::Agree(a) => {
             prop_assert!(a.skipped.is_empty(), "skipped: {:?}", a.skipped);
             prop_assert_eq!(a.engines, engines().len());
@@ -174,13 +175,13 @@ proptest! {
     /// Every engine agrees on generated OSL cases (a registration, one expression or a
     /// set, paths aimed at them).
     #[test]
-    fn osl_engines_agree(seed in any::<u64>()) {
+    fn engines_agree_in_the_osl_dialect(seed in any::<u64>()) {
         assert_agree(seed)?;
     }
 
     /// A generated expression prints to text that parses back to the same tree.
     #[test]
-    fn generated_osl_expressions_print_and_parse_back(seed in any::<u64>()) {
+    fn generated_expressions_print_and_parse_back_in_the_osl_dialect(seed in any::<u64>()) {
         let mut rng = SplitMix64::new(seed);
         let reg = lpe_testkit::generate::osl::registered(&mut rng);
         let cfg = lpe_testkit::generate::osl::Config::default();

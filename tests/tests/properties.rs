@@ -9,7 +9,7 @@
 
 use lpe::renderman::ast::Expr;
 use lpe::renderman::macros::{MacroTable, BASIC};
-use lpe::renderman::{Event, EventKind, Lpe, Path, Prefixes, Vertex};
+use lpe::renderman::{Event, EventKind, Lpe, Parser, Path, Prefixes, RenderMan, Vertex};
 use lpe_engines::differential::{self, Outcome};
 use lpe_engines::{Engine, Reference};
 use lpe_testkit::strategy;
@@ -21,8 +21,8 @@ use proptest::prelude::*;
 /// falls back to the lazy DFA over its size limit without saying so; that engine's unit
 /// tests check that it really builds the dense DFA on the conformance cases and the
 /// basic AOVs.
-fn engines() -> Vec<&'static dyn Engine> {
-    let mut all = lpe_engines::all();
+fn engines() -> Vec<&'static dyn Engine<RenderMan>> {
+    let mut all = lpe_engines::all::<RenderMan>();
     all.push(&lpe_engines::regex::EAGER);
     all
 }
@@ -115,8 +115,8 @@ proptest! {
         // Decided from the path alone, not by any engine.
         let transport = path.vertices().iter().all(|v| v.event().is_none_or(|e| e.is_transport()));
         for e in engines() {
-            let which = e.compile(&exprs).unwrap().which(&path);
-            let hits = which.iter().filter(|&&b| b).count();
+            let which = e.compile(&exprs, &Parser::default()).unwrap().which(&path);
+            let hits = which.count();
             prop_assert_eq!(hits, usize::from(transport), "{} on {}: {:?}", e.name(), path, which);
         }
     }
@@ -125,8 +125,8 @@ proptest! {
     fn light_transport_paths_always_land_in_one_basic_aov(path in transport_path()) {
         let exprs: Vec<Lpe> = BASIC.iter().map(|(_, s)| lpe::renderman::parse(s).unwrap()).collect();
         for e in engines() {
-            let which = e.compile(&exprs).unwrap().which(&path);
-            prop_assert_eq!(which.iter().filter(|&&b| b).count(), 1, "{} on {}", e.name(), path);
+            let which = e.compile(&exprs, &Parser::default()).unwrap().which(&path);
+            prop_assert_eq!(which.count(), 1, "{} on {}", e.name(), path);
         }
     }
 
@@ -180,6 +180,6 @@ proptest! {
 #[test]
 fn the_reference_engine_is_in_the_comparison() {
     let names: Vec<&str> = engines().iter().map(|e| e.name()).collect();
-    assert_eq!(names[0], Reference.name());
+    assert_eq!(names[0], Engine::<RenderMan>::name(&Reference));
     assert!(names.contains(&"oracle"));
 }

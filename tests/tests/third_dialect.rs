@@ -7,9 +7,13 @@
 //!
 //! Through it run the layers written once: `AovSet` compile, step, warnings and
 //! `PathMatcher`; the analyses (comparison, partition, remainder, set-algebra
-//! warnings); and a differential check of the set against the reference matcher,
-//! which shares no automaton with it (both read RenderMan's parser, so that part is
-//! checked by RenderMan's own suites, not here).
+//! warnings); a differential check of the set against the reference matcher, which
+//! shares no automaton with it (both read RenderMan's parser, so that part is checked
+//! by RenderMan's own suites, not here); and the tools of `lpe-engines`, which need one
+//! more implementation each (`EngineDialect`: its reference verdict, its shrinking;
+//! `Generate`: its generators): the engine registry (`oracle` has no translation for it
+//! and says so), the differential harness on generated cases, and a planted bug found
+//! and minimized.
 
 use std::fmt;
 use std::str::FromStr;
@@ -17,8 +21,12 @@ use std::str::FromStr;
 use lpe::algebra::{Algebra, SetExpr};
 use lpe::analysis;
 use lpe::automata::ir::PathShape;
-use lpe::renderman::{self, alphabet::Alphabet, ast::Atom, Expr, RenderMan, Vertex};
-use lpe::{AovSet, CompileError, Dialect, DialectLpe, PathMatcher};
+use lpe::renderman::ast::Item;
+use lpe::renderman::{self, alphabet::Alphabet, ast::Atom, Expr, Parser, RenderMan, Vertex};
+use lpe::{AovMask, AovSet, CompileError, Dialect, DialectLpe, PathMatcher};
+use lpe_engines::differential::{self, Generate, Outcome, Run};
+use lpe_engines::{Engine, EngineDialect, EngineError, Matcher, Reference};
+use lpe_testkit::generate::{self, Choices, Config};
 
 /// Swaps `C`/`E`, `R`/`B` and `T`/`P` outside single-quoted labels: Letters text to
 /// RenderMan text and back (the swap is its own inverse).
@@ -255,4 +263,179 @@ fn the_set_agrees_with_the_reference_matcher() {
             .collect();
     }
     assert_eq!(checked, 3 * (1 + 5 + 25));
+}
+
+// --- The tools of `lpe-engines`: one implementation of each of their traits. ---
+
+/// The reference is RenderMan's on the same trees; shrinking is RenderMan's on them.
+/// No oracle translation: the `oracle` engine refuses this dialect.
+impl EngineDialect for Letters {
+    fn reference(lpe: &LettersLpe, path: &LettersPath) -> bool {
+        lpe_reference::is_match(&lpe.0, &path.0)
+    }
+    fn shrink_expr(e: &LettersLpe, _: &()) -> Vec<LettersLpe> {
+        RenderMan::shrink_expr(&e.0, &Parser::default())
+            .into_iter()
+            .map(LettersLpe)
+            .collect()
+    }
+    fn shrink_path(p: &LettersPath) -> Vec<LettersPath> {
+        RenderMan::shrink_path(&p.0)
+            .into_iter()
+            .map(LettersPath)
+            .collect()
+    }
+    fn parse_error(e: &renderman::Error) -> (usize, String) {
+        RenderMan::parse_error(e)
+    }
+}
+
+/// RenderMan's generators, wrapped.
+impl Generate for Letters {
+    type Config = Config;
+    fn config(max_size: usize) -> Config {
+        Config::default().with_max_atoms(max_size)
+    }
+    fn without_set_algebra(cfg: Config) -> Config {
+        cfg.without_set_algebra()
+    }
+    fn registration(_: &mut impl Choices) {}
+    fn lpe(c: &mut impl Choices, _: &(), cfg: &Config) -> LettersLpe {
+        LettersLpe(generate::lpe(c, cfg))
+    }
+    fn biased_path(target: &Expr, c: &mut impl Choices, _: &(), cfg: &Config) -> LettersPath {
+        LettersPath(generate::biased_path(target, c, cfg))
+    }
+}
+
+#[test]
+fn the_engine_registry_runs_it_and_the_oracle_refuses_it() {
+    let exprs: Vec<LettersLpe> = BASIC.iter().map(|(_, s)| lpe(s)).collect();
+    let set = AovSet::compile(&named(&BASIC)).unwrap();
+    let engines = lpe_engines::all::<Letters>();
+    assert_eq!(
+        engines.iter().map(|e| e.name()).collect::<Vec<_>>(),
+        lpe_engines::names()
+    );
+    let mut answered = 0;
+    for e in &engines {
+        match e.compile(&exprs, &()) {
+            Ok(m) => {
+                for p in ["E BD L", "E BD BS L'key'", "E PD O", "E L", "E BU1 L"] {
+                    let p = path(p);
+                    assert_eq!(m.which(&p), set.match_path(&p), "{} on {p}", e.name());
+                }
+                answered += 1;
+            }
+            Err(why) => {
+                assert_eq!(e.name(), "oracle");
+                assert!(
+                    matches!(why, EngineError::Unsupported("letters")),
+                    "{why:?}"
+                );
+                assert_eq!(
+                    why.to_string(),
+                    "cannot build: this engine does not support the letters dialect"
+                );
+            }
+        }
+    }
+    assert_eq!(answered, 3);
+    assert!(lpe_engines::by_name::<Letters>("fast").is_some());
+}
+
+#[test]
+fn the_differential_harness_runs_generated_cases() {
+    let args = Run {
+        cases: 60,
+        seed: 7,
+        first: 0,
+        max_size: 8,
+        paths: 4,
+        max_failures: 1,
+    };
+    let t = differential::run_cases::<Letters>(&args, &lpe_engines::all());
+    if let Some((i, c)) = t.failures.first() {
+        panic!("case {i}:\n{c}");
+    }
+    assert_eq!(t.cases, 60);
+    assert_eq!(t.uncompared, 0);
+    assert!(
+        t.pairs >= 240 && t.matched > 0,
+        "{} of {}",
+        t.matched,
+        t.pairs
+    );
+    // The oracle skipped every case, and said why; nothing else skipped.
+    assert_eq!(t.skips.len(), 1, "{:?}", t.skips);
+    assert_eq!(t.skips[0].0, "oracle");
+    assert_eq!(t.skips[0].1, 60);
+    assert!(t.skips[0].2.contains("letters"), "{}", t.skips[0].2);
+    // The generated text is this dialect's: it reads back.
+    let case = differential::generate_case::<Letters>(7, 3, &Letters::config(8), 2);
+    for e in &case.exprs {
+        assert_eq!(Letters::parse(&e.to_string(), &()).unwrap(), *e);
+    }
+}
+
+/// A deliberately wrong engine: it ignores labels in `'g'` items by answering like the
+/// reference on the expression with every label item replaced by `.`.
+struct LabelBlind;
+
+struct LabelBlindMatcher(Vec<LettersLpe>);
+
+impl Matcher<Letters> for LabelBlindMatcher {
+    fn which(&self, path: &LettersPath) -> AovMask {
+        (0..self.0.len())
+            .filter(|&i| Letters::reference(&self.0[i], path))
+            .collect()
+    }
+}
+
+impl Engine<Letters> for LabelBlind {
+    fn name(&self) -> &'static str {
+        "label-blind"
+    }
+    fn compile(
+        &self,
+        exprs: &[LettersLpe],
+        _: &(),
+    ) -> Result<Box<dyn Matcher<Letters> + '_>, EngineError> {
+        let mut blind = exprs.to_vec();
+        for e in &mut blind {
+            e.0.operands_mut(&mut |x| {
+                x.for_each_atom_mut(&mut |a| {
+                    if matches!(a, Atom::Item(Item::Label(_))) {
+                        *a = Atom::Item(Item::Any);
+                    }
+                })
+            });
+        }
+        Ok(Box::new(LabelBlindMatcher(blind)))
+    }
+}
+
+#[test]
+fn a_planted_bug_is_found_and_minimized() {
+    let engines: Vec<&dyn Engine<Letters>> = vec![&Reference, &LabelBlind];
+    let exprs = [
+        lpe("E<BD>[<L.>O]"),
+        lpe("unoccluded;E(<BD>|<PS>)*'floor'(.|U2)+[<L.>O]"),
+    ];
+    let p = path("E BD PS BD'wall' BS1 PS2 L");
+    // The right engines agree on it (the oracle refuses).
+    assert!(differential::check_set(&exprs, std::slice::from_ref(&p)).is_agreement());
+    let Outcome::Disagree(c) = differential::check_with(&engines, &exprs, &[p]) else {
+        panic!("the planted bug went unnoticed");
+    };
+    // Down to the label item against a vertex with another label, between the camera
+    // and the emitter, printed in this dialect's letters.
+    assert_eq!(c.exprs.len(), 1);
+    assert_eq!(c.exprs[0].to_string(), "E'floor'<L.>");
+    assert_eq!(Letters::vertices(&c.path).len(), 3, "{}", c.path);
+    assert!(c.path.to_string().starts_with("E "), "{}", c.path);
+    let text = c.to_string();
+    assert!(text.contains("reference: no-match"), "{text}");
+    assert!(text.contains("label-blind: match"), "{text}");
+    assert!(text.contains("E BD1 PS1 BD1'wall' BS1 PS2 L"), "{text}");
 }

@@ -17,8 +17,8 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use lpe::DialectName;
-use lpe_engines::differential::{run_cases, run_osl_cases, Language, Totals};
+use lpe::with_dialect;
+use lpe_engines::differential::{run_cases, Generate, Totals};
 
 use crate::input::{bad_input, select_engines};
 
@@ -36,7 +36,12 @@ pub fn run(args: Args) -> ExitCode {
     if args.external.is_some() {
         return super::external::run(&args);
     }
-    let engines = match select_engines(&args.engine) {
+    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
+}
+
+/// Runs the generated cases of dialect `D` on the selected engines.
+fn run_in<D: Generate>(args: &Args) -> ExitCode {
+    let engines = match select_engines::<D>(&args.engine) {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),
     };
@@ -46,14 +51,11 @@ pub fn run(args: Args) -> ExitCode {
     }
     let names: Vec<&str> = engines.iter().map(|e| e.name()).collect();
     let start = Instant::now();
-    match args.lang.dialect {
-        DialectName::RenderMan => report(&args, &names, run_cases(&args.run(), &engines), start),
-        DialectName::Osl => report(&args, &names, run_osl_cases(&args.run(), &engines), start),
-    }
+    report(args, &names, run_cases(&args.run(), &engines), start)
 }
 
 /// Prints a run's totals and disagreements; the exit code.
-fn report<L: Language>(args: &Args, names: &[&str], t: Totals<L>, start: Instant) -> ExitCode {
+fn report<D: Generate>(args: &Args, names: &[&str], t: Totals<D>, start: Instant) -> ExitCode {
     let secs = start.elapsed().as_secs_f64().max(1e-9);
     println!(
         "{} dialect, engines: {}; seed {}, cases {}..{}, max size {}, {} paths per case",

@@ -10,6 +10,10 @@
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
+use lpe::osl::Osl;
+use lpe::renderman::{Parser, RenderMan};
+use lpe::DialectName;
+use lpe_engines::differential::Generate;
 use lpe_engines::external::{self, Cases, Setup};
 
 use super::diff::args::Args;
@@ -31,7 +35,16 @@ pub fn run(args: &Args) -> ExitCode {
         Ok(false) => lpe::osl::Registered::none(),
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    let engines = match select_engines(&args.engine) {
+    // Given RenderMan cases read with the default parser, as generated ones are.
+    match args.lang.dialect {
+        DialectName::RenderMan => run_in::<RenderMan>(args, command, Parser::default()),
+        DialectName::Osl => run_in::<Osl>(args, command, registered),
+    }
+}
+
+/// Runs `diff --external` in dialect `D`, given cases read under `registration`.
+fn run_in<D: Generate>(args: &Args, command: String, registration: D::Registration) -> ExitCode {
+    let engines = match select_engines::<D>(&args.engine) {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),
     };
@@ -39,17 +52,7 @@ pub fn run(args: &Args) -> ExitCode {
         return bad_input("error: --path needs --expr");
     }
     for p in &args.path {
-        let parsed = match args.lang.dialect {
-            lpe::DialectName::RenderMan => p
-                .parse::<lpe::renderman::Path>()
-                .map(drop)
-                .map_err(|e| e.to_string()),
-            lpe::DialectName::Osl => p
-                .parse::<lpe::osl::Path>()
-                .map(drop)
-                .map_err(|e| e.to_string()),
-        };
-        if let Err(e) = parsed {
+        if let Err(e) = p.parse::<D::Path>() {
             return bad_input(format!("error: --path {p:?}: {e}"));
         }
     }
@@ -63,8 +66,7 @@ pub fn run(args: &Args) -> ExitCode {
     };
     let setup = Setup {
         command,
-        dialect: args.lang.dialect,
-        registered,
+        registration,
         timeout: Duration::from_millis(args.timeout_ms),
         max_restarts: args.max_restarts,
     };
@@ -79,7 +81,7 @@ pub fn run(args: &Args) -> ExitCode {
         "external: {} ({}, {} dialect); engines: {}",
         setup.command,
         report.name.as_deref().unwrap_or("unnamed"),
-        setup.dialect,
+        args.lang.dialect,
         names.join(", ")
     );
     if let Cases::Generated(run) = &cases {

@@ -1,70 +1,65 @@
 //! `lpe-check match`: match expressions against paths with every selected engine.
 //!
 //! `match EXPR PATH...` prints `match` or `no-match` per path. `match --batch` reads
-//! `EXPR<TAB>PATH` lines from stdin and prints exactly one line per input line:
-//! `match`, `no-match`, `error: <message>`, or `disagree: <engine=answer ...>` when
-//! engines differ (the process then exits 3 at the end). Blank lines and `#` comments
-//! are echoed as they are.
+//! one case per stdin line and prints exactly one line per input line: `match`,
+//! `no-match`, `error: <message>`, or `disagree: <engine=answer ...>` when engines
+//! differ (the process then exits 3 at the end). Blank lines and `#` comments are echoed
+//! as they are.
 //!
-//! `--dialect osl` reads OSL expressions and paths instead ([`super::match_osl`]).
+//! The command is written once over [`MatchDialect`]; what differs per dialect (where
+//! the registration comes from, how an argument expression reads, a batch line's
+//! columns) is in the dialect's file: [`renderman`] (`EXPR<TAB>PATH` lines, `--ini`
+//! macros) and [`osl`] (`--dialect osl`: `EXPR<TAB>REGISTERED<TAB>PATH` lines).
+//! [`answer`] holds the arguments, the verdict over every engine and the printing.
 
 use std::process::ExitCode;
 
-use lpe::renderman::{Lpe, Parser, Path};
+use lpe::osl::Osl;
+use lpe::renderman::RenderMan;
 
-use lpe_engines::differential::RenderMan;
-use lpe_engines::Engine;
-
-use crate::input::{bad_input, load_parser, select_engines};
+use crate::input::{bad_input, select_engines};
 
 pub mod answer;
-pub use answer::{answer_paths, batch, verdict_in, Args, LineOutcome, Verdict};
+pub mod dialect;
+pub mod osl;
+pub mod renderman;
 
-/// Runs every engine on one expression and path. An engine that cannot build the
-/// expression is reported but does not count as disagreeing.
-pub fn verdict(engines: &[&dyn Engine], lpe: &Lpe, path: &Path) -> Verdict {
-    verdict_in(&RenderMan, engines, lpe, path)
-}
-
-/// Answers one `EXPR<TAB>PATH` line (not blank, not a comment).
-pub fn batch_line(parser: &Parser, engines: &[&dyn Engine], line: &str) -> LineOutcome {
-    let Some((expr, path)) = line.split_once('\t') else {
-        return LineOutcome::Error("expected `EXPR<TAB>PATH`, found no tab".into());
-    };
-    let lpe = match parser.parse(expr) {
-        Ok(l) => l,
-        Err(e) => return LineOutcome::Error(format!("expression: {}", e.one_line())),
-    };
-    match path.parse::<Path>() {
-        Ok(p) => LineOutcome::Ran(verdict(engines, &lpe, &p)),
-        Err(e) => LineOutcome::Error(format!("path: {e}")),
-    }
-}
+pub use answer::{answer_paths, batch, verdict, Args, LineOutcome, Verdict};
+pub use dialect::MatchDialect;
 
 /// Runs `lpe-check match`.
 pub fn run(args: Args) -> ExitCode {
-    let engines = match select_engines(&args.engine) {
+    // The engine name is checked before the dialect arguments (the names are the same
+    // in every dialect).
+    if let Err(e) = select_engines::<RenderMan>(&args.engine) {
+        return bad_input(format!("error: {e}"));
+    }
+    match args.lang.is_osl() {
+        Ok(true) => run_in::<Osl>(&args),
+        Ok(false) => run_in::<RenderMan>(&args),
+        Err(e) => bad_input(format!("error: {e}")),
+    }
+}
+
+/// Runs `lpe-check match` in dialect `D`.
+fn run_in<D: MatchDialect>(args: &Args) -> ExitCode {
+    let engines = match select_engines::<D>(&args.engine) {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    match args.lang.is_osl() {
-        Ok(true) => return super::match_osl::run(&args, &engines),
-        Ok(false) => {}
-        Err(e) => return bad_input(format!("error: {e}")),
-    }
-    let parser = match load_parser(args.ini.as_deref()) {
-        Ok(p) => p,
-        Err(e) => return bad_input(format!("error: {e}")),
+    let registration = match D::registration(args) {
+        Ok(r) => r,
+        Err(e) => return bad_input(e),
     };
     if args.batch {
-        return batch(|line| batch_line(&parser, &engines, line));
+        return batch(|line| D::batch_line(&engines, &registration, line));
     }
-    let lpe = match parser.parse(args.expr.as_deref().unwrap_or_default()) {
+    let lpe = match D::parse_arg(args.expr.as_deref().unwrap_or_default(), &registration) {
         Ok(l) => l,
         Err(e) => return bad_input(e),
     };
-    answer_paths(&args.paths, "C RD L", |text| {
-        let p = text.parse::<Path>().map_err(|e| e.to_string())?;
-        Ok(verdict(&engines, &lpe, &p))
+    answer_paths(&args.paths, D::EXAMPLE_PATH, |text| {
+        let p = text.parse::<D::Path>().map_err(|e| e.to_string())?;
+        Ok(verdict(&engines, &registration, &lpe, &p))
     })
 }

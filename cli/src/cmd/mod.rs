@@ -7,7 +7,6 @@ pub mod explain;
 pub mod external;
 pub mod external_suite;
 pub mod lint;
-pub mod match_osl;
 pub mod matching;
 pub mod parse;
 pub mod partition;

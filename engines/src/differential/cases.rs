@@ -7,24 +7,25 @@
 //! Case `i` of seed `s` is generated from its own PRNG stream, so a run is deterministic
 //! for a seed and a reported case can be regenerated alone (`--first i --cases 1`).
 
-use lpe::renderman::Lpe;
+use lpe::algebra::SetExpr;
 use lpe::rng::SplitMix64 as Rng;
-use lpe_testkit::generate::{self, Choices, Config};
+use lpe_testkit::generate::Choices;
 
 use super::check::{check_in, Outcome};
 use super::counterexample::Counterexample;
-use super::language::{Language, Osl, RenderMan};
+use super::generate::Generate;
+use crate::dialect::EngineDialect;
 use crate::engine::Engine;
 
 /// One generated case.
 #[derive(Clone, Debug)]
-pub struct Case<L: Language = RenderMan> {
-    /// The dialect and what the expressions share (OSL's registered labels).
-    pub lang: L,
+pub struct Case<D: EngineDialect> {
+    /// What the expressions were parsed under (OSL's registered labels).
+    pub registration: D::Registration,
     /// The expressions (one, or an AOV set).
-    pub exprs: Vec<L::Expr>,
+    pub exprs: Vec<D::Lpe>,
     /// Paths aimed at the expressions.
-    pub paths: Vec<L::Path>,
+    pub paths: Vec<D::Path>,
 }
 
 /// The PRNG of case `index` under `seed`: independent streams per case.
@@ -42,57 +43,33 @@ fn set_size(rng: &mut Rng) -> usize {
     }
 }
 
-/// Generates case `index` of `seed`.
-pub fn generate_case(seed: u64, index: u64, cfg: &Config, paths: usize) -> Case {
+/// Generates case `index` of `seed`: a registration, expressions under it, and paths
+/// aimed at them.
+pub fn generate_case<D: Generate>(seed: u64, index: u64, cfg: &D::Config, paths: usize) -> Case<D> {
     let mut rng = case_rng(seed, index);
+    let registration = D::registration(&mut rng);
     let n = set_size(&mut rng);
-    let exprs: Vec<Lpe> = (0..n).map(|_| generate::lpe(&mut rng, cfg)).collect();
+    let exprs: Vec<D::Lpe> = (0..n)
+        .map(|_| D::lpe(&mut rng, &registration, cfg))
+        .collect();
     let paths = (0..paths)
         .map(|_| {
             // Aim at one operand: for set algebra, paths near each side of `A - B`.
             let operands = rng.pick(&exprs).operands();
             let target = *rng.pick(&operands);
-            generate::biased_path(target, &mut rng, cfg)
+            D::biased_path(target, &mut rng, &registration, cfg)
         })
         .collect();
     Case {
-        lang: RenderMan,
-        exprs,
-        paths,
-    }
-}
-
-/// Generates OSL case `index` of `seed`: a registration, then expressions and paths as
-/// for RenderMan.
-pub fn generate_osl_case(
-    seed: u64,
-    index: u64,
-    cfg: &generate::osl::Config,
-    paths: usize,
-) -> Case<Osl> {
-    let mut rng = case_rng(seed, index);
-    let registered = generate::osl::registered(&mut rng);
-    let n = set_size(&mut rng);
-    let exprs: Vec<lpe::osl::Lpe> = (0..n)
-        .map(|_| generate::osl::lpe(&mut rng, &registered, cfg))
-        .collect();
-    let paths = (0..paths)
-        .map(|_| {
-            let operands = rng.pick(&exprs).operands();
-            let target = *rng.pick(&operands);
-            generate::osl::biased_path(target, &mut rng, &registered, cfg)
-        })
-        .collect();
-    Case {
-        lang: Osl { registered },
+        registration,
         exprs,
         paths,
     }
 }
 
 /// Totals of a run.
-#[derive(Debug)]
-pub struct Totals<L: Language = RenderMan> {
+#[derive(Debug, Default)]
+pub struct Totals<D: EngineDialect> {
     /// Cases run.
     pub cases: u64,
     /// Expression/path pairs compared.
@@ -104,21 +81,7 @@ pub struct Totals<L: Language = RenderMan> {
     /// Cases where fewer than two engines could build (nothing compared).
     pub uncompared: u64,
     /// Minimized disagreements.
-    pub failures: Vec<(u64, Counterexample<L>)>,
-}
-
-// By hand: a derive would ask `L: Default`, which a dialect with context need not be.
-impl<L: Language> Default for Totals<L> {
-    fn default() -> Self {
-        Totals {
-            cases: 0,
-            pairs: 0,
-            matched: 0,
-            skips: Vec::new(),
-            uncompared: 0,
-            failures: Vec::new(),
-        }
-    }
+    pub failures: Vec<(u64, Counterexample<D>)>,
 }
 
 /// Which cases a run generates, and when it stops.
@@ -138,31 +101,12 @@ pub struct Run {
     pub max_failures: usize,
 }
 
-/// Runs RenderMan cases `first..first + cases` and returns the totals.
-pub fn run_cases(args: &Run, engines: &[&dyn Engine]) -> Totals {
-    let cfg = Config::default().with_max_atoms(args.max_size);
-    run_generated(args, engines, |index| {
-        generate_case(args.seed, index, &cfg, args.paths)
-    })
-}
-
-/// Runs OSL cases `first..first + cases` and returns the totals.
-pub fn run_osl_cases(args: &Run, engines: &[&dyn Engine]) -> Totals<Osl> {
-    let cfg = generate::osl::Config::default().with_max_vertices(args.max_size);
-    run_generated(args, engines, |index| {
-        generate_osl_case(args.seed, index, &cfg, args.paths)
-    })
-}
-
-/// Runs the cases `generate` makes for indices `first..first + cases`.
-fn run_generated<L: Language>(
-    args: &Run,
-    engines: &[&dyn Engine],
-    mut generate: impl FnMut(u64) -> Case<L>,
-) -> Totals<L> {
+/// Runs cases `first..first + cases` and returns the totals.
+pub fn run_cases<D: Generate>(args: &Run, engines: &[&dyn Engine<D>]) -> Totals<D> {
+    let cfg = D::config(args.max_size);
     let mut t = Totals::default();
     for index in args.first..args.first.saturating_add(args.cases) {
-        let case = generate(index);
+        let case = generate_case::<D>(args.seed, index, &cfg, args.paths);
         t.cases += 1;
         // Long runs report progress on stderr every tenth, so stdout stays the summary.
         if args.cases >= 10_000 && t.cases % (args.cases / 10) == 0 {
@@ -173,7 +117,7 @@ fn run_generated<L: Language>(
                 t.failures.len()
             );
         }
-        match check_in(&case.lang, engines, &case.exprs, &case.paths) {
+        match check_in(engines, &case.registration, &case.exprs, &case.paths) {
             Outcome::Agree(a) => {
                 t.pairs += a.pairs as u64;
                 t.matched += a.matched as u64;
@@ -201,15 +145,18 @@ fn run_generated<L: Language>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use lpe::osl::Osl;
+    use lpe::renderman::RenderMan;
+    use lpe_testkit::generate::{self, Config};
 
     #[test]
     fn cases_are_deterministic_per_seed_and_index() {
         let cfg = Config::default();
-        let a = generate_case(5, 17, &cfg, 4);
-        let b = generate_case(5, 17, &cfg, 4);
+        let a = generate_case::<RenderMan>(5, 17, &cfg, 4);
+        let b = generate_case::<RenderMan>(5, 17, &cfg, 4);
         assert_eq!(a.exprs, b.exprs);
         assert_eq!(a.paths, b.paths);
-        let c = generate_case(6, 17, &cfg, 4);
+        let c = generate_case::<RenderMan>(6, 17, &cfg, 4);
         assert!(a.exprs != c.exprs || a.paths != c.paths);
     }
 
@@ -223,7 +170,7 @@ mod tests {
             paths: 4,
             max_failures: 1,
         };
-        let t = run_cases(&args, &crate::registry::all());
+        let t = run_cases::<RenderMan>(&args, &crate::registry::all());
         if let Some((i, c)) = t.failures.first() {
             panic!("case {i}:\n{c}");
         }
@@ -243,7 +190,7 @@ mod tests {
     }
 
     #[test]
-    fn a_small_osl_run_agrees_with_a_useful_match_rate() {
+    fn a_small_run_agrees_with_a_useful_match_rate_in_the_osl_dialect() {
         let args = Run {
             cases: 400,
             seed: 1,
@@ -252,7 +199,7 @@ mod tests {
             paths: 4,
             max_failures: 1,
         };
-        let t = run_osl_cases(&args, &crate::registry::all());
+        let t = run_cases::<Osl>(&args, &crate::registry::all());
         if let Some((i, c)) = t.failures.first() {
             panic!("case {i}:\n{c}");
         }
@@ -263,13 +210,16 @@ mod tests {
     }
 
     #[test]
-    fn osl_cases_are_deterministic_and_vary_the_registration() {
+    fn cases_are_deterministic_and_vary_the_registration_in_the_osl_dialect() {
         let cfg = generate::osl::Config::default();
-        let a = generate_osl_case(5, 17, &cfg, 4);
-        let b = generate_osl_case(5, 17, &cfg, 4);
-        assert_eq!((&a.lang, &a.exprs, &a.paths), (&b.lang, &b.exprs, &b.paths));
+        let a = generate_case::<Osl>(5, 17, &cfg, 4);
+        let b = generate_case::<Osl>(5, 17, &cfg, 4);
+        assert_eq!(
+            (&a.registration, &a.exprs, &a.paths),
+            (&b.registration, &b.exprs, &b.paths)
+        );
         let regs: std::collections::HashSet<String> = (0..50)
-            .map(|i| generate_osl_case(5, i, &cfg, 1).lang.registered.to_string())
+            .map(|i| generate_case::<Osl>(5, i, &cfg, 1).registration.to_string())
             .collect();
         assert!(regs.contains("-") && regs.len() > 3, "{regs:?}");
     }
@@ -278,12 +228,12 @@ mod tests {
     /// few hundred cases has dozens), and paths aimed at operands: some algebra
     /// expression matches some of its paths (by the reference), so the algebra is not
     /// only ever checked on non-matches.
-    fn assert_some_algebra_that_matches<L: Language>(
-        cases: &[Case<L>],
-        has_algebra: impl Fn(&L::Expr) -> bool,
-        reference_match: impl Fn(&L::Expr, &L::Path) -> bool,
+    fn assert_some_algebra_that_matches<D: EngineDialect>(
+        cases: &[Case<D>],
+        has_algebra: impl Fn(&D::Lpe) -> bool,
+        reference_match: impl Fn(&D::Lpe, &D::Path) -> bool,
     ) {
-        let with_algebra: Vec<&Case<L>> = cases
+        let with_algebra: Vec<&Case<D>> = cases
             .iter()
             .filter(|c| c.exprs.iter().any(&has_algebra))
             .collect();
@@ -305,9 +255,11 @@ mod tests {
     }
 
     #[test]
-    fn some_osl_cases_hold_set_algebra_that_matches_some_of_their_paths() {
+    fn some_cases_hold_set_algebra_that_matches_some_of_their_paths_in_the_osl_dialect() {
         let cfg = generate::osl::Config::default();
-        let cases: Vec<Case<Osl>> = (0..400).map(|i| generate_osl_case(3, i, &cfg, 4)).collect();
+        let cases: Vec<Case<Osl>> = (0..400)
+            .map(|i| generate_case::<Osl>(3, i, &cfg, 4))
+            .collect();
         assert_some_algebra_that_matches(
             &cases,
             |e| e.algebra.is_some(),
@@ -315,7 +267,7 @@ mod tests {
         );
         // Without set algebra when asked (for matchers that do not speak it).
         let plain = generate::osl::Config::default().without_set_algebra();
-        assert!((0..400).all(|i| generate_osl_case(3, i, &plain, 1)
+        assert!((0..400).all(|i| generate_case::<Osl>(3, i, &plain, 1)
             .exprs
             .iter()
             .all(|e| e.algebra.is_none())));
@@ -324,7 +276,9 @@ mod tests {
     #[test]
     fn some_cases_hold_set_algebra_and_their_paths_aim_at_operands() {
         let cfg = Config::default();
-        let cases: Vec<Case> = (0..400).map(|i| generate_case(3, i, &cfg, 4)).collect();
+        let cases: Vec<Case<RenderMan>> = (0..400)
+            .map(|i| generate_case::<RenderMan>(3, i, &cfg, 4))
+            .collect();
         assert_some_algebra_that_matches(&cases, |e| e.algebra.is_some(), lpe_reference::is_match);
     }
 }

@@ -1,11 +1,11 @@
 //! Running engines side by side and comparing their answers.
 
-use lpe::renderman::{Lpe, Path};
+use lpe::{Dialect, DialectLpe};
 
 use super::answers::answers_in;
 use super::counterexample::Counterexample;
-use super::language::{Language, RenderMan};
 use super::minimize::minimize_in;
+use crate::dialect::EngineDialect;
 use crate::engine::Engine;
 use crate::registry;
 
@@ -23,47 +23,65 @@ pub struct Agreement {
 }
 
 /// The result of a differential check.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Outcome<L: Language = RenderMan> {
+#[derive(Clone, Debug)]
+pub enum Outcome<D: EngineDialect> {
     /// All engines that could build agree on every path.
     Agree(Agreement),
     /// Two engines differ; minimized.
-    Disagree(Box<Counterexample<L>>),
+    Disagree(Box<Counterexample<D>>),
 }
 
-impl<L: Language> Outcome<L> {
+impl<D: EngineDialect> Outcome<D> {
     /// True for [`Outcome::Agree`].
     pub fn is_agreement(&self) -> bool {
         matches!(self, Outcome::Agree(_))
     }
 }
 
-/// Runs every engine on one expression.
-pub fn check(expr: &Lpe, paths: &[Path]) -> Outcome {
+/// The path type of an expression's dialect.
+type PathOf<L> = <<L as DialectLpe>::Dialect as Dialect>::Path;
+
+/// Runs every engine on one expression (its dialect's default registration).
+pub fn check<L>(expr: &L, paths: &[PathOf<L>]) -> Outcome<L::Dialect>
+where
+    L: DialectLpe,
+    L::Dialect: EngineDialect,
+{
     check_set(std::slice::from_ref(expr), paths)
 }
 
-/// Runs every engine on an AOV set compiled as one.
-pub fn check_set(exprs: &[Lpe], paths: &[Path]) -> Outcome {
-    check_with(&registry::all(), exprs, paths)
+/// Runs every engine on an AOV set compiled as one (its dialect's default
+/// registration).
+pub fn check_set<L>(exprs: &[L], paths: &[PathOf<L>]) -> Outcome<L::Dialect>
+where
+    L: DialectLpe,
+    L::Dialect: EngineDialect,
+{
+    check_with(&registry::all::<L::Dialect>(), exprs, paths)
 }
 
-/// Runs the given engines on an AOV set compiled as one.
-pub fn check_with(engines: &[&dyn Engine], exprs: &[Lpe], paths: &[Path]) -> Outcome {
-    check_in(&RenderMan, engines, exprs, paths)
+/// Runs the given engines on an AOV set compiled as one, under the dialect's default
+/// registration.
+pub fn check_with<D: EngineDialect>(
+    engines: &[&dyn Engine<D>],
+    exprs: &[D::Lpe],
+    paths: &[D::Path],
+) -> Outcome<D> {
+    check_in(engines, &D::Registration::default(), exprs, paths)
 }
 
-/// Runs the given engines on a set of `lang` expressions compiled as one.
-pub fn check_in<L: Language>(
-    lang: &L,
-    engines: &[&dyn Engine],
-    exprs: &[L::Expr],
-    paths: &[L::Path],
-) -> Outcome<L> {
+/// Runs the given engines on a set of expressions parsed under `registration`,
+/// compiled as one.
+pub fn check_in<D: EngineDialect>(
+    engines: &[&dyn Engine<D>],
+    registration: &D::Registration,
+    exprs: &[D::Lpe],
+    paths: &[D::Path],
+) -> Outcome<D> {
     let mut built = Vec::new();
     let mut skipped = Vec::new();
     for e in engines {
-        match lang.compile(*e, exprs) {
+        match e.compile(exprs, registration) {
             Ok(m) => built.push((e.name(), m)),
             Err(why) => skipped.push((e.name(), why.to_string())),
         }
@@ -74,21 +92,21 @@ pub fn check_in<L: Language>(
         ..Agreement::default()
     };
     for path in paths {
-        let answers: Vec<Vec<bool>> = built.iter().map(|(_, m)| m.which(path)).collect();
+        let answers: Vec<lpe::AovMask> = built.iter().map(|(_, m)| m.which(path)).collect();
         if answers.windows(2).any(|w| w[0] != w[1]) {
             let original = (exprs.to_vec(), path.clone());
-            let (exprs, path) = minimize_in(lang, engines, exprs.to_vec(), path.clone());
+            let (exprs, path) = minimize_in(engines, registration, exprs.to_vec(), path.clone());
             return Outcome::Disagree(Box::new(Counterexample {
-                answers: answers_in(lang, engines, &exprs, &path),
-                lang: lang.clone(),
+                answers: answers_in(engines, registration, &exprs, &path),
+                registration: registration.clone(),
                 exprs,
                 path,
                 original,
             }));
         }
         if let Some(first) = answers.first() {
-            agreement.pairs += first.len();
-            agreement.matched += first.iter().filter(|&&b| b).count();
+            agreement.pairs += exprs.len();
+            agreement.matched += first.count();
         }
     }
     Outcome::Agree(agreement)
@@ -97,6 +115,7 @@ pub fn check_in<L: Language>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use lpe::renderman::{Path, RenderMan};
 
     #[test]
     fn agreement_counts_pairs_and_matches() {
@@ -110,7 +129,7 @@ mod tests {
                 assert_eq!(a.pairs, 3);
                 assert_eq!(a.matched, 2);
                 assert!(a.skipped.is_empty());
-                assert_eq!(a.engines, registry::all().len());
+                assert_eq!(a.engines, registry::all::<RenderMan>().len());
             }
             Outcome::Disagree(c) => panic!("{c}"),
         }

@@ -2,27 +2,28 @@
 
 use std::fmt;
 
-use super::language::{Language, RenderMan};
+use crate::dialect::EngineDialect;
 
 /// Engines that disagree, on a minimized input.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Counterexample<L: Language = RenderMan> {
-    /// The dialect, with what the expressions share (OSL's registered labels).
-    pub lang: L,
+#[derive(Clone, Debug)]
+pub struct Counterexample<D: EngineDialect> {
+    /// What the expressions were parsed under (OSL's registered labels), printed as
+    /// the report's context line ([`EngineDialect::context`]).
+    pub registration: D::Registration,
     /// The minimized expressions (one for [`check`](super::check())).
-    pub exprs: Vec<L::Expr>,
+    pub exprs: Vec<D::Lpe>,
     /// The minimized path.
-    pub path: L::Path,
+    pub path: D::Path,
     /// Each engine's answer per expression on `path`, or why it could not build.
     pub answers: Vec<(&'static str, Result<Vec<bool>, String>)>,
     /// The input before minimization.
-    pub original: (Vec<L::Expr>, L::Path),
+    pub original: (Vec<D::Lpe>, D::Path),
 }
 
-impl<L: Language> fmt::Display for Counterexample<L> {
+impl<D: EngineDialect> fmt::Display for Counterexample<D> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "engines disagree (minimized):")?;
-        let context = self.lang.context();
+        let context = D::context(&self.registration);
         if !context.is_empty() {
             writeln!(f, "  {context}")?;
         }

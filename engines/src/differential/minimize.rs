@@ -2,20 +2,18 @@
 //! shorter and less labelled paths ([`super::shrink`]), for as long as the engines still
 //! disagree.
 
-use lpe::renderman::{Lpe, Path};
-
 use super::answers::answers_in;
-use super::language::{Language, RenderMan};
+use crate::dialect::EngineDialect;
 use crate::engine::Engine;
 
 /// Whether at least two engines that build give different answers on `path`.
-fn disagrees<L: Language>(
-    lang: &L,
-    engines: &[&dyn Engine],
-    exprs: &[L::Expr],
-    path: &L::Path,
+fn disagrees<D: EngineDialect>(
+    engines: &[&dyn Engine<D>],
+    registration: &D::Registration,
+    exprs: &[D::Lpe],
+    path: &D::Path,
 ) -> bool {
-    let answers: Vec<Vec<bool>> = answers_in(lang, engines, exprs, path)
+    let answers: Vec<Vec<bool>> = answers_in(engines, registration, exprs, path)
         .into_iter()
         .filter_map(|(_, a)| a.ok())
         .collect();
@@ -25,21 +23,16 @@ fn disagrees<L: Language>(
 /// Most candidate inputs the minimizer tries (each compiles every engine once).
 const MAX_SHRINK_TRIES: usize = 20_000;
 
-/// Greedy minimization of a RenderMan disagreement ([`minimize_in`]).
-pub fn minimize(engines: &[&dyn Engine], exprs: Vec<Lpe>, path: Path) -> (Vec<Lpe>, Path) {
-    minimize_in(&RenderMan, engines, exprs, path)
-}
-
 /// Greedy minimization: take the first simpler input on which the engines still
 /// disagree, and start again from it, until no simpler input disagrees.
-pub fn minimize_in<L: Language>(
-    lang: &L,
-    engines: &[&dyn Engine],
-    exprs: Vec<L::Expr>,
-    path: L::Path,
-) -> (Vec<L::Expr>, L::Path) {
-    minimize_by(lang, exprs, path, |exprs, path| {
-        disagrees(lang, engines, exprs, path)
+pub fn minimize_in<D: EngineDialect>(
+    engines: &[&dyn Engine<D>],
+    registration: &D::Registration,
+    exprs: Vec<D::Lpe>,
+    path: D::Path,
+) -> (Vec<D::Lpe>, D::Path) {
+    minimize_by::<D>(registration, exprs, path, |exprs, path| {
+        disagrees(engines, registration, exprs, path)
     })
 }
 
@@ -48,12 +41,12 @@ pub fn minimize_in<L: Language>(
 /// and a path step together) on which `fails` still holds, and start again from it,
 /// until no simpler input fails. `lpe-check diff --external` passes a test that re-asks
 /// the external process.
-pub fn minimize_by<L: Language>(
-    lang: &L,
-    mut exprs: Vec<L::Expr>,
-    mut path: L::Path,
-    mut fails: impl FnMut(&[L::Expr], &L::Path) -> bool,
-) -> (Vec<L::Expr>, L::Path) {
+pub fn minimize_by<D: EngineDialect>(
+    registration: &D::Registration,
+    mut exprs: Vec<D::Lpe>,
+    mut path: D::Path,
+    mut fails: impl FnMut(&[D::Lpe], &D::Path) -> bool,
+) -> (Vec<D::Lpe>, D::Path) {
     let mut tries = 0;
     'outer: loop {
         // Fewer expressions first: a set of one is easiest to read.
@@ -69,7 +62,7 @@ pub fn minimize_by<L: Language>(
             }
         }
         for i in 0..exprs.len() {
-            for smaller in lang.shrink_expr(&exprs[i]) {
+            for smaller in D::shrink_expr(&exprs[i], registration) {
                 if tries >= MAX_SHRINK_TRIES {
                     break 'outer;
                 }
@@ -82,7 +75,7 @@ pub fn minimize_by<L: Language>(
                 }
             }
         }
-        let smaller_paths = lang.shrink_path(&path);
+        let smaller_paths = D::shrink_path(&path);
         for smaller in &smaller_paths {
             if tries >= MAX_SHRINK_TRIES {
                 break 'outer;
@@ -96,7 +89,7 @@ pub fn minimize_by<L: Language>(
         // Joint steps: dropping an atom often needs the vertex it matched dropped too
         // (`C.'a'L` on `C RD RD'b' L` -> `C'a'L` on `C RD'b' L`).
         for i in 0..exprs.len() {
-            for smaller in lang.shrink_expr(&exprs[i]) {
+            for smaller in D::shrink_expr(&exprs[i], registration) {
                 for smaller_path in &smaller_paths {
                     if tries >= MAX_SHRINK_TRIES {
                         break 'outer;
@@ -120,13 +113,15 @@ pub fn minimize_by<L: Language>(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use lpe::renderman::{Lpe, Path, RenderMan};
+
     use crate::adapters::Reference;
     use crate::differential::tests::LabelBlind;
     use crate::differential::{check_with, Outcome};
 
     #[test]
     fn a_planted_bug_is_found_and_minimized() {
-        let engines: Vec<&dyn Engine> = vec![&Reference, &LabelBlind];
+        let engines: Vec<&dyn Engine<RenderMan>> = vec![&Reference, &LabelBlind];
         let e = lpe::renderman::parse("unoccluded;C(<RD>|<TS>)*'floor'(.|U2)+[<L.>O]").unwrap();
         let p: Path = "C RD TS RD'wall' RS1 TS2 L".parse().unwrap();
         let Outcome::Disagree(c) = check_with(&engines, std::slice::from_ref(&e), &[p]) else {
@@ -145,7 +140,7 @@ mod tests {
 
     #[test]
     fn sets_shrink_to_the_member_that_disagrees() {
-        let engines: Vec<&dyn Engine> = vec![&Reference, &LabelBlind];
+        let engines: Vec<&dyn Engine<RenderMan>> = vec![&Reference, &LabelBlind];
         let exprs: Vec<Lpe> = ["C<RD>[<L.>O]", "C'key'L", "CD+L"]
             .iter()
             .map(|s| lpe::renderman::parse(s).unwrap())

@@ -1,10 +1,12 @@
 //! The differential harness: every engine on the same expressions and paths.
 //!
-//! - [`language`]: what the harness needs of a dialect ([`Language`]: compile, shrink), for [`RenderMan`] and [`Osl`] (with its registered labels); everything
-//!   below is written once over it.
+//! Everything here is written once over [`EngineDialect`](crate::EngineDialect) (what a
+//! dialect's expressions, paths and registration are, how they shrink); what a case
+//! shares is the dialect's registration, passed beside the expressions.
+//!
 //! - [`check`](mod@check): [`check()`] (one expression), [`check_set`] (an AOV set
-//!   compiled at once), [`check_with`] (chosen engines) and [`check_in`] (any dialect)
-//!   run each engine and compare the answers path by path. Agreement comes back with counts (pairs compared, how
+//!   compiled at once), [`check_with`] (chosen engines) and [`check_in`] (under a
+//!   registration) run each engine and compare the answers path by path. Agreement comes back with counts (pairs compared, how
 //!   many matched, which engines could not build); a disagreement comes back as a
 //!   minimized [`Counterexample`].
 //! - [`minimize`](mod@minimize): the minimizer, which takes [`shrink`]'s steps
@@ -13,8 +15,10 @@
 //!   is small enough to read; [`answers`]: each engine's answers on one path, which both
 //!   the comparison and the minimizer ask.
 //! - [`counterexample`]: what a disagreement reports, and how it prints.
-//! - [`cases`]: generated cases (expressions or AOV sets, with paths aimed at them),
-//!   deterministic per seed and index, and a run over a range of them (`lpe-check diff`).
+//! - [`generate`]: [`Generate`], a dialect's case generators (from `lpe_testkit`);
+//!   [`cases`]: generated cases (a registration, expressions or AOV sets, with paths
+//!   aimed at them), deterministic per seed and index, and a run over a range of them
+//!   (`lpe-check diff`).
 //!
 //! An engine that cannot build the input ([`EngineError`](crate::EngineError)) does not
 //! take part in that comparison; the skip is recorded in [`Agreement::skipped`] and
@@ -24,24 +28,22 @@ pub mod answers;
 pub mod cases;
 pub mod check;
 pub mod counterexample;
-pub mod language;
+pub mod generate;
 pub mod minimize;
 pub mod shrink;
 
-pub use answers::{answers_in, answers_of};
-pub use cases::{
-    case_rng, generate_case, generate_osl_case, run_cases, run_osl_cases, Case, Run, Totals,
-};
+pub use answers::answers_in;
+pub use cases::{case_rng, generate_case, run_cases, Case, Run, Totals};
 pub use check::{check, check_in, check_set, check_with, Agreement, Outcome};
 pub use counterexample::Counterexample;
-pub use language::{Language, Osl, RenderMan};
-pub use minimize::{minimize, minimize_by, minimize_in};
+pub use generate::Generate;
+pub use minimize::{minimize_by, minimize_in};
 pub use shrink::{shrink_expr, shrink_path};
 
 #[cfg(test)]
 pub(crate) mod tests {
     use lpe::renderman::ast::{Atom, Item};
-    use lpe::renderman::Lpe;
+    use lpe::renderman::{Lpe, Parser, RenderMan};
 
     use crate::adapters::ReferenceMatcher;
     use crate::engine::{Engine, EngineError, Matcher};
@@ -50,11 +52,15 @@ pub(crate) mod tests {
     /// the reference on the expression with every label item replaced by `.`.
     pub(crate) struct LabelBlind;
 
-    impl Engine for LabelBlind {
+    impl Engine<RenderMan> for LabelBlind {
         fn name(&self) -> &'static str {
             "label-blind"
         }
-        fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
+        fn compile(
+            &self,
+            exprs: &[Lpe],
+            _: &Parser,
+        ) -> Result<Box<dyn Matcher<RenderMan> + '_>, EngineError> {
             let mut blind = exprs.to_vec();
             for e in &mut blind {
                 e.operands_mut(&mut |x| {
@@ -65,7 +71,7 @@ pub(crate) mod tests {
                     })
                 });
             }
-            Ok(Box::new(ReferenceMatcher(blind)))
+            Ok(Box::new(ReferenceMatcher::<RenderMan>(blind)))
         }
     }
 }

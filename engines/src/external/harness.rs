@@ -12,15 +12,14 @@
 use std::fmt;
 use std::time::Duration;
 
-use lpe::osl::Registered;
-use lpe::DialectName;
-use lpe_testkit::generate::{self, Config as GenConfig};
+use lpe::renderman::RenderMan;
+use lpe::Dialect;
 
 use super::client::{Client, Fault, FaultKind, StartError};
-use super::dialect::Wire;
 use super::protocol::{AovSource, Body, Reply, Violation};
-use crate::differential::{generate_case, generate_osl_case, minimize_by, Osl, RenderMan, Run};
-use crate::engine::Engine;
+use crate::dialect::EngineDialect;
+use crate::differential::{generate_case, minimize_by, Generate, Run};
+use crate::engine::{bits, Engine};
 
 /// One side's verdict on a set and a path.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -177,15 +176,15 @@ impl fmt::Display for Finding {
     }
 }
 
-/// What to run.
+/// What to run, in dialect `D` (the dialect of the expressions and paths, and of the
+/// `hello`).
 #[derive(Clone, Debug)]
-pub struct Setup {
+pub struct Setup<D: Dialect> {
     /// The external command line (split like a shell does).
     pub command: String,
-    /// The dialect of the expressions and paths.
-    pub dialect: DialectName,
-    /// OSL: the labels registered for [`Cases::Given`] (generated cases carry their own).
-    pub registered: Registered,
+    /// What [`Cases::Given`] is parsed under (OSL's registered labels); generated cases
+    /// carry their own.
+    pub registration: D::Registration,
     /// Per-request timeout.
     pub timeout: Duration,
     /// Stop after this many processes restarted after faults.
@@ -256,11 +255,15 @@ fn sources(exprs: &[String]) -> Vec<AovSource> {
 }
 
 /// The two requests that ask about one set: `compile`, then `match` of all its paths.
-fn requests<L: Wire>(lang: &L, aovs: &[AovSource], paths: &[String]) -> [Body; 2] {
+fn requests<D: EngineDialect>(
+    registration: &D::Registration,
+    aovs: &[AovSource],
+    paths: &[String],
+) -> [Body; 2] {
     [
         Body::Compile {
             aovs: aovs.to_vec(),
-            registered: lang.registration(),
+            registered: D::wire_registration(registration),
         },
         Body::Match {
             paths: paths.to_vec(),
@@ -270,13 +273,13 @@ fn requests<L: Wire>(lang: &L, aovs: &[AovSource], paths: &[String]) -> [Body; 2
 
 /// The external side of one set, asked in one round trip: one answer per path (a
 /// rejection repeated), or `Ok(None)`: unsupported.
-fn ask<L: Wire>(
+fn ask<D: EngineDialect>(
     client: &mut Client,
-    lang: &L,
+    registration: &D::Registration,
     aovs: &[AovSource],
     paths: &[String],
 ) -> Result<Option<Vec<Answer>>, Fault> {
-    let (replies, fault) = client.pipeline(requests(lang, aovs, paths).into());
+    let (replies, fault) = client.pipeline(requests::<D>(registration, aovs, paths).into());
     match fault {
         Some(f) => Err(f),
         None => interpret(aovs, paths, &replies),
@@ -329,21 +332,21 @@ fn interpret(
 
 /// Our side: each engine's answer per path (`None`: could not build), or the parse
 /// error shared by every engine.
-fn ours<L: Wire>(
-    lang: &L,
-    engines: &[&dyn Engine],
-    parsed: &Result<Vec<L::Expr>, Answer>,
-    paths: &[L::Path],
+fn ours<D: EngineDialect>(
+    engines: &[&dyn Engine<D>],
+    registration: &D::Registration,
+    parsed: &Result<Vec<D::Lpe>, Answer>,
+    paths: &[D::Path],
 ) -> Vec<(&'static str, Vec<Option<Answer>>)> {
     engines
         .iter()
         .map(|e| {
             let answers = match parsed {
                 Err(rejected) => vec![Some(rejected.clone()); paths.len()],
-                Ok(exprs) => match lang.compile(*e, exprs) {
+                Ok(exprs) => match e.compile(exprs, registration) {
                     Ok(m) => paths
                         .iter()
-                        .map(|p| Some(Answer::Matches(m.which(p))))
+                        .map(|p| Some(Answer::Matches(bits(m.which(p), exprs.len()))))
                         .collect(),
                     Err(_) => vec![None; paths.len()],
                 },
@@ -354,107 +357,84 @@ fn ours<L: Wire>(
 }
 
 /// Parses expression texts as the CLI does, the first error as a rejection.
-fn parse_all<L: Wire>(lang: &L, exprs: &[String]) -> Result<Vec<L::Expr>, Answer> {
+fn parse_all<D: EngineDialect>(
+    registration: &D::Registration,
+    exprs: &[String],
+) -> Result<Vec<D::Lpe>, Answer> {
     exprs
         .iter()
         .enumerate()
         .map(|(i, e)| {
-            lang.parse_expr(e)
-                .map_err(|(position, message)| Answer::Rejected {
+            D::parse(e, registration).map_err(|err| {
+                let (position, message) = D::parse_error(&err);
+                Answer::Rejected {
                     aov: Some(i),
                     position: Some(position),
                     message,
-                })
+                }
+            })
         })
         .collect()
 }
 
-/// A case: its index (generated runs), dialect context, expressions and paths as text.
-type Item<L> = (Option<u64>, L, Vec<String>, Vec<String>);
+/// A case: its index (generated runs), registration, expressions and paths as text.
+type Item<D> = (
+    Option<u64>,
+    <D as Dialect>::Registration,
+    Vec<String>,
+    Vec<String>,
+);
 
 /// Cases per pipelined batch.
 const BATCH: usize = 64;
 
 /// Runs the cases against the external matcher.
-pub fn run(setup: &Setup, cases: &Cases, engines: &[&dyn Engine]) -> Result<Report, StartError> {
-    let client = Client::start(&setup.command, setup.dialect.name(), setup.timeout)?;
-    Ok(match setup.dialect {
-        DialectName::RenderMan => run_items(setup, client, engines, renderman_items(cases)),
-        DialectName::Osl => run_items(setup, client, engines, osl_items(setup, cases)),
-    })
+pub fn run<D: Generate>(
+    setup: &Setup<D>,
+    cases: &Cases,
+    engines: &[&dyn Engine<D>],
+) -> Result<Report, StartError> {
+    let client = Client::start(&setup.command, D::NAME, setup.timeout)?;
+    Ok(run_items(setup, client, engines, items(setup, cases)))
 }
 
-/// A given case's single item; the stop count (no limit for a given case).
-fn given<L>(lang: L, exprs: &[String], paths: &[String]) -> (usize, Vec<Item<L>>) {
-    (
-        usize::MAX,
-        vec![(None, lang, exprs.to_vec(), paths.to_vec())],
-    )
-}
-
-/// The generated items `first..first + cases` of `run`, by `generate(index)`.
-fn generated<L>(
-    run: &Run,
-    mut generate: impl FnMut(u64) -> (L, Vec<String>, Vec<String>),
-) -> (usize, Vec<Item<L>>) {
-    let list = (run.first..run.first.saturating_add(run.cases))
-        .map(|i| {
-            let (lang, exprs, paths) = generate(i);
-            (Some(i), lang, exprs, paths)
-        })
-        .collect();
-    (run.max_failures, list)
+/// The items of `cases`, and the stop count (no limit for a given case).
+fn items<D: Generate>(setup: &Setup<D>, cases: &Cases) -> (usize, Vec<Item<D>>) {
+    match cases {
+        Cases::Given { exprs, paths } => (
+            usize::MAX,
+            vec![(
+                None,
+                setup.registration.clone(),
+                exprs.to_vec(),
+                paths.to_vec(),
+            )],
+        ),
+        Cases::Generated(run) => {
+            // Set algebra is this toolkit's extension: other matchers do not speak it.
+            let cfg = D::without_set_algebra(D::config(run.max_size));
+            let list = (run.first..run.first.saturating_add(run.cases))
+                .map(|i| {
+                    let c = generate_case::<D>(run.seed, i, &cfg, run.paths);
+                    (Some(i), c.registration, texts(&c.exprs), texts(&c.paths))
+                })
+                .collect();
+            (run.max_failures, list)
+        }
+    }
 }
 
 fn texts<T: ToString>(xs: &[T]) -> Vec<String> {
     xs.iter().map(T::to_string).collect()
 }
 
-fn renderman_items(cases: &Cases) -> (usize, Vec<Item<RenderMan>>) {
-    match cases {
-        Cases::Given { exprs, paths } => given(RenderMan, exprs, paths),
-        Cases::Generated(run) => {
-            // Set algebra is this toolkit's extension: other matchers do not speak it.
-            let cfg = GenConfig::default()
-                .with_max_atoms(run.max_size)
-                .without_set_algebra();
-            generated(run, |i| {
-                let c = generate_case(run.seed, i, &cfg, run.paths);
-                (c.lang, texts(&c.exprs), texts(&c.paths))
-            })
-        }
-    }
-}
-
-fn osl_items(setup: &Setup, cases: &Cases) -> (usize, Vec<Item<Osl>>) {
-    match cases {
-        Cases::Given { exprs, paths } => given(
-            Osl {
-                registered: setup.registered.clone(),
-            },
-            exprs,
-            paths,
-        ),
-        Cases::Generated(run) => {
-            // As for RenderMan: OSL's own matcher has no set algebra.
-            let cfg = generate::osl::Config::default()
-                .with_max_vertices(run.max_size)
-                .without_set_algebra();
-            generated(run, |i| {
-                let c = generate_osl_case(run.seed, i, &cfg, run.paths);
-                (c.lang, texts(&c.exprs), texts(&c.paths))
-            })
-        }
-    }
-}
-
 /// Runs the items against the external matcher, stopping after `max_failures`
 /// disagreements.
-fn run_items<L: Wire>(
-    setup: &Setup,
+fn run_items<D: EngineDialect>(
+    setup: &Setup<D>,
     mut client: Client,
-    engines: &[&dyn Engine],
-    (max_failures, list): (usize, Vec<Item<L>>),
+    engines: &[&dyn Engine<D>],
+    (max_failures, list): (usize, Vec<Item<D>>),
 ) -> Report {
     let mut report = Report {
         name: client.name.clone(),
@@ -470,15 +450,15 @@ fn run_items<L: Wire>(
             break;
         }
         // One round trip per batch: every case's compile and match, pipelined.
-        let batch: Vec<Item<L>> = queue.drain(..queue.len().min(BATCH)).collect();
+        let batch: Vec<Item<D>> = queue.drain(..queue.len().min(BATCH)).collect();
         let bodies: Vec<Body> = batch
             .iter()
-            .flat_map(|(_, lang, exprs, paths)| requests(lang, &sources(exprs), paths))
+            .flat_map(|(_, reg, exprs, paths)| requests::<D>(reg, &sources(exprs), paths))
             .collect();
         let (replies, fault) = client.pipeline(bodies);
         let answered = replies.len() / 2;
         let mut fault = fault;
-        for (k, (case, lang, exprs, paths)) in batch.iter().enumerate() {
+        for (k, (case, registration, exprs, paths)) in batch.iter().enumerate() {
             if report.disagreements() >= max_failures {
                 report.stopped = Some(format!("{max_failures} disagreement(s) found"));
                 break 'batches;
@@ -498,7 +478,7 @@ fn run_items<L: Wire>(
                 &mut client,
                 engines,
                 *case,
-                lang,
+                registration,
                 exprs,
                 paths,
                 external,
@@ -514,23 +494,23 @@ fn run_items<L: Wire>(
 /// Compares the external answers on one case with every engine's; a disagreement is
 /// minimized and recorded.
 #[allow(clippy::too_many_arguments)]
-fn judge<L: Wire>(
-    setup: &Setup,
+fn judge<D: EngineDialect>(
+    setup: &Setup<D>,
     client: &mut Client,
-    engines: &[&dyn Engine],
+    engines: &[&dyn Engine<D>],
     case: Option<u64>,
-    lang: &L,
+    registration: &D::Registration,
     exprs: &[String],
     path_texts: &[String],
     external: Result<Option<Vec<Answer>>, Fault>,
     report: &mut Report,
 ) {
     let aovs = sources(exprs);
-    let parsed = parse_all(lang, exprs);
+    let parsed = parse_all::<D>(registration, exprs);
     // Generated paths always parse; given ones are checked by the caller.
-    let paths: Vec<L::Path> = path_texts
+    let paths: Vec<D::Path> = path_texts
         .iter()
-        .map(|p| lang.parse_path(p))
+        .map(|p| p.parse().ok())
         .collect::<Option<_>>()
         .unwrap_or_default();
     let external = match external {
@@ -548,7 +528,7 @@ fn judge<L: Wire>(
             return;
         }
     };
-    let ours = ours(lang, engines, &parsed, &paths);
+    let ours = ours(engines, registration, &parsed, &paths);
     if ours.iter().all(|(_, a)| a.iter().all(Option::is_none)) {
         report.uncompared += 1;
         return;
@@ -575,7 +555,7 @@ fn judge<L: Wire>(
                 let (e, p) = minimize(
                     setup,
                     client,
-                    lang,
+                    registration,
                     judge,
                     exprs.clone(),
                     path.clone(),
@@ -590,21 +570,26 @@ fn judge<L: Wire>(
         };
         // Ask both sides again on the minimized case, for the report.
         let min_exprs: Vec<String> = aovs_min.iter().map(|a| a.expr.clone()).collect();
-        let min_parsed = parse_all(lang, &min_exprs);
-        let min_paths: Vec<L::Path> = lang.parse_path(&path_min).into_iter().collect();
-        let external = match ask(client, lang, &aovs_min, std::slice::from_ref(&path_min)) {
+        let min_parsed = parse_all::<D>(registration, &min_exprs);
+        let min_paths: Vec<D::Path> = path_min.parse().ok().into_iter().collect();
+        let external = match ask::<D>(
+            client,
+            registration,
+            &aovs_min,
+            std::slice::from_ref(&path_min),
+        ) {
             Ok(Some(mut a)) if !a.is_empty() => a.swap_remove(0),
             _ => ext.clone(),
         };
-        let engines_answers = ours_on_one(lang, engines, &min_parsed, &min_paths);
+        let engines_answers = ours_on_one(engines, registration, &min_parsed, &min_paths);
         report
             .findings
             .push(Finding::Disagreement(Box::new(Disagreement {
                 case,
-                replay: replay(setup, lang, &min_exprs, &path_min),
+                replay: replay::<D>(setup, registration, &min_exprs, &path_min),
                 aovs: aovs_min,
                 path: path_min,
-                context: lang.context(),
+                context: D::context(registration),
                 external,
                 engines: engines_answers,
                 original,
@@ -613,13 +598,13 @@ fn judge<L: Wire>(
     }
 }
 
-fn ours_on_one<L: Wire>(
-    lang: &L,
-    engines: &[&dyn Engine],
-    parsed: &Result<Vec<L::Expr>, Answer>,
-    paths: &[L::Path],
+fn ours_on_one<D: EngineDialect>(
+    engines: &[&dyn Engine<D>],
+    registration: &D::Registration,
+    parsed: &Result<Vec<D::Lpe>, Answer>,
+    paths: &[D::Path],
 ) -> Vec<(&'static str, Option<Answer>)> {
-    ours(lang, engines, parsed, paths)
+    ours(engines, registration, parsed, paths)
         .into_iter()
         .map(|(n, mut a)| (n, if a.is_empty() { None } else { a.swap_remove(0) }))
         .collect()
@@ -628,22 +613,22 @@ fn ours_on_one<L: Wire>(
 /// Shrinks a disagreement, re-asking the external process at every candidate. Faults
 /// met on the way are findings too; the candidate that caused one does not count as a
 /// disagreement.
-fn minimize<L: Wire>(
-    setup: &Setup,
+fn minimize<D: EngineDialect>(
+    setup: &Setup<D>,
     client: &mut Client,
-    lang: &L,
-    engines: &[&dyn Engine],
-    exprs: Vec<L::Expr>,
-    path: L::Path,
+    registration: &D::Registration,
+    engines: &[&dyn Engine<D>],
+    exprs: Vec<D::Lpe>,
+    path: D::Path,
     report: &mut Report,
-) -> (Vec<L::Expr>, L::Path) {
-    minimize_by(lang, exprs, path, |exprs, path| {
+) -> (Vec<D::Lpe>, D::Path) {
+    minimize_by::<D>(registration, exprs, path, |exprs, path| {
         if client.restarts > setup.max_restarts {
             return false;
         }
         let texts: Vec<String> = exprs.iter().map(|e| e.to_string()).collect();
         let aovs = sources(&texts);
-        let ext = match ask(client, lang, &aovs, &[path.to_string()]) {
+        let ext = match ask::<D>(client, registration, &aovs, &[path.to_string()]) {
             Ok(Some(mut a)) if a.len() == 1 => a.swap_remove(0),
             Ok(_) => return false,
             Err(fault) => {
@@ -652,24 +637,30 @@ fn minimize<L: Wire>(
             }
         };
         let parsed = Ok(exprs.to_vec());
-        ours(lang, engines, &parsed, std::slice::from_ref(path))
+        ours(engines, registration, &parsed, std::slice::from_ref(path))
             .iter()
             .any(|(_, a)| a[0].as_ref().is_some_and(|o| !o.agrees(&ext)))
     })
 }
 
 /// The one-line command that replays a case.
-fn replay<L: Wire>(setup: &Setup, lang: &L, exprs: &[String], path: &str) -> String {
+fn replay<D: EngineDialect>(
+    setup: &Setup<D>,
+    registration: &D::Registration,
+    exprs: &[String],
+    path: &str,
+) -> String {
     let mut words = vec![
         "lpe-check".to_string(),
         "diff".into(),
         "--external".into(),
         setup.command.clone(),
     ];
-    if lang.dialect() != DialectName::RenderMan {
-        words.extend(["--dialect".into(), lang.dialect().name().to_string()]);
+    // RenderMan is `--dialect`'s default.
+    if D::NAME != RenderMan::NAME {
+        words.extend(["--dialect".into(), D::NAME.to_string()]);
     }
-    words.extend(lang.replay_args());
+    words.extend(D::replay_args(registration));
     for e in exprs {
         words.extend(["--expr".into(), e.clone()]);
     }
@@ -679,7 +670,19 @@ fn replay<L: Wire>(setup: &Setup, lang: &L, exprs: &[String], path: &str) -> Str
 
 #[cfg(test)]
 mod tests {
+    use lpe::osl::{Osl, Registered};
+    use lpe::renderman::Parser;
+
     use super::*;
+
+    fn setup<D: Dialect>() -> Setup<D> {
+        Setup {
+            command: String::new(),
+            registration: D::Registration::default(),
+            timeout: Duration::from_secs(1),
+            max_restarts: 0,
+        }
+    }
 
     /// Set algebra is this toolkit's extension: a generated run for an external matcher
     /// holds none, in either dialect (the in-process `diff` generates it).
@@ -693,28 +696,23 @@ mod tests {
             paths: 1,
             max_failures: 1,
         };
-        let setup = Setup {
-            command: String::new(),
-            dialect: DialectName::Osl,
-            registered: Registered::none(),
-            timeout: Duration::from_secs(1),
-            max_restarts: 0,
-        };
-        let (_, items) = osl_items(&setup, &Cases::Generated(run.clone()));
+        let (_, osl) = items(&setup::<Osl>(), &Cases::Generated(run.clone()));
         let mut exprs = 0;
-        for (_, lang, texts, _) in &items {
+        for (_, registered, texts, _) in &osl {
+            let registered: &Registered = registered;
             for t in texts {
-                let l = lpe::osl::parse(t, &lang.registered).unwrap();
+                let l = lpe::osl::parse(t, registered).unwrap();
                 assert!(l.algebra.is_none(), "{t}");
                 exprs += 1;
             }
         }
         // Without the filter about one in twelve would hold algebra.
         assert!(exprs >= 400, "{exprs}");
-        let (_, items) = renderman_items(&Cases::Generated(run));
-        for (_, _, texts, _) in &items {
+        let (_, renderman) = items(&setup::<RenderMan>(), &Cases::Generated(run));
+        for (_, parser, texts, _) in &renderman {
+            let parser: &Parser = parser;
             for t in texts {
-                assert!(lpe::renderman::parse(t).unwrap().algebra.is_none(), "{t}");
+                assert!(parser.parse(t).unwrap().algebra.is_none(), "{t}");
             }
         }
     }

@@ -13,7 +13,6 @@
 //!   [`crate::differential::shrink`]), a replay command per finding.
 
 pub mod client;
-pub mod dialect;
 pub mod harness;
 pub mod process;
 pub mod protocol;

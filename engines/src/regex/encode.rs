@@ -21,7 +21,9 @@
 
 use std::collections::HashMap;
 
-use lpe::renderman::{Event, Vertex, VertexType};
+use lpe::renderman::{Event, Path, RenderMan, Vertex, VertexType};
+
+use super::translation::Encoder;
 
 /// Bytes per encoded vertex.
 pub const WIDTH: usize = 3;
@@ -139,6 +141,17 @@ pub struct VertexSet {
     /// a translation builds several sets per atom, and a heap block each was most of
     /// the engine's allocations under the fuzzers' AddressSanitizer.
     cells: [LabelMask; TYPES * EVENTS],
+}
+
+/// A RenderMan path is its vertices' encodings, one after another.
+impl Encoder<RenderMan> for Labels {
+    fn encode(&self, path: &Path) -> Vec<u8> {
+        let mut bytes = Vec::with_capacity(path.len() * WIDTH);
+        for v in path.vertices() {
+            encode_vertex(self, v, &mut bytes);
+        }
+        bytes
+    }
 }
 
 impl VertexSet {

@@ -3,7 +3,9 @@
 //! algebra over the finite vertex universe ([`translate`](mod@translate)); OSL
 //! expressions translated over a byte encoding of the path's *symbol stream* ([`osl`]),
 //! a different model from the fast matcher's vertex classes, so the two check each
-//! other.
+//! other. The engine is written once: each dialect hands it a [`Translation`]
+//! ([`translation`]: patterns, and the [`Encoder`] of its paths) through
+//! [`EngineDialect::oracle`]; a dialect without one is refused.
 //!
 //! One compile builds **one** multi-pattern automaton for the whole set of expressions
 //! (`MatchKind::All`, anchored start, `$` at the end of every pattern); one overlapping
@@ -26,20 +28,24 @@ pub mod encode;
 pub mod error;
 pub mod osl;
 pub mod translate;
+pub mod translation;
 
 use std::cell::RefCell;
 
-use lpe::algebra::Algebra;
-use lpe::renderman::{Lpe, Path};
+use lpe::algebra::{formulas, Algebra};
+use lpe::renderman::Lpe;
+use lpe::{AovMask, Dialect};
 use regex_automata::dfa::{dense, Automaton};
 use regex_automata::hybrid;
 use regex_automata::nfa::thompson::{self, WhichCaptures, NFA};
 use regex_automata::{Anchored, Input, MatchKind, PatternSet};
 use regex_syntax::hir::{Hir, Look};
 
-use crate::engine::{Engine, EngineError, Matcher};
+use crate::dialect::EngineDialect;
+use crate::engine::{fits_mask, Engine, EngineError, Matcher};
 use encode::Labels;
 pub use error::BuildError;
+pub use translation::{Encoder, Translation};
 
 /// Limits on what one compile may allocate.
 #[derive(Clone, Copy, Debug)]
@@ -147,8 +153,9 @@ impl Program {
     }
 }
 
-struct RegexMatcher {
-    labels: Labels,
+/// A compiled set: the path encoding, the automaton over it, and how operands combine.
+struct RegexMatcher<D: Dialect> {
+    encoder: Box<dyn Encoder<D>>,
     /// One pattern per operand.
     program: Program,
     /// Per expression, its set algebra over pattern ids (a plain expression is one).
@@ -156,12 +163,13 @@ struct RegexMatcher {
 }
 
 impl RegexEngine {
-    fn build(&self, exprs: &[Lpe]) -> Result<RegexMatcher, BuildError> {
-        let (labels, hirs) = translate(exprs)?;
+    fn build<D: EngineDialect>(&self, exprs: &[D::Lpe]) -> Result<RegexMatcher<D>, EngineError> {
+        fits_mask(exprs.len())?;
+        let Translation { encoder, hirs } = D::oracle(exprs)?;
         Ok(RegexMatcher {
-            labels,
+            encoder,
             program: self.program(&hirs)?,
-            formulas: Lpe::formulas(exprs),
+            formulas: formulas(exprs),
         })
     }
 
@@ -222,85 +230,74 @@ impl RegexEngine {
     }
 }
 
-impl Matcher for RegexMatcher {
-    fn which(&self, path: &Path) -> Vec<bool> {
-        let mut bytes = Vec::with_capacity(path.len() * encode::WIDTH);
-        for v in path.vertices() {
-            encode::encode_vertex(&self.labels, v, &mut bytes);
-        }
-        combine(&self.formulas, &self.program.which(&bytes, path))
+impl<D: Dialect> Matcher<D> for RegexMatcher<D> {
+    fn which(&self, path: &D::Path) -> AovMask {
+        let operands = self.program.which(&self.encoder.encode(path), path);
+        combine(&self.formulas, &operands)
     }
 }
 
 /// Set algebra combines the per-operand answers: per expression, its formula over
 /// pattern ids.
-fn combine(formulas: &[Algebra<usize>], operands: &[bool]) -> Vec<bool> {
+fn combine(formulas: &[Algebra<usize>], operands: &[bool]) -> AovMask {
     formulas
         .iter()
-        .map(|f| f.eval(&mut |&i| operands[i]))
+        .enumerate()
+        .filter(|(_, f)| f.eval(&mut |&i| operands[i]))
+        .map(|(i, _)| i)
         .collect()
 }
 
-/// An OSL set: the symbol interning and the automaton over symbol streams, one pattern
-/// per operand.
-struct OslRegexMatcher {
-    symbols: osl::Symbols,
-    program: Program,
-    /// Per expression, its set algebra over pattern ids (a plain expression is one).
-    formulas: Vec<Algebra<usize>>,
-}
-
-impl Matcher<lpe::osl::Path> for OslRegexMatcher {
-    fn which(&self, path: &lpe::osl::Path) -> Vec<bool> {
-        let operands = self.program.which(&self.symbols.encode_path(path), path);
-        combine(&self.formulas, &operands)
-    }
-}
-
-impl RegexEngine {
-    fn build_osl(&self, exprs: &[lpe::osl::Lpe]) -> Result<OslRegexMatcher, BuildError> {
-        let (symbols, hirs) = osl::translate(exprs)?;
-        Ok(OslRegexMatcher {
-            symbols,
-            program: self.program(&hirs)?,
-            formulas: lpe::osl::Lpe::formulas(exprs),
-        })
-    }
-}
-
-impl Engine for RegexEngine {
+// The registration is in the parsed trees (RenderMan's macros expanded, OSL's eaters'
+// exclusions), which is all a translation reads.
+impl<D: EngineDialect> Engine<D> for RegexEngine {
     fn name(&self) -> &'static str {
         "oracle"
     }
 
-    fn compile(&self, exprs: &[Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
-        Ok(Box::new(self.build(exprs)?))
-    }
-
-    // The registered labels are in the parsed trees (the eaters' exclusions), which is
-    // all the translation interns.
-    fn compile_osl(
+    fn compile(
         &self,
-        exprs: &[lpe::osl::Lpe],
-        _: &lpe::osl::Registered,
-    ) -> Result<Box<dyn Matcher<lpe::osl::Path> + '_>, EngineError> {
-        Ok(Box::new(self.build_osl(exprs)?))
+        exprs: &[D::Lpe],
+        _: &D::Registration,
+    ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+        Ok(Box::new(self.build::<D>(exprs)?))
     }
 }
 
 /// Whether one expression matches the whole path (`Err` if the engine cannot build it).
-pub fn is_match(lpe: &Lpe, path: &Path) -> Result<bool, BuildError> {
-    let m = LAZY.build(std::slice::from_ref(lpe))?;
-    Ok(m.which(path)[0])
+pub fn is_match<D: EngineDialect>(lpe: &D::Lpe, path: &D::Path) -> Result<bool, EngineError> {
+    let m = LAZY.build::<D>(std::slice::from_ref(lpe))?;
+    Ok(m.which(path).contains(0))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use lpe::renderman::{Parser, Path, RenderMan};
+
+    /// `engine`'s RenderMan matcher for `exprs`.
+    fn compile<'e>(
+        engine: &'e RegexEngine,
+        exprs: &[Lpe],
+    ) -> Result<Box<dyn Matcher<RenderMan> + 'e>, EngineError> {
+        Engine::<RenderMan>::compile(engine, exprs, &Parser::default())
+    }
+
+    /// The answers to `n` expressions.
+    fn answers(m: &dyn Matcher<RenderMan>, path: &Path, n: usize) -> Vec<bool> {
+        crate::engine::bits(m.which(path), n)
+    }
+
+    fn is_match(lpe: &Lpe, path: &Path) -> Result<bool, EngineError> {
+        super::is_match::<RenderMan>(lpe, path)
+    }
 
     /// Whether `engine` built the dense form for `exprs`.
     fn dense(engine: &RegexEngine, exprs: &[Lpe]) -> bool {
-        matches!(engine.build(exprs).unwrap().program.dfa, Searcher::Dense(_))
+        matches!(
+            engine.build::<RenderMan>(exprs).unwrap().program.dfa,
+            Searcher::Dense(_)
+        )
     }
 
     /// The lazy and the eager automaton's answer, which must be the same.
@@ -312,8 +309,8 @@ mod tests {
         // comparison below could be the lazy DFA against itself.
         assert!(dense(&EAGER, std::slice::from_ref(&lpe)), "{lpe}");
         assert!(!dense(&LAZY, std::slice::from_ref(&lpe)), "{lpe}");
-        let eager = EAGER.compile(std::slice::from_ref(&lpe)).unwrap();
-        assert_eq!(eager.which(&path), [lazy], "{lpe} on {path}");
+        let eager = compile(&EAGER, std::slice::from_ref(&lpe)).unwrap();
+        assert_eq!(answers(&*eager, &path, 1), [lazy], "{lpe} on {path}");
         lazy
     }
 
@@ -365,7 +362,7 @@ mod tests {
             .map(|i| format!("'l{i}'"))
             .collect();
         let lpe = lpe::renderman::parse(&format!("C[{labels}]L")).unwrap();
-        let r = LAZY.compile(std::slice::from_ref(&lpe));
+        let r = compile(&LAZY, std::slice::from_ref(&lpe));
         assert!(matches!(
             r,
             Err(EngineError::Regex(BuildError::TooManyLabels { labels, max }))
@@ -388,21 +385,21 @@ mod tests {
         assert!(dense(&EAGER, &exprs));
         assert!(!dense(&LAZY, &exprs));
         for engine in [&LAZY, &EAGER] {
-            let m = engine.compile(&exprs).unwrap();
+            let m = compile(engine, &exprs).unwrap();
             let p: Path = "C RD RS RD L".parse().unwrap();
             assert_eq!(
-                m.which(&p),
+                answers(&*m, &p, 7),
                 [false, true, false, false, false, false, false]
             );
             let p: Path = "C O".parse().unwrap();
             assert_eq!(
-                m.which(&p),
+                answers(&*m, &p, 7),
                 [false, false, false, false, false, false, true]
             );
             // The pattern set is fresh per search: a second path does not inherit answers.
             let p: Path = "C TS8 L".parse().unwrap();
             assert_eq!(
-                m.which(&p),
+                answers(&*m, &p, 7),
                 [false, false, false, false, false, true, false]
             );
         }
@@ -411,7 +408,7 @@ mod tests {
     #[test]
     fn huge_counts_are_a_typed_refusal_not_a_hang() {
         let lpe = lpe::renderman::parse("C(.{0,200}){200}L").unwrap();
-        let r = LAZY.compile(std::slice::from_ref(&lpe));
+        let r = compile(&LAZY, std::slice::from_ref(&lpe));
         assert!(matches!(r, Err(EngineError::Regex(BuildError::Nfa(_)))));
     }
 
@@ -420,14 +417,17 @@ mod tests {
         // "the 20th vertex from the end is diffuse": exponential for any DFA.
         let lpe = lpe::renderman::parse("C.*D.{20}L").unwrap();
         assert!(!dense(&EAGER, std::slice::from_ref(&lpe)));
-        let m = EAGER.compile(std::slice::from_ref(&lpe)).unwrap();
+        let m = compile(&EAGER, std::slice::from_ref(&lpe)).unwrap();
         let mut text = String::from("C RS RD");
         for _ in 0..20 {
             text.push_str(" RS");
         }
         text.push_str(" L");
-        assert_eq!(m.which(&text.parse().unwrap()), [true]);
-        assert_eq!(m.which(&text.replace("RD", "RS").parse().unwrap()), [false]);
+        assert_eq!(answers(&*m, &text.parse().unwrap(), 1), [true]);
+        assert_eq!(
+            answers(&*m, &text.replace("RD", "RS").parse().unwrap(), 1),
+            [false]
+        );
     }
 
     #[test]
@@ -443,8 +443,14 @@ mod tests {
             .iter()
             .map(|s| lpe::renderman::parse(s).unwrap())
             .collect();
-        let m = LAZY.compile(&exprs).unwrap();
-        assert_eq!(m.which(&"C L".parse().unwrap()), [false, true, false]);
-        assert_eq!(m.which(&"C RD L".parse().unwrap()), [true, false, true]);
+        let m = compile(&LAZY, &exprs).unwrap();
+        assert_eq!(
+            answers(&*m, &"C L".parse().unwrap(), 3),
+            [false, true, false]
+        );
+        assert_eq!(
+            answers(&*m, &"C RD L".parse().unwrap(), 3),
+            [true, false, true]
+        );
     }
 }

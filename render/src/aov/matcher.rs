@@ -14,6 +14,8 @@
 //! regex-automata engine (`oracle`).
 
 use lpe::renderman::{Lpe, Path, RenderMan, Vertex, VertexType};
+#[cfg(feature = "engines")]
+use lpe::renderman::Parser;
 use lpe::DialectName;
 
 use super::vertex::{SceneClassifier, SceneDialect, SceneVertex};
@@ -130,9 +132,9 @@ fn check_count(aovs: &[Lpe]) -> Result<(), MatcherError> {
 /// compiles its own on first use.
 #[cfg(feature = "engines")]
 pub struct CheckEngine {
-    engine: &'static dyn lpe_engines::Engine,
+    engine: &'static dyn lpe_engines::Engine<RenderMan>,
     aovs: Vec<Lpe>,
-    compiled: Vec<Mutex<Option<Box<dyn lpe_engines::Matcher>>>>,
+    compiled: Vec<Mutex<Option<Box<dyn lpe_engines::Matcher<RenderMan>>>>>,
 }
 
 #[cfg(feature = "engines")]
@@ -140,14 +142,16 @@ impl CheckEngine {
     /// Compiles `aovs` with `engine` once up front, so an engine that cannot build the
     /// set says so here and not mid-render.
     pub fn new(
-        engine: &'static dyn lpe_engines::Engine,
+        engine: &'static dyn lpe_engines::Engine<RenderMan>,
         aovs: &[Lpe],
     ) -> Result<CheckEngine, MatcherError> {
         check_count(aovs)?;
-        let first = engine.compile(aovs).map_err(|e| MatcherError::Engine {
-            engine: engine.name(),
-            reason: e.to_string(),
-        })?;
+        let first = engine
+            .compile(aovs, &Parser::default())
+            .map_err(|e| MatcherError::Engine {
+                engine: engine.name(),
+                reason: e.to_string(),
+            })?;
         let mut compiled: Vec<_> = (0..SLOTS).map(|_| Mutex::new(None)).collect();
         compiled[0] = Mutex::new(Some(first));
         Ok(CheckEngine {
@@ -165,14 +169,10 @@ impl WholePath for CheckEngine {
             .unwrap_or_else(|e| e.into_inner());
         let m = slot.get_or_insert_with(|| {
             self.engine
-                .compile(&self.aovs)
+                .compile(&self.aovs, &Parser::default())
                 .expect("the engine compiled this set in CheckEngine::new")
         });
         m.which(path)
-            .into_iter()
-            .enumerate()
-            .filter_map(|(i, hit)| hit.then_some(i))
-            .collect()
     }
 }
 

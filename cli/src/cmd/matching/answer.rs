@@ -1,13 +1,12 @@
-//! What both dialects of `lpe-check match` share: the arguments, the verdict over every
+//! What every dialect of `lpe-check match` shares: the arguments, the verdict over every
 //! engine, and the answering of paths and batch lines. Apart from the command, so that
-//! the OSL side ([`crate::cmd::match_osl`]) reads it without importing the command that
-//! dispatches to it.
+//! the dialects' files ([`super::renderman`], [`super::osl`]) read it without importing
+//! the command that dispatches to them.
 
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
 
-use lpe_engines::differential::Language;
-use lpe_engines::Engine;
+use lpe_engines::{Engine, EngineDialect};
 
 use crate::input::{bad_input, DialectArgs};
 
@@ -64,18 +63,20 @@ impl std::fmt::Display for Verdict {
     }
 }
 
-/// [`verdict`](super::verdict) in any dialect.
-pub fn verdict_in<L: Language>(
-    lang: &L,
-    engines: &[&dyn Engine],
-    lpe: &L::Expr,
-    path: &L::Path,
+/// Runs every engine on one expression, parsed under `registration`, and one path. An
+/// engine that cannot build the expression is reported but does not count as
+/// disagreeing.
+pub fn verdict<D: EngineDialect>(
+    engines: &[&dyn Engine<D>],
+    registration: &D::Registration,
+    lpe: &D::Lpe,
+    path: &D::Path,
 ) -> Verdict {
     let mut answers = Vec::new();
     let mut skips = Vec::new();
     for e in engines {
-        match lang.compile(*e, std::slice::from_ref(lpe)) {
-            Ok(m) => answers.push((e.name(), m.which(path)[0])),
+        match e.compile(std::slice::from_ref(lpe), registration) {
+            Ok(m) => answers.push((e.name(), m.which(path).contains(0))),
             Err(why) => skips.push((e.name(), format!("skip({why})"))),
         }
     }

@@ -105,11 +105,11 @@ fn shrink_vertex(v: &VertexPattern, basic: &[Symbol]) -> Vec<VertexPattern> {
 
 #[cfg(test)]
 mod tests {
-    use lpe::osl::{self, Expr, Registered};
+    use lpe::osl::{self, Expr, Osl, Registered};
 
     use super::*;
-    use crate::adapters::{OslReferenceMatcher, Reference};
-    use crate::differential::{check_in, Osl, Outcome};
+    use crate::adapters::{Reference, ReferenceMatcher};
+    use crate::differential::{check_in, Outcome};
     use crate::engine::{Engine, EngineError, Matcher};
 
     /// A deliberately wrong engine: its eaters skip every symbol, basic labels included
@@ -129,35 +129,31 @@ mod tests {
         }
     }
 
-    impl Engine for EaterBlind {
+    impl Engine<Osl> for EaterBlind {
         fn name(&self) -> &'static str {
             "eater-blind"
         }
-        fn compile(&self, _: &[lpe::renderman::Lpe]) -> Result<Box<dyn Matcher + '_>, EngineError> {
-            Err(EngineError::Unsupported(lpe::DialectName::RenderMan))
-        }
-        fn compile_osl(
+        fn compile(
             &self,
             exprs: &[osl::Lpe],
             _: &Registered,
-        ) -> Result<Box<dyn Matcher<osl::Path> + '_>, EngineError> {
+        ) -> Result<Box<dyn Matcher<Osl> + '_>, EngineError> {
             let mut exprs = exprs.to_vec();
             exprs.iter_mut().for_each(|e| blind(&mut e.expr));
-            Ok(Box::new(OslReferenceMatcher(exprs)))
+            Ok(Box::new(ReferenceMatcher::<Osl>(exprs)))
         }
     }
 
     #[test]
-    fn a_planted_osl_bug_is_found_and_minimized() {
-        let engines: Vec<&dyn Engine> = vec![&Reference, &EaterBlind];
+    fn a_planted_bug_is_found_and_minimized_in_the_osl_dialect() {
+        let engines: Vec<&dyn Engine<Osl>> = vec![&Reference, &EaterBlind];
         let reg: Registered = "events=U".parse().unwrap();
         let exprs: Vec<osl::Lpe> = ["C<RD>[LO]", "C(<.[GS]>|'foo')*<TD'key'>.*[LO]"]
             .iter()
             .map(|s| osl::parse(s, &reg).unwrap())
             .collect();
         let path: Path = "C,_ R,G T,S,foo T,D,key,U,x L,_,key".parse().unwrap();
-        let lang = Osl { registered: reg };
-        let Outcome::Disagree(c) = check_in(&lang, &engines, &exprs, &[path]) else {
+        let Outcome::Disagree(c) = check_in(&engines, &reg, &exprs, &[path]) else {
             panic!("the planted bug went unnoticed");
         };
         // Down to one vertex pattern and one vertex whose only extra label is the

@@ -10,46 +10,48 @@
 //! `disagree: expected=… <engine>=…` (exit 3), so the test file itself is a check. Any
 //! further column is an error; blank lines and `#` comments are echoed.
 
-use std::process::ExitCode;
-
-use lpe::osl::{self, Registered};
-use lpe_engines::differential::Osl;
+use lpe::osl::{self, Lpe, Osl, Registered};
 use lpe_engines::Engine;
 
-use super::matching::answer::{answer_paths, batch, verdict_in, Args, LineOutcome, Verdict};
-use crate::input::{bad_input, osl_error};
+use super::answer::{verdict, Args, LineOutcome, Verdict};
+use super::dialect::MatchDialect;
+use crate::input::osl_error;
 
-/// Runs `lpe-check match --dialect osl`.
-pub fn run(args: &Args, engines: &[&'static dyn Engine]) -> ExitCode {
-    let registered = match args.lang.registered(args.ini.as_deref()) {
-        Ok(r) => r,
-        Err(e) => return bad_input(format!("error: {e}")),
-    };
-    if args.batch {
-        if args.lang.register.is_some() {
-            return bad_input(
-                "error: --batch reads the registration from each line's second column",
+impl MatchDialect for Osl {
+    const EXAMPLE_PATH: &'static str = "C,_ R,D L,_";
+
+    /// `--register`'s labels; with `--batch` each line brings its own, and the flag is
+    /// refused.
+    fn registration(args: &Args) -> Result<Registered, String> {
+        let registered = args
+            .lang
+            .registered(args.ini.as_deref())
+            .map_err(|e| format!("error: {e}"))?;
+        if args.batch && args.lang.register.is_some() {
+            return Err(
+                "error: --batch reads the registration from each line's second column".into(),
             );
         }
-        return batch(|line| batch_line(engines, line));
+        Ok(registered)
     }
-    let expr = args.expr.as_deref().unwrap_or_default();
-    let lpe = match osl::parse_source(expr, &registered) {
-        Ok(l) => l,
-        Err(e) => return bad_input(osl_error(expr, &e)),
-    };
-    for w in &lpe.warnings {
-        eprintln!("warning: {w}");
+
+    /// Read as a source (a pipeline's `lpe:` mark allowed); its warnings go to stderr.
+    fn parse_arg(src: &str, registered: &Registered) -> Result<Lpe, String> {
+        let lpe = osl::parse_source(src, registered).map_err(|e| osl_error(src, &e))?;
+        for w in &lpe.warnings {
+            eprintln!("warning: {w}");
+        }
+        Ok(lpe)
     }
-    let lang = Osl { registered };
-    answer_paths(&args.paths, "C,_ R,D L,_", |text| {
-        let p = text.parse::<osl::Path>().map_err(|e| e.to_string())?;
-        Ok(verdict_in(&lang, engines, &lpe, &p))
-    })
+
+    fn batch_line(engines: &[&dyn Engine<Osl>], _: &Registered, line: &str) -> LineOutcome {
+        batch_line(engines, line)
+    }
 }
 
-/// Answers one `EXPR<TAB>REGISTERED<TAB>PATH[<TAB>MATCH|NOMATCH]` line.
-pub fn batch_line(engines: &[&dyn Engine], line: &str) -> LineOutcome {
+/// Answers one `EXPR<TAB>REGISTERED<TAB>PATH[<TAB>MATCH|NOMATCH]` line, under the
+/// line's own registration.
+fn batch_line(engines: &[&dyn Engine<Osl>], line: &str) -> LineOutcome {
     let cols: Vec<&str> = line.split('\t').collect();
     let (expr, reg, path, expected) = match cols[..] {
         [e, r, p] => (e, r, p, None),
@@ -81,7 +83,7 @@ pub fn batch_line(engines: &[&dyn Engine], line: &str) -> LineOutcome {
         Ok(p) => p,
         Err(e) => return LineOutcome::Error(format!("path: {e}")),
     };
-    let v = verdict_in(&Osl { registered }, engines, &lpe, &path);
+    let v = verdict(engines, &registered, &lpe, &path);
     LineOutcome::Ran(match (expected, &v) {
         (Some(want), Verdict::Match | Verdict::NoMatch) if want != (v == Verdict::Match) => {
             let shown = |b: bool| if b { "match" } else { "no-match" }.to_string();

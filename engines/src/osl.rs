@@ -1,0 +1,101 @@
+//! OSL on this crate's seams: its [`EngineDialect`] (the symbol-stream reference
+//! matcher of `lpe_reference::osl`, the oracle's translation of `regex/osl.rs`, the
+//! shrinker's moves of `differential/shrink/osl.rs`, its registered labels on the wire
+//! and in replays) and its generators ([`Generate`], `lpe_testkit::generate::osl`).
+
+use lpe::osl::{Error, Expr, Lpe, Osl, Path, Registered};
+use lpe_testkit::generate::{self, Choices};
+
+use crate::dialect::EngineDialect;
+use crate::differential::shrink;
+use crate::differential::Generate;
+use crate::engine::EngineError;
+use crate::external::protocol::Registration;
+use crate::regex::{self, Translation};
+
+impl EngineDialect for Osl {
+    fn reference(lpe: &Lpe, path: &Path) -> bool {
+        lpe_reference::osl::is_match(lpe, path)
+    }
+
+    fn oracle(exprs: &[Lpe]) -> Result<Translation<Osl>, EngineError> {
+        let (symbols, hirs) = regex::osl::translate(exprs)?;
+        Ok(Translation {
+            encoder: Box::new(symbols),
+            hirs,
+        })
+    }
+
+    fn shrink_expr(e: &Lpe, registered: &Registered) -> Vec<Lpe> {
+        let basic = registered.basic_labels();
+        shrink::shrink_set_expr(
+            e,
+            |x| shrink::osl::shrink_expr(x, &basic),
+            Lpe::from_algebra,
+        )
+    }
+
+    fn shrink_path(p: &Path) -> Vec<Path> {
+        shrink::osl::shrink_path(p)
+    }
+
+    fn context(registered: &Registered) -> String {
+        format!("registered: {registered}")
+    }
+
+    /// Always sent, empty lists when nothing is registered: an OSL matcher's
+    /// registration is per set.
+    fn wire_registration(registered: &Registered) -> Option<Registration> {
+        Some(Registration::from(registered))
+    }
+
+    fn replay_args(registered: &Registered) -> Vec<String> {
+        if *registered == Registered::none() {
+            Vec::new()
+        } else {
+            vec!["--register".into(), registered.to_string()]
+        }
+    }
+
+    fn parse_error(e: &Error) -> (usize, String) {
+        (e.pos, e.message())
+    }
+
+    fn registration_line(line: &str) -> Option<Registered> {
+        line.parse().ok()
+    }
+
+    /// The trees only: warnings carry source positions, which reprinting moves.
+    fn same_tree(a: &Lpe, b: &Lpe) -> bool {
+        a.expr == b.expr
+    }
+}
+
+impl Generate for Osl {
+    type Config = generate::osl::Config;
+
+    fn config(max_size: usize) -> Self::Config {
+        generate::osl::Config::default().with_max_vertices(max_size)
+    }
+
+    fn without_set_algebra(cfg: Self::Config) -> Self::Config {
+        cfg.without_set_algebra()
+    }
+
+    fn registration(c: &mut impl Choices) -> Registered {
+        generate::osl::registered(c)
+    }
+
+    fn lpe(c: &mut impl Choices, registered: &Registered, cfg: &Self::Config) -> Lpe {
+        generate::osl::lpe(c, registered, cfg)
+    }
+
+    fn biased_path(
+        target: &Expr,
+        c: &mut impl Choices,
+        registered: &Registered,
+        cfg: &Self::Config,
+    ) -> Path {
+        generate::osl::biased_path(target, c, registered, cfg)
+    }
+}
