@@ -2,8 +2,6 @@
 //! `--register` (read by each dialect's [`CliDialect`]); the errors they report are
 //! [`InputError`]'s.
 
-use lpe::osl::Osl;
-use lpe::renderman::RenderMan;
 use lpe_engines::{Engine, EngineDialect};
 
 use crate::dialect::CliDialect;
@@ -29,25 +27,6 @@ impl DialectArgs {
     ) -> Result<D::Registration, InputError> {
         D::registration(ini, self.register.as_deref())
     }
-
-    /// Whether the OSL dialect is asked for; with RenderMan, `--register` is an error.
-    /// For `match` and `external`, which do not go through [`CliDialect`] yet.
-    pub fn is_osl(&self) -> Result<bool, InputError> {
-        match (self.dialect, &self.register) {
-            (lpe::DialectName::Osl, _) => Ok(true),
-            (_, Some(_)) => Err(InputError::RegisterWithoutOsl),
-            (_, None) => Ok(false),
-        }
-    }
-
-    /// The OSL registration (`-` when not given); `--ini` is an error with OSL. For
-    /// `match` and `external`, which do not go through [`CliDialect`] yet.
-    pub fn registered(
-        &self,
-        ini: Option<&std::path::Path>,
-    ) -> Result<lpe::osl::Registered, InputError> {
-        self.registration::<Osl>(ini)
-    }
 }
 
 /// Reports bad input (an argument, a file, an expression) on stderr: exit status 2.
@@ -69,17 +48,4 @@ pub fn select_engines<D: EngineDialect>(
             name: name.to_string(),
             available: lpe_engines::names(),
         })
-}
-
-/// The parser for the built-in macros, or for those plus an ini file's. For `match`,
-/// which does not go through [`CliDialect`] yet.
-pub fn load_parser(ini: Option<&std::path::Path>) -> Result<lpe::renderman::Parser, InputError> {
-    RenderMan::registration(ini, None)
-}
-
-/// An OSL parse error with the expression and a caret under the byte it points at
-/// ([`CliDialect::show_error`]). For `match`, which does not go through [`CliDialect`]
-/// yet.
-pub fn osl_error(src: &str, e: &lpe::osl::Error) -> String {
-    Osl::show_error(src, e)
 }

@@ -46,11 +46,11 @@ fn check<D: SceneDialect>() {
 }
 
 #[test]
-fn light_groups_one_byte_apart_stay_apart_in_renderman() {
+fn light_groups_one_byte_apart_stay_apart_in_the_renderman_dialect() {
     check::<RenderMan>();
 }
 
 #[test]
-fn light_groups_one_byte_apart_stay_apart_in_osl() {
+fn light_groups_one_byte_apart_stay_apart_in_the_osl_dialect() {
     check::<Osl>();
 }

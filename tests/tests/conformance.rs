@@ -230,7 +230,7 @@ lands = [{ path = "C,_ R,D L,_", in = ["s"] }]
 "#;
 
 #[test]
-fn a_wrong_vector_fails_on_every_subject_in_osl() {
+fn a_wrong_vector_fails_on_every_subject_in_the_osl_dialect() {
     let cases = load_str("flipped-osl.toml", FLIPPED_OSL).unwrap();
     let subjects = subjects();
     let report = run(&cases, &subjects);

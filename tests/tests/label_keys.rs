@@ -95,7 +95,7 @@ fn light_camera<D: Dialect>() -> D::Vertex {
 }
 
 #[test]
-fn labels_one_byte_apart_stay_apart_in_renderman() {
+fn labels_one_byte_apart_stay_apart_in_the_renderman_dialect() {
     check_groups::<RenderMan, renderman::Lpe>(
         |label| renderman::Vertex::light(Some(label)),
         |set, label| {
@@ -106,6 +106,6 @@ fn labels_one_byte_apart_stay_apart_in_renderman() {
 }
 
 #[test]
-fn labels_one_byte_apart_stay_apart_in_osl() {
+fn labels_one_byte_apart_stay_apart_in_the_osl_dialect() {
     check_groups::<Osl, osl::Lpe>(|label| osl::Vertex::labels(&["L", "_", label]), |_, _| None);
 }

@@ -120,12 +120,12 @@ where
 }
 
 #[test]
-fn each_emptiness_reason_warns_at_its_boundary_and_not_past_it_in_renderman() {
+fn each_emptiness_reason_warns_at_its_boundary_and_not_past_it_in_the_renderman_dialect() {
     check_pairs::<RenderMan, renderman::Lpe>(RENDERMAN);
 }
 
 #[test]
-fn each_emptiness_reason_warns_at_its_boundary_and_not_past_it_in_osl() {
+fn each_emptiness_reason_warns_at_its_boundary_and_not_past_it_in_the_osl_dialect() {
     check_pairs::<Osl, osl::Lpe>(OSL);
 }
 
@@ -140,7 +140,7 @@ fn parse_warnings(src: &str) -> Vec<(WarningKind, usize)> {
 }
 
 #[test]
-fn a_reversed_range_warns_and_equal_or_increasing_bounds_do_not_in_osl() {
+fn a_reversed_range_warns_and_equal_or_increasing_bounds_do_not_in_the_osl_dialect() {
     // One below equal warns; equal, one apart, zero and open bounds do not.
     assert_eq!(
         parse_warnings("CD{3,2}L"),
@@ -158,7 +158,7 @@ fn a_reversed_range_warns_and_equal_or_increasing_bounds_do_not_in_osl() {
 }
 
 #[test]
-fn a_negation_mixing_slots_warns_and_one_slot_does_not_in_osl() {
+fn a_negation_mixing_slots_warns_and_one_slot_does_not_in_the_osl_dialect() {
     // An event and a scattering label in one negation warn at the `[`.
     assert_eq!(parse_warnings("C[^RD]L"), [(WarningKind::MixedNegation, 1)]);
     assert_eq!(parse_warnings("C[^DR]L"), [(WarningKind::MixedNegation, 1)]);

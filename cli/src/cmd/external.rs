@@ -10,13 +10,11 @@
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
-use lpe::osl::Osl;
-use lpe::renderman::{Parser, RenderMan};
-use lpe::DialectName;
 use lpe_engines::differential::Generate;
 use lpe_engines::external::{self, Cases, Setup};
 
 use super::diff::args::Args;
+use crate::dialect::CliDialect;
 use crate::input::{bad_input, select_engines};
 
 /// Runs `diff --external`.
@@ -27,23 +25,20 @@ pub fn run(args: &Args) -> ExitCode {
     if let Some(dir) = &args.suite {
         return super::external_suite::run(args, &command, dir);
     }
-    let registered = match args.lang.is_osl() {
-        Ok(true) => match args.lang.registered(None) {
-            Ok(r) => r,
-            Err(e) => return bad_input(format!("error: {e}")),
-        },
-        Ok(false) => lpe::osl::Registered::none(),
-        Err(e) => return bad_input(format!("error: {e}")),
-    };
-    // Given RenderMan cases read with the default parser, as generated ones are.
-    match args.lang.dialect {
-        DialectName::RenderMan => run_in::<RenderMan>(args, command, Parser::default()),
-        DialectName::Osl => run_in::<Osl>(args, command, registered),
-    }
+    // No `--ini` here: given RenderMan cases read with the default parser, as generated
+    // ones are.
+    lpe::with_dialect!(args.lang.dialect, D => match args.lang.registration::<D>(None) {
+        Ok(registration) => run_in::<D>(args, command, registration),
+        Err(e) => bad_input(format!("error: {e}")),
+    })
 }
 
 /// Runs `diff --external` in dialect `D`, given cases read under `registration`.
-fn run_in<D: Generate>(args: &Args, command: String, registration: D::Registration) -> ExitCode {
+fn run_in<D: Generate + CliDialect>(
+    args: &Args,
+    command: String,
+    registration: D::Registration,
+) -> ExitCode {
     let engines = match select_engines::<D>(&args.engine) {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),

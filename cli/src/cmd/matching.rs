@@ -14,7 +14,6 @@
 
 use std::process::ExitCode;
 
-use lpe::osl::Osl;
 use lpe::renderman::RenderMan;
 
 use crate::input::{bad_input, select_engines};
@@ -34,11 +33,7 @@ pub fn run(args: Args) -> ExitCode {
     if let Err(e) = select_engines::<RenderMan>(&args.engine) {
         return bad_input(format!("error: {e}"));
     }
-    match args.lang.is_osl() {
-        Ok(true) => run_in::<Osl>(&args),
-        Ok(false) => run_in::<RenderMan>(&args),
-        Err(e) => bad_input(format!("error: {e}")),
-    }
+    lpe::with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
 }
 
 /// Runs `lpe-check match` in dialect `D`.
@@ -47,14 +42,14 @@ fn run_in<D: MatchDialect>(args: &Args) -> ExitCode {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    let registration = match D::registration(args) {
+    let registration = match D::from_args(args) {
         Ok(r) => r,
         Err(e) => return bad_input(e),
     };
     if args.batch {
         return batch(|line| D::batch_line(&engines, &registration, line));
     }
-    let lpe = match D::parse_arg(args.expr.as_deref().unwrap_or_default(), &registration) {
+    let lpe = match D::read_arg(args.expr.as_deref().unwrap_or_default(), &registration) {
         Ok(l) => l,
         Err(e) => return bad_input(e),
     };

@@ -13,9 +13,9 @@
 //! it with any engine of the `lpe-engines` registry, which is how `converge` times the
 //! regex-automata engine (`oracle`).
 
-use lpe::renderman::{Lpe, Path, RenderMan, Vertex, VertexType};
 #[cfg(feature = "engines")]
 use lpe::renderman::Parser;
+use lpe::renderman::{Lpe, Path, RenderMan, Vertex, VertexType};
 use lpe::DialectName;
 
 use super::vertex::{SceneClassifier, SceneDialect, SceneVertex};

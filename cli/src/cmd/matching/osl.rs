@@ -10,22 +10,21 @@
 //! `disagree: expected=… <engine>=…` (exit 3), so the test file itself is a check. Any
 //! further column is an error; blank lines and `#` comments are echoed.
 
-use lpe::osl::{self, Lpe, Osl, Registered};
+use lpe::osl::{self, Osl, Registered};
 use lpe_engines::Engine;
 
 use super::answer::{verdict, Args, LineOutcome, Verdict};
 use super::dialect::MatchDialect;
-use crate::input::osl_error;
 
 impl MatchDialect for Osl {
     const EXAMPLE_PATH: &'static str = "C,_ R,D L,_";
 
     /// `--register`'s labels; with `--batch` each line brings its own, and the flag is
     /// refused.
-    fn registration(args: &Args) -> Result<Registered, String> {
+    fn from_args(args: &Args) -> Result<Registered, String> {
         let registered = args
             .lang
-            .registered(args.ini.as_deref())
+            .registration::<Osl>(args.ini.as_deref())
             .map_err(|e| format!("error: {e}"))?;
         if args.batch && args.lang.register.is_some() {
             return Err(
@@ -33,15 +32,6 @@ impl MatchDialect for Osl {
             );
         }
         Ok(registered)
-    }
-
-    /// Read as a source (a pipeline's `lpe:` mark allowed); its warnings go to stderr.
-    fn parse_arg(src: &str, registered: &Registered) -> Result<Lpe, String> {
-        let lpe = osl::parse_source(src, registered).map_err(|e| osl_error(src, &e))?;
-        for w in &lpe.warnings {
-            eprintln!("warning: {w}");
-        }
-        Ok(lpe)
     }
 
     fn batch_line(engines: &[&dyn Engine<Osl>], _: &Registered, line: &str) -> LineOutcome {
