@@ -158,3 +158,20 @@ where
     }
     Some((states, live))
 }
+
+/// The verdicts of the conformance suite's `testdata/<file>`, one per (expression, path);
+/// panics with the loader's error.
+pub fn suite_rows(file: &str) -> Vec<lpe_testkit::suite::Row> {
+    let loaded = lpe_testkit::suite::load_file(file).unwrap_or_else(|e| panic!("{e}"));
+    lpe_testkit::suite::rows(&loaded)
+}
+
+/// The path of a suite row, in the dialect of `P`; panics naming the file and the path.
+pub fn row_path<P: std::str::FromStr>(r: &lpe_testkit::suite::Row) -> P
+where
+    P::Err: std::fmt::Display,
+{
+    r.path
+        .parse()
+        .unwrap_or_else(|e| panic!("{}: `{}`: {e}", r.file, r.path))
+}

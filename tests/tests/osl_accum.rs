@@ -5,17 +5,15 @@
 
 use lpe::osl::{self, Registered};
 use lpe::{AovSet, Options};
-use lpe_testkit::suite::{distinct_rules, load_file, rows, Row};
+use lpe_testkit::suite::{distinct_rules, Row};
 
 /// The verdicts of `testdata/<file>`, one per (expression, path).
 fn load_rows(file: &str) -> Vec<Row> {
-    rows(&load_file(file).unwrap_or_else(|e| panic!("{e}")))
+    lpe_tests::suite_rows(file)
 }
 
 fn path(r: &Row) -> osl::Path {
-    r.path
-        .parse()
-        .unwrap_or_else(|e| panic!("{}: `{}`: {e}", r.file, r.path))
+    lpe_tests::row_path(r)
 }
 
 fn modes() -> [(&'static str, Options); 2] {

@@ -7,7 +7,7 @@ use lpe::rng::SplitMix64;
 use lpe_engines::differential::{self, Outcome};
 use lpe_engines::engine::bits;
 use lpe_engines::Engine;
-use lpe_testkit::suite::{distinct_rules, load_file, rows, Row};
+use lpe_testkit::suite::{distinct_rules, Row};
 use lpe_tests::cases;
 use proptest::prelude::*;
 
@@ -20,13 +20,11 @@ fn engines() -> Vec<&'static dyn Engine<Osl>> {
 
 /// The verdicts of `testdata/<file>`, one per (expression, path).
 fn load_rows(file: &str) -> Vec<Row> {
-    rows(&load_file(file).unwrap_or_else(|e| panic!("{e}")))
+    lpe_tests::suite_rows(file)
 }
 
 fn path(r: &Row) -> osl::Path {
-    r.path
-        .parse()
-        .unwrap_or_else(|e| panic!("{}: `{}`: {e}", r.file, r.path))
+    lpe_tests::row_path(r)
 }
 
 /// Each engine's wrong answers on `rows`, as `file: case engine: ...` lines, and the

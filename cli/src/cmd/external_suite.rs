@@ -109,6 +109,31 @@ fn answer_text(m: bool) -> &'static str {
     }
 }
 
+/// What `pick` takes out of `reply`; else `None`, with the reply counted: as unsupported,
+/// or as a failure of the case at `case_at` that expected `expected`.
+fn expect<T>(
+    reply: Result<Reply, impl std::fmt::Display>,
+    expected: &str,
+    case_at: &str,
+    tally: &mut Tally,
+    pick: impl FnOnce(Reply) -> Result<T, Reply>,
+) -> Option<T> {
+    let failure = match reply.map(pick) {
+        Ok(Ok(t)) => return Some(t),
+        Ok(Err(Reply::Unsupported(_))) => {
+            tally.unsupported += 1;
+            return None;
+        }
+        Ok(Err(Reply::Rejected(r))) => {
+            format!("expected {expected}, got a rejection: {}", r.message)
+        }
+        Ok(Err(other)) => format!("expected {expected}, got {other:?}"),
+        Err(fault) => fault.to_string(),
+    };
+    tally.failures.push(format!("{case_at}: {failure}"));
+    None
+}
+
 /// Sends one case and checks its answers.
 fn replay(client: &mut Client, loaded: &Loaded, tally: &mut Tally) {
     let case = &loaded.case;
@@ -150,53 +175,27 @@ fn replay(client: &mut Client, loaded: &Loaded, tally: &mut Tally) {
         }
         return;
     }
-    match compiled {
-        Ok(Reply::Done) => {}
-        Ok(Reply::Unsupported(_)) => {
-            tally.unsupported += 1;
-            return;
-        }
-        Ok(Reply::Rejected(r)) => {
-            tally.failures.push(format!(
-                "{at}: `{}`: expected a compiled set, got a rejection: {}",
-                plan.label, r.message
-            ));
-            return;
-        }
-        Ok(other) => {
-            tally.failures.push(format!(
-                "{at}: `{}`: expected a compiled set, got {other:?}",
-                plan.label
-            ));
-            return;
-        }
-        Err(fault) => {
-            tally
-                .failures
-                .push(format!("{at}: `{}`: {fault}", plan.label));
-            return;
-        }
+    let case_at = format!("{at}: `{}`", plan.label);
+    let done = |r| match r {
+        Reply::Done => Ok(()),
+        other => Err(other),
+    };
+    if expect(compiled, "a compiled set", &case_at, tally, done).is_none() {
+        return;
     }
     let paths: Vec<String> = plan.expected.iter().map(|(p, _)| p.to_string()).collect();
-    let lands = match client.match_paths(paths) {
-        Ok(Reply::Matches(m)) => m,
-        Ok(Reply::Unsupported(_)) => {
-            tally.unsupported += 1;
-            return;
-        }
-        Ok(other) => {
-            tally.failures.push(format!(
-                "{at}: `{}`: expected answers, got {other:?}",
-                plan.label
-            ));
-            return;
-        }
-        Err(fault) => {
-            tally
-                .failures
-                .push(format!("{at}: `{}`: {fault}", plan.label));
-            return;
-        }
+    let matches = |r| match r {
+        Reply::Matches(m) => Ok(m),
+        other => Err(other),
+    };
+    let Some(lands) = expect(
+        client.match_paths(paths),
+        "answers",
+        &case_at,
+        tally,
+        matches,
+    ) else {
+        return;
     };
     for ((path, want), got) in plan.expected.iter().zip(&lands) {
         for (j, (&w, name)) in want.iter().zip(&names).enumerate() {
