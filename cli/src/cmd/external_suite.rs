@@ -21,7 +21,7 @@ use lpe::DialectName;
 use lpe_engines::external::{AovSource, Client, Registration, Reply, StartError};
 use lpe_testkit::suite::{load_dir, Loaded, Plan};
 
-use super::diff::Args;
+use super::diff::args::Args;
 use crate::input::bad_input;
 
 /// What one replay found.
