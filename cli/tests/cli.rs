@@ -57,7 +57,9 @@ fn batch_answers_one_line_per_input_line() {
         expected.push(want.to_string());
     }
     let (code, out, err) = lpe_check(&["match", "--batch"], &input);
-    assert_eq!(code, 0, "stderr: {err}");
+    // Every line is answered; the vectors hold malformed lines, so the exit is 2.
+    assert!(VECTORS.lines().any(|l| l.ends_with("\terror")));
+    assert_eq!(code, 2, "stderr: {err}");
     let got: Vec<&str> = out.lines().collect();
     assert_eq!(got.len(), expected.len(), "one output line per input line");
     for ((got, want), line) in got.iter().zip(&expected).zip(VECTORS.lines()) {
@@ -229,7 +231,8 @@ fn batch_reports_bad_lines_in_place_in_the_osl_dialect() {
                  CRL\tevents=U\tC,_ R,D,U L,_\n\
                  CRL\t-\tC,_ R,D,U L,_\n";
     let (code, out, _) = lpe_check(&["match", "--dialect", "osl", "--batch"], input);
-    assert_eq!(code, 0);
+    // Every line is answered; the bad ones make the exit 2.
+    assert_eq!(code, 2);
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines.len(), 7);
     assert_eq!(
@@ -400,4 +403,29 @@ fn set_algebra_matches_on_every_engine_and_remainders_round_trip() {
     );
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.ends_with("clean partition\n"), "{out}");
+}
+
+/// An expression no selected engine can build (over the NFA budget) is an error: exit 2,
+/// with the reason, from arguments and from a batch line (the batch still answers every
+/// line, and a disagreement elsewhere would still exit 3).
+#[test]
+fn match_exits_2_when_no_engine_can_build_the_expression() {
+    let huge = "C(.{256}){200}L";
+    let (code, out, _) = lpe_check(&["match", "--engine", "fast", huge, "C L"], "");
+    assert_eq!(code, 2, "{out}");
+    assert!(out.contains("no engine could build") && out.contains("NFA budget"), "{out}");
+    let (code, out, _) = lpe_check(
+        &["match", "--engine", "fast", "--batch"],
+        &format!("{huge}\tC L\nCL\tC L\n"),
+    );
+    assert_eq!(code, 2, "{out}");
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 2, "{out}");
+    assert!(lines[0].starts_with("error: no engine could build"), "{out}");
+    assert_eq!(lines[1], "match");
+    // A malformed batch line is an error too; well-formed lines alone exit 0.
+    let (code, out, _) = lpe_check(&["match", "--batch"], "CL\tC L\nC(\tC L\n");
+    assert_eq!(code, 2, "{out}");
+    let (code, out, _) = lpe_check(&["match", "--batch"], "CL\tC L\n# note\n\n");
+    assert_eq!(code, 0, "{out}");
 }

@@ -113,9 +113,11 @@ impl std::fmt::Display for LineOutcome {
 }
 
 /// Answers stdin line by line with `answer`, echoing blank and `#` lines: exit 3 if any
-/// line was a disagreement, 2 if stdin or stdout failed.
+/// line was a disagreement, else 2 if any line was an error (malformed, or no engine
+/// could build its expression) or stdin or stdout failed.
 pub fn batch(mut answer: impl FnMut(&str) -> LineOutcome) -> ExitCode {
     let mut disagreed = false;
+    let mut failed = false;
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     for line in std::io::stdin().lock().lines() {
@@ -129,17 +131,22 @@ pub fn batch(mut answer: impl FnMut(&str) -> LineOutcome) -> ExitCode {
         } else {
             let v = answer(&line);
             disagreed |= matches!(v, LineOutcome::Ran(Verdict::Disagree(_)));
+            failed |= matches!(
+                v,
+                LineOutcome::Error(_) | LineOutcome::Ran(Verdict::Skipped(_))
+            );
             v.to_string()
         };
         if writeln!(out, "{shown}").is_err() {
             return ExitCode::from(2);
         }
     }
-    finish(out, disagreed)
+    finish(out, disagreed, failed)
 }
 
 /// Prints `answer`'s verdict for each path text: exit 2 at the first path that does not
-/// parse (`answer` gives the message), 3 if any verdict was a disagreement.
+/// parse (`answer` gives the message); at the end 3 if any verdict was a disagreement,
+/// else 2 if no engine could build the expression.
 pub fn answer_paths(
     paths: &[String],
     example: &str,
@@ -151,6 +158,7 @@ pub fn answer_paths(
         ));
     }
     let mut disagreed = false;
+    let mut failed = false;
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
     for text in paths {
@@ -162,17 +170,21 @@ pub fn answer_paths(
             }
         };
         disagreed |= matches!(v, Verdict::Disagree(_));
+        failed |= matches!(v, Verdict::Skipped(_));
         if writeln!(out, "{v}").is_err() {
             return ExitCode::from(2);
         }
     }
-    finish(out, disagreed)
+    finish(out, disagreed, failed)
 }
 
-fn finish(mut out: impl Write, disagreed: bool) -> ExitCode {
+/// Exit 3 on a disagreement, else 2 on an error, else 0.
+fn finish(mut out: impl Write, disagreed: bool, failed: bool) -> ExitCode {
     let _ = out.flush();
     if disagreed {
         ExitCode::from(3)
+    } else if failed {
+        ExitCode::from(2)
     } else {
         ExitCode::SUCCESS
     }
