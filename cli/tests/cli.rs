@@ -413,7 +413,10 @@ fn match_exits_2_when_no_engine_can_build_the_expression() {
     let huge = "C(.{256}){200}L";
     let (code, out, _) = lpe_check(&["match", "--engine", "fast", huge, "C L"], "");
     assert_eq!(code, 2, "{out}");
-    assert!(out.contains("no engine could build") && out.contains("NFA budget"), "{out}");
+    assert!(
+        out.contains("no engine could build") && out.contains("NFA budget"),
+        "{out}"
+    );
     let (code, out, _) = lpe_check(
         &["match", "--engine", "fast", "--batch"],
         &format!("{huge}\tC L\nCL\tC L\n"),
@@ -421,7 +424,10 @@ fn match_exits_2_when_no_engine_can_build_the_expression() {
     assert_eq!(code, 2, "{out}");
     let lines: Vec<&str> = out.lines().collect();
     assert_eq!(lines.len(), 2, "{out}");
-    assert!(lines[0].starts_with("error: no engine could build"), "{out}");
+    assert!(
+        lines[0].starts_with("error: no engine could build"),
+        "{out}"
+    );
     assert_eq!(lines[1], "match");
     // A malformed batch line is an error too; well-formed lines alone exit 0.
     let (code, out, _) = lpe_check(&["match", "--batch"], "CL\tC L\nC(\tC L\n");

@@ -244,3 +244,30 @@ fn a_command_that_cannot_start_is_bad_input() {
         .expect_err("bad quoting");
     assert!(err.to_string().contains("bad --external command"), "{err}");
 }
+
+/// `max_restarts` N means at most N restarts: an adapter that crashes on every case runs
+/// N + 1 cases (the first process and N restarted ones), reports one fault each, and
+/// stops with the count said; N = 0 never restarts.
+#[test]
+fn the_restart_budget_is_exact() {
+    if !python() {
+        return;
+    }
+    let script = shell_quote(&repo("engines/tests/adapters/broken_matcher.py"));
+    for n in [0u64, 1, 5] {
+        let setup = Setup {
+            max_restarts: n,
+            ..setup(format!("python3 {script} crash"), 1000)
+        };
+        let r = external::run(&setup, &generated(20, 5), &lpe_engines::all::<RenderMan>())
+            .expect("starts");
+        assert_eq!(r.restarts, n, "N = {n}: {:?}", r.stopped);
+        assert_eq!(r.cases, n + 1, "N = {n}");
+        assert_eq!(r.findings.len() as u64, n + 1, "N = {n}");
+        let stopped = r.stopped.as_deref().unwrap_or_default();
+        assert!(
+            stopped.contains(&format!("after {n} restart(s)")),
+            "N = {n}: {stopped}"
+        );
+    }
+}

@@ -234,6 +234,18 @@ impl Client {
         }
     }
 
+    /// Whether the next request must start a fresh process (the last one was killed
+    /// after a fault): a restart, which `--max-restarts` bounds.
+    pub fn needs_restart(&self) -> bool {
+        self.process.is_none()
+    }
+
+    /// Whether another request may be sent with at most `max` restarts in all: the
+    /// process is up, or it is down and fewer than `max` restarts have been made.
+    pub fn may_continue(&self, max: u64) -> bool {
+        !self.needs_restart() || self.restarts < max
+    }
+
     /// A fresh process (and hello) if the last one was killed.
     fn ensure(&mut self) -> Result<(), Fault> {
         if self.process.is_some() {

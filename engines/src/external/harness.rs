@@ -442,10 +442,10 @@ fn run_items<D: EngineDialect>(
     };
     let mut queue: std::collections::VecDeque<_> = list.into();
     'batches: while !queue.is_empty() {
-        if client.restarts > setup.max_restarts {
+        if !client.may_continue(setup.max_restarts) {
             report.stopped = Some(format!(
-                "the external process was restarted {} times",
-                client.restarts
+                "the external process failed again after {} restart(s) (--max-restarts {})",
+                client.restarts, setup.max_restarts
             ));
             break;
         }
@@ -623,7 +623,7 @@ fn minimize<D: EngineDialect>(
     report: &mut Report,
 ) -> (Vec<D::Lpe>, D::Path) {
     minimize_by::<D>(registration, exprs, path, |exprs, path| {
-        if client.restarts > setup.max_restarts {
+        if !client.may_continue(setup.max_restarts) {
             return false;
         }
         let texts: Vec<String> = exprs.iter().map(|e| e.to_string()).collect();

@@ -44,7 +44,8 @@ pub struct Args {
     /// Milliseconds the external matcher has to answer one request.
     #[arg(long, default_value_t = 2000)]
     pub timeout_ms: u64,
-    /// Stop after the external process was restarted this many times.
+    /// Restart the external process at most this many times after it failed; when it
+    /// fails again, the run stops.
     #[arg(long, default_value_t = 20)]
     pub max_restarts: u64,
     /// With --external: replay one given AOV set (repeat for several AOVs) instead of
