@@ -271,3 +271,30 @@ fn the_restart_budget_is_exact() {
         );
     }
 }
+
+/// After a crash mid-batch, the unanswered cases are asked again before the cases behind
+/// them: with more cases than one pipelined batch holds (64) and an adapter that crashes
+/// on every case, the faults are reported in case order, each with its case number.
+#[test]
+fn findings_keep_case_order_across_crashes() {
+    if !python() {
+        return;
+    }
+    let script = shell_quote(&repo("engines/tests/adapters/broken_matcher.py"));
+    let setup = Setup {
+        max_restarts: 200,
+        ..setup(format!("python3 {script} crash"), 1000)
+    };
+    let r =
+        external::run(&setup, &generated(70, 5), &lpe_engines::all::<RenderMan>()).expect("starts");
+    let cases: Vec<Option<u64>> = r
+        .findings
+        .iter()
+        .map(|f| match f {
+            Finding::Fault { case, .. } => *case,
+            other => panic!("{other}"),
+        })
+        .collect();
+    let want: Vec<Option<u64>> = (0..70).map(Some).collect();
+    assert_eq!(cases, want);
+}

@@ -468,8 +468,11 @@ fn run_items<D: EngineDialect>(
             } else if let Some(f) = fault.take() {
                 Err(f)
             } else {
-                // Unanswered after a fault: asked again in the next batch.
-                queue.extend(batch[k..].iter().cloned());
+                // Unanswered after a fault: asked again first in the next batch, so
+                // that cases keep their order.
+                for item in batch[k..].iter().rev() {
+                    queue.push_front(item.clone());
+                }
                 break;
             };
             report.cases += 1;
@@ -557,8 +560,7 @@ fn judge<D: EngineDialect>(
                     client,
                     registration,
                     judge,
-                    exprs.clone(),
-                    path.clone(),
+                    (case, exprs.clone(), path.clone()),
                     report,
                 );
                 (
@@ -610,16 +612,15 @@ fn ours_on_one<D: EngineDialect>(
         .collect()
 }
 
-/// Shrinks a disagreement, re-asking the external process at every candidate. Faults
-/// met on the way are findings too; the candidate that caused one does not count as a
-/// disagreement.
+/// Shrinks a disagreement of case `case`, re-asking the external process at every
+/// candidate. Faults met on the way are findings of that case too; the candidate that
+/// caused one does not count as a disagreement.
 fn minimize<D: EngineDialect>(
     setup: &Setup<D>,
     client: &mut Client,
     registration: &D::Registration,
     engines: &[&dyn Engine<D>],
-    exprs: Vec<D::Lpe>,
-    path: D::Path,
+    (case, exprs, path): (Option<u64>, Vec<D::Lpe>, D::Path),
     report: &mut Report,
 ) -> (Vec<D::Lpe>, D::Path) {
     minimize_by::<D>(registration, exprs, path, |exprs, path| {
@@ -632,7 +633,7 @@ fn minimize<D: EngineDialect>(
             Ok(Some(mut a)) if a.len() == 1 => a.swap_remove(0),
             Ok(_) => return false,
             Err(fault) => {
-                report.findings.push(Finding::Fault { case: None, fault });
+                report.findings.push(Finding::Fault { case, fault });
                 return false;
             }
         };
