@@ -26,7 +26,12 @@ pub enum FaultKind {
         stderr: Vec<String>,
     },
     /// No reply within the timeout; the process was killed.
-    Timeout(Duration),
+    Timeout {
+        /// The timeout.
+        after: Duration,
+        /// The last lines it wrote to stderr (what it was doing, often).
+        stderr: Vec<String>,
+    },
     /// A reply line that is not a valid answer.
     Reply {
         /// The line (shortened if long).
@@ -54,7 +59,7 @@ impl FaultKind {
     pub fn label(&self) -> &'static str {
         match self {
             FaultKind::Crash { .. } => "crash",
-            FaultKind::Timeout(_) => "timeout",
+            FaultKind::Timeout { .. } => "timeout",
             FaultKind::Reply { violation, .. } => match violation {
                 Violation::Malformed(_) => "malformed reply",
                 Violation::WrongId { .. } => "reply to another request",
@@ -76,11 +81,16 @@ impl fmt::Display for Fault {
                     write!(f, "\n    stderr: {l}")?;
                 }
             }
-            FaultKind::Timeout(d) => write!(
-                f,
-                "no reply within {} ms; the process was killed",
-                d.as_millis()
-            )?,
+            FaultKind::Timeout { after, stderr } => {
+                write!(
+                    f,
+                    "no reply within {} ms; the process was killed",
+                    after.as_millis()
+                )?;
+                for l in stderr {
+                    write!(f, "\n    stderr: {l}")?;
+                }
+            }
             FaultKind::Reply { line, violation } => write!(f, "{violation}\n    reply: {line}")?,
             FaultKind::Extra(line) => {
                 write!(f, "a reply line nobody asked for: {line}")?;
@@ -318,8 +328,10 @@ impl Client {
         };
         if let Some(mut p) = self.process.take() {
             let (status, stderr) = p.kill();
-            if let FaultKind::Crash { .. } = kind {
-                kind = FaultKind::Crash { status, stderr };
+            match kind {
+                FaultKind::Crash { .. } => kind = FaultKind::Crash { status, stderr },
+                FaultKind::Timeout { after, .. } => kind = FaultKind::Timeout { after, stderr },
+                _ => {}
             }
         }
         let fault = Fault {
@@ -367,7 +379,12 @@ impl Client {
                 })
             }
             Ok(Line::Eof) | Err(Wait::Closed) => return Err(crash()),
-            Err(Wait::Timeout) => return Err(FaultKind::Timeout(self.timeout)),
+            Err(Wait::Timeout) => {
+                return Err(FaultKind::Timeout {
+                    after: self.timeout,
+                    stderr: Vec::new(),
+                })
+            }
         };
         protocol::read_reply(request, &reply).map_err(|violation| FaultKind::Reply {
             line: shorten(&reply),

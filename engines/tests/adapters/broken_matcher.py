@@ -2,7 +2,7 @@
 """An external matcher that breaks the protocol on purpose, one way per mode (argv[1]):
 
 crash     exits with status 3 on every `match` (after a line on stderr)
-hang      never answers a `match`
+hang      never answers a `match` (after a line on stderr)
 garbage   answers `match` with a line that is not JSON
 count     answers `match` with one list fewer than paths
 extra     answers `compile` twice
@@ -43,6 +43,7 @@ for line in sys.stdin:
             print("boom: mode crash", file=sys.stderr, flush=True)
             sys.exit(3)
         if MODE == "hang":
+            print("waiting: mode hang", file=sys.stderr, flush=True)
             time.sleep(3600)
         if MODE == "garbage":
             print("}{ this is not JSON", flush=True)
