@@ -79,7 +79,8 @@ fn the_suite_is_loaded_whole_and_runs_on_every_registered_engine() {
             "no case loaded from {file}"
         );
     }
-    // The OSL dialect's files, converted from 228 TSV rows (130 + 66 + 32).
+    // The OSL dialect's files, converted from 228 TSV rows (130 + 66 + 32); cases may be
+    // added, never dropped.
     for (file, rows) in [
         ("osl/accum_test.toml", 130),
         ("osl/extra.toml", 66),
@@ -90,7 +91,11 @@ fn the_suite_is_loaded_whole_and_runs_on_every_registered_engine() {
             of_file.iter().all(|c| c.dialect == lpe::DialectName::Osl),
             "{file}"
         );
-        assert_eq!(lpe_testkit::suite::rows(&of_file).len(), rows, "{file}");
+        let loaded = lpe_testkit::suite::rows(&of_file).len();
+        assert!(
+            loaded >= rows,
+            "{file}: {loaded} rows, {rows} were converted"
+        );
     }
     let subjects = subjects();
     let engines: Vec<&str> = subjects.iter().map(Subject::engine).collect();

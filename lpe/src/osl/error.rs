@@ -36,6 +36,15 @@ pub enum ErrorKind {
     Empty,
     /// `()`: a group with nothing inside (OSL crashes).
     EmptyGroup,
+    /// An empty alternative of a group inside `<…>`: `<(|R)D>`, `<(R|)D>` (OSL refuses
+    /// both).
+    EmptyAlternative,
+    /// A `<…>` whose groups' alternatives multiply past the limit of vertex patterns one
+    /// `<…>` may stand for.
+    TooManyAlternatives {
+        /// The limit.
+        max: usize,
+    },
     /// A `{0}` item that is not among the leading items of a sequence, or is the whole
     /// expression, an alternative or a repeated body (OSL crashes on all of these).
     ZeroRepeat,
@@ -97,6 +106,10 @@ impl Error {
             ErrorKind::RepetitionInGroup => "Repetitions not allowed inside '<...>'".into(),
             ErrorKind::Empty => "Empty expression".into(),
             ErrorKind::EmptyGroup => "Empty group () not allowed".into(),
+            ErrorKind::EmptyAlternative => "Empty alternative in a group inside '<...>'".into(),
+            ErrorKind::TooManyAlternatives { max } => {
+                format!("The groups inside '<...>' spell out more than {max} alternative vertices")
+            }
             ErrorKind::ZeroRepeat => "A {0} item matches nothing here: only the leading \
                                       items of a sequence may repeat zero times"
                 .into(),

@@ -24,6 +24,11 @@ use crate::limits::Limits;
 /// Custom items from which on a vertex pattern gets no eater.
 const EATER_MAX_CUSTOM: usize = 5;
 
+/// Most vertex patterns one `<…>` may stand for once the `|` of its groups are spelled
+/// out (`<(R|T)(D|G)>` stands for four): a bound on the product, so that a few short
+/// groups cannot multiply into a huge alternation.
+pub const MAX_GROUP_ALTERNATIVES: usize = 256;
+
 /// Parses `src` with `registered` labels and default [`Limits`].
 ///
 /// ```
@@ -508,10 +513,14 @@ impl<'a> Parser<'a> {
     }
 
     /// `<...>` at the `<`: items fill the event slot, the scattering slot, then custom
-    /// slots; missing slots are `.`.
+    /// slots; missing slots are `.`. A `( … )` item is a sub-expression over the symbols
+    /// (OSL parses it as one): with `|` in it, the `<…>` stands for one vertex pattern per
+    /// way through its items, an alternation.
     fn group(&mut self) -> Result<Expr> {
+        let at = self.pos;
         self.pos += 1;
-        let mut items: Vec<Vec<SymbolPattern>> = Vec::new();
+        // Per item, its alternative symbol sequences (one for a plain slot).
+        let mut items: Vec<Vec<Vec<SymbolPattern>>> = Vec::new();
         loop {
             match self.head() {
                 None => return Err(self.err(ErrorKind::UnclosedGroup, self.src.len())),
@@ -523,44 +532,101 @@ impl<'a> Parser<'a> {
                     self.enter()?;
                     let open = self.pos;
                     self.pos += 1;
-                    let seq = self.slot_seq(open)?;
+                    let alts = self.slot_alternatives(open)?;
                     self.depth -= 1;
-                    items.push(seq);
+                    items.push(alts);
                 }
                 Some(_) => {
                     let s = self.slot()?;
-                    items.push(vec![s]);
+                    items.push(vec![vec![s]]);
                 }
             }
         }
         let customs = items.len().saturating_sub(2);
         while items.len() < 2 {
-            items.push(vec![SymbolPattern::Any]);
+            items.push(vec![vec![SymbolPattern::Any]]);
         }
-        Ok(self.vertex(items.into_iter().flatten().collect(), customs))
+        let mut ways: Vec<Vec<SymbolPattern>> = vec![Vec::new()];
+        for alts in &items {
+            ways = self.then(ways, alts, at)?;
+        }
+        let mut vertices: Vec<Expr> = ways.into_iter().map(|w| self.vertex(w, customs)).collect();
+        Ok(if vertices.len() == 1 {
+            vertices.pop().expect("one")
+        } else {
+            Expr::Alt(vertices)
+        })
     }
 
-    /// `( ... )` inside `<>`, after the `(`: a sequence of slot patterns, up to `)`.
-    fn slot_seq(&mut self, open: usize) -> Result<Vec<SymbolPattern>> {
-        let mut out = Vec::new();
+    /// Every sequence of `prefixes` followed by every one of `alts`, within
+    /// [`MAX_GROUP_ALTERNATIVES`] (an error at `at` past it).
+    fn then(
+        &self,
+        prefixes: Vec<Vec<SymbolPattern>>,
+        alts: &[Vec<SymbolPattern>],
+        at: usize,
+    ) -> Result<Vec<Vec<SymbolPattern>>> {
+        if prefixes.len().saturating_mul(alts.len()) > MAX_GROUP_ALTERNATIVES {
+            return Err(self.err(
+                ErrorKind::TooManyAlternatives {
+                    max: MAX_GROUP_ALTERNATIVES,
+                },
+                at,
+            ));
+        }
+        Ok(prefixes
+            .iter()
+            .flat_map(|p| alts.iter().map(move |a| [&p[..], &a[..]].concat()))
+            .collect())
+    }
+
+    /// `( ... )` inside `<>`, after the `(`: alternatives (`|`) of sequences of slot
+    /// patterns, up to `)`. A group inside is a sub-expression too: its alternatives
+    /// multiply into the sequence. An empty alternative is an error, as in OSL.
+    fn slot_alternatives(&mut self, open: usize) -> Result<Vec<Vec<SymbolPattern>>> {
+        let mut out: Vec<Vec<SymbolPattern>> = Vec::new();
+        // The current alternative's ways (several after a nested group with `|`).
+        let mut ways: Vec<Vec<SymbolPattern>> = vec![Vec::new()];
+        let mut empty = true;
         loop {
             match self.head() {
                 None => return Err(self.err(ErrorKind::UnclosedParen, self.src.len())),
                 Some(')') => {
-                    self.pos += 1;
-                    if out.is_empty() {
-                        return Err(self.err(ErrorKind::EmptyGroup, open));
+                    if empty {
+                        return Err(if out.is_empty() {
+                            self.err(ErrorKind::EmptyGroup, open)
+                        } else {
+                            self.err(ErrorKind::EmptyAlternative, self.pos)
+                        });
                     }
+                    self.pos += 1;
+                    out.extend(ways);
                     return Ok(out);
+                }
+                Some('|') => {
+                    if empty {
+                        return Err(self.err(ErrorKind::EmptyAlternative, self.pos));
+                    }
+                    self.pos += 1;
+                    out.extend(std::mem::replace(&mut ways, vec![Vec::new()]));
+                    empty = true;
                 }
                 Some('(') => {
                     self.enter()?;
                     let inner = self.pos;
                     self.pos += 1;
-                    out.extend(self.slot_seq(inner)?);
+                    let alts = self.slot_alternatives(inner)?;
                     self.depth -= 1;
+                    ways = self.then(ways, &alts, inner)?;
+                    empty = false;
                 }
-                Some(_) => out.push(self.slot()?),
+                Some(_) => {
+                    let s = self.slot()?;
+                    for w in &mut ways {
+                        w.push(s.clone());
+                    }
+                    empty = false;
+                }
             }
         }
     }

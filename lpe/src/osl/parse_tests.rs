@@ -143,11 +143,37 @@ fn groups_fill_slots_in_order() {
 fn parentheses_inside_a_group_put_a_sequence_in_one_slot() {
     // `<(RD)>`: R, D in the event item, then the missing scattering slot.
     assert_eq!(p("<(RD)>"), v(&none(), vec![one("R"), one("D"), P::Any]));
-    // `|` is a label there.
+    // A group is a sub-expression: `|` alternates sequences, one vertex pattern each.
     assert_eq!(
         p("<(R|T)D>"),
-        v(&none(), vec![one("R"), one("|"), one("T"), one("D")])
+        Expr::Alt(vec![
+            v(&none(), vec![one("R"), one("D")]),
+            v(&none(), vec![one("T"), one("D")])
+        ])
     );
+    // Alternatives of different lengths, and nested groups.
+    assert_eq!(
+        p("<(RD|T)S>"),
+        Expr::Alt(vec![
+            v(&none(), vec![one("R"), one("D"), one("S")]),
+            v(&none(), vec![one("T"), one("S")])
+        ])
+    );
+    assert_eq!(
+        p("<((R|T)D)>"),
+        Expr::Alt(vec![
+            v(&none(), vec![one("R"), one("D"), P::Any]),
+            v(&none(), vec![one("T"), one("D"), P::Any])
+        ])
+    );
+    // Empty alternatives are errors, as in OSL; so is a product past the bound.
+    assert_eq!(err("<(|R)D>"), (K::EmptyAlternative, 2));
+    assert_eq!(err("<(R|)D>"), (K::EmptyAlternative, 4));
+    assert_eq!(err("<(R||T)D>"), (K::EmptyAlternative, 4));
+    let wide = "<(1|2|3|4)(1|2|3|4)(1|2|3|4)(1|2|3|4)(1|2)>";
+    assert_eq!(wide.matches('(').count(), 5);
+    assert!(matches!(err(wide).0, K::TooManyAlternatives { max: 256 }));
+    assert!(parse("<(1|2|3|4)(1|2|3|4)(1|2|3|4)(1|2|3|4)>", &none()).is_ok());
 }
 
 #[test]
