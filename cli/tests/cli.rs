@@ -150,6 +150,25 @@ fn match_rate(out: &str) -> &str {
     out.lines().find(|l| l.starts_with("match rate")).unwrap()
 }
 
+/// A default run (10 000 cases) writes every production of each dialect's grammar;
+/// `--coverage` lists them with their counts, each written at least once.
+#[test]
+fn a_default_diff_run_covers_every_grammar_production() {
+    for (dialect, total) in [("renderman", 68), ("osl", 57)] {
+        let (code, out, err) = lpe_check(&["diff", "--dialect", dialect, "--coverage"], "");
+        assert_eq!(code, 0, "{out}{err}");
+        let line =
+            format!("grammar coverage: {total} of {total} productions ({dialect} dialect)\n");
+        assert!(out.contains(&line), "{out}");
+        let listed: Vec<&str> = out.lines().filter(|l| l.starts_with("  ")).collect();
+        assert_eq!(listed.len(), total, "{out}");
+        for l in listed {
+            let n: u64 = l.split_whitespace().last().unwrap().parse().unwrap();
+            assert!(n > 0, "{l}");
+        }
+    }
+}
+
 #[test]
 fn diff_needs_two_engines() {
     let (code, _, err) = lpe_check(&["diff", "--engine", "reference", "--cases", "1"], "");

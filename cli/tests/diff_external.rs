@@ -329,3 +329,185 @@ fn a_planted_wrong_verdict_is_reported_with_its_file_and_case() {
     assert_eq!(code, 2);
     assert!(err.contains("x.toml: case `x`: no expectation"), "{err}");
 }
+
+/// Every `replay:` line of a report, run: the exit code and output of each.
+fn replays(out: &str) -> Vec<(i32, String)> {
+    out.lines()
+        .filter_map(|l| l.trim().strip_prefix("replay: lpe-check "))
+        .map(|replay| {
+            let words = shell_words::split(replay).unwrap();
+            let words: Vec<&str> = words.iter().map(|s| s.as_str()).collect();
+            let (code, again, _) = lpe_check(&words);
+            (code, again)
+        })
+        .collect()
+}
+
+/// The minimizer judges what the external process is sent. The planted adapter answers
+/// "no AOV" on any set with a counted repetition, so minimizing walks the counts down
+/// towards `{0}`, which OSL reads only among leading items: a candidate whose text lpe
+/// rejects is rejected on both sides, not a disagreement. Every minimized case still
+/// disagrees when replayed, and the header's case range ends at the last case asked.
+#[test]
+fn minimized_cases_still_disagree_when_replayed() {
+    if !python() {
+        return;
+    }
+    let proxy = proxy_in_the_osl_dialect("--miss-counted");
+    let mut findings = 0;
+    for seed in ["3", "4", "5"] {
+        let (code, out, err) = lpe_check(&[
+            "diff",
+            "--external",
+            &proxy,
+            "--dialect",
+            "osl",
+            "--cases",
+            "300",
+            "--seed",
+            seed,
+        ]);
+        assert_eq!(code, 3, "{out}{err}");
+        let last = out
+            .lines()
+            .filter_map(|l| l.strip_prefix("case "))
+            .filter_map(|l| l.split(':').next()?.parse::<u64>().ok())
+            .max()
+            .expect("a finding with its case");
+        assert!(
+            out.contains(&format!("cases 0..{}, ", last + 1)),
+            "the header's range: {out}"
+        );
+        // The adapter is deterministic: no minimized case fell back to the original.
+        assert!(!out.contains("note: "), "{out}");
+        for (code, again) in replays(&out) {
+            assert_eq!(
+                code, 3,
+                "a minimized case agrees on replay:\n{again}\nfrom\n{out}"
+            );
+            findings += 1;
+        }
+    }
+    assert!(findings >= 6, "{findings}");
+}
+
+/// A candidate that crashed the external process is never sent again: with the planted
+/// crash on `{0}` counts, no two crash findings carry the same request.
+#[test]
+fn a_candidate_that_crashed_is_not_sent_again() {
+    if !python() {
+        return;
+    }
+    let proxy = proxy_in_the_osl_dialect("--miss-counted --crash-on-zero");
+    let (code, out, err) = lpe_check(&[
+        "diff",
+        "--external",
+        &proxy,
+        "--dialect",
+        "osl",
+        "--cases",
+        "300",
+        "--seed",
+        "4",
+        "--max-restarts",
+        "100",
+    ]);
+    assert_eq!(code, 3, "{out}{err}");
+    let requests: Vec<&str> = out
+        .lines()
+        .filter(|l| l.trim_start().starts_with("request:"))
+        .collect();
+    assert!(
+        !requests.is_empty(),
+        "no crash was planted on the way:\n{out}"
+    );
+    let mut distinct = requests.clone();
+    distinct.sort();
+    distinct.dedup();
+    assert_eq!(distinct.len(), requests.len(), "{out}");
+}
+
+/// A flaky matcher (its bug shows only the first time it compiles a set) makes the
+/// minimized case agree when asked again: the report says so and shows the original
+/// case instead of one that does not disagree.
+#[test]
+fn a_minimized_case_that_agrees_on_replay_falls_back_to_the_original() {
+    if !python() {
+        return;
+    }
+    let proxy = proxy_in_the_osl_dialect("--miss-counted --flaky");
+    let (code, out, err) = lpe_check(&[
+        "diff",
+        "--external",
+        &proxy,
+        "--dialect",
+        "osl",
+        "--cases",
+        "300",
+        "--seed",
+        "3",
+    ]);
+    assert_eq!(code, 3, "{out}{err}");
+    assert!(
+        out.contains(
+            "note: the minimized case agreed when asked again; the original case is shown"
+        ),
+        "{out}"
+    );
+    // The finding shows the original set: its `aov` lines equal those under "from the
+    // original case".
+    let finding = out.split("\ncase ").nth(1).expect("a finding");
+    let shown: Vec<&str> = finding
+        .lines()
+        .filter(|l| l.starts_with("  aov "))
+        .map(str::trim)
+        .collect();
+    let original: Vec<&str> = finding
+        .lines()
+        .filter(|l| l.starts_with("    aov "))
+        .map(str::trim)
+        .collect();
+    assert_eq!(shown, original, "{finding}");
+}
+
+/// The restart budget holds during minimization: an adapter that answers one `compile`
+/// per process and crashes on the next, on a given case it disagrees on. Minimizing
+/// crashes it on every second candidate; with `--max-restarts N` the run makes exactly N
+/// restarts, reports N + 1 crashes and the one disagreement, and never restarts the
+/// process past the budget to ask about the minimized case again.
+#[test]
+fn the_restart_budget_holds_during_minimization() {
+    if !python() {
+        return;
+    }
+    let proxy = proxy_in_the_osl_dialect("--miss-counted --crash-after 1");
+    for n in [0u64, 1, 5] {
+        let budget = n.to_string();
+        let (code, out, err) = lpe_check(&[
+            "diff",
+            "--external",
+            &proxy,
+            "--dialect",
+            "osl",
+            "--expr",
+            "C<.D>{1,2}<.G>*<.S>+<L.>",
+            "--path",
+            "C,_ R,D R,G R,G R,S L,_",
+            "--max-restarts",
+            &budget,
+        ]);
+        assert_eq!(code, 3, "{out}{err}");
+        let summary = format!(
+            "summary: {} finding(s), 1 disagreement(s), {n} restart(s) of the external process",
+            n + 2
+        );
+        assert!(out.contains(&summary), "N = {n}:\n{out}");
+        let crashes = out
+            .lines()
+            .filter(|l| {
+                l.trim_start().starts_with(|c: char| c.is_ascii_digit()) && l.ends_with(". crash")
+            })
+            .count();
+        assert_eq!(crashes as u64, n + 1, "N = {n}:\n{out}");
+    }
+}

@@ -28,10 +28,11 @@ use lpe::osl::Osl;
 use lpe::renderman::RenderMan;
 use lpe::Options;
 use lpe_testkit::generate::Choices;
+use lpe_testkit::grammar::Coverage;
 
 use crate::adapters::{compile_set, nfa_only, Fast, Reference};
 use crate::dialect::EngineDialect;
-use crate::differential::{self, Agreement, Generate, Outcome};
+use crate::differential::{self, draw, Agreement, Generate, Outcome};
 use crate::engine::{Engine, EngineError, Matcher};
 use crate::registry;
 
@@ -94,7 +95,18 @@ pub fn differential<D: Generate>(
     } else {
         sizes.start() + u.below(sizes.end() - sizes.start() + 1)
     };
-    let exprs: Vec<D::Lpe> = (0..n).map(|_| D::lpe(&mut u, &registration, cfg)).collect();
+    // Trees and grammar texts, as `lpe-check diff` draws them; a documented text the
+    // parser rejects is a finding.
+    let mut coverage = Coverage::new(D::productions());
+    let exprs: Vec<D::Lpe> = (0..n)
+        .map(|_| {
+            let drawn = draw::<D>(&mut u, &registration, cfg, &mut coverage);
+            if let Some((text, error)) = drawn.rejected {
+                panic!("the parser rejects `{text}`, a text of the documented grammar: {error}");
+            }
+            drawn.lpe
+        })
+        .collect();
     let paths: Vec<D::Path> = (0..1 + u.below(8))
         .map(|_| {
             let operands = exprs[u.below(exprs.len())].operands();

@@ -5,6 +5,7 @@
 
 use lpe::osl::{Error, Expr, Lpe, Osl, Path, Registered};
 use lpe_testkit::generate::{self, Choices};
+use lpe_testkit::grammar::{self, Coverage};
 
 use crate::dialect::EngineDialect;
 use crate::differential::shrink;
@@ -88,6 +89,25 @@ impl Generate for Osl {
 
     fn lpe(c: &mut impl Choices, registered: &Registered, cfg: &Self::Config) -> Lpe {
         generate::osl::lpe(c, registered, cfg)
+    }
+
+    fn productions() -> &'static [&'static str] {
+        grammar::osl::PRODUCTIONS
+    }
+
+    fn text(
+        c: &mut impl Choices,
+        registered: &Registered,
+        cfg: &Self::Config,
+        coverage: &mut Coverage,
+    ) -> String {
+        let bounds = grammar::Config {
+            max_units: cfg.max_vertices,
+            set_algebra: cfg.set_algebra,
+            ..grammar::Config::default()
+        };
+        let shorthand = grammar::osl::Shorthand::of(&registered.events, &registered.scatters);
+        grammar::osl::source(c, &shorthand, &bounds, coverage)
     }
 
     fn biased_path(

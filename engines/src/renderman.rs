@@ -4,6 +4,7 @@
 
 use lpe::renderman::{Error, Expr, Lpe, Parser, Path, Prefixes, RenderMan};
 use lpe_testkit::generate::{self, Choices, Config};
+use lpe_testkit::grammar::{self, Coverage};
 
 use crate::dialect::EngineDialect;
 use crate::differential::shrink;
@@ -65,6 +66,19 @@ impl Generate for RenderMan {
 
     fn lpe(c: &mut impl Choices, _: &Parser, cfg: &Config) -> Lpe {
         generate::lpe(c, cfg)
+    }
+
+    fn productions() -> &'static [&'static str] {
+        grammar::renderman::PRODUCTIONS
+    }
+
+    fn text(c: &mut impl Choices, _: &Parser, cfg: &Config, coverage: &mut Coverage) -> String {
+        let bounds = grammar::Config {
+            max_units: cfg.max_atoms,
+            set_algebra: cfg.set_algebra,
+            ..grammar::Config::default()
+        };
+        grammar::renderman::source(c, &bounds, coverage)
     }
 
     fn biased_path(target: &Expr, c: &mut impl Choices, _: &Parser, cfg: &Config) -> Path {

@@ -11,12 +11,15 @@
 //!   source of choices (lpe's `SplitMix64`, or fuzz input through `arbitrary`); the
 //!   differential harness (`lpe-check diff`) and the fuzz bodies (`lpe_engines::fuzzing`)
 //!   draw their cases here, OSL's in [`generate::osl`].
+//! - [`grammar`]: expression *text* from each dialect's documented grammar, with a
+//!   count of the productions written (`lpe-check diff --coverage`).
 //! - [`labels`]: labels one byte apart at every position and length, UTF-8 included.
 //! - `strategy` (feature `proptest`): proptest strategies for the same shapes.
 
 #![forbid(unsafe_code)]
 
 pub mod generate;
+pub mod grammar;
 pub mod labels;
 #[cfg(feature = "proptest")]
 pub mod strategy;

@@ -27,6 +27,7 @@ use lpe::{AovMask, AovSet, CompileError, Dialect, DialectLpe, PathMatcher};
 use lpe_engines::differential::{self, Generate, Outcome, Run};
 use lpe_engines::{Engine, EngineDialect, EngineError, Matcher, Reference};
 use lpe_testkit::generate::{self, Choices, Config};
+use lpe_testkit::grammar::{self, Coverage};
 
 /// Swaps `C`/`E`, `R`/`B` and `T`/`P` outside single-quoted labels: Letters text to
 /// RenderMan text and back (the swap is its own inverse).
@@ -52,6 +53,12 @@ fn swap(text: &str) -> String {
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 struct Letters;
+
+thread_local! {
+    /// Plants a front-end bug in [`Letters`]'s parser on this thread: a tab between
+    /// tokens is rejected (the grammar allows it).
+    static PLANTED_TAB_REJECTION: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
 
 #[derive(Clone, Debug, PartialEq)]
 struct LettersLpe(renderman::Lpe);
@@ -108,6 +115,10 @@ impl Dialect for Letters {
     type Classes = Alphabet;
 
     fn parse(source: &str, _: &()) -> Result<LettersLpe, renderman::Error> {
+        if PLANTED_TAB_REJECTION.with(|p| p.get()) && source.contains('\t') {
+            // A parser bug to plant: whitespace it should skip, rejected.
+            return renderman::parse("C\u{7}L").map(LettersLpe);
+        }
         renderman::parse(&swap(source)).map(LettersLpe)
     }
     fn vertices(path: &LettersPath) -> &[Vertex] {
@@ -303,6 +314,18 @@ impl Generate for Letters {
     fn lpe(c: &mut impl Choices, _: &(), cfg: &Config) -> LettersLpe {
         LettersLpe(generate::lpe(c, cfg))
     }
+    /// RenderMan's grammar text with the letters swapped: a dialect's text generator.
+    fn productions() -> &'static [&'static str] {
+        grammar::renderman::PRODUCTIONS
+    }
+    fn text(c: &mut impl Choices, _: &(), cfg: &Config, coverage: &mut Coverage) -> String {
+        let bounds = grammar::Config {
+            max_units: cfg.max_atoms,
+            set_algebra: cfg.set_algebra,
+            ..grammar::Config::default()
+        };
+        swap(&grammar::renderman::source(c, &bounds, coverage))
+    }
     fn biased_path(target: &Expr, c: &mut impl Choices, _: &(), cfg: &Config) -> LettersPath {
         LettersPath(generate::biased_path(target, c, cfg))
     }
@@ -371,11 +394,40 @@ fn the_differential_harness_runs_generated_cases() {
     assert_eq!(t.skips[0].0, "oracle");
     assert_eq!(t.skips[0].1, 60);
     assert!(t.skips[0].2.contains("letters"), "{}", t.skips[0].2);
+    // Half the expressions were written from the grammar and parsed; none rejected.
+    assert!(t.rejected.is_empty(), "{:?}", t.rejected);
+    assert!(t.coverage.exercised() > 20, "{:?}", t.coverage.missing());
     // The generated text is this dialect's: it reads back.
     let case = differential::generate_case::<Letters>(7, 3, &Letters::config(8), 2);
     for e in &case.exprs {
         assert_eq!(Letters::parse(&e.to_string(), &()).unwrap(), *e);
     }
+}
+
+/// A front end that rejects documented syntax (a tab between tokens) is caught by the
+/// grammar's texts: each rejection is a finding with its case, its text and the error.
+#[test]
+fn a_parser_that_rejects_documented_text_is_a_finding() {
+    let args = Run {
+        cases: 400,
+        seed: 7,
+        first: 0,
+        max_size: 8,
+        paths: 2,
+        max_failures: 1,
+    };
+    PLANTED_TAB_REJECTION.with(|p| p.set(true));
+    let t = differential::run_cases::<Letters>(&args, &lpe_engines::all());
+    PLANTED_TAB_REJECTION.with(|p| p.set(false));
+    assert!(!t.rejected.is_empty(), "no text with a tab in 400 cases");
+    for r in &t.rejected {
+        assert!(r.text.contains('\t'), "{r:?}");
+        assert!(r.case < 400, "{r:?}");
+        assert!(r.error.contains("byte 1"), "{r:?}");
+    }
+    // The cases still ran (a tree in place of each rejected text) and agreed.
+    assert!(t.failures.is_empty());
+    assert_eq!(t.cases, 400);
 }
 
 /// A deliberately wrong engine: it ignores labels in `'g'` items by answering like the

@@ -5,6 +5,11 @@
 //! `lpe_engines::differential::cases`. Every engine answers; the first disagreements are
 //! minimized and printed, and the process exits 3.
 //!
+//! Half the expressions are written as text from the dialect's grammar
+//! (`lpe_testkit::grammar`) and parsed: the report says how many of the grammar's
+//! productions the run wrote (`--coverage` lists each with its count), and a text the
+//! parser rejects is a finding (exit 3), printed with the parser's error.
+//!
 //! `--dialect osl` generates OSL cases instead: each with its own registration (often
 //! none, else some user event and scattering labels), expressions of up to
 //! `--max-size` vertex patterns, and paths over their labels, NONE, `_`, registered and
@@ -90,15 +95,43 @@ fn report<D: Generate>(args: &Args, names: &[&str], t: Totals<D>, start: Instant
     for (name, n, why) in &t.skips {
         println!("skips: {name} could not build {n} cases (first: {why})");
     }
+    println!(
+        "grammar coverage: {} of {} productions ({} dialect){}",
+        t.coverage.exercised(),
+        t.coverage.total(),
+        args.lang.dialect,
+        match t.coverage.missing().as_slice() {
+            [] => String::new(),
+            missing => format!("; never written: {}", missing.join(", ")),
+        }
+    );
+    if args.coverage {
+        for (production, n) in t.coverage.counts() {
+            println!("  {production:<36} {n}");
+        }
+    }
     if t.uncompared > 0 {
         println!(
             "uncompared: {} cases had fewer than two engines",
             t.uncompared
         );
     }
-    if t.failures.is_empty() {
+    for r in &t.rejected {
+        println!(
+            "\ncase {}: the parser rejects a text of the documented grammar:\n  text:  {}\n  error: {}",
+            r.case, r.text, r.error
+        );
+    }
+    if t.failures.is_empty() && t.rejected.is_empty() {
         println!("all engines agree");
         return ExitCode::SUCCESS;
+    }
+    if t.failures.is_empty() {
+        println!(
+            "all engines agree; {} grammar text(s) rejected",
+            t.rejected.len()
+        );
+        return ExitCode::from(3);
     }
     for (index, c) in &t.failures {
         println!(

@@ -84,7 +84,7 @@ fn run_in<D: Generate + CliDialect>(
             "seed {}, cases {}..{}, max size {}, {} paths per case",
             run.seed,
             run.first,
-            run.first + report.cases,
+            report.last_case.map_or(run.first, |last| last + 1),
             run.max_size,
             run.paths
         );

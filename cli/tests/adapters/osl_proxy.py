@@ -3,11 +3,20 @@
 It answers through `LPE_CHECK match --dialect osl --engine reference --batch` (one
 process per request), so it agrees with lpe unless a bug is planted:
 
-    python3 osl_proxy.py LPE_CHECK [--forget-registration]
+    python3 osl_proxy.py LPE_CHECK [--forget-registration] [--miss-counted] [--crash-on-zero]
 
 `--forget-registration` parses every set as if nothing were registered, the mistake of
 an adapter that drops the `registered` field of `compile`: expressions using a
 registered label are rejected where lpe accepts them.
+
+`--miss-counted` answers "no AOV" for every path of a set whose expressions hold a
+counted repetition `{…}`: a bug that shows only under counts, so that minimizing one
+walks the counts down towards `{0}`, which OSL's grammar accepts only among the leading
+items. `--crash-on-zero` exits (a crash) when asked to compile a `{0}` count.
+`--crash-after K` answers the first K `compile` requests of the process and exits (a
+crash) on the next: a crash on a schedule, every process alike.
+`--flaky` makes `--miss-counted` a flaky bug: it shows only the first time a set is
+compiled, so a case asked again agrees.
 """
 
 import json
@@ -16,6 +25,15 @@ import sys
 
 LPE_CHECK = sys.argv[1]
 FORGET = "--forget-registration" in sys.argv[2:]
+MISS_COUNTED = "--miss-counted" in sys.argv[2:]
+CRASH_ON_ZERO = "--crash-on-zero" in sys.argv[2:]
+FLAKY = "--flaky" in sys.argv[2:]
+compiled = set()
+CRASH_AFTER = (
+    int(sys.argv[sys.argv.index("--crash-after") + 1]) if "--crash-after" in sys.argv else None
+)
+compiles = 0
+buggy = False
 
 
 def registration(reg):
@@ -52,6 +70,14 @@ for line in sys.stdin:
             reply["protocol"] = 1
     elif op == "compile":
         aovs = [(a["name"], a["expr"]) for a in req["aovs"]]
+        compiles += 1
+        if CRASH_AFTER is not None and compiles > CRASH_AFTER:
+            sys.exit(f"planted crash on compile {compiles}")
+        key = tuple(e for _, e in aovs)
+        buggy = MISS_COUNTED and not (FLAKY and key in compiled)
+        compiled.add(key)
+        if CRASH_ON_ZERO and any("{0}" in e or "{0,0}" in e for _, e in aovs):
+            sys.exit("planted crash on a {0} count")
         reg = registration(req.get("registered"))
         # Any path will do: the answer line says whether the expression parses.
         answers = batch([f"{e}\t{reg}\tC,_ L,_" for _, e in aovs]) if aovs else []
@@ -66,6 +92,8 @@ for line in sys.stdin:
         reply["matches"] = [
             [name for name, _ in aovs if next(answers) == "match"] for _ in req["paths"]
         ]
+        if buggy and any("{" in e for _, e in aovs):
+            reply["matches"] = [[] for _ in req["paths"]]
     print(json.dumps(reply), flush=True)
     if op == "quit":
         break

@@ -2,7 +2,11 @@
 //!
 //! Each case is one expression (or, one time in five, an AOV set of 2-5 expressions
 //! compiled at once) and paths generated *from* it (walks of the expression, near
-//! misses, uniform noise; see `lpe_testkit::generate`).
+//! misses, uniform noise; see `lpe_testkit::generate`). Half the expressions are drawn
+//! as trees (`Generate::lpe`), half as text from the dialect's grammar
+//! (`Generate::text`, `lpe_testkit::grammar`) and parsed with the dialect's parser: the
+//! text reaches productions no tree printer writes, and a text the parser rejects is a
+//! finding (the generator writes only what docs/language.md allows).
 //!
 //! Case `i` of seed `s` is generated from its own PRNG stream, so a run is deterministic
 //! for a seed and a reported case can be regenerated alone (`--first i --cases 1`).
@@ -10,10 +14,11 @@
 use lpe::algebra::SetExpr;
 use lpe::rng::SplitMix64 as Rng;
 use lpe_testkit::generate::Choices;
+use lpe_testkit::grammar::Coverage;
 
 use super::check::{check_in, Outcome};
 use super::counterexample::Counterexample;
-use super::generate::Generate;
+use super::generate::{draw, Generate};
 use crate::dialect::EngineDialect;
 use crate::engine::Engine;
 
@@ -26,6 +31,25 @@ pub struct Case<D: EngineDialect> {
     pub exprs: Vec<D::Lpe>,
     /// Paths aimed at the expressions.
     pub paths: Vec<D::Path>,
+    /// The source text of each expression drawn from the grammar (`None`: a tree).
+    pub texts: Vec<Option<String>>,
+    /// Grammar texts the dialect's parser rejected: the text and the error (the case
+    /// then uses a tree in its place).
+    pub rejected: Vec<(String, String)>,
+    /// The grammar productions the case's texts wrote.
+    pub coverage: Coverage,
+}
+
+/// A rejected grammar text: the generator writes only documented syntax, so either the
+/// parser or the generator (or the documentation) is wrong.
+#[derive(Clone, Debug)]
+pub struct Rejected {
+    /// The case.
+    pub case: u64,
+    /// The text.
+    pub text: String,
+    /// The parser's error.
+    pub error: String,
 }
 
 /// The PRNG of case `index` under `seed`: independent streams per case.
@@ -49,9 +73,16 @@ pub fn generate_case<D: Generate>(seed: u64, index: u64, cfg: &D::Config, paths:
     let mut rng = case_rng(seed, index);
     let registration = D::registration(&mut rng);
     let n = set_size(&mut rng);
-    let exprs: Vec<D::Lpe> = (0..n)
-        .map(|_| D::lpe(&mut rng, &registration, cfg))
-        .collect();
+    let mut coverage = Coverage::new(D::productions());
+    let mut texts = Vec::with_capacity(n);
+    let mut rejected = Vec::new();
+    let mut exprs: Vec<D::Lpe> = Vec::with_capacity(n);
+    for _ in 0..n {
+        let drawn = draw::<D>(&mut rng, &registration, cfg, &mut coverage);
+        exprs.push(drawn.lpe);
+        texts.push(drawn.text);
+        rejected.extend(drawn.rejected);
+    }
     let paths = (0..paths)
         .map(|_| {
             // Aim at one operand: for set algebra, paths near each side of `A - B`.
@@ -64,11 +95,14 @@ pub fn generate_case<D: Generate>(seed: u64, index: u64, cfg: &D::Config, paths:
         registration,
         exprs,
         paths,
+        texts,
+        rejected,
+        coverage,
     }
 }
 
 /// Totals of a run.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct Totals<D: EngineDialect> {
     /// Cases run.
     pub cases: u64,
@@ -82,6 +116,10 @@ pub struct Totals<D: EngineDialect> {
     pub uncompared: u64,
     /// Minimized disagreements.
     pub failures: Vec<(u64, Counterexample<D>)>,
+    /// Grammar texts the dialect's parser rejected.
+    pub rejected: Vec<Rejected>,
+    /// Grammar productions the run's texts wrote.
+    pub coverage: Coverage,
 }
 
 /// Which cases a run generates, and when it stops.
@@ -104,10 +142,26 @@ pub struct Run {
 /// Runs cases `first..first + cases` and returns the totals.
 pub fn run_cases<D: Generate>(args: &Run, engines: &[&dyn Engine<D>]) -> Totals<D> {
     let cfg = D::config(args.max_size);
-    let mut t = Totals::default();
+    let mut t = Totals {
+        cases: 0,
+        pairs: 0,
+        matched: 0,
+        skips: Vec::new(),
+        uncompared: 0,
+        failures: Vec::new(),
+        rejected: Vec::new(),
+        coverage: Coverage::new(D::productions()),
+    };
     for index in args.first..args.first.saturating_add(args.cases) {
         let case = generate_case::<D>(args.seed, index, &cfg, args.paths);
         t.cases += 1;
+        t.coverage.merge(&case.coverage);
+        t.rejected
+            .extend(case.rejected.iter().map(|(text, error)| Rejected {
+                case: index,
+                text: text.clone(),
+                error: error.clone(),
+            }));
         // Long runs report progress on stderr every tenth, so stdout stays the summary.
         if args.cases >= 10_000 && t.cases % (args.cases / 10) == 0 {
             eprintln!(

@@ -15,8 +15,9 @@
 //!   is small enough to read; [`answers`]: each engine's answers on one path, which both
 //!   the comparison and the minimizer ask.
 //! - [`counterexample`]: what a disagreement reports, and how it prints.
-//! - [`generate`]: [`Generate`], a dialect's case generators (from `lpe_testkit`);
-//!   [`cases`]: generated cases (a registration, expressions or AOV sets, with paths
+//! - [`generate`]: [`Generate`], a dialect's case generators (from `lpe_testkit`): trees,
+//!   and text from the dialect's grammar ([`draw`]: half of each, a rejected text kept
+//!   as a finding); [`cases`]: generated cases (a registration, expressions or AOV sets, with paths
 //!   aimed at them), deterministic per seed and index, and a run over a range of them
 //!   (`lpe-check diff`).
 //!
@@ -33,10 +34,10 @@ pub mod minimize;
 pub mod shrink;
 
 pub use answers::answers_in;
-pub use cases::{case_rng, generate_case, run_cases, Case, Run, Totals};
+pub use cases::{case_rng, generate_case, run_cases, Case, Rejected, Run, Totals};
 pub use check::{check, check_in, check_set, check_with, Agreement, Outcome};
 pub use counterexample::Counterexample;
-pub use generate::Generate;
+pub use generate::{draw, Drawn, Generate};
 pub use minimize::{minimize_by, minimize_in};
 pub use shrink::{shrink_expr, shrink_path};
 

@@ -96,6 +96,9 @@ pub struct Disagreement {
     pub original: (Vec<AovSource>, String),
     /// A command line that replays the minimized case.
     pub replay: String,
+    /// Set when the minimized case no longer disagreed when asked again (a flaky
+    /// matcher): the case shown is then the original one.
+    pub note: Option<String>,
 }
 
 /// Something the run found.
@@ -170,6 +173,9 @@ impl fmt::Display for Finding {
                     writeln!(f, "    aov {}: {}", a.name, a.expr)?;
                 }
                 writeln!(f, "    path:   {}", d.original.1)?;
+                if let Some(note) = &d.note {
+                    writeln!(f, "  note: {note}")?;
+                }
                 write!(f, "  replay: {}", d.replay)
             }
         }
@@ -212,6 +218,8 @@ pub struct Report {
     pub name: Option<String>,
     /// Cases asked.
     pub cases: u64,
+    /// The highest case index asked (generated runs).
+    pub last_case: Option<u64>,
     /// Set/path pairs compared (one per AOV per path).
     pub pairs: u64,
     /// Pairs that matched.
@@ -476,6 +484,7 @@ fn run_items<D: EngineDialect>(
                 break;
             };
             report.cases += 1;
+            report.last_case = report.last_case.max(*case);
             judge(
                 setup,
                 &mut client,
@@ -570,33 +579,88 @@ fn judge<D: EngineDialect>(
             }
             _ => original.clone(),
         };
-        // Ask both sides again on the minimized case, for the report.
-        let min_exprs: Vec<String> = aovs_min.iter().map(|a| a.expr.clone()).collect();
-        let min_parsed = parse_all::<D>(registration, &min_exprs);
-        let min_paths: Vec<D::Path> = path_min.parse().ok().into_iter().collect();
-        let external = match ask::<D>(
+        // Ask both sides again on the minimized case, for the report; a case that no
+        // longer disagrees (a flaky matcher) is replaced by the original one.
+        let budget = setup.max_restarts;
+        let mut shown = asked_again(
+            engines,
             client,
+            budget,
             registration,
-            &aovs_min,
-            std::slice::from_ref(&path_min),
-        ) {
-            Ok(Some(mut a)) if !a.is_empty() => a.swap_remove(0),
-            _ => ext.clone(),
-        };
-        let engines_answers = ours_on_one(engines, registration, &min_parsed, &min_paths);
+            (aovs_min, path_min),
+            ext,
+        );
+        let mut note = None;
+        if !shown.disagrees() && shown.aovs != original.0 {
+            note = Some(
+                "the minimized case agreed when asked again; the original case is shown".into(),
+            );
+            shown = asked_again(engines, client, budget, registration, original.clone(), ext);
+        }
+        let exprs_shown: Vec<String> = shown.aovs.iter().map(|a| a.expr.clone()).collect();
         report
             .findings
             .push(Finding::Disagreement(Box::new(Disagreement {
                 case,
-                replay: replay::<D>(setup, registration, &min_exprs, &path_min),
-                aovs: aovs_min,
-                path: path_min,
+                replay: replay::<D>(setup, registration, &exprs_shown, &shown.path),
+                aovs: shown.aovs,
+                path: shown.path,
                 context: D::context(registration),
-                external,
-                engines: engines_answers,
+                external: shown.external,
+                engines: shown.engines,
                 original,
+                note,
             })));
         return;
+    }
+}
+
+/// A case asked again of both sides: the set, the path, and every answer.
+struct Asked {
+    aovs: Vec<AovSource>,
+    path: String,
+    external: Answer,
+    engines: Vec<(&'static str, Option<Answer>)>,
+}
+
+impl Asked {
+    fn disagrees(&self) -> bool {
+        self.engines
+            .iter()
+            .any(|(_, a)| a.as_ref().is_some_and(|o| !o.agrees(&self.external)))
+    }
+}
+
+/// Asks the external process and the engines about one set and path given as text
+/// (what the process is sent is what the engines judge); `fallback` stands for the
+/// external answer if the process cannot answer, or could only after a restart past
+/// the budget of `max_restarts`.
+fn asked_again<D: EngineDialect>(
+    engines: &[&dyn Engine<D>],
+    client: &mut Client,
+    max_restarts: u64,
+    registration: &D::Registration,
+    (aovs, path): (Vec<AovSource>, String),
+    fallback: &Answer,
+) -> Asked {
+    let exprs: Vec<String> = aovs.iter().map(|a| a.expr.clone()).collect();
+    let parsed = parse_all::<D>(registration, &exprs);
+    let paths: Vec<D::Path> = path.parse().ok().into_iter().collect();
+    let asked = if client.may_continue(max_restarts) {
+        ask::<D>(client, registration, &aovs, std::slice::from_ref(&path))
+    } else {
+        Ok(None)
+    };
+    let external = match asked {
+        Ok(Some(mut a)) if !a.is_empty() => a.swap_remove(0),
+        _ => fallback.clone(),
+    };
+    let engines = ours_on_one(engines, registration, &parsed, &paths);
+    Asked {
+        aovs,
+        path,
+        external,
+        engines,
     }
 }
 
@@ -613,8 +677,12 @@ fn ours_on_one<D: EngineDialect>(
 }
 
 /// Shrinks a disagreement of case `case`, re-asking the external process at every
-/// candidate. Faults met on the way are findings of that case too; the candidate that
-/// caused one does not count as a disagreement.
+/// candidate. A candidate is what the process is sent: its printed text, which the
+/// engines judge re-parsed (a tree whose text reads differently, or not at all, is
+/// judged as that text). Each text is asked once: a candidate seen before keeps its
+/// verdict, so one that crashed the process is never sent again. Faults met on the way
+/// are findings of that case too; the candidate that caused one does not count as a
+/// disagreement.
 fn minimize<D: EngineDialect>(
     setup: &Setup<D>,
     client: &mut Client,
@@ -623,25 +691,49 @@ fn minimize<D: EngineDialect>(
     (case, exprs, path): (Option<u64>, Vec<D::Lpe>, D::Path),
     report: &mut Report,
 ) -> (Vec<D::Lpe>, D::Path) {
+    let mut verdicts: std::collections::HashMap<(Vec<String>, String), bool> =
+        std::collections::HashMap::new();
     minimize_by::<D>(registration, exprs, path, |exprs, path| {
+        let texts: Vec<String> = exprs.iter().map(|e| e.to_string()).collect();
+        let key = (texts, path.to_string());
+        if let Some(&verdict) = verdicts.get(&key) {
+            return verdict;
+        }
         if !client.may_continue(setup.max_restarts) {
             return false;
         }
-        let texts: Vec<String> = exprs.iter().map(|e| e.to_string()).collect();
-        let aovs = sources(&texts);
-        let ext = match ask::<D>(client, registration, &aovs, &[path.to_string()]) {
-            Ok(Some(mut a)) if a.len() == 1 => a.swap_remove(0),
-            Ok(_) => return false,
-            Err(fault) => {
-                report.findings.push(Finding::Fault { case, fault });
-                return false;
-            }
-        };
-        let parsed = Ok(exprs.to_vec());
-        ours(engines, registration, &parsed, std::slice::from_ref(path))
-            .iter()
-            .any(|(_, a)| a[0].as_ref().is_some_and(|o| !o.agrees(&ext)))
+        let verdict = disagrees_on_text(client, registration, engines, &key, case, report);
+        verdicts.insert(key, verdict);
+        verdict
     })
+}
+
+/// Whether the external process and some engine answer differently on one candidate,
+/// given as the texts the process is sent.
+fn disagrees_on_text<D: EngineDialect>(
+    client: &mut Client,
+    registration: &D::Registration,
+    engines: &[&dyn Engine<D>],
+    (texts, path): &(Vec<String>, String),
+    case: Option<u64>,
+    report: &mut Report,
+) -> bool {
+    let aovs = sources(texts);
+    let ext = match ask::<D>(client, registration, &aovs, std::slice::from_ref(path)) {
+        Ok(Some(mut a)) if a.len() == 1 => a.swap_remove(0),
+        Ok(_) => return false,
+        Err(fault) => {
+            report.findings.push(Finding::Fault { case, fault });
+            return false;
+        }
+    };
+    let Ok(path) = path.parse::<D::Path>() else {
+        return false;
+    };
+    let parsed = parse_all::<D>(registration, texts);
+    ours(engines, registration, &parsed, std::slice::from_ref(&path))
+        .iter()
+        .any(|(_, a)| a[0].as_ref().is_some_and(|o| !o.agrees(&ext)))
 }
 
 /// The one-line command that replays a case.

@@ -33,6 +33,10 @@ pub struct Args {
     /// Stop after this many disagreements.
     #[arg(long, default_value_t = 3)]
     pub max_failures: usize,
+    /// Print every grammar production with the number of generated texts that wrote it
+    /// (the summary line `grammar coverage: N of M productions` is always printed).
+    #[arg(long)]
+    pub coverage: bool,
     /// `--dialect renderman|osl`; `--register` (OSL, with --external --expr only: a
     /// generated case registers its own labels) for a replayed case.
     #[command(flatten)]

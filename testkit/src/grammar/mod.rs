@@ -1,0 +1,228 @@
+//! Expression *text* drawn from each dialect's grammar, production by production, with
+//! a record of which productions a run wrote.
+//!
+//! The tree generators of [`crate::generate`] draw ASTs and print them; a construct the
+//! tree cannot hold, or that the printer never writes (OSL's `(R|T)` inside `<…>`,
+//! whitespace, lower-case letters, `lpe:`, prefixes, macro names), is then never read by
+//! a parser under test. These generators write text directly from the grammars of
+//! docs/language.md (§3-§7 for RenderMan in [`renderman`], §18 for OSL in [`osl`]): they
+//! share no code or types with either front end, only the documentation, so a parser
+//! that misreads a production meets it here.
+//!
+//! Every production a generator writes is counted in a [`Coverage`] over the dialect's
+//! list of productions ([`renderman::PRODUCTIONS`], [`osl::PRODUCTIONS`]);
+//! `lpe-check diff --coverage` prints the totals. The lists name what the grammars
+//! allow a user to write; the tests of this module check that a default-sized run
+//! writes every one of them.
+//!
+//! The text is valid by construction: every draw respects the documented limits and
+//! constraints (counts, `n <= m`, no `{0}` where it is an error, labels without `'`).
+//! [`mutate`] turns a valid text into a near miss (one character deleted, doubled or
+//! inserted) for the front ends' error paths.
+
+use crate::generate::Choices;
+
+pub mod osl;
+pub mod renderman;
+
+/// How many times each production of a dialect's grammar was written.
+#[derive(Clone, Debug)]
+pub struct Coverage {
+    names: &'static [&'static str],
+    counts: Vec<u64>,
+}
+
+impl Coverage {
+    /// No production written yet, over the list `names`.
+    pub fn new(names: &'static [&'static str]) -> Coverage {
+        Coverage {
+            names,
+            counts: vec![0; names.len()],
+        }
+    }
+
+    /// Records one use of `production`.
+    ///
+    /// # Panics
+    /// If `production` is not in the list: a generator that writes a production its
+    /// list does not name is a bug of this module (the tests draw thousands of texts).
+    pub fn hit(&mut self, production: &str) {
+        match self.names.iter().position(|n| *n == production) {
+            Some(i) => self.counts[i] += 1,
+            None => panic!("production `{production}` is not in the grammar's list"),
+        }
+    }
+
+    /// Adds `other`'s counts (same list).
+    pub fn merge(&mut self, other: &Coverage) {
+        for (mine, theirs) in self.counts.iter_mut().zip(&other.counts) {
+            *mine += theirs;
+        }
+    }
+
+    /// Productions written at least once.
+    pub fn exercised(&self) -> usize {
+        self.counts.iter().filter(|&&n| n > 0).count()
+    }
+
+    /// Productions in the list.
+    pub fn total(&self) -> usize {
+        self.names.len()
+    }
+
+    /// The productions never written, in list order.
+    pub fn missing(&self) -> Vec<&'static str> {
+        self.names
+            .iter()
+            .zip(&self.counts)
+            .filter(|(_, &n)| n == 0)
+            .map(|(name, _)| *name)
+            .collect()
+    }
+
+    /// Each production with its count, in list order.
+    pub fn counts(&self) -> impl Iterator<Item = (&'static str, u64)> + '_ {
+        self.names.iter().copied().zip(self.counts.iter().copied())
+    }
+}
+
+/// Size bounds of generated text.
+#[derive(Clone, Debug)]
+pub struct Config {
+    /// Most vertex-level units (atoms, vertex patterns) per expression, roughly: the
+    /// generator stops adding units once it has written this many.
+    pub max_units: usize,
+    /// Deepest nesting of groups, classes and algebra groups.
+    pub max_depth: usize,
+    /// Whether set algebra (`&`, `-`, `^`: this toolkit's extension) may be written.
+    pub set_algebra: bool,
+}
+
+impl Default for Config {
+    fn default() -> Self {
+        Config {
+            max_units: 10,
+            max_depth: 3,
+            set_algebra: true,
+        }
+    }
+}
+
+/// A text under construction: the text, the coverage it adds to, and the unit budget.
+pub(crate) struct Writer<'a> {
+    pub(crate) out: String,
+    pub(crate) cov: &'a mut Coverage,
+    pub(crate) units: usize,
+}
+
+impl<'a> Writer<'a> {
+    pub(crate) fn new(cov: &'a mut Coverage) -> Writer<'a> {
+        Writer {
+            out: String::new(),
+            cov,
+            units: 0,
+        }
+    }
+
+    /// Appends `text` as production `production`.
+    pub(crate) fn put(&mut self, production: &str, text: &str) {
+        self.cov.hit(production);
+        self.out.push_str(text);
+    }
+
+    /// Appends `text` with no production of its own (punctuation of an enclosing one).
+    pub(crate) fn raw(&mut self, text: &str) {
+        self.out.push_str(text);
+    }
+}
+
+/// A quoted label: plain, with a space, with characters that are operators or
+/// punctuation elsewhere, UTF-8, or empty. Never holds `'` (no escapes in either
+/// dialect).
+pub(crate) fn label(c: &mut impl Choices, w: &mut Writer<'_>, plain: &[&str]) {
+    match c.below(6) {
+        0 => w.put("label.empty", "''"),
+        1 => w.put("label.space", "'a b'"),
+        2 => {
+            let l = *c.pick(&["'a|b'", "'x-y'", "'p&q'", "'^n'", "'<R>'", "'[D]'", "'(c)'"]);
+            w.put("label.punctuation", l)
+        }
+        3 => w.put("label.utf8", "'é'"),
+        _ => {
+            let l = format!("'{}'", c.pick(plain));
+            w.put("label.plain", &l)
+        }
+    }
+}
+
+/// A count for `{…}`: mostly small, sometimes the documented maximum (256), where it
+/// cannot multiply (the caller says whether it may be large).
+pub(crate) fn count(c: &mut impl Choices, large: bool) -> u32 {
+    if large && c.chance(3) {
+        256
+    } else {
+        c.below(4) as u32
+    }
+}
+
+/// One-character edits that turn a valid text into a near miss: delete, double, or
+/// insert a character that means something in some position of one of the grammars.
+pub fn mutate(c: &mut impl Choices, text: &str) -> String {
+    let chars: Vec<char> = text.chars().collect();
+    let at = c.below(chars.len() + 1);
+    let mut out: Vec<char> = chars.clone();
+    match c.below(3) {
+        0 if at < chars.len() => {
+            out.remove(at);
+        }
+        1 if at < chars.len() => out.insert(at, chars[at]),
+        _ => {
+            let ch = *c.pick(&[
+                '<', '>', '[', ']', '(', ')', '{', '}', ',', '|', '*', '+', '?', '^', '\'', '.',
+                ' ', '&', '-', ';', '_', '1', 'x', 'D', 'L',
+            ]);
+            out.insert(at, ch);
+        }
+    }
+    out.into_iter().collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const NAMES: &[&str] = &["a", "b", "c"];
+
+    #[test]
+    fn coverage_counts_and_lists_what_is_missing() {
+        let mut cov = Coverage::new(NAMES);
+        assert_eq!((cov.exercised(), cov.total()), (0, 3));
+        cov.hit("b");
+        cov.hit("b");
+        let mut other = Coverage::new(NAMES);
+        other.hit("c");
+        cov.merge(&other);
+        assert_eq!(cov.exercised(), 2);
+        assert_eq!(cov.missing(), vec!["a"]);
+        assert_eq!(
+            cov.counts().collect::<Vec<_>>(),
+            vec![("a", 0), ("b", 2), ("c", 1)]
+        );
+    }
+
+    #[test]
+    #[should_panic(expected = "`z` is not in the grammar's list")]
+    fn a_production_outside_the_list_is_a_bug() {
+        Coverage::new(NAMES).hit("z");
+    }
+
+    #[test]
+    fn mutations_change_the_text_by_one_character() {
+        let mut rng = lpe::rng::SplitMix64::new(3);
+        for _ in 0..500 {
+            let m = mutate(&mut rng, "C<RD>L");
+            let d = m.chars().count() as i64 - 6;
+            assert!(d == 1 || d == -1, "{m}");
+        }
+    }
+}
