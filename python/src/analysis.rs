@@ -53,7 +53,11 @@ impl Lpe {
     }
 }
 
-/// Parses `expr`.
+/// Parses `expr` in `dialect` ("renderman" or "osl") and returns it with its canonical
+/// text (`.text`, macros expanded). `ini` is a rendermn.ini file (RenderMan macros and
+/// lobe mappings), `register` OSL's user labels (`events=U;scatters=Y`). Raises
+/// `LpeSyntaxError` (`message`, `position`, `hint`; `str()` shows a caret) when it
+/// does not parse, `ValueError` for a bad dialect, ini or registration.
 #[pyfunction]
 #[pyo3(signature = (expr, dialect = "renderman", ini = None, register = None))]
 pub fn parse(
@@ -75,8 +79,9 @@ pub fn parse(
     })
 }
 
-/// `None` when `a` and `b` match the same paths, else the shortest path one matches and
-/// the other does not.
+/// `None` when expressions `a` and `b` match exactly the same paths, else the shortest
+/// path (as text) one matches and the other does not, re-checked with the reference
+/// matcher. Raises `LpeSyntaxError` when either does not parse.
 #[pyfunction]
 #[pyo3(signature = (a, b, dialect = "renderman", ini = None, register = None))]
 pub fn equiv(
@@ -201,8 +206,12 @@ fn members(obj: &Bound<'_, PyAny>) -> PyResult<Vec<(String, String)>> {
         .collect()
 }
 
-/// Checks that `members` split `universe` (default: the dialect's) into disjoint parts
-/// covering it.
+/// Checks that `members` (a dict `{name: expr}`, or a list of expressions or
+/// `(name, expr)` pairs) split `universe` (default: the dialect's, `C.*[<L.>O]` or
+/// `C<[RT][DGS]>*[LO]`) into disjoint parts covering it. Returns a `Partition`:
+/// `overlaps` `(a, b, witness)`, `gaps` (the shortest uncovered path, at most one),
+/// `outside` `(member, witness)`, `remainder` (an expression closing the gap), `clean`
+/// and `text` (`lpe-check partition`'s report).
 #[pyfunction]
 #[pyo3(signature = (members, universe = None, dialect = "renderman", ini = None, register = None))]
 pub fn partition(

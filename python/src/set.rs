@@ -4,6 +4,8 @@
 //! The set is generic over the dialect ([`Compiled`]); the Python class holds one of
 //! the two ([`Inner`]).
 
+use std::borrow::Cow;
+use std::collections::HashMap;
 use std::path::PathBuf;
 
 use lpe::osl::Osl;
@@ -11,7 +13,7 @@ use lpe::renderman::RenderMan;
 use lpe::{with_dialect, AovMask, Options};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
-use pyo3::types::{PyList, PyString};
+use pyo3::types::{PyList, PyString, PyTuple};
 
 use crate::dialect::{self, PyDialect};
 use crate::error::value_error;
@@ -61,27 +63,39 @@ impl<D: PyDialect> Compiled<D> {
         py: Python<'py>,
         paths: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyList>> {
-        let texts = paths
+        let items = paths
             .try_iter()
             .map_err(|_| PyTypeError::new_err("match_many takes an iterable of paths"))?
-            .map(|p| dialect::path_text::<D>(&p?))
-            .collect::<PyResult<Vec<String>>>()?;
+            .collect::<PyResult<Vec<Bound<'py, PyAny>>>>()?;
+        // Text paths are borrowed from their Python strings; tuple paths are written out.
+        let texts = items
+            .iter()
+            .map(|p| match p.downcast::<PyString>() {
+                Ok(s) => s.to_str().map(Cow::Borrowed),
+                Err(_) => dialect::path_text::<D>(p).map(Cow::Owned),
+            })
+            .collect::<PyResult<Vec<Cow<'_, str>>>>()?;
         let set = &self.set;
-        let masks: Vec<Result<AovMask, String>> = py.allow_threads(|| {
-            texts
-                .iter()
-                .map(|t| dialect::parse_path::<D>(t).map(|p| set.match_path(&p)))
-                .collect()
-        });
+        let masks = py.allow_threads(|| match_all::<D>(set, &texts));
+        // Equal answers share one tuple of interned names.
         let names: Vec<Bound<'py, PyString>> =
             set.names().iter().map(|n| PyString::new(py, n)).collect();
-        let out = PyList::empty(py);
+        let mut answers: HashMap<AovMask, Bound<'py, PyTuple>> = HashMap::new();
+        let mut out = Vec::with_capacity(masks.len());
         for (i, m) in masks.into_iter().enumerate() {
             let m = m.map_err(|e| value_error(format!("paths[{i}]: {e}")))?;
-            let landed: Vec<&Bound<'py, PyString>> = m.iter().map(|k| &names[k]).collect();
-            out.append(PyList::new(py, landed)?)?;
+            let answer = match answers.get(&m) {
+                Some(t) => t.clone(),
+                None => {
+                    let landed: Vec<&Bound<'py, PyString>> = m.iter().map(|k| &names[k]).collect();
+                    let t = PyTuple::new(py, landed)?;
+                    answers.insert(m, t.clone());
+                    t
+                }
+            };
+            out.push(answer);
         }
-        Ok(out)
+        PyList::new(py, out)
     }
 
     fn explain(&self, path: &Bound<'_, PyAny>) -> PyResult<Explanation> {
@@ -93,6 +107,30 @@ impl<D: PyDialect> Compiled<D> {
             text: e.text,
         })
     }
+}
+
+/// Parses and matches every path of `texts`, on as many threads as there are cores for
+/// a long list (the answers in order).
+fn match_all<D: PyDialect>(
+    set: &lpe::AovSet<D>,
+    texts: &[Cow<'_, str>],
+) -> Vec<Result<AovMask, String>> {
+    let one = |t: &Cow<'_, str>| dialect::parse_path::<D>(t).map(|p| set.match_path(&p));
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get().min(8));
+    if threads == 1 || texts.len() < 4096 {
+        return texts.iter().map(one).collect();
+    }
+    let chunk = texts.len().div_ceil(threads);
+    std::thread::scope(|scope| {
+        let workers: Vec<_> = texts
+            .chunks(chunk)
+            .map(|part| scope.spawn(move || part.iter().map(one).collect::<Vec<_>>()))
+            .collect();
+        workers
+            .into_iter()
+            .flat_map(|w| w.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .collect()
+    })
 }
 
 /// One compiled set, of either dialect.
@@ -113,7 +151,12 @@ macro_rules! on_set {
     };
 }
 
-/// Named AOVs compiled into one automaton.
+/// AovSet(aovs, dialect="renderman", ini=None, register=None)
+///
+/// Named AOVs (a dict `{name: expr}` or a list of `(name, expr)` pairs) of one dialect
+/// compiled into one automaton. A path is text (`"C RD2'floor' L'key'"`, OSL:
+/// `"C,_ R,D L,_"`) or a list of `(type, event, label)` tuples (event and label may be
+/// None). Raises `LpeSyntaxError` (with `.aov`) for an AOV that does not parse.
 #[pyclass(module = "lpe", frozen)]
 pub struct AovSet {
     inner: Inner,
@@ -185,13 +228,17 @@ impl AovSet {
         format!("<lpe.AovSet {} AOVs ({})>", self.__len__(), self.dialect)
     }
 
-    /// The names of the AOVs `path` lands in, in set order.
+    /// The names of the AOVs `path` lands in, in set order. Raises `ValueError` for a
+    /// path that is not one of the dialect, `TypeError` for a value that is no path.
     #[pyo3(name = "match")]
     fn match_(&self, path: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
         on_set!(&self.inner, s => s.match_one(path))
     }
 
-    /// `match` of every path of `paths`, one list per path.
+    /// `match` of every path of the iterable `paths`, one tuple of names per path (equal
+    /// answers share one tuple): the batch form. The paths are parsed and matched with
+    /// the GIL released, on every core for a long list. A bad path raises `ValueError`
+    /// naming its index.
     fn match_many<'py>(
         &self,
         py: Python<'py>,

@@ -128,8 +128,9 @@ def _report(stage):
             if entry is not None:
                 entry[1].Revoke()
 
+        # Tf.Notice holds the callback weakly: the cache entry keeps it alive.
         listener = Tf.Notice.Register(Usd.Notice.StageContentsChanged, changed, stage)
-        _cache[key] = (report, listener)
+        _cache[key] = (report, listener, changed)
         return report
 
 
