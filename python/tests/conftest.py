@@ -6,5 +6,5 @@ import os
 import lpe
 
 os.environ["PXR_PLUGINPATH_NAME"] = os.pathsep.join(
-    p for p in [os.path.dirname(lpe.__file__), os.environ.get("PXR_PLUGINPATH_NAME")] if p
+    p for p in [lpe.plugin_path(), os.environ.get("PXR_PLUGINPATH_NAME")] if p
 )

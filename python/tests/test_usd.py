@@ -8,6 +8,7 @@ import json
 import os
 import pathlib
 import subprocess
+import sys
 
 import pytest
 
@@ -66,6 +67,46 @@ def test_the_registry_finds_every_validator_by_keyword():
         assert registry.GetOrLoadValidatorByName(name) is not None
     syntax = registry.GetValidatorMetadata("lpe:Syntax")
     assert list(syntax.GetSchemaTypes()) == ["UsdRenderVar"]
+
+
+def run_python(code, plugin):
+    env = dict(os.environ)
+    env.pop("PXR_PLUGINPATH_NAME", None)
+    if plugin:
+        env["PXR_PLUGINPATH_NAME"] = lpe.plugin_path()
+    return subprocess.run([sys.executable, "-c", code],
+                          capture_output=True, text=True, env=env, check=False)
+
+
+def test_without_the_plugin_path_validate_says_what_to_set():
+    run = run_python(
+        "import lpe.usd_validation as v\n"
+        "from pxr import Usd\n"
+        "try:\n    v.validate(Usd.Stage.CreateInMemory())\n"
+        "except RuntimeError as e:\n    print(e)\n",
+        plugin=False,
+    )
+    assert run.returncode == 0, run.stderr
+    assert "PXR_PLUGINPATH_NAME" in run.stdout and lpe.plugin_path() in run.stdout
+
+
+def test_usd_loads_the_plugin_whichever_is_imported_first():
+    check = (
+        "from pxr import UsdValidation\n"
+        "r = UsdValidation.ValidationRegistry()\n"
+        "print(r.GetOrLoadValidatorByName('lpe:Syntax') is not None)\n"
+    )
+    # pxr first: USD imports the package when it loads the validator.
+    run = run_python(check, plugin=True)
+    assert run.stdout.split() == ["True"], run.stderr
+    # lpe first: the package registers right after pxr.UsdValidation is imported.
+    run = run_python("import lpe\n" + check, plugin=True)
+    assert run.stdout.split() == ["True"], run.stderr
+    run = run_python("import lpe\nimport lpe.usd_validation\n" + check, plugin=True)
+    assert run.stdout.split() == ["True"], run.stderr
+    # Without the plugin path, importing pxr after lpe still works (nothing registered).
+    run = run_python("import lpe\n" + check, plugin=False)
+    assert run.returncode == 0 and run.stdout.split() == ["False"], run.stderr
 
 
 def test_a_bad_render_var_in_a_built_stage_is_flagged_at_its_attribute():

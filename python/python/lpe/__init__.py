@@ -21,10 +21,14 @@ The UsdValidation plugin (validators ``lpe:...``, keyword ``lpe``) is in
 
 from __future__ import annotations
 
+import importlib as _importlib
+import importlib.abc as _importlib_abc
+import importlib.util as _importlib_util
 import json as _json
 import os as _os
 import sys as _sys
 import tempfile as _tempfile
+import warnings as _warnings
 
 from ._lpe import (
     DIALECTS,
@@ -52,6 +56,7 @@ __all__ = [
     "lint",
     "parse",
     "partition",
+    "plugin_path",
 ]
 
 #: The keys of one finding in ``lpe-check lint --format json`` (docs/lint.md).
@@ -126,6 +131,12 @@ class LintReport:
         return f"<lpe.LintReport {len(self.findings)} findings, {len(self.aovs)} AOVs>"
 
 
+def plugin_path() -> str:
+    """The folder holding the UsdValidation plugin's ``plugInfo.json``: put it on
+    ``PXR_PLUGINPATH_NAME`` before pxr is first imported (docs/python.md)."""
+    return _os.path.dirname(_os.path.abspath(__file__))
+
+
 def _is_stage(obj) -> bool:
     return hasattr(obj, "ExportToString") and hasattr(obj, "GetRootLayer")
 
@@ -197,8 +208,43 @@ def lint(
     return LintReport(_json.loads(out))
 
 
-# Loaded by USD's plugin system (plugInfo.json names this package): register the
-# validators when pxr's validation module is already imported; otherwise
-# `lpe.usd_validation` registers them when it is imported.
+# The UsdValidation plugin (plugInfo.json names this package) registers its validators
+# when `lpe.usd_validation` is imported. USD imports this package when it first loads
+# one of them; if pxr's validation module is imported already, register now. Otherwise
+# register right after it is imported (USD does not import an imported package again).
+
+
+class _RegisterAfter(_importlib_abc.Loader):
+    """Runs pxr.UsdValidation's own loader, then registers the validators."""
+
+    def __init__(self, loader):
+        self._loader = loader
+
+    def create_module(self, spec):
+        return self._loader.create_module(spec)
+
+    def exec_module(self, module):
+        self._loader.exec_module(module)
+        try:
+            _importlib.import_module("lpe.usd_validation")
+        except Exception as e:  # never break the user's import of pxr
+            _warnings.warn(f"lpe: the UsdValidation plugin did not register: {e}")
+
+
+class _WhenPxrValidationImports(_importlib_abc.MetaPathFinder):
+    """Finds nothing itself: wraps the loader of pxr.UsdValidation, once."""
+
+    def find_spec(self, name, path=None, target=None):
+        if name != "pxr.UsdValidation":
+            return None
+        _sys.meta_path.remove(self)
+        spec = _importlib_util.find_spec(name)
+        if spec is not None and spec.loader is not None:
+            spec.loader = _RegisterAfter(spec.loader)
+        return spec
+
+
 if "pxr.UsdValidation" in _sys.modules:
     from . import usd_validation as _usd_validation  # noqa: F401
+else:
+    _sys.meta_path.insert(0, _WhenPxrValidationImports())

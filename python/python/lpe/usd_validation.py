@@ -2,12 +2,12 @@
 ``lpe``) that check the LPE RenderVars of a stage as ``lpe-check lint`` does.
 
 USD finds the plugin through ``plugInfo.json`` next to this file: put the package
-folder on ``PXR_PLUGINPATH_NAME`` (``lpe.usd_validation.plugin_path()`` prints it), and
+folder on ``PXR_PLUGINPATH_NAME`` (``lpe.plugin_path()`` gives it), and
 ``UsdValidation.ValidationContext(keywords=["lpe"])`` runs only these validators.
 Importing this module registers the validators (once); USD imports the ``lpe``
 package when it first loads one of them, and the package imports this module when
-``pxr.UsdValidation`` is already imported. If ``lpe`` was imported before
-``pxr.UsdValidation``, call ``register()``.
+``pxr.UsdValidation`` is already imported, or right after it is imported. Without the plugin on the path, importing
+this module registers nothing and ``validate()`` raises ``RuntimeError``.
 
 Every validator reads the same lint run of the stage (``lpe.lint(stage)``, the
 composed stage; cached per stage until its contents change) and reports the findings
@@ -69,13 +69,16 @@ KEYWORD = "lpe"
 
 _options: dict | None = None
 _cache: dict = {}
-_lock = threading.Lock()
+_lock = threading.RLock()
 _registered = False
+#: How many stages' lint runs the validators keep.
+_CACHE_STAGES = 8
 
 
 def plugin_path() -> str:
-    """The folder to put on ``PXR_PLUGINPATH_NAME`` (it holds ``plugInfo.json``)."""
-    return os.path.dirname(os.path.abspath(__file__))
+    """The folder to put on ``PXR_PLUGINPATH_NAME`` (it holds ``plugInfo.json``); the
+    same as ``lpe.plugin_path()``, which does not import pxr."""
+    return lpe.plugin_path()
 
 
 def configure(dialect=None, ini=None, register=None, universe=None, partitions=()):
@@ -128,8 +131,11 @@ def _report(stage):
             if entry is not None:
                 entry[1].Revoke()
 
-        # Tf.Notice holds the callback weakly: the cache entry keeps it alive.
+        # Tf.Notice holds the callback weakly: the cache entry keeps it alive. The
+        # cache keeps the last few stages only (an entry holds its stage).
         listener = Tf.Notice.Register(Usd.Notice.StageContentsChanged, changed, stage)
+        while len(_cache) >= _CACHE_STAGES:
+            _cache.pop(next(iter(_cache)))[1].Revoke()
         _cache[key] = (report, listener, changed)
         return report
 
@@ -205,13 +211,16 @@ def _stage_task(kinds):
     return task
 
 
-def register() -> None:
-    """Registers the validators with ``UsdValidation.ValidationRegistry`` (once; they
-    must be declared by ``plugInfo.json``, found through ``PXR_PLUGINPATH_NAME``)."""
+def register() -> bool:
+    """Registers the validators with ``UsdValidation.ValidationRegistry`` (once) and
+    returns True; returns False when USD has not found the plugin's ``plugInfo.json``
+    (``PXR_PLUGINPATH_NAME`` does not name ``plugin_path()``), which declares them."""
     global _registered
     if _registered:
-        return
+        return True
     registry = UsdValidation.ValidationRegistry()
+    if registry.GetValidatorMetadata(f"{KEYWORD}:Syntax") is None:
+        return False
     for name, kinds in AOV_VALIDATORS.items():
         full = f"{KEYWORD}:{name}"
         if not registry.HasValidator(full):
@@ -221,11 +230,17 @@ def register() -> None:
         if not registry.HasValidator(full):
             registry.RegisterPluginStageValidator(full, _stage_task(kinds))
     _registered = True
+    return True
 
 
 def validate(stage):
     """Runs every ``lpe`` validator on ``stage`` (``ValidationContext(keywords=["lpe"])``)
     and returns the ``UsdValidation.ValidationError`` list."""
+    if not register():
+        raise RuntimeError(
+            "USD has not found the lpe validators: set PXR_PLUGINPATH_NAME to "
+            f"{plugin_path()} before pxr is first imported (docs/python.md)"
+        )
     context = UsdValidation.ValidationContext(keywords=[KEYWORD])
     return context.Validate(stage)
 
