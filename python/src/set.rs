@@ -151,8 +151,6 @@ macro_rules! on_set {
     };
 }
 
-/// AovSet(aovs, dialect="renderman", ini=None, register=None)
-///
 /// Named AOVs (a dict `{name: expr}` or a list of `(name, expr)` pairs) of one dialect
 /// compiled into one automaton. A path is text (`"C RD2'floor' L'key'"`, OSL:
 /// `"C,_ R,D L,_"`) or a list of `(type, event, label)` tuples (event and label may be
