@@ -44,6 +44,18 @@ def test_a_label_in_the_event_position_gets_a_hint():
     assert "hint:" in str(info.value)
 
 
+def test_an_ini_file_adds_macros_and_a_bad_line_names_its_line(tmp_path):
+    # docs/language.md: `/prman/lpe/macro/NAME EXPR` defines a macro.
+    ini = tmp_path / "rendermn.ini"
+    ini.write_text("/prman/lpe/macro/keyOnly C.*<L.'key'>\n")
+    assert lpe.parse("keyOnly", ini=ini).text == "C.*<L.'key'>"
+    assert lpe.AovSet({"k": "keyOnly"}, ini=str(ini)).match("C RD L'key'") == ["k"]
+    bad = tmp_path / "bad.ini"
+    bad.write_text("/prman/lpe/macro/\n")
+    with pytest.raises(ValueError, match="bad.ini"):
+        lpe.parse("C L", ini=bad)
+
+
 def test_osl_dialect_and_its_registration():
     assert lpe.parse("C<RD>L", dialect="osl").dialect == "osl"
     # OSL errors point at the character.
@@ -198,7 +210,7 @@ def test_bad_arguments_raise_type_and_value_errors():
         lpe.parse("C L", register="events=U")
     with pytest.raises(ValueError, match="ini"):
         lpe.parse("C L", dialect="osl", ini="rendermn.ini")
-    with pytest.raises(ValueError, match="cannot read"):
+    with pytest.raises(ValueError, match="/nonexistent/rendermn.ini"):
         lpe.parse("C L", ini="/nonexistent/rendermn.ini")
     with pytest.raises(TypeError):
         lpe.AovSet("C L")

@@ -1,10 +1,12 @@
 //! RenderMan's dialect from Python: `ini=` reads a `rendermn.ini` (macros and lobe
-//! mappings), `register=` is refused; a vertex tuple `("R", "D2", "floor")` is the
+//! mappings, through lint's ini reader), `register=` is refused; a vertex tuple `("R", "D2", "floor")` is the
 //! text `RD2'floor'`.
 
 use std::path::Path;
 
 use lpe::renderman::{Config, Parser, RenderMan};
+use lpe_lint::read::ini::read_into;
+use lpe_lint::read::Limits;
 
 use super::PyDialect;
 
@@ -16,11 +18,10 @@ impl PyDialect for RenderMan {
         let Some(path) = ini else {
             return Ok(Parser::default());
         };
-        let text = std::fs::read_to_string(path)
-            .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
-        Config::from_ini(&text)
-            .map(|c| c.parser())
-            .map_err(|e| format!("{}: {e}", path.display()))
+        // lint's ini reader: its size limit, its errors with the file and line.
+        let mut config = Config::default();
+        read_into(path, &Limits::default(), &mut config).map_err(|e| format!("ini: {e}"))?;
+        Ok(config.parser())
     }
 
     fn vertex_text(ty: &str, event: Option<&str>, label: Option<&str>) -> String {
