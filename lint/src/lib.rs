@@ -19,7 +19,8 @@
 //! with the reference matcher first ([`witness`], which `lpe-check equiv` and
 //! `partition` use too). `lpe-render --usd` takes its AOVs from [`read::usd`].
 //!
-//! Modules: [`decl`] (the document model), [`error`] (read errors), [`read`] (the three
+//! Modules: [`decl`] (the document model), [`error`] (read errors), [`explain`] (which
+//! AOVs a path lands in, vertex by vertex), [`read`] (the three
 //! readers and their limits), [`check`] (the lint checks and reports), [`witness`]
 //! (the reference re-check).
 
@@ -28,6 +29,7 @@
 pub mod check;
 pub mod decl;
 pub mod error;
+pub mod explain;
 pub mod read;
 pub mod witness;
 

@@ -12,16 +12,15 @@
 //! Exit 0 clean, 1 findings, 2 an unreadable file or bad argument, 3 a witness the
 //! reference matcher refused. docs/lint.md has the JSON schema.
 //!
-//! The reading, the checks and both reports are [`lpe_lint::check`]'s; this module
+//! The reading, the checks and both reports are [`lpe_lint::check`]'s (one run:
+//! [`lpe_lint::check::run`]); this module
 //! parses the arguments, prints and gives the exit code.
 
 use std::path::PathBuf;
 use std::process::ExitCode;
 
 use lpe::with_dialect;
-use lpe_lint::check::dialect::Lint;
-use lpe_lint::check::{self, inputs, json, text};
-use lpe_lint::read::Limits;
+use lpe_lint::check::run::{self, Request, RunError};
 
 use crate::dialect::CliDialect;
 use crate::input::{bad_input, DialectArgs};
@@ -66,60 +65,36 @@ pub fn run(args: Args) -> ExitCode {
 }
 
 fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
-    let limits = Limits::default();
-    let (inis, others) = inputs::split(args.ini.as_deref(), &args.files);
-    // A dialect that reads ini files reads them with the others; for any other an ini
-    // file (RenderMan macros, lobe mappings and partitions) is an error.
-    let ini = if D::READS_INI {
-        None
-    } else {
-        inis.first().copied()
+    let req = Request {
+        files: &args.files,
+        ini: args.ini.as_deref(),
+        partitions: &args.partition,
+        universe: args.universe.as_deref(),
     };
-    let registration = match args.lang.registration::<D>(ini) {
-        Ok(r) => r,
-        Err(e) => {
-            let file = ini.map_or(String::new(), |p| format!("{}: ", p.display()));
-            return bad_input(format!("error: {file}{e}"));
-        }
-    };
-    let read = inputs::read_all(&inis, &others, &limits);
-    let (registration, lobes) = D::configured(registration, &read.config);
-    let dialect = Lint::<D> {
-        registration: &registration,
-        lobes: &lobes,
-    };
-    let universe = args.universe.as_deref().unwrap_or(D::DEFAULT_UNIVERSE);
-    let universe = match dialect.parse(universe) {
-        Ok(u) => u,
-        Err(e) => return bad_input(format!("error: --universe: {}", e.message)),
-    };
-    let extra = inputs::command_line_partitions(&args.partition);
-    let out = match check::lint(&read.docs, &dialect, &universe, &extra) {
+    let out = match run::run::<D, _>(&req, |ini| args.lang.registration::<D>(ini)) {
         Ok(out) => out,
-        Err(e) => {
+        Err(RunError::Disagreement(e)) => {
             eprintln!("{e}");
             return ExitCode::from(DISAGREE);
         }
+        Err(e) => return bad_input(format!("error: {e}")),
     };
     match args.format {
         OutputFormat::Text => {
-            for s in &read.statuses {
-                if let Some(e) = &s.error {
-                    eprintln!("error: {e}");
-                }
+            for e in out.read_errors() {
+                eprintln!("error: {e}");
             }
-            print!("{}", text::render(&out));
+            print!("{}", out.text());
         }
         OutputFormat::Json => println!(
             "{}",
-            serde_json::to_string_pretty(&json::render(&out, &read.statuses))
-                .expect("JSON values serialize")
+            serde_json::to_string_pretty(&out.json()).expect("JSON values serialize")
         ),
     }
-    let code = if read.statuses.iter().any(|s| s.error.is_some()) {
+    let code = if out.read_errors().next().is_some() {
         2
     } else {
-        u8::from(!out.findings.is_empty())
+        u8::from(!out.outcome.findings.is_empty())
     };
     ExitCode::from(code)
 }

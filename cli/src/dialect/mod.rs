@@ -14,23 +14,12 @@ use crate::error::InputError;
 
 /// An expression language as the command line reads and reports it.
 pub trait CliDialect: LintDialect {
-    /// Whether the dialect reads `rendermn.ini` files (their macros and lobe mappings);
-    /// `lint` then reads them with the other files, not as [`CliDialect::registration`].
-    const READS_INI: bool;
-
     /// The registration the arguments give (`--ini` or `--register`); the flag the
     /// dialect does not take is an error.
     fn registration(
         ini: Option<&Path>,
         register: Option<&str>,
     ) -> Result<Self::Registration, InputError>;
-
-    /// The registration and lobe mappings once `lint` has read its ini files into
-    /// `config`, from the registration the arguments gave.
-    fn configured(
-        registration: Self::Registration,
-        config: &lpe::renderman::Config,
-    ) -> (Self::Registration, Self::Lobes);
 
     /// Parses an expression argument as a file would declare it (a leading `lpe:`
     /// included).

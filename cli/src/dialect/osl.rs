@@ -5,14 +5,11 @@
 use std::path::Path;
 
 use lpe::osl::{self, Error, Osl, PathError, Registered};
-use lpe::renderman::Config;
 
 use super::CliDialect;
 use crate::error::InputError;
 
 impl CliDialect for Osl {
-    const READS_INI: bool = false;
-
     /// `--register` absent is `-`: nothing registered.
     fn registration(ini: Option<&Path>, register: Option<&str>) -> Result<Registered, InputError> {
         if ini.is_some() {
@@ -22,10 +19,6 @@ impl CliDialect for Osl {
             .unwrap_or("-")
             .parse()
             .map_err(InputError::Register)
-    }
-
-    fn configured(registered: Registered, _: &Config) -> (Registered, ()) {
-        (registered, ())
     }
 
     fn parse_arg(src: &str, registered: &Registered) -> Result<osl::Lpe, Error> {

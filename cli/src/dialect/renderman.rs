@@ -4,14 +4,12 @@
 
 use std::path::Path;
 
-use lpe::renderman::{Config, Error, LobeMap, Lpe, Parser, PathError, RenderMan};
+use lpe::renderman::{Config, Error, Lpe, Parser, PathError, RenderMan};
 
 use super::CliDialect;
 use crate::error::InputError;
 
 impl CliDialect for RenderMan {
-    const READS_INI: bool = true;
-
     fn registration(ini: Option<&Path>, register: Option<&str>) -> Result<Parser, InputError> {
         if register.is_some() {
             return Err(InputError::RegisterWithoutOsl);
@@ -29,10 +27,6 @@ impl CliDialect for RenderMan {
                 path: path.to_path_buf(),
                 error,
             })
-    }
-
-    fn configured(_: Parser, config: &Config) -> (Parser, LobeMap) {
-        (config.parser(), config.lobes.clone())
     }
 
     fn parse_arg(src: &str, parser: &Parser) -> Result<Lpe, Error> {

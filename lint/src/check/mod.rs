@@ -17,6 +17,7 @@ pub mod json;
 pub mod labels;
 pub mod outcome;
 pub mod partition;
+pub mod run;
 pub mod text;
 
 pub use finding::{Finding, Kind};

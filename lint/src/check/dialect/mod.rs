@@ -38,6 +38,18 @@ pub trait LintDialect: Checked {
     /// RenderMan's lobe mappings; `()` for a dialect without numbered lobes.
     type Lobes: Default;
 
+    /// Whether the dialect reads `rendermn.ini` files (their macros and lobe mappings);
+    /// lint then reads them with the other files. For any other dialect an ini file is
+    /// refused ([`super::run::RunError::IniWithoutRenderMan`]).
+    const READS_INI: bool;
+
+    /// The registration and lobe mappings once lint has read its ini files into
+    /// `config`, from the registration the caller gave.
+    fn configured(
+        registration: Self::Registration,
+        config: &lpe::renderman::Config,
+    ) -> (Self::Registration, Self::Lobes);
+
     /// Parses one AOV's source as a file declares it (a leading `lpe:` included), the
     /// failure with its span in `src`.
     fn parse_source(

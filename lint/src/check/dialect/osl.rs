@@ -18,6 +18,12 @@ impl LintDialect for Osl {
     /// OSL has no numbered lobes.
     type Lobes = ();
 
+    const READS_INI: bool = false;
+
+    fn configured(registered: Registered, _: &lpe::renderman::Config) -> (Registered, ()) {
+        (registered, ())
+    }
+
     /// A leading `lpe:` (how RIB channels and some USD RenderVars mark an expression) is
     /// skipped, and the caret still points into the whole source.
     fn parse_source(src: &str, registered: &Registered) -> Result<osl::Lpe, ParseFailure> {

@@ -21,6 +21,12 @@ impl Checked for RenderMan {
 impl LintDialect for RenderMan {
     type Lobes = LobeMap;
 
+    const READS_INI: bool = true;
+
+    fn configured(_: Parser, config: &lpe::renderman::Config) -> (Parser, LobeMap) {
+        (config.parser(), config.lobes.clone())
+    }
+
     fn parse_source(src: &str, parser: &Parser) -> Result<Lpe, ParseFailure> {
         parser.parse(src).map_err(|e| ParseFailure {
             message: e.message().to_string(),

@@ -1,0 +1,250 @@
+"""lpe: light path expressions (RenderMan's and OSL's dialects), from Python.
+
+Thin over the Rust library of the same name:
+
+- ``parse(expr, dialect="renderman", ini=None, register=None)``: the expression's
+  canonical text (an ``Lpe``); a syntax error raises ``LpeSyntaxError`` with
+  ``message``, ``position``, ``hint`` and the caret rendering as ``str()``.
+- ``AovSet({"name": expr, ...}, dialect=...)``: ``match(path)`` (the AOV names a path
+  lands in), ``match_many(paths)`` (the batch form), ``explain(path)``, ``names``.
+  A path is text (``"C RD2'floor' L'key'"``, OSL: ``"C,_ R,D L,_"``) or a list of
+  ``(type, event, label)`` tuples.
+- ``equiv(a, b)``: ``None``, or the shortest path one matches and the other does not.
+- ``partition(members, universe=None)``: overlaps, gaps and paths outside the
+  universe with shortest witnesses, and the remainder expression.
+- ``lint(files_or_stage, partitions=..., dialect=...)``: ``lpe-check lint --format
+  json``'s findings, for files or a ``pxr.Usd.Stage`` (read as composed).
+
+The UsdValidation plugin (validators ``lpe:...``, keyword ``lpe``) is in
+``lpe.usd_validation``; docs/python.md says how USD finds it.
+"""
+
+from __future__ import annotations
+
+import importlib as _importlib
+import importlib.abc as _importlib_abc
+import importlib.util as _importlib_util
+import json as _json
+import os as _os
+import sys as _sys
+import tempfile as _tempfile
+import warnings as _warnings
+
+from ._lpe import (
+    DIALECTS,
+    AovSet,
+    Explanation,
+    Lpe,
+    LpeSyntaxError,
+    Partition,
+    equiv,
+    parse,
+    partition,
+)
+from ._lpe import lint_json as _lint_json
+
+__all__ = [
+    "DIALECTS",
+    "AovSet",
+    "Explanation",
+    "Finding",
+    "LintReport",
+    "Lpe",
+    "LpeSyntaxError",
+    "Partition",
+    "equiv",
+    "lint",
+    "parse",
+    "partition",
+    "plugin_path",
+]
+
+#: The keys of one finding in ``lpe-check lint --format json`` (docs/lint.md).
+FINDING_FIELDS = (
+    "kind",
+    "file",
+    "subject",
+    "location",
+    "message",
+    "source",
+    "span",
+    "help",
+    "other",
+    "witness",
+    "remainder",
+)
+
+
+class Finding:
+    """One lint finding, with the fields of ``lpe-check lint --format json``:
+    ``kind`` (``parse_error``, ``empty``, ``equivalent``, ``unknown_light_group``,
+    ``unknown_object_group``, ``unfed_lobe``, ``unknown_member``, ``overlap``,
+    ``gap``, ``outside``), ``file``, ``subject`` (the AOV or partition),
+    ``location`` (a dict: ``line``, ``column``, ``prim``, ``attribute``), ``message``,
+    ``source`` and ``span`` (the caret), ``help``, ``other``, ``witness``,
+    ``remainder``. ``to_dict()`` gives the JSON object back."""
+
+    __slots__ = FINDING_FIELDS
+
+    def __init__(self, fields: dict):
+        for k in FINDING_FIELDS:
+            setattr(self, k, fields.get(k))
+
+    def to_dict(self) -> dict:
+        return {k: getattr(self, k) for k in FINDING_FIELDS}
+
+    def __eq__(self, other):
+        return isinstance(other, Finding) and self.to_dict() == other.to_dict()
+
+    def __repr__(self):
+        where = self.location.get("prim") or self.location.get("line")
+        return f"<lpe.Finding {self.kind} {self.subject!r} at {where}>"
+
+
+class LintReport:
+    """What ``lint`` found: ``findings`` (``Finding`` objects), ``aovs``,
+    ``partitions`` and ``files`` (dicts as in the JSON report) and ``json`` (the
+    whole ``lpe-lint/1`` document). True when there is no finding and every file
+    could be read."""
+
+    def __init__(self, document: dict):
+        self.json = document
+        self.findings = [Finding(f) for f in document["findings"]]
+        self.aovs = document["aovs"]
+        self.partitions = document["partitions"]
+        self.files = document["files"]
+
+    @property
+    def clean(self) -> bool:
+        return not self.findings and not any(f["error"] for f in self.files)
+
+    def __bool__(self):
+        return self.clean
+
+    def __len__(self):
+        return len(self.findings)
+
+    def __iter__(self):
+        return iter(self.findings)
+
+    def __repr__(self):
+        return f"<lpe.LintReport {len(self.findings)} findings, {len(self.aovs)} AOVs>"
+
+
+def plugin_path() -> str:
+    """The folder holding the UsdValidation plugin's ``plugInfo.json``: put it on
+    ``PXR_PLUGINPATH_NAME`` before pxr is first imported (docs/python.md)."""
+    return _os.path.dirname(_os.path.abspath(__file__))
+
+
+def _is_stage(obj) -> bool:
+    return hasattr(obj, "ExportToString") and hasattr(obj, "GetRootLayer")
+
+
+def stage_name(stage) -> str:
+    """The name a stage's findings carry in ``file``: its root layer's real path (the
+    file ``lpe-check lint`` would be given), or its identifier for an anonymous one."""
+    layer = stage.GetRootLayer()
+    return layer.realPath or layer.identifier
+
+
+def lint(
+    files_or_stage,
+    partitions=(),
+    universe=None,
+    dialect="renderman",
+    ini=None,
+    register=None,
+) -> LintReport:
+    """Lints LPE AOVs as ``lpe-check lint --format json`` does.
+
+    ``files_or_stage`` is a path (``str`` or ``os.PathLike``: ``.usda``/``.usdc``/
+    ``.usdz``, ``.rib``, ``.ini``), a list of paths, or a ``pxr.Usd.Stage``. A stage is
+    read as composed (session layer, variant selections, references and payloads
+    loaded): it is exported flattened (``Usd.Stage.ExportToString``) to a temporary
+    ``.usda`` file that the Rust reader reads, and its findings name the root layer's
+    file. ``partitions`` are lists of AOV names, each ``"a,b,c"`` or a list of names,
+    that must partition ``universe``. Returns a ``LintReport``; a bad argument raises
+    ``TypeError`` or ``ValueError`` (an unreadable file is in ``report.files``, as in
+    the JSON report).
+    """
+    parts = []
+    for p in partitions if not isinstance(partitions, str) else [partitions]:
+        if isinstance(p, str):
+            parts.append(p)
+        elif all(isinstance(m, str) for m in p):
+            parts.append(",".join(p))
+        else:
+            raise TypeError("a partition is 'a,b,c' or a list of AOV names")
+    if _is_stage(files_or_stage):
+        text = files_or_stage.ExportToString(addSourceFileComment=False)
+        fd, tmp = _tempfile.mkstemp(suffix=".usda", prefix="lpe-stage-")
+        try:
+            with _os.fdopen(fd, "w", encoding="utf-8") as f:
+                f.write(text)
+            out = _lint_json(
+                [tmp], parts, universe, dialect, ini, register,
+                (tmp, stage_name(files_or_stage)),
+            )
+        finally:
+            _os.unlink(tmp)
+    else:
+        if isinstance(files_or_stage, (str, _os.PathLike)):
+            files = [files_or_stage]
+        else:
+            try:
+                files = list(files_or_stage)
+            except TypeError:
+                raise TypeError(
+                    "lint takes a path, a list of paths or a pxr.Usd.Stage, not "
+                    f"{type(files_or_stage).__name__}"
+                ) from None
+        for f in files:
+            if not isinstance(f, (str, _os.PathLike)):
+                raise TypeError(f"a file is a str or os.PathLike, not {type(f).__name__}")
+        if not files:
+            raise ValueError("lint needs at least one file")
+        out = _lint_json([_os.fspath(f) for f in files], parts, universe, dialect, ini, register)
+    return LintReport(_json.loads(out))
+
+
+# The UsdValidation plugin (plugInfo.json names this package) registers its validators
+# when `lpe.usd_validation` is imported. USD imports this package when it first loads
+# one of them; if pxr's validation module is imported already, register now. Otherwise
+# register right after it is imported (USD does not import an imported package again).
+
+
+class _RegisterAfter(_importlib_abc.Loader):
+    """Runs pxr.UsdValidation's own loader, then registers the validators."""
+
+    def __init__(self, loader):
+        self._loader = loader
+
+    def create_module(self, spec):
+        return self._loader.create_module(spec)
+
+    def exec_module(self, module):
+        self._loader.exec_module(module)
+        try:
+            _importlib.import_module("lpe.usd_validation")
+        except Exception as e:  # never break the user's import of pxr
+            _warnings.warn(f"lpe: the UsdValidation plugin did not register: {e}")
+
+
+class _WhenPxrValidationImports(_importlib_abc.MetaPathFinder):
+    """Finds nothing itself: wraps the loader of pxr.UsdValidation, once."""
+
+    def find_spec(self, name, path=None, target=None):
+        if name != "pxr.UsdValidation":
+            return None
+        _sys.meta_path.remove(self)
+        spec = _importlib_util.find_spec(name)
+        if spec is not None and spec.loader is not None:
+            spec.loader = _RegisterAfter(spec.loader)
+        return spec
+
+
+if "pxr.UsdValidation" in _sys.modules:
+    from . import usd_validation as _usd_validation  # noqa: F401
+else:
+    _sys.meta_path.insert(0, _WhenPxrValidationImports())

@@ -1,0 +1,274 @@
+//! `lpe.parse`, `lpe.equiv` and `lpe.partition`: one expression's canonical text, the
+//! shortest path telling two expressions apart, a set of AOVs checked as a partition
+//! of the universe. Witnesses are re-checked with the reference matcher
+//! (`lpe_lint::witness`, the partition report of `lpe-check partition`) before they are
+//! returned. Each is written once over [`PyDialect`] and dispatched on `dialect=`.
+
+use std::path::PathBuf;
+
+use lpe::analysis;
+use lpe::with_dialect;
+use lpe_lint::check::dialect::Lint;
+use lpe_lint::check::partition::report;
+use lpe_lint::witness::{recheck, Expect};
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::types::PyString;
+
+use crate::dialect::{self, PyDialect};
+use crate::error::{disagreement, value_error};
+
+/// A parsed expression: its canonical text.
+#[pyclass(module = "lpe", frozen, get_all)]
+pub struct Lpe {
+    /// The canonical text (macros expanded, as `lpe-check parse` prints it).
+    pub text: String,
+    /// The source as given.
+    pub source: String,
+    /// The dialect name.
+    pub dialect: &'static str,
+}
+
+#[pymethods]
+impl Lpe {
+    fn __str__(&self) -> String {
+        self.text.clone()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<lpe.Lpe {:?} ({})>", self.text, self.dialect)
+    }
+
+    fn __eq__(&self, other: &Bound<'_, PyAny>) -> bool {
+        other
+            .downcast::<Lpe>()
+            .is_ok_and(|o| o.get().text == self.text && o.get().dialect == self.dialect)
+    }
+
+    fn __hash__(&self) -> u64 {
+        use std::hash::{Hash, Hasher};
+        let mut h = std::collections::hash_map::DefaultHasher::new();
+        (&self.text, self.dialect).hash(&mut h);
+        h.finish()
+    }
+}
+
+/// Parses `expr` in `dialect` ("renderman" or "osl") and returns it with its canonical
+/// text (`.text`, macros expanded). `ini` is a rendermn.ini file (RenderMan macros and
+/// lobe mappings), `register` OSL's user labels (`events=U;scatters=Y`). Raises
+/// `LpeSyntaxError` (`message`, `position`, `hint`; `str()` shows a caret) when it
+/// does not parse, `ValueError` for a bad dialect, ini or registration.
+#[pyfunction]
+#[pyo3(signature = (expr, dialect = "renderman", ini = None, register = None))]
+pub fn parse(
+    py: Python<'_>,
+    expr: &str,
+    dialect: &str,
+    ini: Option<PathBuf>,
+    register: Option<&str>,
+) -> PyResult<Lpe> {
+    let name = dialect::dialect_name(dialect)?;
+    let text = with_dialect!(name, D => {
+        let reg = dialect::registration::<D>(ini.as_ref(), register)?;
+        dialect::parse::<D>(py, expr, &reg, None)?.to_string()
+    });
+    Ok(Lpe {
+        text,
+        source: expr.to_string(),
+        dialect: name.name(),
+    })
+}
+
+/// `None` when expressions `a` and `b` match exactly the same paths, else the shortest
+/// path (as text) one matches and the other does not, re-checked with the reference
+/// matcher. Raises `LpeSyntaxError` when either does not parse.
+#[pyfunction]
+#[pyo3(signature = (a, b, dialect = "renderman", ini = None, register = None))]
+pub fn equiv(
+    py: Python<'_>,
+    a: &str,
+    b: &str,
+    dialect: &str,
+    ini: Option<PathBuf>,
+    register: Option<&str>,
+) -> PyResult<Option<String>> {
+    with_dialect!(dialect::dialect_name(dialect)?, D => {
+        let reg = dialect::registration::<D>(ini.as_ref(), register)?;
+        equiv_in::<D>(py, a, b, &reg)
+    })
+}
+
+fn equiv_in<D: PyDialect>(
+    py: Python<'_>,
+    a: &str,
+    b: &str,
+    reg: &D::Registration,
+) -> PyResult<Option<String>> {
+    let (ea, eb) = (
+        dialect::parse::<D>(py, a, reg, None)?,
+        dialect::parse::<D>(py, b, reg, None)?,
+    );
+    let c = analysis::compare(&ea, &eb).map_err(value_error)?;
+    let mut shortest: Option<D::Path> = None;
+    for (path, in_a) in [(&c.first_only, true), (&c.second_only, false)] {
+        let Some(p) = path else { continue };
+        let expects = [
+            Expect {
+                name: a,
+                lpe: &ea,
+                matches: in_a,
+            },
+            Expect {
+                name: b,
+                lpe: &eb,
+                matches: !in_a,
+            },
+        ];
+        recheck(p, &expects).map_err(|d| disagreement(&d))?;
+        if shortest
+            .as_ref()
+            .map_or(true, |s| D::vertices(p).len() < D::vertices(s).len())
+        {
+            shortest = Some(p.clone());
+        }
+    }
+    Ok(shortest.map(|p| p.to_string()))
+}
+
+/// A partition check: overlaps, the gap, paths outside the universe, with witnesses.
+#[pyclass(module = "lpe", frozen, get_all)]
+pub struct Partition {
+    /// The universe, canonical.
+    pub universe: String,
+    /// `(a, b, witness)` for every pair of members matching a common path.
+    pub overlaps: Vec<(String, String, String)>,
+    /// The shortest universe path no member matches (at most one), as a list.
+    pub gaps: Vec<String>,
+    /// `(member, witness)` for every member matching a path outside the universe.
+    pub outside: Vec<(String, String)>,
+    /// With a gap: an AOV expression matching exactly the missing paths, when it could
+    /// be written and checked.
+    pub remainder: Option<String>,
+    /// No overlap, gap or path outside.
+    pub clean: bool,
+    /// The report `lpe-check partition` prints.
+    pub text: String,
+}
+
+#[pymethods]
+impl Partition {
+    fn __str__(&self) -> String {
+        self.text.clone()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<lpe.Partition clean={} overlaps={} gaps={} outside={}>",
+            self.clean,
+            self.overlaps.len(),
+            self.gaps.len(),
+            self.outside.len()
+        )
+    }
+
+    fn __bool__(&self) -> bool {
+        self.clean
+    }
+}
+
+/// The members of `partition`: a dict `{name: expr}`, or a list of expressions (each
+/// named by its text) or `(name, expr)` pairs.
+fn members(obj: &Bound<'_, PyAny>) -> PyResult<Vec<(String, String)>> {
+    let bad = || {
+        PyTypeError::new_err(
+            "partition members are a dict {name: expression}, or a list of expressions or \
+             (name, expression) pairs of str",
+        )
+    };
+    if obj.is_instance_of::<PyString>() {
+        return Err(bad());
+    }
+    let items = if obj.hasattr("items")? {
+        obj.call_method0("items")?
+    } else {
+        obj.clone()
+    };
+    items
+        .try_iter()
+        .map_err(|_| bad())?
+        .map(|i| {
+            let i = i?;
+            if let Ok(s) = i.extract::<String>() {
+                return Ok((s.clone(), s));
+            }
+            i.extract::<(String, String)>().map_err(|_| bad())
+        })
+        .collect()
+}
+
+/// Checks that `members` (a dict `{name: expr}`, or a list of expressions or
+/// `(name, expr)` pairs) split `universe` (default: the dialect's, `C.*[<L.>O]` or
+/// `C<[RT][DGS]>*[LO]`) into disjoint parts covering it. Returns a `Partition`:
+/// `overlaps` `(a, b, witness)`, `gaps` (the shortest uncovered path, at most one),
+/// `outside` `(member, witness)`, `remainder` (an expression closing the gap), `clean`
+/// and `text` (`lpe-check partition`'s report).
+#[pyfunction]
+#[pyo3(signature = (members, universe = None, dialect = "renderman", ini = None, register = None))]
+pub fn partition(
+    py: Python<'_>,
+    members: &Bound<'_, PyAny>,
+    universe: Option<&str>,
+    dialect: &str,
+    ini: Option<PathBuf>,
+    register: Option<&str>,
+) -> PyResult<Partition> {
+    let named = self::members(members)?;
+    if named.is_empty() {
+        return Err(value_error("partition needs at least one member"));
+    }
+    with_dialect!(dialect::dialect_name(dialect)?, D => {
+        let reg = dialect::registration::<D>(ini.as_ref(), register)?;
+        partition_in::<D>(py, &named, universe, &reg)
+    })
+}
+
+fn partition_in<D: PyDialect>(
+    py: Python<'_>,
+    named: &[(String, String)],
+    universe: Option<&str>,
+    reg: &D::Registration,
+) -> PyResult<Partition> {
+    let aovs = named
+        .iter()
+        .map(|(n, e)| Ok((n.clone(), dialect::parse::<D>(py, e, reg, Some(n))?)))
+        .collect::<PyResult<Vec<_>>>()?;
+    let universe = dialect::parse::<D>(py, universe.unwrap_or(D::DEFAULT_UNIVERSE), reg, None)?;
+    let p = analysis::partition(&aovs, &universe, reg).map_err(value_error)?;
+    let text = report(&aovs, &universe, &p).map_err(|d| disagreement(&d))?;
+    let lobes = D::Lobes::default();
+    let lint = Lint::<D> {
+        registration: reg,
+        lobes: &lobes,
+    };
+    let name = |i: usize| aovs[i].0.clone();
+    Ok(Partition {
+        universe: universe.to_string(),
+        overlaps: p
+            .overlaps
+            .iter()
+            .map(|(i, j, w)| (name(*i), name(*j), w.to_string()))
+            .collect(),
+        gaps: p.gap.iter().map(ToString::to_string).collect(),
+        outside: p
+            .outside
+            .iter()
+            .map(|(i, w)| (name(*i), w.to_string()))
+            .collect(),
+        remainder: p
+            .gap
+            .as_ref()
+            .and_then(|_| lint.remainder(&aovs, &universe)),
+        clean: p.is_clean(),
+        text,
+    })
+}

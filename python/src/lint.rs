@@ -1,0 +1,56 @@
+//! `lpe.lint`'s native half: `lpe-check lint`'s run ([`lpe_lint::check::run`]) over
+//! files, returned as its JSON report (schema `lpe-lint/1`, docs/lint.md) for
+//! `lpe/__init__.py` to wrap. A stage exported to a temporary file is reported under
+//! the name `rename` gives.
+
+use std::path::PathBuf;
+
+use lpe::with_dialect;
+use lpe_lint::check::run::{run, Request, RunError};
+use pyo3::prelude::*;
+
+use crate::dialect::{self, PyDialect};
+use crate::error::{disagreement, value_error};
+
+/// Lints `files` as `lpe-check lint --format json` does; returns the report's JSON text.
+#[pyfunction]
+#[pyo3(signature = (files, partitions = Vec::new(), universe = None, dialect = "renderman", ini = None, register = None, rename = None))]
+#[allow(clippy::too_many_arguments)]
+pub fn lint_json(
+    py: Python<'_>,
+    files: Vec<PathBuf>,
+    partitions: Vec<String>,
+    universe: Option<String>,
+    dialect: &str,
+    ini: Option<PathBuf>,
+    register: Option<String>,
+    rename: Option<(String, String)>,
+) -> PyResult<String> {
+    let name = dialect::dialect_name(dialect)?;
+    let req = Request {
+        files: &files,
+        ini: ini.as_deref(),
+        partitions: &partitions,
+        universe: universe.as_deref(),
+    };
+    let json = py.allow_threads(
+        || with_dialect!(name, D => lint_in::<D>(&req, register.as_deref(), rename.as_ref())),
+    );
+    match json {
+        Ok(v) => Ok(v),
+        Err(RunError::Disagreement(d)) => Err(disagreement(&d)),
+        Err(e) => Err(value_error(e)),
+    }
+}
+
+fn lint_in<D: PyDialect>(
+    req: &Request<'_>,
+    register: Option<&str>,
+    rename: Option<&(String, String)>,
+) -> Result<String, RunError> {
+    let mut out = run::<D, _>(req, |ini| D::registration(ini, register))?;
+    if let Some((from, to)) = rename {
+        out.rename_file(from, to);
+    }
+    Ok(out.json().to_string())
+}

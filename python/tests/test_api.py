@@ -1,0 +1,260 @@
+"""The Python API against values worked by hand from docs/language.md: canonical text,
+syntax errors with their positions, matching (text and tuple paths, both dialects),
+equivalence and partition witnesses, lint findings of a fixture, and the exceptions
+bad arguments raise."""
+
+import pathlib
+
+import pytest
+
+import lpe
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+USD = ROOT / "tests" / "testdata" / "usd"
+
+
+# --- parse ---------------------------------------------------------------------------
+
+
+def test_macros_expand_to_the_table_of_docs_language_md():
+    # docs/language.md §macros: indirectDiffuse is C<RD>.+[<L.>O]; a light-group
+    # suffix puts the label on the light.
+    assert lpe.parse("indirectDiffuse").text == "C<RD>.+[<L.>O]"
+    assert str(lpe.parse("lpe:indirectDiffuse_key")) == "C<RD>.+[<L.'key'>O]"
+    e = lpe.parse("directDiffuse")
+    assert (e.text, e.source, e.dialect) == ("C<RD>[<L.>O]", "directDiffuse", "renderman")
+
+
+def test_a_syntax_error_has_message_position_hint_and_a_caret():
+    with pytest.raises(lpe.LpeSyntaxError) as info:
+        lpe.parse("C<RD")
+    e = info.value
+    assert isinstance(e, ValueError)
+    # The `<` at character 1 is never closed.
+    assert e.position == 1
+    assert "<" in e.message
+    assert str(e).splitlines() == [f"{e.message} (at character 1)", "  C<RD", "   ^"]
+
+
+def test_a_label_in_the_event_position_gets_a_hint():
+    # `<L'rim'>`: the label belongs in the third position, `<L.'rim'>`.
+    with pytest.raises(lpe.LpeSyntaxError) as info:
+        lpe.parse("C.*<L'rim'>")
+    assert info.value.hint is not None and "<L.'rim'>" in info.value.hint
+    assert "hint:" in str(info.value)
+
+
+def test_an_ini_file_adds_macros_and_a_bad_line_names_its_line(tmp_path):
+    # docs/language.md: `/prman/lpe/macro/NAME EXPR` defines a macro.
+    ini = tmp_path / "rendermn.ini"
+    ini.write_text("/prman/lpe/macro/keyOnly C.*<L.'key'>\n")
+    assert lpe.parse("keyOnly", ini=ini).text == "C.*<L.'key'>"
+    assert lpe.AovSet({"k": "keyOnly"}, ini=str(ini)).match("C RD L'key'") == ["k"]
+    bad = tmp_path / "bad.ini"
+    bad.write_text("/prman/lpe/macro/\n")
+    with pytest.raises(ValueError, match="bad.ini"):
+        lpe.parse("C L", ini=bad)
+
+
+def test_osl_dialect_and_its_registration():
+    assert lpe.parse("C<RD>L", dialect="osl").dialect == "osl"
+    # OSL errors point at the character.
+    with pytest.raises(lpe.LpeSyntaxError) as info:
+        lpe.parse("C<RD", dialect="osl")
+    assert info.value.position == 4
+    # §18.2: `R` matches `R,D,floor` (the eater skips `floor`), and `R,D,U` too, but
+    # not once `U` is registered (a registered label is basic: not eaten).
+    plain = lpe.AovSet({"r": "CRL"}, dialect="osl")
+    assert plain.match("C,_ R,D,floor L,_") == ["r"]
+    assert plain.match("C,_ R,D,U L,_") == ["r"]
+    registered = lpe.AovSet({"r": "CRL"}, dialect="osl", register="events=U")
+    assert registered.match("C,_ R,D,floor L,_") == ["r"]
+    assert registered.match("C,_ R,D,U L,_") == []
+    with pytest.raises(ValueError, match="register"):
+        lpe.parse("C L", dialect="osl", register="nonsense")
+
+
+# --- AovSet --------------------------------------------------------------------------
+
+
+def aovs():
+    return lpe.AovSet({"direct": "C<RD>L", "indirect": "C<RD>.+L", "any": "C.*L"})
+
+
+def test_match_returns_the_aovs_in_set_order():
+    s = aovs()
+    assert s.names == ["direct", "indirect", "any"]
+    assert len(s) == 3
+    assert s.match("C RD L") == ["direct", "any"]
+    assert s.match("C RD RS L") == ["indirect", "any"]
+    assert s.match("C RS L") == ["any"]
+    assert s.match("C RD O") == []
+
+
+def test_paths_as_tuples():
+    s = aovs()
+    path = [("C", None, None), ("R", "D2", "floor"), ("T", "S8", None), ("L", None, "key")]
+    assert s.match(path) == ["indirect", "any"]
+    assert s.match([("C", None, None), ("L", None, None)]) == ["any"]
+
+
+def test_match_many_equals_match_per_path():
+    s = aovs()
+    paths = ["C RD L", "C RS L", [("C", None, None), ("R", "D", None), ("T", "S", None), ("L", None, None)], "C O"]
+    got = s.match_many(paths)
+    assert got == [("direct", "any"), ("any",), ("indirect", "any"), ()]
+    assert [list(t) for t in got] == [s.match(p) for p in paths]
+    assert s.match_many([]) == []
+    assert s.match_many(p for p in ["C L"]) == [("any",)]
+    # Long lists are matched on every core, in order.
+    many = ["C RD L", "C RS L", "C O"] * 5000
+    assert s.match_many(many) == [("direct", "any"), ("any",), ()] * 5000
+
+
+def test_explain_names_the_landing_aovs_and_the_closest_miss():
+    s = aovs()
+    e = s.explain("C RD RS L")
+    assert e.landed == ["indirect", "any"]
+    assert str(e).endswith("lands in: indirect, any\n")
+    miss = lpe.AovSet({"spec": "C<RS>L", "diffuse2": "C<RD><RD>L"}).explain("C RD RS L")
+    assert miss.landed == []
+    assert "closest AOV: diffuse2 (dead at vertex 3)" in miss.text
+
+
+def test_osl_aov_set():
+    s = lpe.AovSet([("diffuse", "C<RD>L"), ("glossy", "C<RG>L")], dialect="osl")
+    assert s.dialect == "osl"
+    assert s.match("C,~ R,D L,~") == ["diffuse"]
+    assert s.match([("C", None, None), ("R", "G", None), ("L", None, "key")]) == ["glossy"]
+
+
+# --- equiv, partition ----------------------------------------------------------------
+
+
+def test_equiv():
+    # `|` binds only its neighbours: CD|(SD)L is C(D|(SD))L (README).
+    assert lpe.equiv("CD|(SD)L", "C(D|(SD))L") is None
+    # C.*L also matches the path with no bounce.
+    assert lpe.equiv("C.+L", "C.*L") == "C L"
+    assert lpe.equiv("C<RD>L", "C<RS>L", dialect="osl") is not None
+
+
+def test_partition_gap_with_its_remainder():
+    p = lpe.partition({"any_light": "C.*L", "d2": "C<RD2>L"})
+    # Both match C RD2 L; nothing matches a path ending on an emissive object.
+    assert p.overlaps == [("any_light", "d2", "C RD2 L")]
+    assert p.gaps == ["C O"]
+    assert p.outside == []
+    assert not p.clean and not p
+    # The remainder closes the gap: it is the universe minus the members.
+    assert p.remainder is not None
+    closed = lpe.partition({"any_light": "C.*L", "rest": p.remainder})
+    assert closed.clean and closed.overlaps == [] and closed.gaps == []
+
+
+def test_partition_outside_a_given_universe():
+    p = lpe.partition([("a", "C<RD>L"), ("b", "C<RS3>L")], universe="C<RD>L")
+    assert p.outside == [("b", "C RS3 L")]
+    assert p.gaps == [] and p.overlaps == []
+    assert p.universe == "C<RD>L"
+
+
+def test_partition_of_bare_expressions_names_them_by_their_text():
+    p = lpe.partition(["C.*[<L.>O]"])
+    assert p.clean and p.remainder is None
+
+
+# --- lint ----------------------------------------------------------------------------
+
+
+def test_lint_a_fixture_file():
+    # tests/testdata/usd/hdprman.usda: rimLight has a label in the event position,
+    # lightBehindCamera can reach no emitter, diffuseAgain repeats directDiffuse,
+    # wetness names lobe U9 that no rendermn.ini maps.
+    report = lpe.lint(str(USD / "hdprman.usda"))
+    got = sorted((f.kind, f.subject) for f in report.findings)
+    assert got == [
+        ("empty", "lightBehindCamera"),
+        ("equivalent", "diffuseAgain"),
+        ("parse_error", "rimLight"),
+        ("unfed_lobe", "wetness"),
+    ]
+    f = next(f for f in report.findings if f.kind == "equivalent")
+    assert f.other == "directDiffuse"
+    assert f.location == {"line": None, "column": None, "prim": "/Render/vars/diffuseAgain", "attribute": "sourceName"}
+    assert set(f.to_dict()) == set(lpe.FINDING_FIELDS)
+    assert not report.clean
+
+
+def test_lint_a_clean_fixture_and_a_declared_partition():
+    assert lpe.lint(USD / "clean_basic.usda").clean
+    report = lpe.lint([USD / "clean_basic.usda"], partitions=[["directDiffuse", "indirectDiffuse"]])
+    gap = [f for f in report.findings if f.kind == "gap"]
+    assert len(gap) == 1 and gap[0].subject == "--partition #1"
+
+
+def test_lint_an_unreadable_file_is_in_the_report():
+    report = lpe.lint("/nonexistent/stage.usda")
+    assert report.files[0]["error"] and not report.clean
+
+
+# --- bad arguments -------------------------------------------------------------------
+
+
+def test_bad_arguments_raise_type_and_value_errors():
+    with pytest.raises(TypeError):
+        lpe.parse(42)
+    with pytest.raises(ValueError, match="unknown dialect `prman`"):
+        lpe.parse("C L", dialect="prman")
+    with pytest.raises(ValueError, match="register"):
+        lpe.parse("C L", register="events=U")
+    with pytest.raises(ValueError, match="ini"):
+        lpe.parse("C L", dialect="osl", ini="rendermn.ini")
+    with pytest.raises(ValueError, match="/nonexistent/rendermn.ini"):
+        lpe.parse("C L", ini="/nonexistent/rendermn.ini")
+    with pytest.raises(TypeError):
+        lpe.AovSet("C L")
+    with pytest.raises(TypeError):
+        lpe.AovSet({"a": 1})
+    with pytest.raises(lpe.LpeSyntaxError) as info:
+        lpe.AovSet({"good": "C L", "bad": "C<RD"})
+    assert info.value.aov == "bad" and info.value.position == 1
+    s = aovs()
+    with pytest.raises(ValueError, match="path `C XD L`"):
+        s.match("C XD L")
+    with pytest.raises(TypeError):
+        s.match(42)
+    with pytest.raises(TypeError):
+        s.match([("C",)])
+    with pytest.raises(ValueError, match=r"paths\[1\]"):
+        s.match_many(["C L", "C Q L"])
+    with pytest.raises(TypeError):
+        s.match_many(7)
+    with pytest.raises(lpe.LpeSyntaxError):
+        lpe.equiv("C L", "C<")
+    with pytest.raises(TypeError):
+        lpe.partition("C L")
+    with pytest.raises(ValueError):
+        lpe.partition([])
+    with pytest.raises(TypeError):
+        lpe.lint(42)
+    with pytest.raises(TypeError):
+        lpe.lint(["a.usda", 3])
+    with pytest.raises(ValueError, match="universe"):
+        lpe.lint(USD / "clean_basic.usda", universe="C<")
+
+
+def test_no_input_panics():
+    # Arbitrary text is an answer or an exception, never a Rust panic.
+    samples = ["", "(", ")", "<<<", "C{999999}L", "C" + "(" * 300 + "L", "\x00", "é<R'",
+               "C.*L - ^C.*L", "C[^]L", "<.'" + "x" * 1000]
+    for dialect in lpe.DIALECTS:
+        for s in samples:
+            try:
+                lpe.parse(s, dialect=dialect)
+            except ValueError:
+                pass
+            try:
+                lpe.AovSet({"a": "C.*L"}, dialect=dialect).match(s)
+            except ValueError:
+                pass

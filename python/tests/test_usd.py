@@ -1,0 +1,221 @@
+"""The package with Pixar's USD (usd-core): `lpe.lint` on a composed `Usd.Stage`
+(session layer, variants), and the UsdValidation plugin: found by the registry through
+PXR_PLUGINPATH_NAME (conftest.py), flags a bad RenderVar in a stage built here, and on
+every fixture of tests/testdata/usd reports exactly what `lpe-check lint --format json`
+reports (LPE_CHECK names the binary; default target/release/lpe-check)."""
+
+import json
+import os
+import pathlib
+import subprocess
+import sys
+
+import pytest
+
+if os.environ.get("LPE_CHECK"):
+    import pxr  # noqa: F401  (CI sets LPE_CHECK: nothing here may be skipped)
+else:
+    pxr = pytest.importorskip("pxr")
+from pxr import Sdf, Usd, UsdValidation  # noqa: E402
+
+import lpe  # noqa: E402
+import lpe.usd_validation as uv  # noqa: E402
+
+ROOT = pathlib.Path(__file__).resolve().parents[2]
+FIXTURES = sorted((ROOT / "tests" / "testdata" / "usd").glob("*.usda"))
+LPE_CHECK = os.environ.get("LPE_CHECK", str(ROOT / "target" / "release" / "lpe-check"))
+
+NAMES = [
+    "lpe:Syntax",
+    "lpe:NeverMatching",
+    "lpe:EquivalentAovs",
+    "lpe:UnknownLightGroup",
+    "lpe:UnknownObjectGroup",
+    "lpe:UnfedLobe",
+    "lpe:PartitionOverlap",
+    "lpe:PartitionGap",
+    "lpe:PartitionOutside",
+    "lpe:PartitionMember",
+    "lpe:Readable",
+]
+
+
+@pytest.fixture(autouse=True)
+def default_options():
+    uv.configure()
+    yield
+    uv.configure()
+
+
+def dialect_of(fixture):
+    # The OSL fixtures say so in their doc ("lint with --dialect osl").
+    return "osl" if "osl" in fixture.name else "renderman"
+
+
+def render_var(stage, path, source):
+    prim = stage.DefinePrim(path, "RenderVar")
+    prim.CreateAttribute("sourceType", Sdf.ValueTypeNames.Token).Set("lpe")
+    prim.CreateAttribute("sourceName", Sdf.ValueTypeNames.String).Set(source)
+    return prim
+
+
+def test_the_registry_finds_every_validator_by_keyword():
+    registry = UsdValidation.ValidationRegistry()
+    found = sorted(m.name for m in registry.GetValidatorMetadataForKeyword("lpe"))
+    assert found == sorted(NAMES)
+    for name in NAMES:
+        assert registry.GetOrLoadValidatorByName(name) is not None
+    syntax = registry.GetValidatorMetadata("lpe:Syntax")
+    assert list(syntax.GetSchemaTypes()) == ["UsdRenderVar"]
+
+
+def run_python(code, plugin):
+    env = dict(os.environ)
+    env.pop("PXR_PLUGINPATH_NAME", None)
+    if plugin:
+        env["PXR_PLUGINPATH_NAME"] = lpe.plugin_path()
+    return subprocess.run([sys.executable, "-c", code],
+                          capture_output=True, text=True, env=env, check=False)
+
+
+def test_without_the_plugin_path_validate_says_what_to_set():
+    run = run_python(
+        "import lpe.usd_validation as v\n"
+        "from pxr import Usd\n"
+        "try:\n    v.validate(Usd.Stage.CreateInMemory())\n"
+        "except RuntimeError as e:\n    print(e)\n",
+        plugin=False,
+    )
+    assert run.returncode == 0, run.stderr
+    assert "PXR_PLUGINPATH_NAME" in run.stdout and lpe.plugin_path() in run.stdout
+
+
+def test_usd_loads_the_plugin_whichever_is_imported_first():
+    check = (
+        "from pxr import UsdValidation\n"
+        "r = UsdValidation.ValidationRegistry()\n"
+        "print(r.GetOrLoadValidatorByName('lpe:Syntax') is not None)\n"
+    )
+    # pxr first: USD imports the package when it loads the validator.
+    run = run_python(check, plugin=True)
+    assert run.stdout.split() == ["True"], run.stderr
+    # lpe first: the package registers right after pxr.UsdValidation is imported.
+    run = run_python("import lpe\n" + check, plugin=True)
+    assert run.stdout.split() == ["True"], run.stderr
+    run = run_python("import lpe\nimport lpe.usd_validation\n" + check, plugin=True)
+    assert run.stdout.split() == ["True"], run.stderr
+    # Without the plugin path, importing pxr after lpe still works (nothing registered).
+    run = run_python("import lpe\n" + check, plugin=False)
+    assert run.returncode == 0 and run.stdout.split() == ["False"], run.stderr
+
+
+def test_a_bad_render_var_in_a_built_stage_is_flagged_at_its_attribute():
+    stage = Usd.Stage.CreateInMemory()
+    stage.DefinePrim("/Render", "Scope")
+    render_var(stage, "/Render/good", "C<RD>[<L.>O]")
+    render_var(stage, "/Render/bad", "C<RD")
+    errors = UsdValidation.ValidationContext(keywords=["lpe"]).Validate(stage)
+    assert len(errors) == 1
+    e = errors[0]
+    assert e.GetValidator().GetMetadata().name == "lpe:Syntax"
+    assert e.GetType() == UsdValidation.ValidationErrorType.Error
+    sites = [str(s.GetPrim().GetPath()) if s.GetPrim() else str(s.GetProperty().GetPath())
+             for s in e.GetSites()]
+    assert sites == ["/Render/bad", "/Render/bad.sourceName"]
+    assert e.GetMessage().startswith("parse_error: `bad`: unclosed `<`")
+
+
+def test_witnesses_are_in_the_messages():
+    stage = Usd.Stage.CreateInMemory()
+    render_var(stage, "/Render/a", "C<RD>L")
+    render_var(stage, "/Render/b", "C<RD>L")
+    settings = stage.DefinePrim("/Render/settings", "RenderSettings")
+    settings.CreateAttribute("lpe:partition", Sdf.ValueTypeNames.String).Set("a,b")
+    errors = uv.validate(stage)
+    by_name = {e.GetValidator().GetMetadata().name: e.GetMessage() for e in errors}
+    assert set(by_name) == {"lpe:EquivalentAovs", "lpe:PartitionOverlap", "lpe:PartitionGap"}
+    assert "witness: C RD1 L" in by_name["lpe:PartitionOverlap"]
+    # The shortest universe path neither matches: no bounce at all.
+    assert "witness: C L" in by_name["lpe:PartitionGap"]
+
+
+def test_lint_reads_the_composed_stage_session_layer_and_variants():
+    fixture = ROOT / "tests" / "testdata" / "usd" / "clean_basic.usda"
+    stage = Usd.Stage.Open(str(fixture))
+    assert lpe.lint(stage).clean
+    # An opinion in the session layer is what the user sees; the file is unchanged.
+    var = next(p for p in stage.Traverse() if p.GetTypeName() == "RenderVar")
+    with Usd.EditContext(stage, stage.GetSessionLayer()):
+        var.GetAttribute("sourceName").Set("C<RD")
+    report = lpe.lint(stage)
+    assert [(f.kind, f.subject) for f in report.findings][:1] == [("parse_error", var.GetName())]
+    assert report.findings[0].file == str(fixture)
+    assert lpe.lint(fixture).clean
+    # The validators see the change, and see it go away.
+    assert any(e.GetValidator().GetMetadata().name == "lpe:Syntax" for e in uv.validate(stage))
+    stage.GetSessionLayer().Clear()
+    assert not uv.validate(stage)
+
+    # A variant selection decides which RenderVar exists.
+    stage = Usd.Stage.CreateInMemory()
+    prim = stage.DefinePrim("/Render")
+    vset = prim.GetVariantSets().AddVariantSet("look")
+    for name, source in [("ok", "C<RD>[<L.>O]"), ("broken", "C<RD")]:
+        vset.AddVariant(name)
+        vset.SetVariantSelection(name)
+        with vset.GetVariantEditContext():
+            render_var(stage, "/Render/var", source)
+    vset.SetVariantSelection("ok")
+    assert lpe.lint(stage).clean
+    vset.SetVariantSelection("broken")
+    assert [f.kind for f in lpe.lint(stage).findings] == ["parse_error"]
+
+
+def lpe_check_json(fixture, dialect):
+    if not os.path.exists(LPE_CHECK):
+        if os.environ.get("LPE_CHECK"):
+            pytest.fail(f"LPE_CHECK={LPE_CHECK} does not exist")
+        pytest.skip(f"no lpe-check at {LPE_CHECK} (set LPE_CHECK)")
+    run = subprocess.run(
+        [LPE_CHECK, "lint", "--format", "json", "--dialect", dialect, str(fixture)],
+        capture_output=True, text=True, check=False,
+    )
+    assert run.returncode in (0, 1), run.stderr
+    return json.loads(run.stdout)
+
+
+@pytest.mark.parametrize("fixture", FIXTURES, ids=[f.name for f in FIXTURES])
+def test_validation_and_lint_equal_lpe_check_lint_json(fixture):
+    dialect = dialect_of(fixture)
+    want = lpe_check_json(fixture, dialect)
+    stage = Usd.Stage.Open(str(fixture))
+
+    # lpe.lint on the stage: the same findings, field for field.
+    got = lpe.lint(stage, dialect=dialect)
+    assert [f.to_dict() for f in got.findings] == want["findings"]
+    assert [(a["name"], a["source"], a["location"]) for a in got.aovs] == [
+        (a["name"], a["source"], a["location"]) for a in want["aovs"]
+    ]
+
+    # The validators with keyword `lpe`: one error per finding, at its prim and
+    # attribute, its message the finding's with the witness.
+    uv.configure(dialect=dialect)
+    errors = UsdValidation.ValidationContext(keywords=["lpe"]).Validate(stage)
+    kinds = {n: k for n, k in {**uv.AOV_VALIDATORS, **uv.STAGE_VALIDATORS}.items()}
+    seen = []
+    for e in errors:
+        name = e.GetValidator().GetMetadata().name
+        assert name.startswith("lpe:")
+        assert e.GetName() in kinds[name.removeprefix("lpe:")]
+        prim, attr = e.GetSites()
+        seen.append((e.GetName(), str(prim.GetPrim().GetPath()),
+                     prim.GetPrim().GetPath().AppendProperty(attr.GetProperty().GetName()).name,
+                     e.GetMessage()))
+    expected = []
+    for f in want["findings"]:
+        loc = f["location"]
+        msg = uv.message(lpe.Finding(f))
+        if f["witness"]:
+            assert f"witness: {f['witness']}" in msg
+        expected.append((f["kind"], loc["prim"], loc["attribute"], msg))
+    assert sorted(seen) == sorted(expected)
