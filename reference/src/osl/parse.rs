@@ -377,8 +377,10 @@ impl Parser<'_> {
                             break;
                         }
                         _ => {
+                            // Each element is one item with its postfix: `|` is no item
+                            // (§18.3), so `[C|D]` is an error at the `|`.
                             let at = self.pos;
-                            let r = self.alt(depth)?;
+                            let r = self.item(depth)?;
                             if r.zero {
                                 return Err(self.zero_here(at));
                             }

@@ -32,8 +32,11 @@ fn position<T>(p: &Position<T>, one: &dyn Fn(&T) -> String, sep: &str) -> String
 
 fn triple(t: &Triple) -> String {
     let ty = position(&t.ty, &|x| x.letter().to_string(), "");
-    let ev = position(&t.event, &event, " ");
-    let lb = position(&t.label, &|l: &String| label(l), "");
+    let ev = position(&t.event, &event, "");
+    let lb = match &t.label {
+        Position::Any => String::new(),
+        other => position(other, &|l: &String| label(l), ""),
+    };
     format!("<{ty}{ev}{lb}>")
 }
 
@@ -53,22 +56,29 @@ pub fn expr(e: &Expr) -> String {
         Expr::Atom(Atom::Item(i)) => item(i),
         Expr::Atom(Atom::Class { negated, items }) => {
             let items: Vec<String> = items.iter().map(item).collect();
-            format!("[{}{}]", if *negated { "^" } else { "" }, items.join(" "))
+            format!("[{}{}]", if *negated { "^" } else { "" }, items.concat())
         }
-        Expr::Seq(es) => es.iter().map(unit).collect(),
+        Expr::Seq(es) => es
+            .iter()
+            .map(|e| match e {
+                Expr::Seq(_) => format!("({})", expr(e)),
+                _ => expr(e),
+            })
+            .collect(),
         Expr::Alt(es) => {
-            let es: Vec<String> = es.iter().map(unit).collect();
+            let es: Vec<String> = es
+                .iter()
+                .map(|e| match e {
+                    Expr::Atom(_) | Expr::Repeat(..) => expr(e),
+                    _ => format!("({})", expr(e)),
+                })
+                .collect();
             format!("({})", es.join("|"))
         }
-        Expr::Repeat(b, c) => format!("{}{}", unit(b), c.text(true)),
-    }
-}
-
-/// An expression as one unit: atoms as they are, anything else in parentheses.
-fn unit(e: &Expr) -> String {
-    match e {
-        Expr::Atom(_) | Expr::Alt(_) => expr(e),
-        _ => format!("({})", expr(e)),
+        Expr::Repeat(b, c) => match **b {
+            Expr::Atom(_) => format!("{}{}", expr(b), c.text(true)),
+            _ => format!("({}){}", expr(b), c.text(true)),
+        },
     }
 }
 
