@@ -11,7 +11,7 @@ use std::path::Path;
 
 use lpe_testkit::suite;
 
-use super::{FrontCase, FrontEnds};
+use super::case::{FrontCase, FrontEnds};
 
 /// Every corpus expression of dialect `D` under the workspace root `root`, then the
 /// hand-written constructs. A missing directory contributes nothing; an unreadable
