@@ -11,6 +11,7 @@
 //! - [`osl`]: OSL's front end (§18) and its symbol-stream matcher;
 //! - [`algebra`]: set algebra over whole expressions (§5.5, §18.5), shared by both;
 //! - [`error`]: the front ends' errors (kind, byte position, message) and limits;
+//! - [`scanner`]: the cursor both parsers read their text with;
 //! - [`lpe_tree`]: the matchers on lpe's trees for callers that hold one, through lpe's
 //!   canonical printer (what that shares with lpe is said there).
 //!
@@ -28,6 +29,7 @@ pub mod error;
 pub mod lpe_tree;
 pub mod osl;
 pub mod renderman;
+pub mod scanner;
 
 pub use error::{ErrorKind, FrontError, Limits};
 pub use lpe_tree::{atom_matches, is_expr_match, is_match};

@@ -9,6 +9,7 @@
 
 use crate::algebra::{self, Algebra};
 use crate::error::{Count, ErrorKind, FrontError};
+use crate::scanner::Scanner;
 
 use super::ast::{Expr, Lpe, Pattern, Registration, Slot, Sym, Vertex, STOP};
 
@@ -28,9 +29,11 @@ pub fn parse(src: &str, registration: &Registration) -> Result<Lpe, FrontError> 
         registration.limits.max_depth,
         &mut |lo, hi| {
             let mut p = Parser {
-                src,
-                pos: lo,
-                end: hi,
+                scan: Scanner {
+                    src,
+                    pos: lo,
+                    end: hi,
+                },
                 reg: registration,
                 basic: &basic,
             };
@@ -92,9 +95,7 @@ fn positions(e: &Expr) -> u64 {
 }
 
 struct Parser<'s> {
-    src: &'s str,
-    pos: usize,
-    end: usize,
+    scan: Scanner<'s>,
     reg: &'s Registration,
     basic: &'s [Sym],
 }
@@ -105,30 +106,27 @@ struct Read {
     zero: bool,
 }
 
+/// The parser reads through its [`Scanner`] (`self.peek()`, `self.pos`).
+impl<'s> std::ops::Deref for Parser<'s> {
+    type Target = Scanner<'s>;
+    fn deref(&self) -> &Scanner<'s> {
+        &self.scan
+    }
+}
+
+impl<'s> std::ops::DerefMut for Parser<'s> {
+    fn deref_mut(&mut self) -> &mut Scanner<'s> {
+        &mut self.scan
+    }
+}
+
 impl Parser<'_> {
-    fn peek(&self) -> Option<char> {
-        self.src[self.pos..self.end].chars().next()
-    }
-
-    fn bump(&mut self) -> Option<char> {
-        let c = self.peek()?;
-        self.pos += c.len_utf8();
-        Some(c)
-    }
-
     fn error(&self, message: impl Into<String>) -> FrontError {
         FrontError::new(ErrorKind::Syntax, self.pos, message)
     }
 
     fn deeper(&self, depth: usize) -> Result<usize, FrontError> {
-        if depth + 1 > self.reg.limits.max_depth {
-            return Err(FrontError::new(
-                ErrorKind::Limit,
-                self.pos,
-                format!("nested deeper than {}", self.reg.limits.max_depth),
-            ));
-        }
-        Ok(depth + 1)
+        self.scan.deeper(depth, self.reg.limits.max_depth)
     }
 
     fn zero_here(&self, at: usize) -> FrontError {

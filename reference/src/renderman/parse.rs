@@ -8,6 +8,7 @@
 
 use crate::algebra::{self, Algebra};
 use crate::error::{Count, ErrorKind, FrontError, Limits};
+use crate::scanner::Scanner;
 
 use super::ast::{Atom, Event, Expr, Item, Kind, Lpe, Position, Prefix, Triple, Type};
 use super::macros::Registration;
@@ -155,9 +156,11 @@ fn body(
         }
     }
     let mut p = Parser {
-        src,
-        pos: lo,
-        end: hi,
+        scan: Scanner {
+            src,
+            pos: lo,
+            end: hi,
+        },
         limits: reg.limits,
     };
     let e = p.sequence(0)?;
@@ -223,9 +226,7 @@ fn set_light_group(e: &mut Expr, group: &str) {
 
 /// A recursive-descent reader of one expression in `src[pos..end]`.
 struct Parser<'s> {
-    src: &'s str,
-    pos: usize,
-    end: usize,
+    scan: Scanner<'s>,
     limits: Limits,
 }
 
@@ -237,17 +238,21 @@ enum Entry {
     Label(String),
 }
 
+/// The parser reads through its [`Scanner`] (`self.peek()`, `self.pos`).
+impl<'s> std::ops::Deref for Parser<'s> {
+    type Target = Scanner<'s>;
+    fn deref(&self) -> &Scanner<'s> {
+        &self.scan
+    }
+}
+
+impl<'s> std::ops::DerefMut for Parser<'s> {
+    fn deref_mut(&mut self) -> &mut Scanner<'s> {
+        &mut self.scan
+    }
+}
+
 impl Parser<'_> {
-    fn peek(&self) -> Option<char> {
-        self.src[self.pos..self.end].chars().next()
-    }
-
-    fn bump(&mut self) -> Option<char> {
-        let c = self.peek()?;
-        self.pos += c.len_utf8();
-        Some(c)
-    }
-
     fn skip_ws(&mut self) {
         while self.peek().is_some_and(is_ws) {
             self.pos += 1;
@@ -259,13 +264,7 @@ impl Parser<'_> {
     }
 
     fn deeper(&self, depth: usize) -> Result<usize, FrontError> {
-        if depth + 1 > self.limits.max_depth {
-            return Err(self.error(
-                ErrorKind::Limit,
-                format!("nested deeper than {}", self.limits.max_depth),
-            ));
-        }
-        Ok(depth + 1)
+        self.scan.deeper(depth, self.limits.max_depth)
     }
 
     /// `alt alt*`, up to `)` or the end.
