@@ -43,3 +43,40 @@ fn renderman_front_ends_agree_on_every_corpus_expression() {
 fn osl_front_ends_agree_on_every_corpus_expression() {
     assert_agree::<Osl>(300);
 }
+
+/// Noisy texts over both grammars' characters: the front ends agree on each (mostly on
+/// rejecting it, with positions that may differ).
+fn noise_agrees<D: FrontEnds>(alphabet: &[char], registration: D::Registration) {
+    let mut rng = lpe::rng::SplitMix64::new(11);
+    let cases = (0..3000).map(|i| {
+        let len = 1 + rng.below(14);
+        front::FrontCase::<D> {
+            text: (0..len)
+                .map(|_| alphabet[rng.below(alphabet.len())])
+                .collect(),
+            registration: registration.clone(),
+            origin: format!("noise {i}"),
+        }
+    });
+    let t = front::run::<D>(cases.collect::<Vec<_>>(), 1, 10);
+    let report: Vec<String> = t.disagreements.iter().map(|d| d.to_string()).collect();
+    assert!(t.count() == 0, "{}:\n{}", t.summary(), report.join("\n\n"));
+}
+
+#[test]
+fn renderman_front_ends_agree_on_noise() {
+    let alphabet = [
+        'C', 'R', 'T', 'L', 'O', 'D', 'S', 'U', 'x', 'c', '.', '\'', '<', '>', '[', ']', '^', '(',
+        ')', '|', '*', '+', '?', '{', '}', ',', '1', '2', ' ', '&', '-', ';', '_', 'a',
+    ];
+    noise_agrees::<RenderMan>(&alphabet, Default::default());
+}
+
+#[test]
+fn osl_front_ends_agree_on_noise() {
+    let alphabet = [
+        'C', 'R', 'T', 'L', 'O', 'D', 'G', 'S', 's', 'B', 'x', '.', '\'', '<', '>', '[', ']', '^',
+        '(', ')', '|', '*', '+', '{', '}', ',', '0', '1', ' ', '&', '-', 'a', 'U',
+    ];
+    noise_agrees::<Osl>(&alphabet, "events=U".parse().unwrap());
+}
