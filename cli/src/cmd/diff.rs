@@ -67,6 +67,9 @@ fn run_in<D: FrontEnds>(args: &Args) -> ExitCode {
         Err(e) => return bad_input(format!("error: {e}")),
     };
     println!("{}", fronts.summary());
+    for e in &fronts.position_examples {
+        println!("  both reject {e}");
+    }
     for d in &fronts.disagreements {
         println!("\n{d}");
     }
