@@ -6,13 +6,28 @@ use lpe::{AovMask, AovSet, Options};
 use crate::dialect::EngineDialect;
 use crate::engine::{fits_mask, Engine, EngineError, Matcher};
 
-/// The backtracking reference matcher ([`EngineDialect::reference`]), one expression at
-/// a time.
+/// The backtracking reference matcher ([`EngineDialect::reference`]) on the trees of the
+/// reference's own front end, one expression at a time.
 pub struct Reference;
 
 /// Crate-visible so the harness's planted-bug engines (differential tests) answer like
 /// the reference on their rewritten expressions without a copy of this type.
-pub(crate) struct ReferenceMatcher<D: EngineDialect>(pub(crate) Vec<D::Lpe>);
+pub(crate) struct ReferenceMatcher<D: EngineDialect>(pub(crate) Vec<D::ReferenceTree>);
+
+impl<D: EngineDialect> ReferenceMatcher<D> {
+    /// Every expression read by the reference's own front end
+    /// ([`EngineDialect::reference_tree`]).
+    pub(crate) fn new(
+        exprs: &[D::Lpe],
+        registration: &D::Registration,
+    ) -> Result<ReferenceMatcher<D>, EngineError> {
+        let trees = exprs
+            .iter()
+            .map(|e| D::reference_tree(e, registration))
+            .collect::<Result<_, _>>()?;
+        Ok(ReferenceMatcher(trees))
+    }
+}
 
 impl<D: EngineDialect> Matcher<D> for ReferenceMatcher<D> {
     fn which(&self, path: &D::Path) -> AovMask {
@@ -30,14 +45,15 @@ impl<D: EngineDialect> Engine<D> for Reference {
         "reference"
     }
 
-    // The registration is already in the parsed trees (macros, the eaters' exclusions).
+    /// Each expression read again by the reference's own front end, under the
+    /// registration (see [`EngineDialect::reference_tree`]).
     fn compile(
         &self,
         exprs: &[D::Lpe],
-        _: &D::Registration,
+        registration: &D::Registration,
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
         fits_mask(exprs.len())?;
-        Ok(Box::new(ReferenceMatcher::<D>(exprs.to_vec())))
+        Ok(Box::new(ReferenceMatcher::<D>::new(exprs, registration)?))
     }
 }
 

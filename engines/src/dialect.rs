@@ -22,9 +22,24 @@ use crate::regex::translation::Translation;
 
 /// A dialect as the engines, the harnesses and the fuzz bodies see it.
 pub trait EngineDialect: Dialect {
-    /// The backtracking reference matcher's verdict (the executable semantics): whether
-    /// `lpe` matches the whole `path`. The registration is already in the parsed tree.
-    fn reference(lpe: &Self::Lpe, path: &Self::Path) -> bool;
+    /// The reference front end's own tree of one expression (`lpe_reference`'s, sharing
+    /// no type with lpe's parser), what the `reference` engine matches.
+    type ReferenceTree: Send + Sync;
+
+    /// Reads `lpe` with the reference's own front end, under `registration` given as
+    /// plain data. The engines receive lpe's trees, not source text, so the text read is
+    /// lpe's canonical print of the tree (`Display`, docs/language.md §15): this is the
+    /// one thing the `reference` engine shares with lpe's front end, its printer. The
+    /// front-end comparison (`differential::front`) reads the source text itself.
+    /// A refusal is [`EngineError::Reference`].
+    fn reference_tree(
+        lpe: &Self::Lpe,
+        registration: &Self::Registration,
+    ) -> Result<Self::ReferenceTree, EngineError>;
+
+    /// The backtracking reference matcher's verdict (the executable semantics) on its
+    /// own tree: whether it matches the whole `path`.
+    fn reference(tree: &Self::ReferenceTree, path: &Self::Path) -> bool;
 
     /// The `oracle` engine's translation of a set to `regex-automata`: one anchored
     /// pattern per operand, and the encoding of paths they read. A dialect without one

@@ -16,6 +16,15 @@ pub enum EngineError {
     /// The regex-automata translation refused the set (the `oracle` engine).
     #[error("cannot build: {0}")]
     Regex(BuildError),
+    /// The reference front end refused lpe's canonical print of the expression (a
+    /// front-end disagreement: lpe accepted it).
+    #[error("cannot build: the reference front end refuses `{text}`: {why}")]
+    Reference {
+        /// The printed expression.
+        text: String,
+        /// The reference's error.
+        why: String,
+    },
     /// The engine does not speak this dialect (its name, [`Dialect::NAME`]: a name
     /// rather than a `DialectName`, so that a dialect outside the registry can be
     /// refused too).

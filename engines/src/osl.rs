@@ -7,7 +7,11 @@ use lpe::osl::{Error, Expr, Lpe, Osl, Path, Registered};
 use lpe_testkit::generate::{self, Choices};
 use lpe_testkit::grammar::{self, Coverage};
 
+use lpe::DialectName;
+use lpe_testkit::suite::Loaded;
+
 use crate::dialect::EngineDialect;
+use crate::differential::front::{constructs, FrontEnds};
 use crate::differential::shrink;
 use crate::differential::Generate;
 use crate::engine::EngineError;
@@ -15,8 +19,23 @@ use crate::external::protocol::Registration;
 use crate::regex::{self, Translation};
 
 impl EngineDialect for Osl {
-    fn reference(lpe: &Lpe, path: &Path) -> bool {
-        lpe_reference::osl::is_match(lpe, path)
+    type ReferenceTree = lpe_reference::osl::Lpe;
+
+    fn reference_tree(
+        lpe: &Lpe,
+        registered: &Registered,
+    ) -> Result<lpe_reference::osl::Lpe, EngineError> {
+        let text = lpe.to_string();
+        lpe_reference::osl::parse(&text, &reference_registration(registered)).map_err(|e| {
+            EngineError::Reference {
+                text,
+                why: e.to_string(),
+            }
+        })
+    }
+
+    fn reference(tree: &lpe_reference::osl::Lpe, path: &Path) -> bool {
+        lpe_reference::osl::is_match(tree, path)
     }
 
     fn oracle(exprs: &[Lpe]) -> Result<Translation<Osl>, EngineError> {
@@ -69,6 +88,50 @@ impl EngineDialect for Osl {
     /// The trees only: warnings carry source positions, which reprinting moves.
     fn same_tree(a: &Lpe, b: &Lpe) -> bool {
         a.expr == b.expr
+    }
+}
+
+/// The reference front end on text, its printer, and OSL's corpora.
+impl FrontEnds for Osl {
+    fn reference_parse(
+        text: &str,
+        registered: &Registered,
+    ) -> Result<lpe_reference::osl::Lpe, (usize, String)> {
+        lpe_reference::osl::parse(text, &reference_registration(registered))
+            .map_err(|e| (e.pos, e.message))
+    }
+
+    fn reference_print(tree: &lpe_reference::osl::Lpe) -> String {
+        tree.to_string()
+    }
+
+    fn suite_registration(case: &Loaded) -> Option<Registered> {
+        (case.dialect == DialectName::Osl).then(|| case.registered.clone())
+    }
+
+    const FUZZ_TARGETS: &'static [&'static str] = &["osl_parse"];
+
+    /// [`constructs::OSL`], each under its registration text.
+    fn constructs() -> Vec<(Registered, String)> {
+        constructs::OSL
+            .iter()
+            .map(|(reg, text)| {
+                let registered = reg
+                    .parse()
+                    .unwrap_or_else(|e| panic!("construct registration `{reg}`: {e}"));
+                (registered, text.to_string())
+            })
+            .collect()
+    }
+}
+
+/// OSL's registered labels as the reference front end takes them: plain strings, with
+/// the default limits.
+pub fn reference_registration(registered: &Registered) -> lpe_reference::osl::Registration {
+    lpe_reference::osl::Registration {
+        events: registered.events.clone(),
+        scatters: registered.scatters.clone(),
+        limits: lpe_reference::Limits::default(),
     }
 }
 

@@ -278,9 +278,14 @@ fn the_set_agrees_with_the_reference_matcher() {
 
 // --- The tools of `lpe-engines`: one implementation of each of their traits. ---
 
-/// The reference is RenderMan's on the same trees; shrinking is RenderMan's on them.
+/// The reference is RenderMan's on the same trees (through lpe's printer: this dialect
+/// has no front end of its own in the reference); shrinking is RenderMan's on them.
 /// No oracle translation: the `oracle` engine refuses this dialect.
 impl EngineDialect for Letters {
+    type ReferenceTree = LettersLpe;
+    fn reference_tree(lpe: &LettersLpe, _: &()) -> Result<LettersLpe, EngineError> {
+        Ok(lpe.clone())
+    }
     fn reference(lpe: &LettersLpe, path: &LettersPath) -> bool {
         lpe_reference::is_match(&lpe.0, &path.0)
     }

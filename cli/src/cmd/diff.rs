@@ -15,6 +15,14 @@
 //! `--max-size` vertex patterns, and paths over their labels, NONE, `_`, registered and
 //! unmentioned labels.
 //!
+//! Then the two front ends are compared (`lpe_engines::differential::front`): lpe's
+//! parser and the reference's own, on the text of every generated expression (lpe's
+//! canonical print of the generated tree) under its case's registration, and on every
+//! corpus expression (the conformance suites and fuzz corpora under `--corpus-root`,
+//! default the checkout the binary was built from, and the hand-written constructs).
+//! The report says how many expressions were compared and how many disagree; a
+//! disagreement is printed minimized and makes the exit code 3, like any other finding.
+//!
 //! With `--external 'CMD ARGS'` the cases go to an external matcher over the protocol of
 //! docs/protocol.md instead (see [`super::external`]); with `--suite DIR` as well, the
 //! conformance suite's cases instead of generated ones (see [`super::external_suite`]).
@@ -23,7 +31,8 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use lpe::with_dialect;
-use lpe_engines::differential::{run_cases, Generate, Totals};
+use lpe_engines::differential::front::{self, FrontCase, FrontEnds, FrontTotals};
+use lpe_engines::differential::{generate_case, run_cases, Generate, Totals};
 
 use crate::input::{bad_input, select_engines};
 
@@ -45,7 +54,7 @@ pub fn run(args: Args) -> ExitCode {
 }
 
 /// Runs the generated cases of dialect `D` on the selected engines.
-fn run_in<D: Generate>(args: &Args) -> ExitCode {
+fn run_in<D: FrontEnds>(args: &Args) -> ExitCode {
     let engines = match select_engines::<D>(&args.engine) {
         Ok(e) => e,
         Err(e) => return bad_input(format!("error: {e}")),
@@ -56,7 +65,48 @@ fn run_in<D: Generate>(args: &Args) -> ExitCode {
     }
     let names: Vec<&str> = engines.iter().map(|e| e.name()).collect();
     let start = Instant::now();
-    report(args, &names, run_cases(&args.run(), &engines), start)
+    let totals = run_cases(&args.run(), &engines);
+    let engines_code = report(args, &names, totals, start);
+    let fronts = match compare_front_ends::<D>(args) {
+        Ok(t) => t,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    println!("{}", fronts.summary());
+    for e in &fronts.position_examples {
+        println!("  both reject {e}");
+    }
+    for d in &fronts.disagreements {
+        println!("\n{d}");
+    }
+    if fronts.count() > 0 {
+        return ExitCode::from(3);
+    }
+    engines_code
+}
+
+/// The front-end comparison on the run's generated expressions (as lpe prints them)
+/// and on the corpora.
+fn compare_front_ends<D: FrontEnds>(args: &Args) -> Result<FrontTotals, String> {
+    let cfg = D::config(args.max_size);
+    let mut cases: Vec<FrontCase<D>> = Vec::new();
+    for index in args.first..args.first.saturating_add(args.cases) {
+        let case = generate_case::<D>(args.seed, index, &cfg, 0);
+        for e in &case.exprs {
+            cases.push(FrontCase {
+                text: e.to_string(),
+                registration: case.registration.clone(),
+                origin: format!("generated case {index}"),
+            });
+        }
+    }
+    let root = args.corpus_root.clone().unwrap_or_else(|| {
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .parent()
+            .map(|p| p.to_path_buf())
+            .unwrap_or_default()
+    });
+    cases.extend(front::corpus::<D>(&root)?);
+    Ok(front::run::<D>(cases, args.seed, args.max_failures))
 }
 
 /// Prints a run's totals and disagreements; the exit code.

@@ -20,6 +20,10 @@
 //!   as a finding); [`cases`]: generated cases (a registration, expressions or AOV sets, with paths
 //!   aimed at them), deterministic per seed and index, and a run over a range of them
 //!   (`lpe-check diff`).
+//! - [`front`]: the front-end comparison, lpe's parser against the reference's own
+//!   front end on source text (acceptance, reprint, meaning on generated paths,
+//!   equivalence), minimized by deleting characters, over generated and corpus
+//!   expressions.
 //!
 //! An engine that cannot build the input ([`EngineError`](crate::EngineError)) does not
 //! take part in that comparison; the skip is recorded in [`Agreement::skipped`] and
@@ -29,6 +33,7 @@ pub mod answers;
 pub mod cases;
 pub mod check;
 pub mod counterexample;
+pub mod front;
 pub mod generate;
 pub mod minimize;
 pub mod shrink;
@@ -60,7 +65,7 @@ pub(crate) mod tests {
         fn compile(
             &self,
             exprs: &[Lpe],
-            _: &Parser,
+            parser: &Parser,
         ) -> Result<Box<dyn Matcher<RenderMan> + '_>, EngineError> {
             let mut blind = exprs.to_vec();
             for e in &mut blind {
@@ -72,7 +77,9 @@ pub(crate) mod tests {
                     })
                 });
             }
-            Ok(Box::new(ReferenceMatcher::<RenderMan>(blind)))
+            Ok(Box::new(ReferenceMatcher::<RenderMan>::new(
+                &blind, parser,
+            )?))
         }
     }
 }

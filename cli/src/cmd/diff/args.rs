@@ -61,6 +61,11 @@ pub struct Args {
     /// failed case with its file and name, exits 3 on any failure.
     #[arg(long, value_name = "DIR", requires = "external", conflicts_with_all = ["expr", "register"])]
     pub suite: Option<std::path::PathBuf>,
+    /// The workspace checkout whose corpora (conformance suites, fuzz corpora) the
+    /// front-end comparison also reads; default: the checkout this binary was built
+    /// from, when it is still there.
+    #[arg(long, value_name = "DIR")]
+    pub corpus_root: Option<std::path::PathBuf>,
     /// With --external and --expr: the paths to ask about.
     #[arg(long, requires = "expr")]
     pub path: Vec<String>,

@@ -105,7 +105,8 @@ fn shrink_vertex(v: &VertexPattern, basic: &[Symbol]) -> Vec<VertexPattern> {
 
 #[cfg(test)]
 mod tests {
-    use lpe::osl::{self, Expr, Osl, Registered};
+    use lpe::osl::{self, Osl, Registered};
+    use lpe_reference::osl::ast::Expr;
 
     use super::*;
     use crate::adapters::{Reference, ReferenceMatcher};
@@ -123,9 +124,9 @@ mod tests {
                     ex.clear();
                 }
             }
-            Expr::Concat(es) | Expr::Alt(es) => es.iter_mut().for_each(blind),
+            Expr::Seq(es) | Expr::Alt(es) => es.iter_mut().for_each(blind),
             Expr::Repeat(b, _) => blind(b),
-            Expr::Empty | Expr::Nothing => {}
+            Expr::Nothing => {}
         }
     }
 
@@ -136,11 +137,14 @@ mod tests {
         fn compile(
             &self,
             exprs: &[osl::Lpe],
-            _: &Registered,
+            registered: &Registered,
         ) -> Result<Box<dyn Matcher<Osl> + '_>, EngineError> {
-            let mut exprs = exprs.to_vec();
-            exprs.iter_mut().for_each(|e| blind(&mut e.expr));
-            Ok(Box::new(ReferenceMatcher::<Osl>(exprs)))
+            // The reference's own trees, every eater then emptied.
+            let mut m = ReferenceMatcher::<Osl>::new(exprs, registered)?;
+            for t in &mut m.0 {
+                t.body.for_each_mut(&mut blind);
+            }
+            Ok(Box::new(m))
         }
     }
 

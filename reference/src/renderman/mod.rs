@@ -1,0 +1,148 @@
+//! The RenderMan dialect's reference: an independent front end and the backtracking
+//! matcher that runs on its tree.
+//!
+//! - [`ast`]: the front end's own tree (no type of lpe's parser);
+//! - [`parse`]: the parser, written from docs/language.md §3–§10 alone;
+//! - [`macros`]: the built-in macros of §6.1 and [`Registration`], user macros and
+//!   limits as plain data;
+//! - [`print`]: the tree as text lpe's parser reads (the front-end comparison re-parses
+//!   it);
+//! - [`matcher`]: the executable semantics of §4–§5 on that tree.
+//!
+//! Only paths are lpe's (`lpe::renderman::Path`): the path parser is not what this front
+//! end checks.
+
+pub mod ast;
+pub mod macros;
+pub mod matcher;
+pub mod parse;
+pub mod print;
+
+pub use ast::Lpe;
+pub use macros::Registration;
+pub use matcher::is_match;
+pub use parse::parse;
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::ErrorKind;
+
+    fn reg_ini(macros: &[(&str, &str)]) -> Registration {
+        Registration {
+            macros: macros
+                .iter()
+                .map(|(n, s)| (n.to_string(), s.to_string()))
+                .collect(),
+            ..Registration::default()
+        }
+    }
+
+    fn m(expr: &str, path: &str) -> bool {
+        let lpe = parse(expr, &Registration::default()).unwrap_or_else(|e| panic!("{expr}: {e}"));
+        is_match(&lpe, &path.parse().unwrap())
+    }
+
+    fn err(expr: &str) -> (ErrorKind, usize) {
+        match parse(expr, &Registration::default()) {
+            Ok(l) => panic!("{expr} parsed as {l}"),
+            Err(e) => (e.kind, e.pos),
+        }
+    }
+
+    fn printed(expr: &str) -> String {
+        parse(expr, &Registration::default())
+            .unwrap_or_else(|e| panic!("{expr}: {e}"))
+            .to_string()
+    }
+
+    // Expected values are the examples of docs/language.md §3–§10, written by hand.
+    #[test]
+    fn atoms_match_as_section_4_says() {
+        assert!(m("C.L", "C RD2'floor' L"));
+        assert!(!m("C.L", "C RU1 L"), "`.` never matches a user lobe");
+        assert!(m("CUL", "C RU1 L"));
+        assert!(!m("C.*", "C L"), "`.` cannot match the emitter");
+        assert!(!m("C'g'L", "C L'g'") && m("C<L.'g'>", "C L'g'"));
+        assert!(m("C<[^R].>L", "C TS L") && !m("C<[^R].>L", "C RS L"));
+        assert!(m("C<R[^D]>L", "C RS L") && !m("C<R[^D]>L", "C RU2 L"));
+        assert!(
+            m("C<.D[^'foo']>L", "C RD L"),
+            "negated labels take unlabelled vertices"
+        );
+        assert!(!m("C<.D[^'foo']>L", "C RD'foo' L"));
+        assert!(m("C[^R D]L", "C TS L") && !m("C[^R D]L", "C TD L"));
+        assert!(!m("C<LD>", "C L"));
+        assert!(m("c<rd>l", "C RD L"));
+        assert!(m("C [S2 S3 S4] L", "C TS4 L"));
+        assert!(m("C'a b'L", "C RD'a b' L") && m("C''L", "C RD'' L") && !m("C''L", "C RD L"));
+    }
+
+    #[test]
+    fn combining_atoms_as_section_5_says() {
+        assert!(m("CD|(SD)L", "C RD L") && m("CD|(SD)L", "C RS RD L"));
+        assert!(!m("CD|(SD)L", "C RS L"));
+        assert!(m("C.{0}L", "C L"));
+        assert!(m("C(.?){3,5}L", "C L"));
+        assert!(m("C(RD)+L", "C RS RD RS RD L") && !m("C(RD)+L", "C RS L"));
+        assert!(!m("C<RD>", "C RD L"));
+    }
+
+    #[test]
+    fn set_algebra_prefixes_and_macros() {
+        assert!(m("C.*L - C.*DL", "C RS L") && !m("C.*L - C.*DL", "C RS RD L"));
+        assert!(m("^C.*[<L.>O]", "C RU1 L") && !m("^C.*[<L.>O]", "C RD L"));
+        assert!(
+            m("^(C|D)L", "C RS L"),
+            "`^(C|D)L` is the complement of `(C|D)L`"
+        );
+        assert_eq!(printed("lpe:indirectDiffuse_key"), "C<RD>.+[<L.'key'>O]");
+        assert_eq!(printed("emission_key"), "CO");
+        assert_eq!(printed("directDiffuse_key_fill"), "C<RD>[<L.'key_fill'>O]");
+        assert_eq!(
+            printed("noclamp;unoccluded;unoccluded;C.L"),
+            "unoccluded;noclamp;C.L"
+        );
+        assert_eq!(
+            printed("shadowcollector"),
+            "shadows;C[<.D'collector'><.S'collector'>]<L.>"
+        );
+        let r = reg_ini(&[("myDiffuse", "unoccluded;C<RD>[<L.>O]"), ("emissive", "CL")]);
+        assert_eq!(
+            parse("mydiffuse_k", &r).unwrap().to_string(),
+            "unoccluded;C<RD>[<L.'k'>O]"
+        );
+        assert_eq!(parse("emissive", &r).unwrap().to_string(), "CL");
+    }
+
+    #[test]
+    fn errors_have_the_kinds_and_positions_of_section_9() {
+        assert_eq!(err(""), (ErrorKind::Empty, 0));
+        assert_eq!(err("unoccluded;").0, ErrorKind::Empty);
+        assert_eq!(err("()").0, ErrorKind::Empty);
+        assert_eq!(err("C<L'key'>"), (ErrorKind::TriplePosition, 3));
+        assert_eq!(err("<D>"), (ErrorKind::TriplePosition, 1));
+        assert_eq!(err("C.*L & C<L'key'>"), (ErrorKind::TriplePosition, 10));
+        assert_eq!(err("C.**L").0, ErrorKind::Quantifier);
+        assert_eq!(err("C.{3,2}L").0, ErrorKind::Quantifier);
+        assert_eq!(err("CD5L"), (ErrorKind::Lobe, 1));
+        assert_eq!(err("C D 2 L").0, ErrorKind::Syntax);
+        assert_eq!(err("directDifuse").0, ErrorKind::UnknownMacro);
+        assert_eq!(err("unocluded;C.*L"), (ErrorKind::UnknownPrefix, 0));
+        assert_eq!(err("C.{257}L").0, ErrorKind::Limit);
+        assert_eq!(err("C(.{256}){256}L").0, ErrorKind::Limit);
+        assert_eq!(err("C.*L -").0, ErrorKind::Empty);
+        assert_eq!(err("directDiffuse_").0, ErrorKind::Syntax);
+        let looping = reg_ini(&[("a", "b"), ("b", "a")]);
+        assert_eq!(parse("a", &looping).unwrap_err().kind, ErrorKind::Limit);
+    }
+
+    #[test]
+    fn nesting_is_bounded_without_overflowing_the_stack() {
+        let deep = format!("C{}D{}L", "(".repeat(100_000), ")".repeat(100_000));
+        // The 129th `(` (byte 129, after `C`) is one level too deep.
+        assert_eq!(err(&deep), (ErrorKind::Limit, 129));
+        let classes = format!("C{}", "<[".repeat(100_000));
+        assert!(parse(&classes, &Registration::default()).is_err());
+    }
+}
