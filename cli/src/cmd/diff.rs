@@ -17,7 +17,8 @@
 //!
 //! Then the two front ends are compared (`lpe_engines::differential::front`): lpe's
 //! parser and the reference's own, on the text of every generated expression (lpe's
-//! canonical print of the generated tree) under its case's registration, and on every
+//! canonical print of the generated tree; for one written from the grammar, also the
+//! grammar text and a near miss of it) under its case's registration, and on every
 //! corpus expression (the conformance suites and fuzz corpora under `--corpus-root`,
 //! default the checkout the binary was built from, and the hand-written constructs).
 //! The report says how many expressions were compared and how many disagree; a
@@ -32,7 +33,8 @@ use std::time::Instant;
 
 use lpe::with_dialect;
 use lpe_engines::differential::front::{self, FrontCase, FrontEnds, FrontTotals};
-use lpe_engines::differential::{generate_case, run_cases, Generate, Totals};
+use lpe_engines::differential::{case_rng, generate_case, run_cases, Generate, Totals};
+use lpe_testkit::grammar;
 
 use crate::input::{bad_input, select_engines};
 
@@ -84,19 +86,37 @@ fn run_in<D: FrontEnds>(args: &Args) -> ExitCode {
     engines_code
 }
 
-/// The front-end comparison on the run's generated expressions (as lpe prints them)
-/// and on the corpora.
+/// The front-end comparison on the run's generated expressions: each as lpe prints it,
+/// and, for those written from the grammar, the grammar text itself, one near miss of it
+/// (one character deleted, doubled or inserted: the error paths) and any grammar text
+/// lpe rejected; then the corpora.
 fn compare_front_ends<D: FrontEnds>(args: &Args) -> Result<FrontTotals, String> {
     let cfg = D::config(args.max_size);
     let mut cases: Vec<FrontCase<D>> = Vec::new();
     for index in args.first..args.first.saturating_add(args.cases) {
         let case = generate_case::<D>(args.seed, index, &cfg, 0);
-        for e in &case.exprs {
+        // The near misses draw from a stream of their own, so the cases stay those of
+        // the engines' run.
+        let mut near = case_rng(args.seed ^ NEAR_MISS_STREAM, index);
+        let mut push = |text: String, what: &str| {
             cases.push(FrontCase {
-                text: e.to_string(),
+                text,
                 registration: case.registration.clone(),
-                origin: format!("generated case {index}"),
-            });
+                origin: format!("generated case {index} ({what})"),
+            })
+        };
+        for (e, text) in case.exprs.iter().zip(&case.texts) {
+            push(e.to_string(), "as lpe prints it");
+            if let Some(text) = text {
+                push(text.clone(), "grammar text");
+                push(
+                    grammar::mutate(&mut near, text),
+                    "near miss of a grammar text",
+                );
+            }
+        }
+        for (text, _) in &case.rejected {
+            push(text.clone(), "grammar text lpe rejects");
         }
     }
     let root = args.corpus_root.clone().unwrap_or_else(|| {
@@ -108,6 +128,9 @@ fn compare_front_ends<D: FrontEnds>(args: &Args) -> Result<FrontTotals, String> 
     cases.extend(front::corpus::<D>(&root)?);
     Ok(front::run::<D>(cases, args.seed, args.max_failures))
 }
+
+/// Mixed into the seed for the near misses' streams.
+const NEAR_MISS_STREAM: u64 = 0x6E65_6172_6D69_7373;
 
 /// Prints a run's totals and disagreements; the exit code.
 fn report<D: Generate>(args: &Args, names: &[&str], t: Totals<D>, start: Instant) -> ExitCode {
