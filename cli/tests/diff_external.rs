@@ -330,6 +330,23 @@ fn a_planted_wrong_verdict_is_reported_with_its_file_and_case() {
     assert!(err.contains("x.toml: case `x`: no expectation"), "{err}");
 }
 
+/// `lpe-check diff --external PROXY --dialect osl` with `flags` for the test adapter,
+/// on generated cases (`--cases 300` and `extra`).
+fn osl_run(flags: &str, extra: &[&str]) -> (i32, String, String) {
+    let proxy = proxy_in_the_osl_dialect(flags);
+    let mut args = vec![
+        "diff",
+        "--external",
+        &proxy,
+        "--dialect",
+        "osl",
+        "--cases",
+        "300",
+    ];
+    args.extend_from_slice(extra);
+    lpe_check(&args)
+}
+
 /// Every `replay:` line of a report, run: the exit code and output of each.
 fn replays(out: &str) -> Vec<(i32, String)> {
     out.lines()
@@ -353,20 +370,9 @@ fn minimized_cases_still_disagree_when_replayed() {
     if !python() {
         return;
     }
-    let proxy = proxy_in_the_osl_dialect("--miss-counted");
     let mut findings = 0;
     for seed in ["3", "4", "5"] {
-        let (code, out, err) = lpe_check(&[
-            "diff",
-            "--external",
-            &proxy,
-            "--dialect",
-            "osl",
-            "--cases",
-            "300",
-            "--seed",
-            seed,
-        ]);
+        let (code, out, err) = osl_run("--miss-counted", &["--seed", seed]);
         assert_eq!(code, 3, "{out}{err}");
         let last = out
             .lines()
@@ -398,20 +404,10 @@ fn a_candidate_that_crashed_is_not_sent_again() {
     if !python() {
         return;
     }
-    let proxy = proxy_in_the_osl_dialect("--miss-counted --crash-on-zero");
-    let (code, out, err) = lpe_check(&[
-        "diff",
-        "--external",
-        &proxy,
-        "--dialect",
-        "osl",
-        "--cases",
-        "300",
-        "--seed",
-        "4",
-        "--max-restarts",
-        "100",
-    ]);
+    let (code, out, err) = osl_run(
+        "--miss-counted --crash-on-zero",
+        &["--seed", "4", "--max-restarts", "100"],
+    );
     assert_eq!(code, 3, "{out}{err}");
     let requests: Vec<&str> = out
         .lines()
@@ -435,18 +431,7 @@ fn a_minimized_case_that_agrees_on_replay_falls_back_to_the_original() {
     if !python() {
         return;
     }
-    let proxy = proxy_in_the_osl_dialect("--miss-counted --flaky");
-    let (code, out, err) = lpe_check(&[
-        "diff",
-        "--external",
-        &proxy,
-        "--dialect",
-        "osl",
-        "--cases",
-        "300",
-        "--seed",
-        "3",
-    ]);
+    let (code, out, err) = osl_run("--miss-counted --flaky", &["--seed", "3"]);
     assert_eq!(code, 3, "{out}{err}");
     assert!(
         out.contains(

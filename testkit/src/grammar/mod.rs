@@ -187,6 +187,26 @@ pub fn mutate(c: &mut impl Choices, text: &str) -> String {
     out.into_iter().collect()
 }
 
+/// The generators' shared test: `n` texts from `text` (given the text's index, the
+/// source of choices and the coverage) all parse (`parse` returns the error), and
+/// together they write every production of `cov`'s list.
+#[cfg(test)]
+pub(crate) fn assert_texts_parse_and_cover(
+    mut cov: Coverage,
+    n: usize,
+    mut text: impl FnMut(usize, &mut lpe::rng::SplitMix64, &mut Coverage) -> String,
+    parse: impl Fn(usize, &str) -> Result<(), String>,
+) {
+    let mut rng = lpe::rng::SplitMix64::new(7);
+    for i in 0..n {
+        let t = text(i, &mut rng, &mut cov);
+        if let Err(e) = parse(i, &t) {
+            panic!("text {i} `{t}` does not parse: {e}");
+        }
+    }
+    assert_eq!(cov.missing(), Vec::<&str>::new());
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

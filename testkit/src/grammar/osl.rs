@@ -523,7 +523,6 @@ fn max_count(w: &mut Writer<'_>, n: u32) {
 #[cfg(test)]
 mod tests {
     use lpe::osl::Registered;
-    use lpe::rng::SplitMix64;
 
     use super::*;
 
@@ -533,24 +532,29 @@ mod tests {
     #[test]
     fn texts_parse_and_reach_every_production() {
         let cfg = Config::default();
-        let mut cov = coverage();
-        let mut rng = SplitMix64::new(7);
         let registered = Registered {
             events: vec!["U".into()],
             scatters: vec!["Y".into()],
         };
-        for i in 0..10_000 {
-            let reg = if i % 2 == 0 {
+        let reg = |i: usize| {
+            if i.is_multiple_of(2) {
                 Registered::none()
             } else {
                 registered.clone()
-            };
-            let short = Shorthand::of(&reg.events, &reg.scatters);
-            let text = source(&mut rng, &short, &cfg, &mut cov);
-            if let Err(e) = lpe::osl::parse(&text, &reg) {
-                panic!("text {i} `{text}` does not parse: {}", e.message());
             }
-        }
-        assert_eq!(cov.missing(), Vec::<&str>::new());
+        };
+        super::super::assert_texts_parse_and_cover(
+            coverage(),
+            10_000,
+            |i, rng, cov| {
+                let r = reg(i);
+                source(rng, &Shorthand::of(&r.events, &r.scatters), &cfg, cov)
+            },
+            |i, text| {
+                lpe::osl::parse(text, &reg(i))
+                    .map(drop)
+                    .map_err(|e| e.message())
+            },
+        );
     }
 }

@@ -548,15 +548,16 @@ mod tests {
     #[test]
     fn texts_parse_and_reach_every_production() {
         let cfg = Config::default();
-        let mut cov = coverage();
-        let mut rng = SplitMix64::new(7);
-        for i in 0..10_000 {
-            let text = source(&mut rng, &cfg, &mut cov);
-            if let Err(e) = lpe::renderman::parse(&text) {
-                panic!("text {i} `{text}` does not parse: {e}");
-            }
-        }
-        assert_eq!(cov.missing(), Vec::<&str>::new());
+        super::super::assert_texts_parse_and_cover(
+            coverage(),
+            10_000,
+            |_, rng, cov| source(rng, &cfg, cov),
+            |_, text| {
+                lpe::renderman::parse(text)
+                    .map(drop)
+                    .map_err(|e| e.to_string())
+            },
+        );
     }
 
     #[test]
