@@ -332,7 +332,7 @@ fn a_planted_wrong_verdict_is_reported_with_its_file_and_case() {
 
 /// `lpe-check diff --external PROXY --dialect osl` with `flags` for the test adapter,
 /// on generated cases (`--cases 300` and `extra`).
-fn osl_run(flags: &str, extra: &[&str]) -> (i32, String, String) {
+fn planted_adapter_run(flags: &str, extra: &[&str]) -> (i32, String, String) {
     let proxy = proxy_in_the_osl_dialect(flags);
     let mut args = vec![
         "diff",
@@ -372,7 +372,7 @@ fn minimized_cases_still_disagree_when_replayed() {
     }
     let mut findings = 0;
     for seed in ["3", "4", "5"] {
-        let (code, out, err) = osl_run("--miss-counted", &["--seed", seed]);
+        let (code, out, err) = planted_adapter_run("--miss-counted", &["--seed", seed]);
         assert_eq!(code, 3, "{out}{err}");
         let last = out
             .lines()
@@ -404,7 +404,7 @@ fn a_candidate_that_crashed_is_not_sent_again() {
     if !python() {
         return;
     }
-    let (code, out, err) = osl_run(
+    let (code, out, err) = planted_adapter_run(
         "--miss-counted --crash-on-zero",
         &["--seed", "4", "--max-restarts", "100"],
     );
@@ -431,7 +431,7 @@ fn a_minimized_case_that_agrees_on_replay_falls_back_to_the_original() {
     if !python() {
         return;
     }
-    let (code, out, err) = osl_run("--miss-counted --flaky", &["--seed", "3"]);
+    let (code, out, err) = planted_adapter_run("--miss-counted --flaky", &["--seed", "3"]);
     assert_eq!(code, 3, "{out}{err}");
     assert!(
         out.contains(

@@ -40,7 +40,7 @@ fn renderman_front_ends_agree_on_every_corpus_expression() {
 }
 
 #[test]
-fn osl_front_ends_agree_on_every_corpus_expression() {
+fn front_ends_agree_on_every_corpus_expression_in_the_osl_dialect() {
     assert_agree::<Osl>(300);
 }
 
@@ -73,7 +73,7 @@ fn renderman_front_ends_agree_on_noise() {
 }
 
 #[test]
-fn osl_front_ends_agree_on_noise() {
+fn front_ends_agree_on_noise_in_the_osl_dialect() {
     let alphabet = [
         'C', 'R', 'T', 'L', 'O', 'D', 'G', 'S', 's', 'B', 'x', '.', '\'', '<', '>', '[', ']', '^',
         '(', ')', '|', '*', '+', '{', '}', ',', '0', '1', ' ', '&', '-', 'a', 'U',

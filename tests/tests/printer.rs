@@ -74,7 +74,7 @@ fn generated_trees_print_and_reparse_in_the_osl_dialect() {
 /// Hand-picked OSL texts whose printed form differs from the source: the printer's
 /// spelling of each, written out by hand from docs/language.md §18.
 #[test]
-fn osl_groups_inside_vertex_patterns_print_as_alternations() {
+fn groups_inside_vertex_patterns_print_as_alternations_in_the_osl_dialect() {
     let none = Registered::none();
     for (text, printed) in [
         // `|` binds tighter than concatenation (§18.5): no parentheses needed.
