@@ -56,7 +56,7 @@ pub fn path(p: &Path) -> osl::Path {
 fn reference_mask(aovs: &[(String, osl::Lpe)], p: &osl::Path) -> AovMask {
     let mut m = AovMask::EMPTY;
     for (i, (_, l)) in aovs.iter().enumerate() {
-        if lpe_reference::lpe_tree::osl_is_match(l, p) {
+        if lpe_reference::lpe_tree::is_match(l, p) {
             m.insert(i);
         }
     }

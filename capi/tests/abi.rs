@@ -461,7 +461,7 @@ fn accum_test_rows_answer_as_osl_and_the_reference_do_through_the_c_abi() {
             let got = route_by_symbols(&set, &row.path, stepping) == 1;
             let lpe = lpe::osl::parse(&row.expr, &row.registered).unwrap();
             let path: lpe::osl::Path = row.path.parse().unwrap();
-            let reference = lpe_reference::lpe_tree::osl_is_match(&lpe, &path);
+            let reference = lpe_reference::lpe_tree::is_match(&lpe, &path);
             assert_eq!(
                 (got, reference),
                 (row.matches, row.matches),

@@ -10,7 +10,7 @@
 //! parses the source text with both front ends and compares their matchers.
 //!
 //! An OSL tree carries its registration in its eaters' exclusions (the basic set); the
-//! entry points without a registration ([`osl_is_match`]) read the registered labels
+//! entry point without a registration ([`is_match`]) reads the registered labels
 //! back from there ([`registered_in`]): inside `<…>`, where lpe prints every vertex
 //! pattern, a label's kind does not matter, only whether it is basic.
 //!
@@ -38,33 +38,71 @@ fn refused(text: &str, e: FrontError) -> ! {
     panic!("the reference front end refuses lpe's canonical print `{text}`: {e}")
 }
 
-/// The reference tree of lpe's RenderMan tree (macros are expanded in the print).
-pub fn renderman_tree(lpe: &lpe::renderman::Lpe) -> Result<renderman::Lpe, FrontError> {
-    let reg = renderman::Registration {
-        limits: generous(),
-        ..Default::default()
-    };
-    renderman::parse(&lpe.to_string(), &reg)
+/// An lpe tree the reference can answer for: one implementation per dialect.
+pub trait ReferenceMatch {
+    /// The dialect's path.
+    type Path;
+    /// The reference's own tree of the dialect.
+    type Tree: Send + Sync;
+    /// The reference's parse of the tree's canonical print (panics if the reference
+    /// refuses it: a front-end disagreement). Parse once, match many paths.
+    fn reference_tree(&self) -> Self::Tree;
+    /// Whether the reference's tree matches the whole of `path`.
+    fn tree_matches(tree: &Self::Tree, path: &Self::Path) -> bool;
 }
 
-/// The reference tree of lpe's OSL tree, parsed under the same registered labels.
-pub fn osl_tree(
-    lpe: &lpe::osl::Lpe,
-    registered: &lpe::osl::Registered,
-) -> Result<osl::Lpe, FrontError> {
-    let reg = osl::Registration {
-        events: registered.events.clone(),
-        scatters: registered.scatters.clone(),
-        limits: generous(),
-    };
-    osl::parse(&lpe.to_string(), &reg)
+/// Whether lpe's tree (either dialect) matches the whole of `path`, by the reference.
+/// Parses the print on every call: hold [`ReferenceMatch::reference_tree`] to match
+/// many paths.
+pub fn is_match<L: ReferenceMatch>(lpe: &L, path: &L::Path) -> bool {
+    L::tree_matches(&lpe.reference_tree(), path)
 }
 
-/// Whether lpe's RenderMan tree matches the whole of `path`, by the reference.
-pub fn is_match(lpe: &lpe::renderman::Lpe, path: &Path) -> bool {
-    match renderman_tree(lpe) {
-        Ok(t) => renderman::is_match(&t, path),
-        Err(e) => refused(&lpe.to_string(), e),
+/// A reference to a tree answers as the tree (callers iterating over `&Lpe`).
+impl<T: ReferenceMatch> ReferenceMatch for &T {
+    type Path = T::Path;
+    type Tree = T::Tree;
+    fn reference_tree(&self) -> T::Tree {
+        (*self).reference_tree()
+    }
+    fn tree_matches(tree: &T::Tree, path: &T::Path) -> bool {
+        T::tree_matches(tree, path)
+    }
+}
+
+/// RenderMan: macros are expanded in the print.
+impl ReferenceMatch for lpe::renderman::Lpe {
+    type Path = Path;
+    type Tree = renderman::Lpe;
+    fn reference_tree(&self) -> renderman::Lpe {
+        let reg = renderman::Registration {
+            limits: generous(),
+            ..Default::default()
+        };
+        let text = self.to_string();
+        renderman::parse(&text, &reg).unwrap_or_else(|e| refused(&text, e))
+    }
+    fn tree_matches(tree: &renderman::Lpe, path: &Path) -> bool {
+        renderman::is_match(tree, path)
+    }
+}
+
+/// OSL: parsed under the registration the tree's eaters carry ([`registered_in`]).
+impl ReferenceMatch for lpe::osl::Lpe {
+    type Path = lpe::osl::Path;
+    type Tree = osl::Lpe;
+    fn reference_tree(&self) -> osl::Lpe {
+        let registered = registered_in(self);
+        let reg = osl::Registration {
+            events: registered.events,
+            scatters: registered.scatters,
+            limits: generous(),
+        };
+        let text = self.to_string();
+        osl::parse(&text, &reg).unwrap_or_else(|e| refused(&text, e))
+    }
+    fn tree_matches(tree: &osl::Lpe, path: &lpe::osl::Path) -> bool {
+        osl::is_match(tree, path)
     }
 }
 
@@ -110,15 +148,5 @@ pub fn registered_in(lpe: &lpe::osl::Lpe) -> lpe::osl::Registered {
     lpe::osl::Registered {
         events,
         scatters: Vec::new(),
-    }
-}
-
-/// Whether lpe's OSL tree matches the whole of `path`, by the reference, under the
-/// registration its eaters carry ([`registered_in`]).
-pub fn osl_is_match(lpe: &lpe::osl::Lpe, path: &lpe::osl::Path) -> bool {
-    let registered = registered_in(lpe);
-    match osl_tree(lpe, &registered) {
-        Ok(t) => osl::is_match(&t, path),
-        Err(e) => refused(&lpe.to_string(), e),
     }
 }

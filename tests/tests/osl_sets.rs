@@ -190,7 +190,7 @@ fn dead_states_of_osl_set_algebra_are_sound_and_dfa_dead_states_complete() {
                             let e = osl::Path::new(v.cloned().collect());
                             for (n, l) in &aovs {
                                 assert!(
-                                    !lpe_reference::lpe_tree::osl_is_match(l, &e),
+                                    !lpe_reference::lpe_tree::is_match(l, &e),
                                     "seed {seed} {mode}: dead after {k} vertices of `{p}` but \
                                      {n} `{l}` matches `{e}`"
                                 );

@@ -317,7 +317,7 @@ mod tests {
         assert_some_algebra_that_matches(
             &cases,
             |e| e.algebra.is_some(),
-            lpe_reference::lpe_tree::osl_is_match,
+            lpe_reference::lpe_tree::is_match,
         );
         // Without set algebra when asked (for matchers that do not speak it).
         let plain = generate::osl::Config::default().without_set_algebra();

@@ -17,6 +17,7 @@
 use lpe::renderman::Parser;
 use lpe::renderman::{Lpe, Path, RenderMan, Vertex, VertexType};
 use lpe::DialectName;
+use lpe_reference::lpe_tree::ReferenceMatch;
 
 use super::vertex::{SceneClassifier, SceneDialect, SceneVertex};
 use std::hash::{Hash, Hasher};
@@ -98,21 +99,24 @@ pub trait WholePath: Sync {
     fn which(&self, path: &Path) -> AovMask;
 }
 
-/// `lpe_reference::is_match` on each expression.
-pub struct Reference(Vec<Lpe>);
+/// The reference matcher on each expression, each read once by the reference's own
+/// front end (from lpe's print) when the engine is built, not per path.
+pub struct Reference(Vec<lpe_reference::renderman::Lpe>);
 
 impl Reference {
     /// The reference engine for these expressions (at most [`MAX_AOVS`]).
     pub fn new(aovs: &[Lpe]) -> Result<Reference, MatcherError> {
         check_count(aovs)?;
-        Ok(Reference(aovs.to_vec()))
+        Ok(Reference(
+            aovs.iter().map(ReferenceMatch::reference_tree).collect(),
+        ))
     }
 }
 
 impl WholePath for Reference {
     fn which(&self, path: &Path) -> AovMask {
         (0..self.0.len())
-            .filter(|&i| lpe_reference::is_match(&self.0[i], path))
+            .filter(|&i| Lpe::tree_matches(&self.0[i], path))
             .collect()
     }
 }

@@ -10,7 +10,7 @@ use crate::witness::Checked;
 
 impl Checked for Osl {
     fn reference_match(lpe: &osl::Lpe, path: &osl::Path) -> bool {
-        lpe_reference::lpe_tree::osl_is_match(lpe, path)
+        lpe_reference::lpe_tree::is_match(lpe, path)
     }
 }
 
