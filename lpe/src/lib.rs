@@ -112,6 +112,7 @@ mod print;
 pub mod registry;
 pub mod renderman;
 pub mod rng;
+pub mod translate;
 
 pub use aov::{AovSet, Options};
 pub use aov::{Cache, NfaMatcher};

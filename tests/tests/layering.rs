@@ -137,9 +137,9 @@ fn lpe_top_level_modules_have_no_cycles() {
     );
 }
 
-/// The dialect folders and the run-time registry of them: what the shared layers must
-/// never reach.
-const DIALECT_MODULES: [&str; 3] = ["renderman", "osl", "registry"];
+/// The dialect folders, the run-time registry of them and the translation between them:
+/// what the shared layers must never reach.
+const DIALECT_MODULES: [&str; 4] = ["renderman", "osl", "registry", "translate"];
 
 #[test]
 fn lpe_shared_layers_know_no_dialect() {

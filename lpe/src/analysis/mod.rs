@@ -25,5 +25,6 @@ mod unmatched;
 pub use crate::automata::emptiness::Warning;
 pub use compare::{compare, Comparison};
 pub use partition::{default_universe, partition, remainder, Partition};
+pub(crate) use search::analysis_options;
 pub use search::{AnalysisError, MAX_SEARCH_STATES};
 pub use unmatched::warnings;

@@ -129,7 +129,7 @@ fn walk<D: Dialect, V: Clone>(
 
 /// Analysis sets get a larger DFA budget than renderer sets: a search visits every state
 /// anyway, so a DFA built once is cheaper than subsets rebuilt per visit.
-pub(super) fn analysis_options() -> Options {
+pub(crate) fn analysis_options() -> Options {
     Options {
         dfa_budget: 64 << 20,
         ..Options::default()

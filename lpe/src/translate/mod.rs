@@ -1,0 +1,248 @@
+//! Translation between the RenderMan and OSL dialects, with a proof (docs/language.md
+//! §19).
+//!
+//! A [`Correspondence`] says which OSL vertex each RenderMan vertex is. An OSL expression
+//! `f` means the same as a RenderMan expression `e` when, for every RenderMan path `p`,
+//! `e` matches `p` exactly when `f` matches the OSL view of `p` ([`cross::compare`]).
+//! Translation is syntax-directed (the expression keeps its shape; atoms become the
+//! patterns of their views, or of their preimages), and its verdict is decided on the
+//! automata of the printed translation read back: exact, or not expressible with the
+//! reason, the translations from above and below, and a witness for each difference.
+//!
+//! This module is the one place that knows both dialects; no shared layer imports it.
+
+pub mod correspondence;
+pub mod cross;
+mod labels;
+mod to_osl;
+mod to_renderman;
+
+use std::fmt;
+
+use crate::algebra::Algebra;
+use crate::analysis::AnalysisError;
+use crate::osl;
+use crate::renderman;
+
+pub use correspondence::{Correspondence, DeclarationError, Scattering};
+pub use cross::{Collision, CrossComparison, Witness};
+
+/// Which way a translation rounds where the target cannot say what the source means.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Bound {
+    /// A superset: every path the source matches, and more.
+    Upper,
+    /// A subset: only paths the source matches.
+    Lower,
+}
+
+impl Bound {
+    fn flip(self) -> Bound {
+        match self {
+            Bound::Upper => Bound::Lower,
+            Bound::Lower => Bound::Upper,
+        }
+    }
+}
+
+/// Maps a set algebra tree leaf by leaf, each leaf rounded the way that keeps the whole
+/// rounded by `bound`: the right side of `-` and the operand of `^` the other way.
+pub(crate) fn map_algebra<A, B>(
+    t: &Algebra<A>,
+    bound: Bound,
+    f: &mut impl FnMut(&A, Bound) -> B,
+) -> Algebra<B> {
+    match t {
+        Algebra::Leaf(e) => Algebra::Leaf(f(e, bound)),
+        Algebra::And(a, b) => Algebra::and(map_algebra(a, bound, f), map_algebra(b, bound, f)),
+        Algebra::Minus(a, b) => {
+            Algebra::minus(map_algebra(a, bound, f), map_algebra(b, bound.flip(), f))
+        }
+        Algebra::Not(a) => Algebra::complement(map_algebra(a, bound.flip(), f)),
+    }
+}
+
+/// Why a translation is not exact.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Reason {
+    /// Two RenderMan paths with one OSL view, only one of them matched: no OSL expression
+    /// can tell them apart.
+    Collision(Collision),
+    /// The RenderMan expression matches a path with no OSL view (a user lobe).
+    NoOslView(renderman::Path),
+    /// The target dialect has no spelling for what some atom matches (a label set the
+    /// witness of the upper translation shows).
+    Unsayable,
+}
+
+/// A translation and its verdict.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Translation<L> {
+    /// The translation: exact when [`Translation::exact`], else the one from above.
+    pub text: L,
+    /// Whether the translation means exactly what the source means.
+    pub exact: bool,
+    /// Why not, when not exact.
+    pub reasons: Vec<Reason>,
+    /// When not exact: a shortest path the translation from above adds.
+    pub upper_witness: Option<Witness>,
+    /// The translation from below (a subset).
+    pub lower: L,
+    /// When not exact: a shortest path the source matches and the translation from below
+    /// misses (`None`: the lower translation is exact, or matches every path the source
+    /// matches on which OSL can agree).
+    pub lower_witness: Option<Witness>,
+    /// What does not carry over and changes no match (prefixes).
+    pub notes: Vec<String>,
+}
+
+/// Why a translation gave no answer.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum TranslateError {
+    /// A search gave up ([`AnalysisError`]).
+    Analysis(AnalysisError),
+    /// The printed translation did not read back in its dialect: a bug, reported rather
+    /// than judged on a tree the text does not say.
+    Unreadable {
+        /// The printed text.
+        text: String,
+        /// The parse error.
+        message: String,
+    },
+}
+
+impl fmt::Display for TranslateError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            TranslateError::Analysis(e) => write!(f, "{e}"),
+            TranslateError::Unreadable { text, message } => write!(
+                f,
+                "internal error: the translation `{text}` does not read back ({message})"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for TranslateError {}
+
+impl From<AnalysisError> for TranslateError {
+    fn from(e: AnalysisError) -> Self {
+        TranslateError::Analysis(e)
+    }
+}
+
+fn read_osl(e: &osl::Lpe) -> Result<osl::Lpe, TranslateError> {
+    let text = e.to_string();
+    osl::parse(&text, &osl::Registered::none()).map_err(|err| TranslateError::Unreadable {
+        text: text.clone(),
+        message: err.to_string(),
+    })
+}
+
+fn read_renderman(e: &renderman::Lpe) -> Result<renderman::Lpe, TranslateError> {
+    let text = e.to_string();
+    renderman::parse(&text).map_err(|err| TranslateError::Unreadable {
+        text: text.clone(),
+        message: err.to_string(),
+    })
+}
+
+/// Translates a RenderMan expression to OSL under `corr`.
+///
+/// ```
+/// use lpe::translate::{to_osl, Correspondence};
+///
+/// let corr = Correspondence::default();
+/// let t = to_osl(&lpe::renderman::parse("C<RD>.*L").unwrap(), &corr).unwrap();
+/// assert!(t.exact);
+/// assert_eq!(t.text.to_string(), "<C.><RD>.*<L.>");
+/// // Lobe numbers are not OSL's: `D2` and `D1` are both `R,D`.
+/// let t = to_osl(&lpe::renderman::parse("C<RD2>L").unwrap(), &corr).unwrap();
+/// assert!(!t.exact);
+/// ```
+pub fn to_osl(
+    e: &renderman::Lpe,
+    corr: &Correspondence,
+) -> Result<Translation<osl::Lpe>, TranslateError> {
+    let upper = read_osl(&to_osl::translate(e, corr, Bound::Upper))?;
+    let lower = read_osl(&to_osl::translate(e, corr, Bound::Lower))?;
+    let cu = cross::compare(e, &upper, corr)?;
+    let mut notes = Vec::new();
+    if e.prefixes != renderman::Prefixes::NONE {
+        let mut bare = e.clone();
+        bare.prefixes = renderman::Prefixes::NONE;
+        notes.push(format!(
+            "the prefixes of `{e}` are not carried: OSL has none (the OSL AOV accumulates \
+             as `{bare}` does)"
+        ));
+    }
+    if cu.equivalent() {
+        return Ok(Translation {
+            text: upper,
+            exact: true,
+            reasons: Vec::new(),
+            upper_witness: None,
+            lower,
+            lower_witness: None,
+            notes,
+        });
+    }
+    let mut reasons = Vec::new();
+    if let Some(c) = cross::collision(e, corr)? {
+        reasons.push(Reason::Collision(c));
+    }
+    if let Some(p) = cu.outside.clone() {
+        reasons.push(Reason::NoOslView(p));
+    }
+    if reasons.is_empty() {
+        reasons.push(Reason::Unsayable);
+    }
+    let cl = cross::compare(e, &lower, corr)?;
+    Ok(Translation {
+        text: upper,
+        exact: false,
+        reasons,
+        upper_witness: cu.osl_only,
+        lower,
+        lower_witness: cl.renderman_only,
+        notes,
+    })
+}
+
+/// Translates an OSL expression to RenderMan under `corr`: the RenderMan expression that
+/// matches a path exactly when the OSL one matches its OSL view.
+pub fn to_renderman(
+    f: &osl::Lpe,
+    corr: &Correspondence,
+) -> Result<Translation<renderman::Lpe>, TranslateError> {
+    let upper = read_renderman(&to_renderman::translate(f, corr, Bound::Upper))?;
+    let lower = read_renderman(&to_renderman::translate(f, corr, Bound::Lower))?;
+    let cu = cross::compare(&upper, f, corr)?;
+    if cu.equivalent() {
+        return Ok(Translation {
+            text: upper,
+            exact: true,
+            reasons: Vec::new(),
+            upper_witness: None,
+            lower,
+            lower_witness: None,
+            notes: Vec::new(),
+        });
+    }
+    let cl = cross::compare(&lower, f, corr)?;
+    Ok(Translation {
+        text: upper,
+        exact: false,
+        reasons: vec![Reason::Unsayable],
+        upper_witness: cu.renderman_only.or(cu.outside.map(|renderman| Witness {
+            renderman,
+            osl: None,
+        })),
+        lower,
+        lower_witness: cl.osl_only,
+        notes: Vec::new(),
+    })
+}
+
+#[cfg(test)]
+mod tests;
