@@ -16,8 +16,9 @@ use crate::dialect::Dialect;
 use crate::osl::{self, Registered, Symbol, SymbolPattern, VertexPattern};
 use crate::renderman::ast::{Atom, Expr};
 use crate::renderman::{self, RenderMan, VertexType};
+use crate::translate::bound::{map_algebra, Bound};
 use crate::translate::correspondence::Correspondence;
-use crate::translate::{labels, map_algebra, Bound};
+use crate::translate::labels;
 
 /// A custom label as the translation tells labels apart.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]

@@ -13,8 +13,9 @@ use crate::automata::ir::Repetition;
 use crate::osl::{self, VertexPattern};
 use crate::renderman::ast::{Atom, EventPattern, EventPos, Expr, Item, LabelPos, Triple, TypePos};
 use crate::renderman::{self, Event, EventKind, Prefixes, VertexType};
+use crate::translate::bound::{map_algebra, Bound};
 use crate::translate::correspondence::Correspondence;
-use crate::translate::{labels, map_algebra, Bound};
+use crate::translate::labels;
 
 /// A RenderMan label as the translation tells labels apart.
 #[derive(Clone, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
