@@ -35,6 +35,8 @@ enum Command {
     Lint(cmd::lint::Args),
     /// Which AOVs a path lands in, vertex by vertex, and the closest miss.
     Explain(cmd::explain::Args),
+    /// Carry expressions between the RenderMan and OSL dialects, with a proved verdict.
+    Translate(cmd::translate::Args),
 }
 
 fn main() -> ExitCode {
@@ -47,6 +49,7 @@ fn main() -> ExitCode {
             Command::Parse(a) => cmd::parse::run(a),
             Command::Match(a) => cmd::matching::run(a),
             Command::Equiv(a) => cmd::equiv::run(a),
+            Command::Translate(a) => cmd::translate::run(a),
             Command::Partition(a) => cmd::partition::run(a),
             Command::Bench(a) => cmd::bench::run(a),
             Command::Diff(a) => cmd::diff::run(a),

@@ -6,6 +6,9 @@
 //! ([`crate::witness`]); a failed re-check exits 3. Errors exit 2.
 //!
 //! `--dialect osl [--register …]` compares two OSL expressions; witnesses are OSL paths.
+//! `--dialect-a renderman --dialect-b osl` (either way round) compares a RenderMan and an
+//! OSL expression under the correspondence of docs/language.md §19 (`--correspondence`
+//! changes it): witnesses are RenderMan paths with their OSL views.
 
 use std::process::ExitCode;
 
@@ -31,10 +34,26 @@ pub struct Args {
     /// `--dialect` and `--register`.
     #[command(flatten)]
     pub lang: DialectArgs,
+    /// The dialect of A, when it differs from B's (default: `--dialect`).
+    #[arg(long)]
+    pub dialect_a: Option<lpe::DialectName>,
+    /// The dialect of B, when it differs from A's (default: `--dialect`).
+    #[arg(long)]
+    pub dialect_b: Option<lpe::DialectName>,
+    /// Cross-dialect only: changes to the default correspondence (docs/language.md §19.1).
+    #[arg(long, default_value = "")]
+    pub correspondence: String,
 }
 
 /// Runs `lpe-check equiv`.
 pub fn run(args: Args) -> ExitCode {
+    let a = args.dialect_a.unwrap_or(args.lang.dialect);
+    let b = args.dialect_b.unwrap_or(args.lang.dialect);
+    if a != b {
+        return super::equiv_cross::run(&args, a);
+    }
+    let mut args = args;
+    args.lang.dialect = a;
     with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
 }
 

@@ -3,6 +3,7 @@
 pub mod bench;
 pub mod diff;
 pub mod equiv;
+pub mod equiv_cross;
 pub mod explain;
 pub mod external;
 pub mod external_suite;
@@ -10,3 +11,4 @@ pub mod lint;
 pub mod matching;
 pub mod parse;
 pub mod partition;
+pub mod translate;

@@ -1,0 +1,450 @@
+//! `lpe-check translate --from renderman --to osl EXPR…` (and `--from osl --to
+//! renderman`): each expression in the other dialect, with a verdict proved on the
+//! automata ([`lpe::translate`], docs/language.md §19).
+//!
+//! Exit 0 when every translation is exact, 1 when one is not expressible, 2 on bad input,
+//! 3 when a witness fails its re-check with the reference matchers. `--from-file` reads a
+//! USD stage, RIB file or `rendermn.ini` (its user macros) instead of arguments;
+//! `--format json` or `usda` (a layer of RenderVars) writes the translated set.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use lpe::osl;
+use lpe::renderman::macros::MacroTable;
+use lpe::renderman::{self, Config};
+use lpe::translate::{self, Correspondence, Reason, Translation, Witness};
+use lpe::DialectName;
+use lpe_lint::read::{self, Limits};
+
+use crate::input::bad_input;
+use crate::witness::{recheck, Disagreement, Expect, DISAGREE};
+
+/// How the translated set is written.
+#[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// One block per expression: translation, verdict, bounds and witnesses.
+    Text,
+    /// One JSON object per expression, in an array.
+    Json,
+    /// A USD layer of RenderVars (`sourceType = "lpe"`, `lpe:dialect` set), one per AOV.
+    Usda,
+}
+
+/// Arguments of `lpe-check translate`.
+#[derive(clap::Args, Debug)]
+pub struct Args {
+    /// The dialect the expressions are written in.
+    #[arg(long)]
+    pub from: DialectName,
+    /// The dialect to write them in.
+    #[arg(long)]
+    pub to: DialectName,
+    /// Changes to the default correspondence, e.g. `S4=S S5-S6=s 'key'='lg_key'`
+    /// (docs/language.md §19.1).
+    #[arg(long, default_value = "")]
+    pub correspondence: String,
+    /// RenderMan source only: a rendermn.ini-style file with user macros.
+    #[arg(long)]
+    pub ini: Option<PathBuf>,
+    /// Read the AOVs of a USD stage, RIB file or rendermn.ini (its user macros) instead.
+    #[arg(long, conflicts_with = "exprs")]
+    pub from_file: Option<PathBuf>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Text)]
+    pub format: Format,
+    /// The expressions.
+    #[arg(required_unless_present = "from_file")]
+    pub exprs: Vec<String>,
+}
+
+/// One AOV to translate.
+struct Source {
+    name: String,
+    text: String,
+}
+
+/// One AOV translated: the text of each bound, the verdict and the report lines.
+struct Translated {
+    name: String,
+    source: String,
+    text: String,
+    exact: bool,
+    lower: String,
+    reasons: Vec<String>,
+    adds: Option<String>,
+    misses: Option<String>,
+    notes: Vec<String>,
+}
+
+/// Runs `lpe-check translate`.
+pub fn run(args: Args) -> ExitCode {
+    if args.from == args.to {
+        return bad_input(format!(
+            "error: --from and --to are both `{}`; translation is between the two dialects",
+            args.from
+        ));
+    }
+    let corr = match Correspondence::parse(&args.correspondence) {
+        Ok(c) => c,
+        Err(e) => return bad_input(format!("error: --correspondence: {e}")),
+    };
+    let (sources, parser) = match sources(&args) {
+        Ok(s) => s,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    let mut out = Vec::new();
+    for s in &sources {
+        let result = match args.from {
+            DialectName::RenderMan => from_renderman(s, &parser, &corr),
+            DialectName::Osl => from_osl(s, &corr),
+        };
+        match result {
+            Ok(Ok(t)) => out.push(t),
+            Ok(Err(e)) => {
+                eprintln!("{e}");
+                return ExitCode::from(DISAGREE);
+            }
+            Err(e) => return bad_input(e),
+        }
+    }
+    let exact = out.iter().all(|t| t.exact);
+    let text = match args.format {
+        Format::Text => text(&out),
+        Format::Json => json(&out, &args, &corr),
+        Format::Usda => usda(&out, &args),
+    };
+    print!("{text}");
+    ExitCode::from(u8::from(!exact))
+}
+
+/// The AOVs from the arguments or the file, and the RenderMan parser (`--ini`, or the
+/// ini file read).
+fn sources(args: &Args) -> Result<(Vec<Source>, renderman::Parser), String> {
+    let mut parser = renderman::Parser::default();
+    if let Some(ini) = &args.ini {
+        if args.from != DialectName::RenderMan {
+            return Err("--ini holds RenderMan macros; it needs --from renderman".into());
+        }
+        let text = std::fs::read_to_string(ini)
+            .map_err(|e| format!("cannot read {}: {e}", ini.display()))?;
+        parser = Config::from_ini(&text)
+            .map_err(|e| format!("{}: {e}", ini.display()))?
+            .parser();
+    }
+    let Some(file) = &args.from_file else {
+        let named = args
+            .exprs
+            .iter()
+            .map(|e| Source {
+                name: String::new(),
+                text: e.clone(),
+            })
+            .collect();
+        return Ok((named, parser));
+    };
+    let doc = read::read_file(file, &Limits::default()).map_err(|e| e.to_string())?;
+    if let Some(config) = &doc.config {
+        // A rendermn.ini: its user macros are the set.
+        let builtin = MacroTable::builtin();
+        let sources = config
+            .macros
+            .iter()
+            .filter(|(n, body)| builtin.get(n) != Some(*body))
+            .map(|(n, body)| Source {
+                name: n.to_string(),
+                text: body.to_string(),
+            })
+            .collect();
+        return Ok((sources, config.parser()));
+    }
+    let sources = doc
+        .aovs
+        .iter()
+        .map(|a| Source {
+            name: a.name.clone(),
+            text: a.source.clone(),
+        })
+        .collect();
+    Ok((sources, parser))
+}
+
+fn label(s: &Source) -> String {
+    if s.name.is_empty() {
+        String::new()
+    } else {
+        format!("{}: ", s.name)
+    }
+}
+
+/// `Err`: the expression does not parse (bad input); `Ok(Err)`: a witness failed its
+/// re-check.
+type Outcome = Result<Result<Translated, Disagreement>, String>;
+
+fn from_renderman(s: &Source, parser: &renderman::Parser, corr: &Correspondence) -> Outcome {
+    let e = parser
+        .parse(&s.text)
+        .map_err(|err| format!("{}error in `{}`: {err}", label(s), s.text))?;
+    let t = translate::to_osl(&e, corr).map_err(|err| format!("{}{err}", label(s)))?;
+    Ok(check_to_osl(&e, &t).map(|()| translated(s, &t)))
+}
+
+fn from_osl(s: &Source, corr: &Correspondence) -> Outcome {
+    let f = osl::parse_source(&s.text, &osl::Registered::none())
+        .map_err(|err| format!("{}error in `{}`: {err}", label(s), s.text))?;
+    let t = translate::to_renderman(&f, corr).map_err(|err| format!("{}{err}", label(s)))?;
+    Ok(check_to_renderman(&f, &t).map(|()| translated(s, &t)))
+}
+
+fn expect_rm<'a>(
+    name: &'a str,
+    lpe: &'a renderman::Lpe,
+    matches: bool,
+) -> Expect<'a, renderman::Lpe> {
+    Expect { name, lpe, matches }
+}
+
+fn expect_osl<'a>(name: &'a str, lpe: &'a osl::Lpe, matches: bool) -> Expect<'a, osl::Lpe> {
+    Expect { name, lpe, matches }
+}
+
+/// Every witness of a translation to OSL, re-checked with the reference matchers.
+fn check_to_osl(e: &renderman::Lpe, t: &Translation<osl::Lpe>) -> Result<(), Disagreement> {
+    let (src, up, low) = (e.to_string(), t.text.to_string(), t.lower.to_string());
+    for r in &t.reasons {
+        match r {
+            Reason::Collision(c) => {
+                recheck(&c.matched, &[expect_rm(&src, e, true)])?;
+                recheck(&c.unmatched, &[expect_rm(&src, e, false)])?;
+            }
+            Reason::NoOslView(p) => recheck(p, &[expect_rm(&src, e, true)])?,
+            Reason::Unsayable => {}
+        }
+    }
+    if let Some(w) = &t.upper_witness {
+        recheck(&w.renderman, &[expect_rm(&src, e, false)])?;
+        if let Some(o) = &w.osl {
+            recheck(o, &[expect_osl(&up, &t.text, true)])?;
+        }
+    }
+    if let Some(w) = &t.lower_witness {
+        recheck(&w.renderman, &[expect_rm(&src, e, true)])?;
+        if let Some(o) = &w.osl {
+            recheck(o, &[expect_osl(&low, &t.lower, false)])?;
+        }
+    }
+    Ok(())
+}
+
+/// Every witness of a translation to RenderMan, re-checked with the reference matchers.
+fn check_to_renderman(f: &osl::Lpe, t: &Translation<renderman::Lpe>) -> Result<(), Disagreement> {
+    let (src, up, low) = (f.to_string(), t.text.to_string(), t.lower.to_string());
+    if let Some(w) = &t.upper_witness {
+        recheck(&w.renderman, &[expect_rm(&up, &t.text, true)])?;
+        if let Some(o) = &w.osl {
+            recheck(o, &[expect_osl(&src, f, false)])?;
+        }
+    }
+    if let Some(w) = &t.lower_witness {
+        recheck(&w.renderman, &[expect_rm(&low, &t.lower, false)])?;
+        if let Some(o) = &w.osl {
+            recheck(o, &[expect_osl(&src, f, true)])?;
+        }
+    }
+    Ok(())
+}
+
+fn show(w: &Witness) -> String {
+    match &w.osl {
+        Some(o) => format!("`{}` (OSL `{o}`)", w.renderman),
+        None => format!("`{}` (no OSL view)", w.renderman),
+    }
+}
+
+fn translated<L: std::fmt::Display>(s: &Source, t: &Translation<L>) -> Translated {
+    let reasons = t
+        .reasons
+        .iter()
+        .map(|r| match r {
+            Reason::Collision(c) => format!(
+                "`{}` and `{}` have one OSL view `{}` and only the first matches",
+                c.matched, c.unmatched, c.osl
+            ),
+            Reason::NoOslView(p) => format!(
+                "it matches `{p}`, which has no OSL view (user lobes and labels OSL reads as \
+                 built in have none)"
+            ),
+            Reason::Unsayable => {
+                "the target dialect cannot say which labels (or none) a vertex carries here"
+                    .to_string()
+            }
+        })
+        .collect();
+    Translated {
+        name: s.name.clone(),
+        source: s.text.clone(),
+        text: t.text.to_string(),
+        exact: t.exact,
+        lower: t.lower.to_string(),
+        reasons,
+        adds: t.upper_witness.as_ref().map(show),
+        misses: t.lower_witness.as_ref().map(show),
+        notes: t.notes.clone(),
+    }
+}
+
+fn text(out: &[Translated]) -> String {
+    let mut s = String::new();
+    for t in out {
+        let name = if t.name.is_empty() {
+            String::new()
+        } else {
+            format!("{}: ", t.name)
+        };
+        if t.exact {
+            let _ = writeln!(s, "{name}{}  ->  {}  (exact)", t.source, t.text);
+        } else {
+            let _ = writeln!(s, "{name}{}  ->  not expressible", t.source);
+            for r in &t.reasons {
+                let _ = writeln!(s, "  why: {r}");
+            }
+            let _ = write!(s, "  from above: {}", t.text);
+            match &t.adds {
+                Some(w) => {
+                    let _ = writeln!(s, "  (adds {w})");
+                }
+                None => s.push('\n'),
+            }
+            let _ = write!(s, "  from below: {}", t.lower);
+            match &t.misses {
+                Some(w) => {
+                    let _ = writeln!(s, "  (misses {w})");
+                }
+                None => s.push('\n'),
+            }
+        }
+        for n in &t.notes {
+            let _ = writeln!(s, "  note: {n}");
+        }
+    }
+    s
+}
+
+fn json(out: &[Translated], args: &Args, corr: &Correspondence) -> String {
+    let items: Vec<serde_json::Value> = out
+        .iter()
+        .map(|t| {
+            serde_json::json!({
+                "name": t.name,
+                "source": t.source,
+                "translation": t.text,
+                "exact": t.exact,
+                "reasons": t.reasons,
+                "lower": t.lower,
+                "adds": t.adds,
+                "misses": t.misses,
+                "notes": t.notes,
+            })
+        })
+        .collect();
+    let doc = serde_json::json!({
+        "from": args.from.to_string(),
+        "to": args.to.to_string(),
+        "correspondence": corr.declaration(),
+        "aovs": items,
+    });
+    let mut s = serde_json::to_string_pretty(&doc).expect("JSON of strings");
+    s.push('\n');
+    s
+}
+
+/// A USD prim name from an AOV name: letters, digits and `_`, not starting with a digit.
+fn prim_name(name: &str, i: usize) -> String {
+    let mut s: String = name
+        .chars()
+        .map(|c| {
+            if c.is_ascii_alphanumeric() || c == '_' {
+                c
+            } else {
+                '_'
+            }
+        })
+        .collect();
+    if s.is_empty() {
+        s = format!("aov{i}");
+    } else if s.starts_with(|c: char| c.is_ascii_digit()) {
+        s.insert(0, '_');
+    }
+    s
+}
+
+/// A USD string literal.
+fn usd_string(s: &str) -> String {
+    let mut out = String::from("\"");
+    for c in s.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            '\n' => out.push_str("\\n"),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
+
+fn usda(out: &[Translated], args: &Args) -> String {
+    let mut s = String::from("#usda 1.0\n(\n");
+    let _ = writeln!(
+        s,
+        "    doc = {}\n)\n",
+        usd_string(&format!(
+            "LPE AOVs translated from {} to {} by lpe-check translate",
+            args.from, args.to
+        ))
+    );
+    let _ = writeln!(s, "def Scope \"Render\"\n{{");
+    let _ = writeln!(
+        s,
+        "    custom string lpe:dialect = {}",
+        usd_string(&args.to.to_string())
+    );
+    let _ = writeln!(s, "    def Scope \"Vars\"\n    {{");
+    let mut used = std::collections::BTreeSet::new();
+    for (i, t) in out.iter().enumerate() {
+        let mut name = prim_name(&t.name, i);
+        while !used.insert(name.clone()) {
+            name.push('_');
+        }
+        let verdict = if t.exact {
+            "exact".to_string()
+        } else {
+            format!(
+                "not expressible: written from above; from below: {}",
+                t.lower
+            )
+        };
+        let _ = writeln!(s, "        def RenderVar \"{name}\"\n        {{");
+        let _ = writeln!(s, "            uniform token dataType = \"color3f\"");
+        let _ = writeln!(
+            s,
+            "            uniform string sourceName = {}",
+            usd_string(&format!("lpe:{}", t.text))
+        );
+        let _ = writeln!(s, "            uniform token sourceType = \"lpe\"");
+        let _ = writeln!(
+            s,
+            "            custom string lpe:translatedFrom = {}",
+            usd_string(&t.source)
+        );
+        let _ = writeln!(
+            s,
+            "            custom string lpe:translation = {}",
+            usd_string(&verdict)
+        );
+        let _ = writeln!(s, "        }}");
+    }
+    let _ = writeln!(s, "    }}\n}}");
+    s
+}
