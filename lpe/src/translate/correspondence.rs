@@ -265,12 +265,17 @@ impl Correspondence {
         renderman_labels: &BTreeSet<String>,
         osl_labels: &BTreeSet<String>,
     ) -> (Vec<renderman::Vertex>, String) {
+        // The OSL labels in play, and every RenderMan label that becomes one of them
+        // (itself unrenamed, or renamed onto it): those are the vertices a renaming can
+        // merge.
+        let mut targets: BTreeSet<String> = osl_labels.clone();
+        targets.extend(renderman_labels.iter().map(|l| self.rename(l).to_string()));
         let mut labels: BTreeSet<String> = renderman_labels.clone();
-        labels.extend(osl_labels.iter().cloned());
+        labels.extend(targets.iter().cloned());
         labels.extend(
             self.labels
                 .iter()
-                .filter(|(_, b)| osl_labels.contains(*b))
+                .filter(|(_, b)| targets.contains(*b))
                 .map(|(a, _)| a.clone()),
         );
         // A label OSL would read as built in is outside the correspondence.

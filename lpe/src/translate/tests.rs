@@ -1,5 +1,5 @@
-//! Translations worked by hand: each expected text and verdict below was written from
-//! docs/language.md §19, not printed by the code.
+//! Translations and comparisons worked by hand from docs/language.md §19: each expected
+//! text, verdict and witness below was written from the rules, not printed by the code.
 
 use super::*;
 
@@ -11,51 +11,129 @@ fn osl_lpe(s: &str) -> osl::Lpe {
     osl::parse(s, &osl::Registered::none()).unwrap()
 }
 
+fn corr() -> Correspondence {
+    Correspondence::default()
+}
+
+fn show(w: &Option<Witness>) -> Option<String> {
+    w.as_ref().map(|w| match &w.osl {
+        Some(o) => format!("{} / {o}", w.renderman),
+        None => format!("{} / -", w.renderman),
+    })
+}
+
 #[test]
-fn explore() {
-    let corr = Correspondence::default();
-    for s in [
-        "C<RD>.*L",
-        "C<RD2>L",
-        "CD*L",
-        "C.*[<L.>O]",
-        "C<.D[^'foo']>L",
-        "C<L.'key'>",
-        "C'a'L",
-        "CU2L",
-        "C<RS8>L",
-        "C<R[S1 S2 S3 S4 S5 S6 S7]>L",
-        "C.*L - C.*DL",
-        "shadows;C<RD>L",
-        "^C.*L",
-        "C.{0}L",
-        "C(D|.{0})L",
-    ] {
-        let t = to_osl(&rm(s), &corr).unwrap();
-        eprintln!(
-            "{s} -> {} exact={} lower={} reasons={:?} up={:?} low={:?}",
-            t.text, t.exact, t.lower, t.reasons, t.upper_witness, t.lower_witness
-        );
-    }
-    for s in [
-        "C<RD>[LO]",
-        "C<RD>.+[LO]",
-        "C<TD>.*[LO]",
-        "C<R[GS]>[LO]",
-        "C<R[GS]>.+[LO]",
-        "C<T[GS]>.*[LO]",
-        "C[LO]",
-        "C<RD'a'>L",
-        "C<RD[^'a']>L",
-        "C<RD.>L",
-        "C<RG>L",
-        "CBL",
-        "C{0}L",
-    ] {
-        let t = to_renderman(&osl_lpe(s), &corr).unwrap();
-        eprintln!(
-            "{s} -> {} exact={} lower={} reasons={:?} up={:?} low={:?}",
-            t.text, t.exact, t.lower, t.reasons, t.upper_witness, t.lower_witness
-        );
-    }
+fn cross_comparisons_find_shortest_witnesses_on_each_side() {
+    let c = cross::compare(&rm("C<RS>L"), &osl_lpe("C<RS>L"), &corr()).unwrap();
+    // RenderMan's S is every specular lobe; OSL's S only the singular one (S8).
+    assert_eq!(
+        show(&c.renderman_only).as_deref(),
+        Some("C RS1 L / C,~ R,G L,~")
+    );
+    assert_eq!(c.osl_only, None);
+    assert_eq!(c.outside, None);
+    let c = cross::compare(&rm("C.*L"), &osl_lpe("C<RD>L"), &corr()).unwrap();
+    assert_eq!(show(&c.renderman_only).as_deref(), Some("C L / C,~ L,~"));
+    let c = cross::compare(&rm("C<RD>L"), &osl_lpe("C.*L"), &corr()).unwrap();
+    assert_eq!(show(&c.osl_only).as_deref(), Some("C L / C,~ L,~"));
+    // A user lobe has no OSL view.
+    let c = cross::compare(&rm("C(.|U)L"), &osl_lpe("C.L"), &corr()).unwrap();
+    assert_eq!(c.outside.map(|p| p.to_string()).as_deref(), Some("C RU1 L"));
+    assert!(c.renderman_only.is_none() && c.osl_only.is_none());
+    assert!(
+        cross::compare(&rm("C<RS8>.*L"), &osl_lpe("C<RS>.*L"), &corr())
+            .unwrap()
+            .equivalent()
+    );
+}
+
+#[test]
+fn collisions_are_two_paths_with_one_view() {
+    let c = cross::collision(&rm("C<RD2>L"), &corr()).unwrap().unwrap();
+    assert_eq!(c.matched.to_string(), "C RD2 L");
+    assert_eq!(c.unmatched.to_string(), "C RD1 L");
+    assert_eq!(c.osl.to_string(), "C,~ R,D L,~");
+    assert_eq!(cross::collision(&rm("C<RD>L"), &corr()).unwrap(), None);
+    // Renaming two labels onto one makes them collide.
+    let merged = Correspondence::parse("'a'='b'").unwrap();
+    let c = cross::collision(&rm("C<L.'a'>"), &merged).unwrap().unwrap();
+    assert_eq!(c.matched.to_string(), "C L'a'");
+    assert_eq!(c.unmatched.to_string(), "C L'b'");
+}
+
+#[test]
+fn renderman_to_osl() {
+    let t = to_osl(&rm("C<RD>.*L"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "<C.><RD><[RT].>*<L.>");
+    let t = to_osl(&rm("C<RS2>L"), &corr()).unwrap();
+    assert!(!t.exact);
+    assert!(matches!(t.reasons[..], [Reason::Collision(_)]));
+    assert_eq!(t.text.to_string(), "<C.><RG><L.>");
+    assert_eq!(t.lower.to_string(), "<C.>[]<L.>");
+    assert_eq!(
+        show(&t.upper_witness).as_deref(),
+        Some("C RS1 L / C,~ R,G L,~")
+    );
+    assert_eq!(
+        show(&t.lower_witness).as_deref(),
+        Some("C RS2 L / C,~ R,G L,~")
+    );
+    // "Any label but foo, or none" has no OSL spelling: a custom slot needs a label.
+    let t = to_osl(&rm("C<.D[^'foo']>L"), &corr()).unwrap();
+    assert_eq!(t.reasons, vec![Reason::Unsayable]);
+    assert_eq!(t.text.to_string(), "<C.><[RT]D><L.>");
+    assert_eq!(t.lower.to_string(), "<C.><[RT]D[^'foo']><L.>");
+    assert_eq!(
+        show(&t.upper_witness).as_deref(),
+        Some("C RD1'foo' L / C,~ R,D,foo L,~")
+    );
+    assert_eq!(
+        show(&t.lower_witness).as_deref(),
+        Some("C RD1 L / C,~ R,D L,~")
+    );
+    let t = to_osl(&rm("CU2L"), &corr()).unwrap();
+    assert!(matches!(&t.reasons[..], [Reason::NoOslView(p)] if p.to_string() == "C RU2 L"));
+    let t = to_osl(&rm("shadows;C<RD>L"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.notes.len(), 1);
+    // Set algebra: the right side of `-` rounds the other way.
+    let t = to_osl(&rm("C.*L - C<.D[^'foo']>L"), &corr()).unwrap();
+    assert_eq!(
+        t.text.to_string(),
+        "<C.><[RT].>*<L.> - <C.><[RT]D[^'foo']><L.>"
+    );
+    assert_eq!(t.lower.to_string(), "<C.><[RT].>*<L.> - <C.><[RT]D><L.>");
+    // A declared singular lobe.
+    let c = Correspondence::parse("S4=S").unwrap();
+    let t = to_osl(&rm("C<R[S4 S8]>L"), &c).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "<C.><RS><L.>");
+}
+
+#[test]
+fn osl_to_renderman() {
+    let t = to_renderman(&osl_lpe("C<RD>.+[LO]"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "C<RD>.+[LO]");
+    let t = to_renderman(&osl_lpe("C<RG>L"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "C<R[S1S2S3S4S5S6S7]>L");
+    // A quoted negation needs a label; RenderMan's `[^'a']` takes unlabelled vertices.
+    let t = to_renderman(&osl_lpe("C<RD[^'a']>L"), &corr()).unwrap();
+    assert_eq!(t.reasons, vec![Reason::Unsayable]);
+    assert_eq!(t.text.to_string(), "C<RD[^'a']>L");
+    assert_eq!(t.lower.to_string(), "C[^.]L");
+    assert_eq!(
+        show(&t.upper_witness).as_deref(),
+        Some("C RD1 L / C,~ R,D L,~")
+    );
+    assert_eq!(
+        show(&t.lower_witness).as_deref(),
+        Some("C RD1'other' L / C,~ R,D,other L,~")
+    );
+    // Events the correspondence never produces match nothing.
+    let t = to_renderman(&osl_lpe("CBL"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "C[^.]L");
 }
