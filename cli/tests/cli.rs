@@ -460,3 +460,155 @@ fn match_exits_2_when_no_engine_can_build_the_expression() {
     let (code, out, _) = lpe_check(&["match", "--batch"], "CL\tC L\n# note\n\n");
     assert_eq!(code, 0, "{out}");
 }
+
+#[test]
+fn translate_reports_verdicts_with_exit_codes() {
+    let (code, out, err) = lpe_check(
+        &[
+            "translate",
+            "--from",
+            "renderman",
+            "--to",
+            "osl",
+            "directDiffuse",
+        ],
+        "",
+    );
+    assert_eq!(
+        (code, out.as_str()),
+        (0, "directDiffuse  ->  <C.><RD><[LO].>  (exact)\n"),
+        "{err}"
+    );
+    let (code, out, _) = lpe_check(
+        &["translate", "--from", "renderman", "--to", "osl", "C<RD2>L"],
+        "",
+    );
+    assert_eq!(code, 1);
+    assert!(
+        out.contains("from above: <C.><RD><L.>  (adds `C RD1 L`"),
+        "{out}"
+    );
+    let (code, out, _) = lpe_check(
+        &[
+            "translate",
+            "--from",
+            "osl",
+            "--to",
+            "renderman",
+            "C<RD>.+[LO]",
+        ],
+        "",
+    );
+    assert_eq!(
+        (code, out.as_str()),
+        (0, "C<RD>.+[LO]  ->  C<RD>.+[LO]  (exact)\n")
+    );
+    // Bad input: exit 2 with the position or the part.
+    for (args, needle) in [
+        (
+            &["translate", "--from", "osl", "--to", "osl", "C"][..],
+            "both `osl`",
+        ),
+        (
+            &["translate", "--from", "renderman", "--to", "osl", "C<L'k'>"],
+            "byte 3",
+        ),
+        (
+            &[
+                "translate",
+                "--from",
+                "renderman",
+                "--to",
+                "osl",
+                "--correspondence",
+                "S1=G U2=G",
+                "CL",
+            ],
+            "byte 5",
+        ),
+    ] {
+        let (code, _, err) = lpe_check(args, "");
+        assert_eq!(code, 2, "{args:?}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+}
+
+#[test]
+fn translated_usda_is_a_stage_lint_reads_back() {
+    let dir = std::env::temp_dir().join(format!("lpe-translate-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (code, usda, err) = lpe_check(
+        &[
+            "translate",
+            "--from",
+            "osl",
+            "--to",
+            "renderman",
+            "--format",
+            "usda",
+            "C<RD>[LO]",
+            "C<RD[^'a']>L",
+        ],
+        "",
+    );
+    assert_eq!(code, 1, "{err}");
+    let file = dir.join("vars.usda");
+    std::fs::write(&file, &usda).unwrap();
+    let doc = lpe_lint::read::read_file(&file, &lpe_lint::read::Limits::default()).unwrap();
+    let sources: Vec<&str> = doc.aovs.iter().map(|a| a.source.as_str()).collect();
+    assert_eq!(sources, ["lpe:C<RD>[LO]", "lpe:C<RD[^'a']>L"]);
+    let (code, json, _) = lpe_check(
+        &[
+            "translate",
+            "--from",
+            "renderman",
+            "--to",
+            "osl",
+            "--format",
+            "json",
+            "--from-file",
+            file.to_str().unwrap(),
+        ],
+        "",
+    );
+    assert_eq!(code, 1);
+    let v: serde_json::Value = serde_json::from_str(&json).unwrap();
+    assert_eq!(v["correspondence"], "S1-S7=G S8=S");
+    assert_eq!(v["aovs"][0]["translation"], "<C.><RD><[LO].>");
+    assert_eq!(v["aovs"][0]["exact"], true);
+    assert_eq!(v["aovs"][1]["exact"], false);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn equiv_across_dialects_prints_both_views() {
+    let (code, out, _) = lpe_check(
+        &[
+            "equiv",
+            "--dialect-a",
+            "renderman",
+            "--dialect-b",
+            "osl",
+            "C<RS>L",
+            "C<RS>L",
+        ],
+        "",
+    );
+    assert_eq!(
+        (code, out.as_str()),
+        (1, "not equivalent\nonly A: C RS1 L (OSL C,~ R,G L,~)\n")
+    );
+    let (code, out, _) = lpe_check(
+        &[
+            "equiv",
+            "--dialect-a",
+            "osl",
+            "--dialect-b",
+            "renderman",
+            "C<RG>L",
+            "C<R[S1 S2 S3 S4 S5 S6 S7]>L",
+        ],
+        "",
+    );
+    assert_eq!((code, out.as_str()), (0, "equivalent\n"));
+}

@@ -8,7 +8,7 @@
 //! vertices.
 //!
 //! - every built-in RenderMan macro and the OSL basic set, with verdicts and translations
-//!   worked by hand in `testdata/translate/builtin.toml`;
+//!   worked by hand in `tests/translate/builtin.toml` (outside `testdata/`, whose files are conformance suites);
 //! - generated expressions of both dialects: the lower translation implies the source,
 //!   the source implies the upper one, an exact translation agrees on every drawn path,
 //!   witnesses show what they claim, and translating back an exact translation gives an
@@ -57,7 +57,7 @@ fn verdict<L>(t: &lpe::translate::Translation<L>) -> &'static str {
 fn builtin_macros_and_the_osl_basic_set_translate_as_worked_by_hand() {
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
-        "/testdata/translate/builtin.toml"
+        "/translate/builtin.toml"
     ))
     .unwrap();
     let data: Builtin = toml::from_str(&text).unwrap();
