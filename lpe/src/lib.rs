@@ -12,7 +12,9 @@
 //!   path model, expression tree, front end with prefixes, macros, lobe maps and
 //!   `rendermn.ini`, and the class alphabet it lowers to) and [`osl`] ([`osl::Osl`]: the
 //!   same for Open Shading Language's dialect); [`registry`] names them at run time
-//!   ([`DialectName`], [`with_dialect!`]). Shared by both front ends: [`limits`] (what an
+//!   ([`DialectName`], [`with_dialect!`]); [`translate`] carries expressions between the
+//!   two with a proof (the correspondence, cross-dialect comparison). Shared by both front
+//!   ends: [`limits`] (what an
 //!   expression may cost) and `print` (sequences and alternations with their
 //!   parentheses); set algebra over whole expressions (`A & B`, `A - B`, `^A`:
 //!   [`algebra`]).

@@ -50,7 +50,13 @@ pub fn run(args: Args) -> ExitCode {
     let a = args.dialect_a.unwrap_or(args.lang.dialect);
     let b = args.dialect_b.unwrap_or(args.lang.dialect);
     if a != b {
-        return super::equiv_cross::run(&args, a);
+        return super::equiv_cross::run(&super::equiv_cross::Request {
+            a: &args.a,
+            b: &args.b,
+            a_dialect: a,
+            correspondence: &args.correspondence,
+            registration_given: args.ini.is_some() || args.lang.register.is_some(),
+        });
     }
     let mut args = args;
     args.lang.dialect = a;

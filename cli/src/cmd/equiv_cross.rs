@@ -17,23 +17,36 @@ use lpe::DialectName;
 use crate::input::bad_input;
 use crate::witness::{self, recheck, Disagreement, Expect};
 
-use super::equiv::Args;
+/// What `equiv` passes on: the two expressions, A's dialect (B's is the other one), the
+/// `--correspondence` text, and whether `--ini` or `--register` was given.
+pub struct Request<'a> {
+    /// Expression A.
+    pub a: &'a str,
+    /// Expression B.
+    pub b: &'a str,
+    /// A's dialect.
+    pub a_dialect: DialectName,
+    /// The declaration applied to the default correspondence.
+    pub correspondence: &'a str,
+    /// `--ini` or `--register` given (refused here).
+    pub registration_given: bool,
+}
 
-/// Runs the cross-dialect comparison; `a` is A's dialect (B's is the other one).
-pub fn run(args: &Args, a: DialectName) -> ExitCode {
-    if args.ini.is_some() || args.lang.register.is_some() {
+/// Runs the cross-dialect comparison.
+pub fn run(args: &Request) -> ExitCode {
+    if args.registration_given {
         return bad_input(
             "error: --ini and --register are not read by a cross-dialect comparison \
              (the correspondence is over the default registrations)",
         );
     }
-    let corr = match Correspondence::parse(&args.correspondence) {
+    let corr = match Correspondence::parse(args.correspondence) {
         Ok(c) => c,
         Err(e) => return bad_input(format!("error: --correspondence: {e}")),
     };
-    let (rm_text, osl_text, rm_name, osl_name) = match a {
-        DialectName::RenderMan => (&args.a, &args.b, "A", "B"),
-        DialectName::Osl => (&args.b, &args.a, "B", "A"),
+    let (rm_text, osl_text, rm_name, osl_name) = match args.a_dialect {
+        DialectName::RenderMan => (args.a, args.b, "A", "B"),
+        DialectName::Osl => (args.b, args.a, "B", "A"),
     };
     let rm = match renderman::parse(rm_text) {
         Ok(e) => e,

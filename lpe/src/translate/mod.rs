@@ -121,7 +121,7 @@ fn read_renderman(e: &renderman::Lpe) -> Result<renderman::Lpe, TranslateError> 
 /// let corr = Correspondence::default();
 /// let t = to_osl(&lpe::renderman::parse("C<RD>.*L").unwrap(), &corr).unwrap();
 /// assert!(t.exact);
-/// assert_eq!(t.text.to_string(), "<C.><RD>.*<L.>");
+/// assert_eq!(t.text.to_string(), "<C.><RD><[RT].>*<L.>");
 /// // Lobe numbers are not OSL's: `D2` and `D1` are both `R,D`.
 /// let t = to_osl(&lpe::renderman::parse("C<RD2>L").unwrap(), &corr).unwrap();
 /// assert!(!t.exact);
