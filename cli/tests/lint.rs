@@ -63,12 +63,22 @@ fn solaris_karma_fixture() {
     assert_eq!(code, 1);
     assert_eq!(
         findings(&v),
-        triples(&[(
-            "unknown_light_group",
-            "diffuse_fill",
-            "/Render/Products/Vars/diffuse_fill"
-        )])
+        triples(&[
+            (
+                "unknown_light_group",
+                "diffuse_fill",
+                "/Render/Products/Vars/diffuse_fill"
+            ),
+            // The stage does not say its dialect, and Karma reads `<RS>` as OSL's
+            // singular scattering only.
+            (
+                "ambiguous_dialect",
+                "specular_key",
+                "/Render/Products/Vars/specular_key"
+            ),
+        ])
     );
+    assert_eq!(v["findings"][1]["witness"], "C RS1 L'key'");
     let f = &v["findings"][0];
     assert_eq!(f["help"], "did you mean 'fill'?");
     assert_eq!(f["source"], "C<RD>.*<L.'fil'>");
@@ -92,8 +102,12 @@ fn hdprman_fixture() {
             ),
             ("equivalent", "diffuseAgain", "/Render/vars/diffuseAgain"),
             ("unfed_lobe", "wetness", "/Render/vars/wetness"),
+            // Undeclared: user lobes have no OSL view, so the OSL reading never matches.
+            ("ambiguous_dialect", "albedo", "/Render/vars/albedo"),
+            ("ambiguous_dialect", "wetness", "/Render/vars/wetness"),
         ])
     );
+    assert_eq!(v["findings"][4]["witness"], "C RU2 L");
     assert_eq!(v["findings"][0]["help"], "write `<L.'rim'>`");
     assert_eq!(v["findings"][2]["other"], "directDiffuse");
     assert_eq!(v["aovs"][3]["name"], "rimLight");
@@ -108,12 +122,16 @@ fn arnold_partition_fixture() {
     assert_eq!(
         findings(&v),
         triples(&[
+            // Undeclared, and hdArnold reads `S` as OSL's singular scattering only.
+            ("ambiguous_dialect", "direct", "/Render/Vars/direct"),
+            ("ambiguous_dialect", "indirect", "/Render/Vars/indirect"),
             ("overlap", "beauty", "/Render/settings"),
             ("gap", "beauty", "/Render/settings"),
             ("gap", "lightgroups", "/Render/settings"),
         ])
     );
-    let f = &v["findings"];
+    // The partition findings.
+    let f = &v["findings"].as_array().unwrap()[2..];
     assert_eq!(f[0]["other"], "direct & indirect");
     // Witnesses checked by hand: `C RD L` is direct (C[DS]L) and indirect (C[DS]+...);
     // `C L` (the camera sees a light) is in no member of either partition.
@@ -283,6 +301,123 @@ fn a_fifty_megabyte_rib_streams_in_bounded_memory() {
         "{err}"
     );
     std::fs::remove_file(&big).unwrap();
+}
+
+#[test]
+fn an_undeclared_stage_reports_what_its_two_readings_disagree_on_in_either_run_dialect() {
+    let file = "tests/testdata/usd/undeclared_dialect.usda";
+    let both = "parses in both dialects and means different things: ";
+    // `C<RD>L` and `C.*L` mean the same in both; `--dialect` changes nothing: the stage
+    // does not say, and another delegate reads it the other way.
+    for dialect in ["renderman", "osl"] {
+        let (code, v) = json(&["--dialect", dialect, file]);
+        assert_eq!(code, 1, "{dialect}");
+        assert_eq!(
+            findings(&v),
+            triples(&[
+                ("ambiguous_dialect", "specular", "/Render/Vars/specular"),
+                ("ambiguous_dialect", "diffuse2", "/Render/Vars/diffuse2"),
+            ]),
+            "{dialect}"
+        );
+        let f = &v["findings"];
+        // RenderMan's `S` is every specular lobe, OSL's only the singular one (S8).
+        assert_eq!(
+            f[0]["message"],
+            format!(
+                "{both}as RenderMan it matches `C RS1 L`; as OSL it does not match that \
+                 path's OSL view `C,~ R,G L,~`"
+            )
+        );
+        assert_eq!(f[0]["witness"], "C RS1 L");
+        // OSL reads the `2` of `<RD2>` as a custom label, not a lobe.
+        assert_eq!(
+            f[1]["message"],
+            format!(
+                "{both}as RenderMan it matches `C RD2 L`; as OSL it does not match that \
+                 path's OSL view `C,~ R,D L,~`"
+            )
+        );
+        assert_eq!(f[1]["witness"], "C RD2 L");
+        assert!(f[1]["help"]
+            .as_str()
+            .unwrap()
+            .contains("`custom string lpe:dialect = \"renderman\"`"));
+    }
+    let (code, out, _) = lpe_check(&["lint", file]);
+    assert_eq!(code, 1);
+    let want = "tests/testdata/usd/undeclared_dialect.usda:</Render/Vars/specular>.sourceName: \
+                ambiguous_dialect: `specular`: parses in both dialects and means different \
+                things: as RenderMan it matches `C RS1 L`; as OSL it does not match that \
+                path's OSL view `C,~ R,G L,~`
+  = witness: C RS1 L
+  = help: say which dialect the stage is written in: `custom string lpe:dialect = \"renderman\"` (hdPrman) or `\"osl\"` (Karma, hdArnold, MoonRay) on its RenderSettings prim
+";
+    assert!(out.starts_with(want), "{out}");
+    assert!(out.ends_with("2 findings: 4 AOVs, 1 file, 0 partitions checked (0 clean)\n"));
+}
+
+#[test]
+fn a_declared_dialect_silences_the_check_and_a_bad_one_is_a_located_error() {
+    // The undeclared stage as a sublayer, with `lpe:dialect = "renderman"` over it.
+    let (code, out, err) = lpe_check(&["lint", "tests/testdata/usd/declared_dialect.usda"]);
+    assert_eq!(
+        (code, out.as_str(), err.as_str()),
+        (
+            0,
+            "clean: 4 AOVs, 1 file, 0 partitions checked (0 clean)\n",
+            ""
+        )
+    );
+    // `lpe:dialect = "arnold"`: unreadable (exit 2), at the attribute, with the dialect
+    // Arnold reads.
+    let bad = "tests/testdata/lint/bad_dialect.usda";
+    let message = "tests/testdata/lint/bad_dialect.usda: </Render/settings>.lpe:dialect: \
+                   unknown dialect `arnold` (expected `renderman` or `osl`); did you mean \
+                   `osl`?";
+    let (code, out, err) = lpe_check(&["lint", bad]);
+    assert_eq!(code, 2);
+    assert_eq!(err, format!("error: {message}\n"));
+    assert_eq!(
+        out,
+        "clean: 0 AOVs, 0 files, 0 partitions checked (0 clean)\n"
+    );
+    let (code, v) = json(&[bad]);
+    assert_eq!(code, 2);
+    assert_eq!(v["files"][0]["error"], message);
+    assert_eq!(v["findings"], serde_json::json!([]));
+}
+
+#[test]
+fn rib_channels_are_renderman_and_never_ambiguous() {
+    // The expressions the undeclared stage is reported for, as RIB channels.
+    let dir = std::env::temp_dir().join(format!("lpe-lint-dialect-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let rib = dir.join("channels.rib");
+    let text: String = ["C<RS>L", "C<RD>L", "C<RD2>L", "C.*L"]
+        .iter()
+        .enumerate()
+        .map(|(i, e)| {
+            format!("DisplayChannel \"color a{i}\" \"string source\" [\"color lpe:{e}\"]\n")
+        })
+        .collect();
+    std::fs::write(&rib, text).unwrap();
+    let (code, out, err) = lpe_check(&["lint", "--dialect", "osl", rib.to_str().unwrap()]);
+    // In the OSL run the channels are read as OSL (no check fires on these), and the
+    // dialect check stays quiet: RIB says RenderMan by its format.
+    assert_eq!(
+        (code, out.as_str(), err.as_str()),
+        (
+            0,
+            "clean: 4 AOVs, 1 file, 0 partitions checked (0 clean)\n",
+            ""
+        )
+    );
+    let (code, out, _) = lpe_check(&["lint", rib.to_str().unwrap()]);
+    assert_eq!(
+        (code, out.as_str()),
+        (0, "clean: 4 AOVs, 1 file, 0 partitions checked (0 clean)\n")
+    );
 }
 
 #[test]

@@ -1,8 +1,11 @@
-//! What a file declares: AOVs, partitions, the groups its scene carries, lobe mappings.
+//! What a file declares: AOVs, partitions, the dialect of its expressions, the groups its
+//! scene carries, lobe mappings.
 
 use std::collections::BTreeSet;
 use std::fmt;
 use std::path::PathBuf;
+
+use lpe::DialectName;
 
 /// Which reader a file went through.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -22,6 +25,16 @@ impl Format {
             Format::Usd => "usd",
             Format::Rib => "rib",
             Format::Ini => "ini",
+        }
+    }
+
+    /// The dialect a file of this format is written in whatever it says: RIB and
+    /// `rendermn.ini` are RenderMan's own formats; a USD stage is read by every render
+    /// delegate, so only an `lpe:dialect` attribute can say.
+    pub fn dialect(self) -> Option<DialectName> {
+        match self {
+            Format::Usd => None,
+            Format::Rib | Format::Ini => Some(DialectName::RenderMan),
         }
     }
 }
@@ -80,6 +93,16 @@ pub struct PartitionDecl {
     pub location: Location,
 }
 
+/// Which dialect a file says its expressions are written in.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct DialectDecl {
+    /// The dialect.
+    pub dialect: DialectName,
+    /// Where it is declared (USD: the `lpe:dialect` attribute); `None` when the file's
+    /// format says it ([`Format::dialect`]).
+    pub location: Option<Location>,
+}
+
 /// Everything one file declares.
 #[derive(Clone, Debug)]
 pub struct Document {
@@ -91,6 +114,9 @@ pub struct Document {
     pub aovs: Vec<AovDecl>,
     /// Declared partitions.
     pub partitions: Vec<PartitionDecl>,
+    /// The dialect of the file's expressions, when the file says (`None`: a USD stage
+    /// without `lpe:dialect`, whose expressions every delegate reads in its own dialect).
+    pub dialect: Option<DialectDecl>,
     /// Light-group labels the stage's lights carry; `None` when the file holds no light
     /// at all (a settings-only layer, a RIB display file): then nothing can be checked.
     pub light_groups: Option<BTreeSet<String>>,
@@ -110,6 +136,10 @@ impl Document {
             format,
             aovs: Vec::new(),
             partitions: Vec::new(),
+            dialect: format.dialect().map(|dialect| DialectDecl {
+                dialect,
+                location: None,
+            }),
             light_groups: None,
             object_groups: None,
             ordered_vars: None,

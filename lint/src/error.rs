@@ -1,7 +1,9 @@
-//! Why a file could not be read: every variant names the file, and the line when
-//! there is one.
+//! Why a file could not be read: every variant names the file, and the line (or the
+//! prim and attribute) when there is one.
 
 use std::path::PathBuf;
+
+use crate::decl::Location;
 
 /// A file that could not be read as declared (exit status 2 in `lpe-check lint`).
 #[derive(Debug, thiserror::Error)]
@@ -61,6 +63,18 @@ pub enum ReadError {
         /// What is wrong.
         problem: RibProblem,
     },
+    /// An `lpe:dialect` declaration lint cannot read: the file's expressions would be
+    /// read in a dialect it does not mean.
+    #[error("{}: {at}: {problem}", path.display())]
+    Dialect {
+        /// The file.
+        path: PathBuf,
+        /// The attribute (boxed, as `problem`: this rare variant would otherwise make
+        /// every `Result` of the readers larger).
+        at: Box<Location>,
+        /// What is wrong.
+        problem: Box<DialectProblem>,
+    },
     /// A bad `rendermn.ini` line (the line number is in `error`).
     #[error("{}: {error}", path.display())]
     Ini {
@@ -97,5 +111,32 @@ pub enum RibProblem {
     TooManyChannels {
         /// The limit.
         limit: usize,
+    },
+}
+
+/// What is wrong with an `lpe:dialect` declaration.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum DialectProblem {
+    /// A name that is no dialect, with the dialect it most likely means (a renderer
+    /// reading it, or a name in other case).
+    #[error("{unknown}{}", suggestion.map(|d| format!("; did you mean `{d}`?")).unwrap_or_default())]
+    Unknown {
+        /// The name, with the dialects there are.
+        unknown: lpe::UnknownDialect,
+        /// The dialect it likely means.
+        suggestion: Option<lpe::DialectName>,
+    },
+    /// A value that is not a string or token, or no value at all.
+    #[error("expected a string or token, `renderman` or `osl`")]
+    NotAName,
+    /// A second declaration naming another dialect.
+    #[error("declares `{dialect}`, but {first} declares `{earlier}`")]
+    Conflict {
+        /// The dialect this one names.
+        dialect: lpe::DialectName,
+        /// The earlier declaration's.
+        earlier: lpe::DialectName,
+        /// Where the earlier one is.
+        first: Location,
     },
 }

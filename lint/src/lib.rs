@@ -5,8 +5,9 @@
 //!
 //! - USD stages ([`read::usd`], through the `openusd` crate): `RenderVar` prims with
 //!   `sourceType = "lpe"`, `RenderProduct.orderedVars`, the light-group and object-group
-//!   attributes the render delegates read, and declared partitions
-//!   (`custom string lpe:partition` on a `RenderSettings` prim);
+//!   attributes the render delegates read, declared partitions
+//!   (`custom string lpe:partition` on a `RenderSettings` prim) and the declared dialect
+//!   (`custom string lpe:dialect`);
 //! - RIB ([`read::rib`]): `DisplayChannel` lines with an `lpe:` source, streamed;
 //! - `rendermn.ini` ([`read::ini`]): macros and lobe mappings, through [`lpe::renderman::Config`].
 //!
@@ -14,7 +15,8 @@
 //! [`ReadError`] with the file and, where there is one, the line; none panics.
 //!
 //! The checks on the declarations are [`check`]'s (parse errors, emptiness, equivalence,
-//! group labels, lobes, partitions) with its text and JSON reports; `lpe-check lint`
+//! group labels, lobes, partitions, expressions of an undeclared dialect that mean
+//! different things in RenderMan's and OSL's) with its text and JSON reports; `lpe-check lint`
 //! parses its arguments, calls them and prints. Every partition witness is re-checked
 //! with the reference matcher first ([`witness`], which `lpe-check equiv` and
 //! `partition` use too). `lpe-render --usd` takes its AOVs from [`read::usd`].
@@ -33,5 +35,5 @@ pub mod explain;
 pub mod read;
 pub mod witness;
 
-pub use decl::{AovDecl, Document, Format, Location, PartitionDecl};
-pub use error::{ReadError, RibProblem};
+pub use decl::{AovDecl, DialectDecl, Document, Format, Location, PartitionDecl};
+pub use error::{DialectProblem, ReadError, RibProblem};

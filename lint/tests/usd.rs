@@ -1,9 +1,11 @@
-//! The USD reader on the repository's fixtures and on broken files.
+//! The USD reader on the repository's fixtures and on broken files, the `lpe:dialect`
+//! declaration included.
 
 use std::path::{Path, PathBuf};
 
+use lpe::DialectName;
 use lpe_lint::read::{self, Limits};
-use lpe_lint::{Document, Location, ReadError};
+use lpe_lint::{DialectDecl, DialectProblem, Document, Location, ReadError};
 
 fn fixture(name: &str) -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -211,4 +213,119 @@ fn missing_file_and_unknown_extension() {
     assert!(matches!(e, ReadError::Io { .. }), "{e}");
     let e = read::read_file(Path::new("x.txt"), &Limits::default()).unwrap_err();
     assert!(matches!(e, ReadError::UnknownFormat { .. }), "{e}");
+}
+
+fn dialect_at(prim: &str) -> Location {
+    Location::Prim {
+        prim: prim.into(),
+        attribute: "lpe:dialect".into(),
+    }
+}
+
+#[test]
+fn the_declared_dialect_and_where_it_is() {
+    assert_eq!(read("undeclared_dialect.usda").dialect, None);
+    assert_eq!(read("hdprman.usda").dialect, None);
+    // Declared in a layer over the undeclared stage (a sublayer): the composed stage.
+    let d = read("declared_dialect.usda");
+    assert_eq!(d.aovs.len(), 4);
+    assert_eq!(
+        d.dialect,
+        Some(DialectDecl {
+            dialect: DialectName::RenderMan,
+            location: Some(dialect_at("/Render/settings")),
+        })
+    );
+    // RIB is RenderMan's own format: declared without an attribute.
+    let rib = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/testdata/lint/display.rib");
+    let d = read::read_file(&rib, &Limits::default()).unwrap();
+    assert_eq!(
+        d.dialect,
+        Some(DialectDecl {
+            dialect: DialectName::RenderMan,
+            location: None,
+        })
+    );
+}
+
+/// A stage with `body` under `/Render`, as a scratch file.
+fn stage(name: &str, body: &str) -> PathBuf {
+    scratch(
+        name,
+        format!("#usda 1.0\n\ndef Scope \"Render\"\n{{\n{body}\n}}\n").as_bytes(),
+    )
+}
+
+#[test]
+fn a_token_on_any_prim_and_agreeing_declarations() {
+    let p = stage(
+        "token.usda",
+        "    uniform token lpe:dialect = \"osl\"\n    def Scope \"a\"\n    {\n        custom string lpe:dialect = \"osl\"\n    }",
+    );
+    let d = read::read_file(&p, &Limits::default()).unwrap();
+    assert_eq!(
+        d.dialect,
+        Some(DialectDecl {
+            dialect: DialectName::Osl,
+            location: Some(dialect_at("/Render")),
+        })
+    );
+}
+
+#[test]
+fn a_bad_declaration_is_an_error_at_its_attribute() {
+    let e = read::read_file(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/testdata/lint/bad_dialect.usda"),
+        &Limits::default(),
+    )
+    .unwrap_err();
+    let ReadError::Dialect { at, problem, .. } = &e else {
+        panic!("{e}")
+    };
+    assert_eq!(**at, dialect_at("/Render/settings"));
+    assert_eq!(
+        **problem,
+        DialectProblem::Unknown {
+            unknown: lpe::UnknownDialect("arnold".into()),
+            suggestion: Some(DialectName::Osl),
+        }
+    );
+    assert!(
+        e.to_string().ends_with(
+            "bad_dialect.usda: </Render/settings>.lpe:dialect: unknown dialect `arnold` \
+             (expected `renderman` or `osl`); did you mean `osl`?"
+        ),
+        "{e}"
+    );
+    let error = |body: &str| {
+        read::read_file(&stage("bad.usda", body), &Limits::default())
+            .unwrap_err()
+            .to_string()
+    };
+    let tail = |e: String| e.split_once(".usda: ").map(|(_, t)| t.to_string()).unwrap();
+    assert_eq!(
+        tail(error("    custom string lpe:dialect = \"RenderMan\"")),
+        "</Render>.lpe:dialect: unknown dialect `RenderMan` (expected `renderman` or \
+         `osl`); did you mean `renderman`?"
+    );
+    assert_eq!(
+        tail(error("    custom string lpe:dialect = \"mantra\"")),
+        "</Render>.lpe:dialect: unknown dialect `mantra` (expected `renderman` or `osl`)"
+    );
+    // A number, or an attribute without a value, names no dialect.
+    for body in [
+        "    custom int lpe:dialect = 1",
+        "    custom string lpe:dialect",
+    ] {
+        assert_eq!(
+            tail(error(body)),
+            "</Render>.lpe:dialect: expected a string or token, `renderman` or `osl`"
+        );
+    }
+    assert_eq!(
+        tail(error(
+            "    custom string lpe:dialect = \"osl\"\n    def Scope \"a\"\n    {\n        custom string lpe:dialect = \"renderman\"\n    }"
+        )),
+        "</Render/a>.lpe:dialect: declares `renderman`, but </Render>.lpe:dialect declares `osl`"
+    );
 }

@@ -170,10 +170,13 @@ def test_partition_of_bare_expressions_names_them_by_their_text():
 def test_lint_a_fixture_file():
     # tests/testdata/usd/hdprman.usda: rimLight has a label in the event position,
     # lightBehindCamera can reach no emitter, diffuseAgain repeats directDiffuse,
-    # wetness names lobe U9 that no rendermn.ini maps.
+    # wetness names lobe U9 that no rendermn.ini maps; the stage does not declare its
+    # dialect, and the user lobes of albedo and wetness have no OSL view.
     report = lpe.lint(str(USD / "hdprman.usda"))
     got = sorted((f.kind, f.subject) for f in report.findings)
     assert got == [
+        ("ambiguous_dialect", "albedo"),
+        ("ambiguous_dialect", "wetness"),
         ("empty", "lightBehindCamera"),
         ("equivalent", "diffuseAgain"),
         ("parse_error", "rimLight"),

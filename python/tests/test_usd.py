@@ -32,6 +32,7 @@ NAMES = [
     "lpe:UnknownLightGroup",
     "lpe:UnknownObjectGroup",
     "lpe:UnfedLobe",
+    "lpe:AmbiguousDialect",
     "lpe:PartitionOverlap",
     "lpe:PartitionGap",
     "lpe:PartitionOutside",

@@ -25,6 +25,9 @@ pub enum Kind {
     Gap,
     /// A partition member matches a path outside the universe.
     Outside,
+    /// A stage that does not declare its dialect holds an expression that parses in
+    /// RenderMan's and OSL's and means different things in each.
+    AmbiguousDialect,
 }
 
 impl Kind {
@@ -41,6 +44,7 @@ impl Kind {
             Kind::Overlap => "overlap",
             Kind::Gap => "gap",
             Kind::Outside => "outside",
+            Kind::AmbiguousDialect => "ambiguous_dialect",
         }
     }
 }

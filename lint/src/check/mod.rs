@@ -4,11 +4,14 @@
 //! [`inputs`] reads the files in the command's order. Per file: parse errors
 //! ([`aovs`]), AOVs that can match no path and AOVs equivalent to an earlier one
 //! ([`aovs`]), group labels no light or object of the stage carries and numbered lobes
-//! no mapping feeds ([`labels`], [`dialect`], [`aovs`]), and the declared partitions ([`partition`]),
+//! no mapping feeds ([`labels`], [`dialect`], [`aovs`]), expressions of a stage that does
+//! not declare its dialect that mean different things in RenderMan's and OSL's
+//! ([`ambiguity`], whatever the run's dialect), and the declared partitions ([`partition`]),
 //! each a [`Finding`], collected in an [`outcome`]; [`text`] and [`json`] print them. [`dialect`] is what the checks
 //! ask of the expression language ([`dialect::LintDialect`], implemented on `lpe`'s
 //! RenderMan and OSL markers), so they are written once.
 
+pub mod ambiguity;
 pub mod aovs;
 pub mod dialect;
 pub mod finding;
@@ -23,17 +26,20 @@ pub mod text;
 pub use finding::{Finding, Kind};
 pub use outcome::{CheckedPartition, Linted, Outcome};
 
+use ambiguity::BothDialects;
 use dialect::{Lint, LintDialect};
 
 use crate::witness::Disagreement;
 use crate::{Document, PartitionDecl};
 
-/// Lints the documents read (ini documents contribute only partitions), then the
-/// `extra` partitions over the AOVs of every file. Partition witnesses are re-checked
-/// with the reference matcher; a failed re-check is an engine bug, returned as the error.
+/// Lints the documents read (ini documents contribute only partitions) in `dialect`, and
+/// the AOVs of those that declare no dialect in `both` too; then the `extra` partitions
+/// over the AOVs of every file. Witnesses are re-checked with the reference matcher; a
+/// failed re-check is an engine bug, returned as the error.
 pub fn lint<D: LintDialect>(
     docs: &[Document],
     dialect: &Lint<'_, D>,
+    both: &BothDialects,
     universe: &D::Lpe,
     extra: &[PartitionDecl],
 ) -> Result<Outcome<D::Lpe>, Disagreement> {
@@ -51,6 +57,7 @@ pub fn lint<D: LintDialect>(
             lpe: None,
         }));
         aovs::check(doc, &mut out.aovs[first..], dialect, &mut out.findings);
+        ambiguity::check(doc, &out.aovs[first..], both, &mut out.findings)?;
         for p in &doc.partitions {
             let checked = partition::check(
                 &file,

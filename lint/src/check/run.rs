@@ -9,6 +9,7 @@ use std::path::{Path, PathBuf};
 
 use serde_json::Value;
 
+use super::ambiguity::BothDialects;
 use super::dialect::{Lint, LintDialect};
 use super::json::{self, FileStatus};
 use super::{inputs, text, Outcome};
@@ -136,6 +137,9 @@ where
         message: e.to_string(),
     })?;
     let read = inputs::read_all(&inis, &others, &limits);
+    // Whatever the run's dialect, undeclared stages are read in both, RenderMan with the
+    // ini files' macros.
+    let both = BothDialects::new(read.config.parser());
     let (registration, lobes) = D::configured(registration, &read.config);
     let dialect = Lint::<D> {
         registration: &registration,
@@ -146,8 +150,8 @@ where
         .parse(universe)
         .map_err(|e| RunError::Universe(e.message))?;
     let extra = inputs::command_line_partitions(req.partitions);
-    let outcome =
-        super::lint(&read.docs, &dialect, &universe, &extra).map_err(RunError::Disagreement)?;
+    let outcome = super::lint(&read.docs, &dialect, &both, &universe, &extra)
+        .map_err(RunError::Disagreement)?;
     Ok(Run {
         outcome,
         statuses: read.statuses,

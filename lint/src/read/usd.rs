@@ -1,6 +1,6 @@
 //! USD stages, through the `openusd` crate: `RenderVar`s with `sourceType = "lpe"`,
-//! `RenderProduct.orderedVars`, the group attributes of lights and objects, and declared
-//! partitions.
+//! `RenderProduct.orderedVars`, the group attributes of lights and objects, declared
+//! partitions and the declared dialect.
 //!
 //! `sourceType` and `sourceName` are read whether authored `uniform` or not and as
 //! `token` or `string` (the schema says `uniform token` / `uniform string`; Solaris,
@@ -20,14 +20,24 @@
 //! A partition is declared as `custom string lpe:partition = "a,b,c"` (named `beauty`)
 //! or `custom string lpe:partition:NAME = "a,b,c"` on any prim, usually the
 //! `RenderSettings`.
+//!
+//! The dialect of the stage's expressions is declared as `custom string lpe:dialect =
+//! "renderman"` (or `"osl"`; a `token` is read too) on any prim, usually the
+//! `RenderSettings`: a RenderVar says `sourceType = "lpe"` for hdPrman and for Karma or
+//! hdArnold alike, and most expressions parse in both dialects. Any other value, a value
+//! that is no string, or two prims naming different dialects is a [`ReadError::Dialect`]
+//! at the attribute: reading on would check the expressions in a dialect the stage does
+//! not mean.
 
 use std::collections::BTreeSet;
 use std::path::Path;
 
 use openusd::{sdf, usd};
 
-use crate::decl::{split_members, AovDecl, Document, Format, Location, PartitionDecl};
-use crate::error::ReadError;
+use lpe::{DialectName, UnknownDialect};
+
+use crate::decl::{split_members, AovDecl, DialectDecl, Document, Format, Location, PartitionDecl};
+use crate::error::{DialectProblem, ReadError};
 use crate::read::common::{as_text, read_bounded, Limits};
 
 /// Light attributes holding the light's group, per delegate (see the module docs).
@@ -43,6 +53,9 @@ pub const OBJECT_GROUP_ATTRIBUTES: [&str; 2] = [
     "primvars:karma:object:lpetag",
     "primvars:ri:attributes:identifier:lpegroup",
 ];
+
+/// The attribute declaring the dialect of the stage's expressions.
+pub const DIALECT_ATTRIBUTE: &str = "lpe:dialect";
 
 /// Prim types that are geometry: a stage holding one can be checked for object groups.
 const GEOMETRY_TYPES: [&str; 13] = [
@@ -85,6 +98,7 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
     let mut lights = BTreeSet::new();
     let mut objects = BTreeSet::new();
     let (mut has_lights, mut has_objects) = (false, false);
+    let mut declared = None;
     for p in &prims {
         let prim = stage.prim(p.clone());
         let ty = prim
@@ -149,6 +163,19 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
             .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?;
         for prop in names {
             let prop = prop.as_str();
+            if prop == DIALECT_ATTRIBUTE {
+                let value = prim
+                    .attribute(prop)
+                    .get::<sdf::Value>()
+                    .map_err(|e| usd_err(format!("<{p}>.{prop}: {e:#}")))?;
+                let location = Location::Prim {
+                    prim: p.to_string(),
+                    attribute: prop.to_string(),
+                };
+                let named = value.as_ref().and_then(sdf::Value::as_str);
+                declare_dialect(&mut declared, path, named, location)?;
+                continue;
+            }
             let name = match prop.strip_prefix("lpe:partition") {
                 Some("") => "beauty",
                 Some(rest) => match rest.strip_prefix(':') {
@@ -168,7 +195,57 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
             });
         }
     }
+    doc.dialect = declared.map(|(dialect, at)| DialectDecl {
+        dialect,
+        location: Some(at),
+    });
     doc.light_groups = has_lights.then_some(lights);
     doc.object_groups = has_objects.then_some(objects);
     Ok(doc)
+}
+
+/// Records in `declared` the dialect an `lpe:dialect` attribute at `at` names (`named`
+/// `None`: the attribute holds no string or token).
+fn declare_dialect(
+    declared: &mut Option<(DialectName, Location)>,
+    path: &Path,
+    named: Option<&str>,
+    at: Location,
+) -> Result<(), ReadError> {
+    let problem = match (named.map(str::parse::<DialectName>), &*declared) {
+        (Some(Ok(d)), None) => {
+            *declared = Some((d, at));
+            return Ok(());
+        }
+        (Some(Ok(d)), Some((earlier, _))) if *earlier == d => return Ok(()),
+        (Some(Ok(d)), Some((earlier, first))) => DialectProblem::Conflict {
+            dialect: d,
+            earlier: *earlier,
+            first: first.clone(),
+        },
+        (Some(Err(unknown)), _) => DialectProblem::Unknown {
+            suggestion: likely_dialect(&unknown),
+            unknown,
+        },
+        (None, _) => DialectProblem::NotAName,
+    };
+    Err(ReadError::Dialect {
+        path: path.to_path_buf(),
+        at: Box::new(at),
+        problem: Box::new(problem),
+    })
+}
+
+/// The dialect an unknown name most likely means: a dialect's name in other case, or a
+/// renderer (or its Hydra delegate) that reads one.
+fn likely_dialect(unknown: &UnknownDialect) -> Option<DialectName> {
+    let name = unknown.0.trim().to_ascii_lowercase();
+    if let Ok(d) = name.parse() {
+        return Some(d);
+    }
+    match name.as_str() {
+        "prman" | "hdprman" | "ri" => Some(DialectName::RenderMan),
+        "arnold" | "hdarnold" | "karma" | "moonray" => Some(DialectName::Osl),
+        _ => None,
+    }
 }

@@ -79,7 +79,7 @@ class Finding:
     """One lint finding, with the fields of ``lpe-check lint --format json``:
     ``kind`` (``parse_error``, ``empty``, ``equivalent``, ``unknown_light_group``,
     ``unknown_object_group``, ``unfed_lobe``, ``unknown_member``, ``overlap``,
-    ``gap``, ``outside``), ``file``, ``subject`` (the AOV or partition),
+    ``gap``, ``outside``, ``ambiguous_dialect``), ``file``, ``subject`` (the AOV or partition),
     ``location`` (a dict: ``line``, ``column``, ``prim``, ``attribute``), ``message``,
     ``source`` and ``span`` (the caret), ``help``, ``other``, ``witness``,
     ``remainder``. ``to_dict()`` gives the JSON object back."""

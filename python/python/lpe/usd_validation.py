@@ -22,6 +22,7 @@ validator                  lint kinds                  runs on
 ``lpe:UnknownLightGroup``  ``unknown_light_group``     each ``UsdRenderVar``
 ``lpe:UnknownObjectGroup`` ``unknown_object_group``    each ``UsdRenderVar``
 ``lpe:UnfedLobe``          ``unfed_lobe``              each ``UsdRenderVar``
+``lpe:AmbiguousDialect``   ``ambiguous_dialect``       each ``UsdRenderVar``
 ``lpe:PartitionOverlap``   ``overlap``                 the stage
 ``lpe:PartitionGap``       ``gap``                     the stage
 ``lpe:PartitionOutside``   ``outside``                 the stage
@@ -56,6 +57,7 @@ AOV_VALIDATORS = {
     "UnknownLightGroup": ("unknown_light_group",),
     "UnknownObjectGroup": ("unknown_object_group",),
     "UnfedLobe": ("unfed_lobe",),
+    "AmbiguousDialect": ("ambiguous_dialect",),
 }
 STAGE_VALIDATORS = {
     "PartitionOverlap": ("overlap",),
