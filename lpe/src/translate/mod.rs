@@ -62,6 +62,21 @@ pub struct Translation<L> {
     pub notes: Vec<String>,
 }
 
+impl<L> Translation<L> {
+    /// An exact translation (`lower` means the same; no witnesses).
+    fn exact(text: L, lower: L, notes: Vec<String>) -> Translation<L> {
+        Translation {
+            text,
+            exact: true,
+            reasons: Vec::new(),
+            upper_witness: None,
+            lower,
+            lower_witness: None,
+            notes,
+        }
+    }
+}
+
 /// Why a translation gave no answer.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum TranslateError {
@@ -143,15 +158,7 @@ pub fn to_osl(
         ));
     }
     if cu.equivalent() {
-        return Ok(Translation {
-            text: upper,
-            exact: true,
-            reasons: Vec::new(),
-            upper_witness: None,
-            lower,
-            lower_witness: None,
-            notes,
-        });
+        return Ok(Translation::exact(upper, lower, notes));
     }
     let mut reasons = Vec::new();
     if let Some(c) = cross::collision(e, corr)? {
@@ -185,15 +192,7 @@ pub fn to_renderman(
     let lower = read_renderman(&to_renderman::translate(f, corr, Bound::Lower))?;
     let cu = cross::compare(&upper, f, corr)?;
     if cu.equivalent() {
-        return Ok(Translation {
-            text: upper,
-            exact: true,
-            reasons: Vec::new(),
-            upper_witness: None,
-            lower,
-            lower_witness: None,
-            notes: Vec::new(),
-        });
+        return Ok(Translation::exact(upper, lower, Vec::new()));
     }
     let cl = cross::compare(&lower, f, corr)?;
     Ok(Translation {
