@@ -612,3 +612,59 @@ fn equiv_across_dialects_prints_both_views() {
     );
     assert_eq!((code, out.as_str()), (0, "equivalent\n"));
 }
+
+#[test]
+fn translate_reads_rib_and_ini_sets_and_reports_what_does_not_parse() {
+    let data = concat!(env!("CARGO_MANIFEST_DIR"), "/../tests/testdata/lint/");
+    let (rib, ini) = (format!("{data}display.rib"), format!("{data}rendermn.ini"));
+    let args = [
+        "translate",
+        "--from",
+        "renderman",
+        "--to",
+        "osl",
+        "--from-file",
+        &rib,
+        "--ini",
+        &ini,
+    ];
+    let (code, out, err) = lpe_check(&args, "");
+    // `broken` (`<L'key'>`) does not parse: reported, the others still translated.
+    assert_eq!(code, 2, "{out}");
+    assert!(
+        err.contains("broken: error in `lpe:C<RD>.*<L'key'>`"),
+        "{err}"
+    );
+    assert!(
+        out.contains("diffuse: lpe:C<.D>.*[<L.>O]  ->  <C.><[RT]D><[RT].>*<[LO].>  (exact)"),
+        "{out}"
+    );
+    assert!(
+        out.contains("wetness: lpe:C<.U5>L  ->  not expressible"),
+        "{out}"
+    );
+    assert!(
+        out.contains("keyDiffuse: lpe:keyDiffuse  ->  <C.><RD><[RT].>*<L.'key'>  (exact)"),
+        "{out}"
+    );
+    // The ini file alone: its user macros are the set.
+    let (code, out, _) = lpe_check(
+        &[
+            "translate",
+            "--from",
+            "renderman",
+            "--to",
+            "osl",
+            "--from-file",
+            &ini,
+        ],
+        "",
+    );
+    assert_eq!(
+        (code, out.as_str()),
+        (
+            0,
+            "keyDiffuse: C<RD>.*<L.'key'>  ->  <C.><RD><[RT].>*<L.'key'>  (exact)\n"
+        )
+    );
+}

@@ -2,8 +2,9 @@
 //! renderman`): each expression in the other dialect, with a verdict proved on the
 //! automata ([`lpe::translate`], docs/language.md §19).
 //!
-//! Exit 0 when every translation is exact, 1 when one is not expressible, 2 on bad input,
-//! 3 when a witness fails its re-check with the reference matchers. `--from-file` reads a
+//! Exit 0 when every translation is exact, 1 when one is not expressible, 2 on bad input
+//! (an expression that does not parse is reported on stderr and the others are still
+//! translated), 3 when a witness fails its re-check with the reference matchers. `--from-file` reads a
 //! USD stage, RIB file or `rendermn.ini` (its user macros) instead of arguments;
 //! `--format json` or `usda` (a layer of RenderVars) writes the translated set.
 
@@ -95,6 +96,9 @@ pub fn run(args: Args) -> ExitCode {
         Err(e) => return bad_input(format!("error: {e}")),
     };
     let mut out = Vec::new();
+    // An expression that does not parse is reported and skipped: the rest of a file's
+    // set is still translated, and the exit status says something was bad.
+    let mut bad = false;
     for s in &sources {
         let result = match args.from {
             DialectName::RenderMan => from_renderman(s, &parser, &corr),
@@ -106,7 +110,10 @@ pub fn run(args: Args) -> ExitCode {
                 eprintln!("{e}");
                 return ExitCode::from(DISAGREE);
             }
-            Err(e) => return bad_input(e),
+            Err(e) => {
+                eprintln!("{e}");
+                bad = true;
+            }
         }
     }
     let exact = out.iter().all(|t| t.exact);
@@ -116,6 +123,9 @@ pub fn run(args: Args) -> ExitCode {
         Format::Usda => usda(&out, &args),
     };
     print!("{text}");
+    if bad {
+        return ExitCode::from(2);
+    }
     ExitCode::from(u8::from(!exact))
 }
 
