@@ -153,10 +153,12 @@ fn renderman_expressions_translate_to_osl_within_their_bounds_and_back() {
     let cfg = grammar::Config::default();
     let mut cov = grammar::renderman::coverage();
     let (mut exact, mut back_exact) = (0, 0);
+    let mut verdicts = std::collections::BTreeMap::new();
     for _ in 0..EXPRESSIONS {
         let text = grammar::renderman::source(&mut rng, &cfg, &mut cov);
         let e = renderman::Parser::default().parse(&text).unwrap();
         let t = to_osl(&e, &corr).unwrap();
+        *verdicts.entry(verdict(&t)).or_insert(0) += 1;
         let labels = path_labels(e.operands().iter().flat_map(|op| op.labels()));
         let (e_ref, up_ref, low_ref) = (&e, &t.text, &t.lower);
         for _ in 0..PATHS {
@@ -226,7 +228,7 @@ fn renderman_expressions_translate_to_osl_within_their_bounds_and_back() {
             }
         }
     }
-    eprintln!("RenderMan: {exact} of {EXPRESSIONS} exact, {back_exact} exact back");
+    eprintln!("RenderMan: {exact} of {EXPRESSIONS} exact, {back_exact} exact back; {verdicts:?}");
     assert!(
         exact > EXPRESSIONS / 10,
         "{exact}: the property is near vacuous"
@@ -242,10 +244,12 @@ fn osl_expressions_translate_to_renderman_within_their_bounds_and_back() {
     let short = grammar::osl::Shorthand::of(&[], &[]);
     let mut cov = grammar::osl::coverage();
     let (mut exact, mut back_exact) = (0, 0);
+    let mut verdicts = std::collections::BTreeMap::new();
     for _ in 0..EXPRESSIONS {
         let text = grammar::osl::source(&mut rng, &short, &cfg, &mut cov);
         let f = osl::parse(&text, &Registered::none()).unwrap();
         let t = to_renderman(&f, &corr).unwrap();
+        *verdicts.entry(verdict(&t)).or_insert(0) += 1;
         let labels = path_labels(osl_labels(&f));
         let back = if t.exact {
             Some(to_osl(&t.text, &corr).unwrap())
@@ -297,7 +301,7 @@ fn osl_expressions_translate_to_renderman_within_their_bounds_and_back() {
             back_exact += usize::from(back.is_some_and(|b| b.exact));
         }
     }
-    eprintln!("OSL: {exact} of {EXPRESSIONS} exact, {back_exact} exact back");
+    eprintln!("OSL: {exact} of {EXPRESSIONS} exact, {back_exact} exact back; {verdicts:?}");
     assert!(
         exact > EXPRESSIONS / 10,
         "{exact}: the property is near vacuous"
