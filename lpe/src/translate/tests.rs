@@ -137,3 +137,26 @@ fn osl_to_renderman() {
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "C[^.]L");
 }
+
+#[test]
+fn errors_say_what_went_wrong() {
+    let e = TranslateError::Unreadable {
+        text: "<C.".into(),
+        message: "unclosed".into(),
+    };
+    assert_eq!(
+        e.to_string(),
+        "internal error: the translation `<C.` does not read back (unclosed)"
+    );
+    let e = TranslateError::Analysis(AnalysisError::TooLarge(7));
+    assert_eq!(
+        e.to_string(),
+        "the search visited more than 7 automaton states without finishing"
+    );
+    let d = Correspondence::parse("S1=G U2=G").unwrap_err();
+    assert_eq!(
+        d.to_string(),
+        "correspondence at byte 5: `U2` is not a transport lobe (D1-D4, S1-S8) or a range \
+         of one kind (S1-S7); user lobes have no OSL counterpart"
+    );
+}
