@@ -280,13 +280,12 @@ impl Correspondence {
         );
         // A label OSL would read as built in is outside the correspondence.
         labels.retain(|l| !is_builtin(self.rename(l)));
-        let taken = |s: &str| {
-            labels.contains(s)
-                || osl_labels.contains(s)
-                || is_builtin(s)
-                || self.labels.contains_key(s)
-                || self.labels.values().any(|b| b == s)
-        };
+        // The fresh label must be mentioned by neither side and be its own OSL label (not
+        // a renamed one, which could be renamed onto a built-in label or a mentioned one).
+        // Candidates start `other`, so none is built in.
+        // (The OSL labels are among `labels`, but for those a key renames onto a built-in
+        // label, and keys are taken.)
+        let taken = |s: &str| labels.contains(s) || self.labels.contains_key(s);
         let mut fresh = String::from("other");
         while taken(&fresh) {
             fresh.push('_');
@@ -403,5 +402,20 @@ mod tests {
         );
         // camera + per label (L, O, 2 x 24 lobes).
         assert_eq!(u.len(), 1 + 5 * (2 + 2 * 24));
+    }
+
+    #[test]
+    fn the_fresh_label_is_never_a_renamed_one() {
+        // Renamed onto a built-in label, `other` would have no OSL view at all.
+        let c = Correspondence::parse("'other'='D'").unwrap();
+        let (u, fresh) = c.universe(&BTreeSet::new(), &BTreeSet::new());
+        assert_eq!(fresh, "other_");
+        assert!(u
+            .iter()
+            .all(|v| v.event().is_some_and(|e| !e.is_transport()) || c.osl_vertex(v).is_some()));
+        // Mentioned on the OSL side only.
+        let osl: BTreeSet<String> = ["other".to_string()].into();
+        let (_, fresh) = Correspondence::default().universe(&BTreeSet::new(), &osl);
+        assert_eq!(fresh, "other_");
     }
 }
