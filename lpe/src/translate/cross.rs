@@ -171,19 +171,18 @@ pub fn compare(
     let (a, b) = (compile_renderman(rm)?, compile_osl(osl)?);
     let (universe, _) = corr.universe(&labels::renderman(rm), &labels::osl(osl));
     // Letters: one per distinct (type, RenderMan class, OSL class or none).
-    let mut distinct: FxMap<(VertexType, Class, Option<Class>), usize> = FxMap::default();
+    let mut distinct: FxSet<(VertexType, Class, Option<Class>)> = FxSet::default();
     let mut letters = Vec::new();
     let mut steps: Vec<(Class, Option<Class>)> = Vec::new();
     let mut vertices = Vec::new();
     for v in universe {
         let ca = a.classify(&v);
         let cb = corr.osl_vertex(&v).map(|w| b.classify(&w));
-        distinct.entry((v.ty(), ca, cb)).or_insert_with(|| {
+        if distinct.insert((v.ty(), ca, cb)) {
             letters.push((v.ty(), letters.len()));
             steps.push((ca, cb));
-            vertices.push(v.clone());
-            letters.len() - 1
-        });
+            vertices.push(v);
+        }
     }
     // `None` on the OSL side: the path left the correspondence (no OSL view).
     let start: (State, Option<State>) = (a.start(), Some(b.start()));

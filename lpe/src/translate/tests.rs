@@ -48,6 +48,30 @@ fn cross_comparisons_find_shortest_witnesses_on_each_side() {
 }
 
 #[test]
+fn cross_witnesses_are_the_first_found_and_every_kind_is_searched_for() {
+    // Many paths differ each way; the witnesses are the shortest, not the last visited.
+    let c = cross::compare(&rm("C<RS>+L"), &osl_lpe("C<RS>+L"), &corr()).unwrap();
+    assert_eq!(
+        show(&c.renderman_only).as_deref(),
+        Some("C RS1 L / C,~ R,G L,~")
+    );
+    let c = cross::compare(&rm("C<RS8>+L"), &osl_lpe("C<R[GS]>+L"), &corr()).unwrap();
+    assert_eq!(show(&c.osl_only).as_deref(), Some("C RS1 L / C,~ R,G L,~"));
+    // All three kinds at once: the search does not stop at the first.
+    let c = cross::compare(&rm("C(U|S)L"), &osl_lpe("C<RD>L"), &corr()).unwrap();
+    assert_eq!(
+        show(&c.renderman_only).as_deref(),
+        Some("C RS1 L / C,~ R,G L,~")
+    );
+    assert_eq!(show(&c.osl_only).as_deref(), Some("C RD1 L / C,~ R,D L,~"));
+    assert_eq!(c.outside.map(|p| p.to_string()).as_deref(), Some("C RU1 L"));
+    // A path with no OSL view counts only when the RenderMan side matches it: `CULDL` is
+    // alive after `C RU1 L` (its automaton knows no path shape) but matches nothing.
+    let c = cross::compare(&rm("CULDL"), &osl_lpe("C[]L"), &corr()).unwrap();
+    assert!(c.equivalent(), "{c:?}");
+}
+
+#[test]
 fn collisions_are_two_paths_with_one_view() {
     let c = cross::collision(&rm("C<RD2>L"), &corr()).unwrap().unwrap();
     assert_eq!(c.matched.to_string(), "C RD2 L");
