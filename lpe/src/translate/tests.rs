@@ -128,6 +128,14 @@ fn renderman_to_osl() {
         "<C.><[RT].>*<L.> - <C.><[RT]D[^'foo']><L.>"
     );
     assert_eq!(t.lower.to_string(), "<C.><[RT].>*<L.> - <C.><[RT]D><L.>");
+    // OSL has no empty alternative and no `{0}` after the first item: `(D|.{0})` is
+    // `D{0,1}`, and a group of empty repetitions is nothing.
+    let t = to_osl(&rm("C(D|.{0})L"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "<C.><[RT]D>{0,1}<L.>");
+    let t = to_osl(&rm("C(.{0}.{0,0})L"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "<C.><L.>");
     // A declared singular lobe.
     let c = Correspondence::parse("S4=S").unwrap();
     let t = to_osl(&rm("C<R[S4 S8]>L"), &c).unwrap();
