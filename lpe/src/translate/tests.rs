@@ -164,6 +164,18 @@ fn osl_to_renderman() {
         show(&t.lower_witness).as_deref(),
         Some("C RD1'other' L / C,~ R,D,other L,~")
     );
+    // Between a first and a last item that each take a vertex, OSL's `.` can only meet a
+    // scattering vertex; as the first item only the camera, as the last only an emitter.
+    let t = to_renderman(&osl_lpe("..*."), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "C.*[LO]");
+    // Not when an end can be empty (`.` may be the camera), nor for a first item that is
+    // no single vertex pattern.
+    let t = to_renderman(&osl_lpe("C{0,1}.L"), &corr()).unwrap();
+    assert!(t.exact, "{}", t.text);
+    let t = to_renderman(&osl_lpe("[CL].*L"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "[CL].*L");
     // Events the correspondence never produces match nothing.
     let t = to_renderman(&osl_lpe("CBL"), &corr()).unwrap();
     assert!(t.exact);

@@ -212,7 +212,7 @@ fn atom(accepted: &[(&renderman::Vertex, bool)], fresh: &str, bound: Bound) -> A
             merged.entry((!any).then_some(evs)).or_default().push(ty);
         }
         for (events, types) in merged {
-            items.push(item(types, events, label.clone()));
+            items.extend(item(types, events, label.clone()));
         }
     }
     match items.len() {
@@ -282,9 +282,25 @@ fn label_pos(
     }
 }
 
-/// One item for `types` (sharing `events`, `None`: `.`) and `label`, spelled as a letter
-/// where one says the same.
-fn item(types: Vec<VertexType>, events: Option<BTreeSet<Event>>, label: LabelPos) -> Item {
+/// The items for `types` (sharing `events`, `None`: `.`) and `label`: letters where they
+/// say the same (`[LO]`, not `<[LO].>`), else one triple.
+fn item(types: Vec<VertexType>, events: Option<BTreeSet<Event>>, label: LabelPos) -> Vec<Item> {
+    if events.is_none() && label == LabelPos::Any && types.len() > 1 {
+        let (scattering, others): (Vec<VertexType>, Vec<VertexType>) =
+            types.into_iter().partition(|t| t.is_scattering());
+        let mut out: Vec<Item> = others.into_iter().map(Item::Type).collect();
+        match scattering[..] {
+            [] => {}
+            [t] => out.push(Item::Type(t)),
+            _ => out.push(Item::Any),
+        }
+        return out;
+    }
+    vec![single_item(types, events, label)]
+}
+
+/// One item for `types`, `events` and `label`.
+fn single_item(types: Vec<VertexType>, events: Option<BTreeSet<Event>>, label: LabelPos) -> Item {
     let scattering_pair = types == [VertexType::R, VertexType::T];
     let ty = if scattering_pair {
         TypePos::Any
