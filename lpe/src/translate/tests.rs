@@ -204,3 +204,14 @@ fn errors_say_what_went_wrong() {
          of one kind (S1-S7); user lobes have no OSL counterpart"
     );
 }
+
+#[test]
+fn osl_to_renderman_keeps_groups_and_merges_single_vertex_alternatives() {
+    let t = to_renderman(&osl_lpe("C(<RD><TS>)*L"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "C(<RD><TS8>)*L");
+    // Alternatives of single vertices, one of them already a class, are one class.
+    let t = to_renderman(&osl_lpe("C<RD>(<[LO].>|<R.>)"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "C<RD>[LOR]");
+}
