@@ -210,6 +210,17 @@ fn osl_to_renderman_keeps_groups_and_merges_single_vertex_alternatives() {
     let t = to_renderman(&osl_lpe("C(<RD><TS>)*L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "C(<RD><TS8>)*L");
+    // Letters where a letter says it: a label, an event, one named label in a triple.
+    for (osl_text, renderman_text) in [
+        ("C'a'L", "C'a'L"),
+        ("C.*<.D>.*[LO]", "C.*D.*[LO]"),
+        ("C<RD'a'>L", "C<RD'a'>L"),
+        ("C<R.['a''b']>L", "C<R.['a''b']>L"),
+    ] {
+        let t = to_renderman(&osl_lpe(osl_text), &corr()).unwrap();
+        assert!(t.exact, "{osl_text}");
+        assert_eq!(t.text.to_string(), renderman_text);
+    }
     // Alternatives of single vertices, one of them already a class, are one class.
     let t = to_renderman(&osl_lpe("C<RD>(<[LO].>|<R.>)"), &corr()).unwrap();
     assert!(t.exact);
