@@ -57,6 +57,12 @@ fn cross_witnesses_are_the_first_found_and_every_kind_is_searched_for() {
     );
     let c = cross::compare(&rm("C<RS8>+L"), &osl_lpe("C<R[GS]>+L"), &corr()).unwrap();
     assert_eq!(show(&c.osl_only).as_deref(), Some("C RS1 L / C,~ R,G L,~"));
+    // The first witness stays when a longer one ends in other states (the OSL side
+    // alive but not matching after `C RD1 L`).
+    let c = cross::compare(&rm("C.*L"), &osl_lpe("C<RD>LL"), &corr()).unwrap();
+    assert_eq!(show(&c.renderman_only).as_deref(), Some("C L / C,~ L,~"));
+    let c = cross::compare(&rm("C<RD>LL"), &osl_lpe("C.*L"), &corr()).unwrap();
+    assert_eq!(show(&c.osl_only).as_deref(), Some("C L / C,~ L,~"));
     // All three kinds at once: the search does not stop at the first.
     let c = cross::compare(&rm("C(U|S)L"), &osl_lpe("C<RD>L"), &corr()).unwrap();
     assert_eq!(
@@ -128,6 +134,10 @@ fn renderman_to_osl() {
         "<C.><[RT].>*<L.> - <C.><[RT]D[^'foo']><L.>"
     );
     assert_eq!(t.lower.to_string(), "<C.><[RT].>*<L.> - <C.><[RT]D><L.>");
+    // Alternatives keep their shape (`|` binds tighter than concatenation in both).
+    let t = to_osl(&rm("C(D|S)L"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "<C.><[RT]D>|<[RT][GS]><L.>");
     // OSL has no empty alternative and no `{0}` after the first item: `(D|.{0})` is
     // `D{0,1}`, and a group of empty repetitions is nothing.
     let t = to_osl(&rm("C(D|.{0})L"), &corr()).unwrap();
