@@ -231,6 +231,10 @@ fn osl_to_renderman_keeps_groups_and_merges_single_vertex_alternatives() {
         assert!(t.exact, "{osl_text}");
         assert_eq!(t.text.to_string(), renderman_text);
     }
+    // Where every type may stand, the camera and reflections are two letters, not `.`.
+    let t = to_renderman(&osl_lpe("<[CR].>*L"), &corr()).unwrap();
+    assert!(t.exact);
+    assert_eq!(t.text.to_string(), "[CR]*L");
     // Alternatives of single vertices, one of them already a class, are one class.
     let t = to_renderman(&osl_lpe("C<RD>(<[LO].>|<R.>)"), &corr()).unwrap();
     assert!(t.exact);

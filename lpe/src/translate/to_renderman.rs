@@ -285,7 +285,7 @@ fn label_pos(
 /// The items for `types` (sharing `events`, `None`: `.`) and `label`: letters where they
 /// say the same (`[LO]`, not `<[LO].>`), else one triple.
 fn item(types: Vec<VertexType>, events: Option<BTreeSet<Event>>, label: LabelPos) -> Vec<Item> {
-    if events.is_none() && label == LabelPos::Any && types.len() > 1 {
+    if events.is_none() && label == LabelPos::Any {
         let (scattering, others): (Vec<VertexType>, Vec<VertexType>) =
             types.into_iter().partition(|t| t.is_scattering());
         let mut out: Vec<Item> = others.into_iter().map(Item::Type).collect();
