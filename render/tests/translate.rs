@@ -7,7 +7,7 @@ mod common;
 use common::{parser, render, scene};
 use lpe::osl::Osl;
 use lpe::renderman::{RenderMan, VertexType};
-use lpe::translate::{to_osl, to_renderman, Correspondence};
+use lpe::translate::{translate, Correspondence};
 use lpe::DialectName;
 use lpe_render::aov::vertex::{SceneDialect, SceneVertex};
 use lpe_render::aov::AovList;
@@ -42,11 +42,7 @@ fn the_default_correspondence_is_the_renderers_osl_mapping() {
         }
         for v in &vertices {
             let rm = RenderMan::scene_vertex(v);
-            assert_eq!(
-                corr.osl_vertex(&rm),
-                Some(Osl::scene_vertex(v)),
-                "{name}: {v:?}"
-            );
+            assert_eq!(corr.view(&rm), Some(Osl::scene_vertex(v)), "{name}: {v:?}");
             checked += 1;
         }
     }
@@ -65,12 +61,13 @@ fn renders_the_same(from: DialectName, sources: &[(&str, &str)]) -> usize {
     for (name, src) in sources {
         let translated = match from {
             DialectName::RenderMan => {
-                let t = to_osl(&lpe::renderman::parse(src).unwrap(), &corr).unwrap();
+                let t =
+                    translate::<RenderMan>(&lpe::renderman::parse(src).unwrap(), &corr).unwrap();
                 t.exact.then(|| t.text.to_string())
             }
             DialectName::Osl => {
                 let f = lpe::osl::parse(src, &lpe::osl::Registered::none()).unwrap();
-                let t = to_renderman(&f, &corr).unwrap();
+                let t = translate::<Osl>(&f, &corr).unwrap();
                 t.exact.then(|| t.text.to_string())
             }
         };
@@ -125,7 +122,7 @@ fn renderman_aovs_translated_to_osl_render_the_same_layers() {
 }
 
 #[test]
-fn osl_aovs_translated_to_renderman_render_the_same_layers() {
+fn aovs_of_the_osl_dialect_translated_to_renderman_render_the_same_layers() {
     let mut sources: Vec<(&str, &str)> = lpe::osl::BASIC.to_vec();
     sources.push(("glossyAny", "C.*<.G>.*[LO]"));
     sources.push(("floor", "C<RD'floor'>.*[LO]"));

@@ -3,7 +3,7 @@
 //! The verdicts come from `lpe::translate`'s searches on lpe's automata; these tests judge
 //! them with the reference matchers (their own front ends, reading the printed texts) on
 //! paths drawn here, not from the searches' universe. What they share with the
-//! translation is the correspondence's vertex map (`Correspondence::osl_vertex`), which
+//! translation is the correspondence's vertex map (`Correspondence::view`), which
 //! `render/tests/translate.rs` checks against the renderer's own two views of its
 //! vertices.
 //!
@@ -16,10 +16,12 @@
 
 use std::collections::BTreeSet;
 
+use lpe::osl::Osl;
 use lpe::osl::{self, Registered};
+use lpe::renderman::RenderMan;
 use lpe::renderman::{self, Event, VertexType};
 use lpe::rng::SplitMix64;
-use lpe::translate::{to_osl, to_renderman, Correspondence, Reason};
+use lpe::translate::{translate, Correspondence, Reason};
 use lpe_reference::is_match;
 use lpe_testkit::grammar;
 use serde::Deserialize;
@@ -75,13 +77,13 @@ fn builtin_macros_and_the_osl_basic_set_translate_as_worked_by_hand() {
     let basic: Vec<&str> = osl::BASIC.iter().map(|(_, s)| *s).collect();
     assert_eq!(sources, basic);
     for c in &data.renderman {
-        let t = to_osl(&renderman::parse(&c.name).unwrap(), &corr).unwrap();
+        let t = translate::<RenderMan>(&renderman::parse(&c.name).unwrap(), &corr).unwrap();
         assert_eq!(verdict(&t), c.verdict, "{}", c.name);
         assert_eq!(t.text.to_string(), c.osl, "{}", c.name);
     }
     for c in &data.osl {
         let f = osl::parse(&c.source, &Registered::none()).unwrap();
-        let t = to_renderman(&f, &corr).unwrap();
+        let t = translate::<Osl>(&f, &corr).unwrap();
         assert_eq!(verdict(&t), c.verdict, "{}", c.source);
         assert_eq!(t.text.to_string(), c.renderman, "{}", c.source);
     }
@@ -127,7 +129,7 @@ fn has_user_lobe(p: &renderman::Path) -> bool {
         .any(|v| v.event().is_some_and(|e| !e.is_transport()))
 }
 
-fn osl_labels(f: &osl::Lpe) -> Vec<String> {
+fn labels_named_in(f: &osl::Lpe) -> Vec<String> {
     let mut out = Vec::new();
     for op in f.operands() {
         op.for_each_vertex(&mut |v| {
@@ -157,14 +159,14 @@ fn renderman_expressions_translate_to_osl_within_their_bounds_and_back() {
     for _ in 0..EXPRESSIONS {
         let text = grammar::renderman::source(&mut rng, &cfg, &mut cov);
         let e = renderman::Parser::default().parse(&text).unwrap();
-        let t = to_osl(&e, &corr).unwrap();
+        let t = translate::<RenderMan>(&e, &corr).unwrap();
         *verdicts.entry(verdict(&t)).or_insert(0) += 1;
         let labels = path_labels(e.operands().iter().flat_map(|op| op.labels()));
         let (e_ref, up_ref, low_ref) = (&e, &t.text, &t.lower);
         for _ in 0..PATHS {
             let p = draw_path(&mut rng, &labels);
             let m = is_match(e_ref, &p);
-            match corr.osl_path(&p) {
+            match corr.view_path(&p) {
                 Some(o) => {
                     let (up, low) = (is_match(up_ref, &o), is_match(low_ref, &o));
                     assert!(
@@ -205,17 +207,17 @@ fn renderman_expressions_translate_to_osl_within_their_bounds_and_back() {
                         is_match(&e, &c.matched) && !is_match(&e, &c.unmatched),
                         "{c:?}"
                     );
-                    assert_eq!(corr.osl_path(&c.matched), corr.osl_path(&c.unmatched));
+                    assert_eq!(corr.view_path(&c.matched), corr.view_path(&c.unmatched));
                 }
                 Reason::NoOslView(p) => {
-                    assert!(is_match(&e, p) && corr.osl_path(p).is_none(), "{p}")
+                    assert!(is_match(&e, p) && corr.view_path(p).is_none(), "{p}")
                 }
                 Reason::Unsayable => {}
             }
         }
         if t.exact {
             exact += 1;
-            let back = to_renderman(&t.text, &corr).unwrap();
+            let back = translate::<Osl>(&t.text, &corr).unwrap();
             if back.exact {
                 back_exact += 1;
                 let c = lpe::analysis::compare(&e, &back.text).unwrap();
@@ -237,7 +239,7 @@ fn renderman_expressions_translate_to_osl_within_their_bounds_and_back() {
 }
 
 #[test]
-fn osl_expressions_translate_to_renderman_within_their_bounds_and_back() {
+fn expressions_of_the_osl_dialect_translate_to_renderman_within_their_bounds_and_back() {
     let corr = Correspondence::default();
     let mut rng = SplitMix64::new(42);
     let cfg = grammar::Config::default();
@@ -248,18 +250,18 @@ fn osl_expressions_translate_to_renderman_within_their_bounds_and_back() {
     for _ in 0..EXPRESSIONS {
         let text = grammar::osl::source(&mut rng, &short, &cfg, &mut cov);
         let f = osl::parse(&text, &Registered::none()).unwrap();
-        let t = to_renderman(&f, &corr).unwrap();
+        let t = translate::<Osl>(&f, &corr).unwrap();
         *verdicts.entry(verdict(&t)).or_insert(0) += 1;
-        let labels = path_labels(osl_labels(&f));
+        let labels = path_labels(labels_named_in(&f));
         let back = if t.exact {
-            Some(to_osl(&t.text, &corr).unwrap())
+            Some(translate::<RenderMan>(&t.text, &corr).unwrap())
         } else {
             None
         };
         for _ in 0..PATHS {
             let p = draw_path(&mut rng, &labels);
             let (up, low) = (is_match(&t.text, &p), is_match(&t.lower, &p));
-            match corr.osl_path(&p) {
+            match corr.view_path(&p) {
                 Some(o) => {
                     let m = is_match(&f, &o);
                     assert!(

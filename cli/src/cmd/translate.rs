@@ -13,14 +13,18 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use lpe::osl;
+use lpe::osl::Osl;
 use lpe::renderman::macros::MacroTable;
+use lpe::renderman::RenderMan;
 use lpe::renderman::{self, Config};
-use lpe::translate::{self, Correspondence, Reason, Translation, Witness};
+use lpe::translate::{self, Correspondence, Reason, Translate, Translation, Witness};
+use lpe::Dialect;
 use lpe::DialectName;
 use lpe_lint::read::{self, Limits};
 
+use crate::dialect::CliDialect;
 use crate::input::bad_input;
-use crate::witness::{recheck, Disagreement, Expect, DISAGREE};
+use crate::witness::{recheck, Checked, Disagreement, Expect, DISAGREE};
 
 /// How the translated set is written.
 #[derive(clap::ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
@@ -101,8 +105,8 @@ pub fn run(args: Args) -> ExitCode {
     let mut bad = false;
     for s in &sources {
         let result = match args.from {
-            DialectName::RenderMan => from_renderman(s, &parser, &corr),
-            DialectName::Osl => from_osl(s, &corr),
+            DialectName::RenderMan => translate_source::<RenderMan>(s, &parser, &corr),
+            DialectName::Osl => translate_source::<Osl>(s, &osl::Registered::none(), &corr),
         };
         match result {
             Ok(Ok(t)) => out.push(t),
@@ -192,75 +196,66 @@ fn label(s: &Source) -> String {
 /// re-check.
 type Outcome = Result<Result<Translated, Disagreement>, String>;
 
-fn from_renderman(s: &Source, parser: &renderman::Parser, corr: &Correspondence) -> Outcome {
-    let e = parser
-        .parse(&s.text)
+/// One source read in dialect `D` (a leading `lpe:` as `D` reads it), translated, and its
+/// witnesses re-checked.
+fn translate_source<D>(s: &Source, registration: &D::Registration, corr: &Correspondence) -> Outcome
+where
+    D: CliDialect + Translate + Checked,
+    D::Target: Checked,
+{
+    let e = D::parse_arg(&s.text, registration)
         .map_err(|err| format!("{}error in `{}`: {err}", label(s), s.text))?;
-    let t = translate::to_osl(&e, corr).map_err(|err| format!("{}{err}", label(s)))?;
-    Ok(check_to_osl(&e, &t).map(|()| translated(s, &t)))
+    let t = translate::translate::<D>(&e, corr).map_err(|err| format!("{}{err}", label(s)))?;
+    Ok(recheck_witnesses::<D>(&e, &t).map(|()| translated(s, &t)))
 }
 
-fn from_osl(s: &Source, corr: &Correspondence) -> Outcome {
-    let f = osl::parse_source(&s.text, &osl::Registered::none())
-        .map_err(|err| format!("{}error in `{}`: {err}", label(s), s.text))?;
-    let t = translate::to_renderman(&f, corr).map_err(|err| format!("{}{err}", label(s)))?;
-    Ok(check_to_renderman(&f, &t).map(|()| translated(s, &t)))
-}
-
-fn expect_rm<'a>(
-    name: &'a str,
-    lpe: &'a renderman::Lpe,
-    matches: bool,
-) -> Expect<'a, renderman::Lpe> {
-    Expect { name, lpe, matches }
-}
-
-fn expect_osl<'a>(name: &'a str, lpe: &'a osl::Lpe, matches: bool) -> Expect<'a, osl::Lpe> {
-    Expect { name, lpe, matches }
-}
-
-/// Every witness of a translation to OSL, re-checked with the reference matchers.
-fn check_to_osl(e: &renderman::Lpe, t: &Translation<osl::Lpe>) -> Result<(), Disagreement> {
+/// Every witness of a translation, re-checked with the reference matchers of both
+/// dialects: the source on its side of each witness, the bounds on theirs.
+fn recheck_witnesses<D>(
+    e: &D::Lpe,
+    t: &Translation<<D::Target as Dialect>::Lpe>,
+) -> Result<(), Disagreement>
+where
+    D: Translate + Checked,
+    D::Target: Checked,
+{
     let (src, up, low) = (e.to_string(), t.text.to_string(), t.lower.to_string());
+    let source = |w: &Witness, matches: bool| match D::source_path(w) {
+        Some(p) => recheck(
+            p,
+            &[Expect {
+                name: &src,
+                lpe: e,
+                matches,
+            }],
+        ),
+        None => Ok(()),
+    };
+    let target = |w: &Witness, name: &str, lpe, matches: bool| match D::target_path(w) {
+        Some(p) => recheck(p, &[Expect { name, lpe, matches }]),
+        None => Ok(()),
+    };
     for r in &t.reasons {
+        let on = |renderman: &renderman::Path, osl: Option<&osl::Path>| Witness {
+            renderman: renderman.clone(),
+            osl: osl.cloned(),
+        };
         match r {
             Reason::Collision(c) => {
-                recheck(&c.matched, &[expect_rm(&src, e, true)])?;
-                recheck(&c.unmatched, &[expect_rm(&src, e, false)])?;
+                source(&on(&c.matched, Some(&c.osl)), true)?;
+                source(&on(&c.unmatched, Some(&c.osl)), false)?;
             }
-            Reason::NoOslView(p) => recheck(p, &[expect_rm(&src, e, true)])?,
+            Reason::NoOslView(p) => source(&on(p, None), true)?,
             Reason::Unsayable => {}
         }
     }
     if let Some(w) = &t.upper_witness {
-        recheck(&w.renderman, &[expect_rm(&src, e, false)])?;
-        if let Some(o) = &w.osl {
-            recheck(o, &[expect_osl(&up, &t.text, true)])?;
-        }
+        source(w, false)?;
+        target(w, &up, &t.text, true)?;
     }
     if let Some(w) = &t.lower_witness {
-        recheck(&w.renderman, &[expect_rm(&src, e, true)])?;
-        if let Some(o) = &w.osl {
-            recheck(o, &[expect_osl(&low, &t.lower, false)])?;
-        }
-    }
-    Ok(())
-}
-
-/// Every witness of a translation to RenderMan, re-checked with the reference matchers.
-fn check_to_renderman(f: &osl::Lpe, t: &Translation<renderman::Lpe>) -> Result<(), Disagreement> {
-    let (src, up, low) = (f.to_string(), t.text.to_string(), t.lower.to_string());
-    if let Some(w) = &t.upper_witness {
-        recheck(&w.renderman, &[expect_rm(&up, &t.text, true)])?;
-        if let Some(o) = &w.osl {
-            recheck(o, &[expect_osl(&src, f, false)])?;
-        }
-    }
-    if let Some(w) = &t.lower_witness {
-        recheck(&w.renderman, &[expect_rm(&low, &t.lower, false)])?;
-        if let Some(o) = &w.osl {
-            recheck(o, &[expect_osl(&src, f, true)])?;
-        }
+        source(w, true)?;
+        target(w, &low, &t.lower, false)?;
     }
     Ok(())
 }

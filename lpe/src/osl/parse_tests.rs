@@ -359,7 +359,7 @@ fn a_leading_parenthesis_parses_the_whole_text() {
 }
 
 #[test]
-fn osl_error_messages() {
+fn error_messages() {
     let cases: &[(&str, K, usize, &str)] = &[
         (
             "E",

@@ -219,7 +219,7 @@ impl Correspondence {
 
     /// The OSL vertex of a RenderMan vertex, or `None` when it has no counterpart (a user
     /// lobe, or a label that would be a built-in OSL label).
-    pub fn osl_vertex(&self, v: &renderman::Vertex) -> Option<osl::Vertex> {
+    pub fn view(&self, v: &renderman::Vertex) -> Option<osl::Vertex> {
         let (event, scattering) = match v.ty() {
             VertexType::C => ("C", None),
             VertexType::L => ("L", None),
@@ -244,10 +244,10 @@ impl Correspondence {
     }
 
     /// The OSL path of a RenderMan path, when every vertex has a counterpart.
-    pub fn osl_path(&self, p: &renderman::Path) -> Option<osl::Path> {
+    pub fn view_path(&self, p: &renderman::Path) -> Option<osl::Path> {
         p.vertices()
             .iter()
-            .map(|v| self.osl_vertex(v))
+            .map(|v| self.view(v))
             .collect::<Option<Vec<_>>>()
             .map(osl::Path::new)
     }
@@ -331,35 +331,38 @@ mod tests {
         p.vertices()[1].clone()
     }
 
-    fn osl_text(c: &Correspondence, text: &str) -> Option<String> {
-        c.osl_vertex(&v(text)).map(|w| w.to_string())
+    fn view_text(c: &Correspondence, text: &str) -> Option<String> {
+        c.view(&v(text)).map(|w| w.to_string())
     }
 
     #[test]
     fn the_default_follows_the_shipped_scenes() {
         let c = Correspondence::default();
-        assert_eq!(osl_text(&c, "RD2'floor'").as_deref(), Some("R,D,floor"));
-        assert_eq!(osl_text(&c, "TD3").as_deref(), Some("T,D"));
-        assert_eq!(osl_text(&c, "RS2").as_deref(), Some("R,G"));
-        assert_eq!(osl_text(&c, "RS7").as_deref(), Some("R,G"));
-        assert_eq!(osl_text(&c, "TS8").as_deref(), Some("T,S"));
-        assert_eq!(osl_text(&c, "RU2"), None);
-        assert_eq!(osl_text(&c, "RD1'G'"), None);
+        assert_eq!(view_text(&c, "RD2'floor'").as_deref(), Some("R,D,floor"));
+        assert_eq!(view_text(&c, "TD3").as_deref(), Some("T,D"));
+        assert_eq!(view_text(&c, "RS2").as_deref(), Some("R,G"));
+        assert_eq!(view_text(&c, "RS7").as_deref(), Some("R,G"));
+        assert_eq!(view_text(&c, "TS8").as_deref(), Some("T,S"));
+        assert_eq!(view_text(&c, "RU2"), None);
+        assert_eq!(view_text(&c, "RD1'G'"), None);
         let p: renderman::Path = "C RS8'glass' L'key'".parse().unwrap();
-        assert_eq!(c.osl_path(&p).unwrap().to_string(), "C,~ R,S,glass L,~,key");
+        assert_eq!(
+            c.view_path(&p).unwrap().to_string(),
+            "C,~ R,S,glass L,~,key"
+        );
         let p: renderman::Path = "C O'glow'".parse().unwrap();
-        assert_eq!(c.osl_path(&p).unwrap().to_string(), "C,~ O,~,glow");
+        assert_eq!(c.view_path(&p).unwrap().to_string(), "C,~ O,~,glow");
         assert_eq!(c.declaration(), "S1-S7=G S8=S");
     }
 
     #[test]
     fn declarations_change_lobes_and_labels() {
         let c = Correspondence::parse("S4=S, S5-S6=s 'key'='lg_key' D4=G").unwrap();
-        assert_eq!(osl_text(&c, "RS4").as_deref(), Some("R,S"));
-        assert_eq!(osl_text(&c, "RS5").as_deref(), Some("R,s"));
-        assert_eq!(osl_text(&c, "RS6").as_deref(), Some("R,s"));
-        assert_eq!(osl_text(&c, "RS7").as_deref(), Some("R,G"));
-        assert_eq!(osl_text(&c, "RD4'key'").as_deref(), Some("R,G,lg_key"));
+        assert_eq!(view_text(&c, "RS4").as_deref(), Some("R,S"));
+        assert_eq!(view_text(&c, "RS5").as_deref(), Some("R,s"));
+        assert_eq!(view_text(&c, "RS6").as_deref(), Some("R,s"));
+        assert_eq!(view_text(&c, "RS7").as_deref(), Some("R,G"));
+        assert_eq!(view_text(&c, "RD4'key'").as_deref(), Some("R,G,lg_key"));
         assert_eq!(
             c.declaration(),
             "D4=G S1-S3=G S4=S S5-S6=s S7=G S8=S 'key'='lg_key'"
@@ -412,7 +415,7 @@ mod tests {
         assert_eq!(fresh, "other_");
         assert!(u
             .iter()
-            .all(|v| v.event().is_some_and(|e| !e.is_transport()) || c.osl_vertex(v).is_some()));
+            .all(|v| v.event().is_some_and(|e| !e.is_transport()) || c.view(v).is_some()));
         // Mentioned on the OSL side only.
         let osl: BTreeSet<String> = ["other".to_string()].into();
         let (_, fresh) = Correspondence::default().universe(&BTreeSet::new(), &osl);

@@ -11,6 +11,7 @@ use std::collections::BTreeSet;
 use crate::analysis::{analysis_options, AnalysisError, MAX_SEARCH_STATES};
 use crate::aov::AovSet;
 use crate::automata::mask::{Class, State};
+use crate::dialect::Dialect;
 use crate::fxhash::{FxMap, FxSet};
 use crate::osl::{self, Osl};
 use crate::renderman::{self, RenderMan, VertexType};
@@ -69,20 +70,12 @@ fn next_shape(at: u8, ty: VertexType) -> Option<u8> {
     }
 }
 
-fn compile_renderman(e: &renderman::Lpe) -> Result<AovSet<RenderMan>, AnalysisError> {
+/// The one-AOV analysis set of `e` (nothing registered).
+fn compile<D: Dialect>(e: &D::Lpe) -> Result<AovSet<D>, AnalysisError> {
     let aovs = [("A".to_string(), e.clone())];
     Ok(AovSet::compile_under(
         &aovs,
-        &renderman::Parser::default(),
-        &analysis_options(),
-    )?)
-}
-
-fn compile_osl(e: &osl::Lpe) -> Result<AovSet<Osl>, AnalysisError> {
-    let aovs = [("B".to_string(), e.clone())];
-    Ok(AovSet::compile_under(
-        &aovs,
-        &osl::Registered::none(),
+        &D::Registration::default(),
         &analysis_options(),
     )?)
 }
@@ -168,7 +161,7 @@ pub fn compare(
     osl: &osl::Lpe,
     corr: &Correspondence,
 ) -> Result<CrossComparison, AnalysisError> {
-    let (a, b) = (compile_renderman(rm)?, compile_osl(osl)?);
+    let (a, b) = (compile::<RenderMan>(rm)?, compile::<Osl>(osl)?);
     let (universe, _) = corr.universe(&labels::renderman(rm), &labels::osl(osl));
     // Letters: one per distinct (type, RenderMan class, OSL class or none).
     let mut distinct: FxSet<(VertexType, Class, Option<Class>)> = FxSet::default();
@@ -177,7 +170,7 @@ pub fn compare(
     let mut vertices = Vec::new();
     for v in universe {
         let ca = a.classify(&v);
-        let cb = corr.osl_vertex(&v).map(|w| b.classify(&w));
+        let cb = corr.view(&v).map(|w| b.classify(&w));
         if distinct.insert((v.ty(), ca, cb)) {
             letters.push((v.ty(), letters.len()));
             steps.push((ca, cb));
@@ -193,7 +186,7 @@ pub fn compare(
     };
     let witness = |ls: Vec<usize>| {
         let p = path_of(ls.into_iter().map(|l| vertices[l].clone()).collect());
-        let osl = corr.osl_path(&p);
+        let osl = corr.view_path(&p);
         Witness { renderman: p, osl }
     };
     search(
@@ -236,13 +229,13 @@ pub fn collision(
     rm: &renderman::Lpe,
     corr: &Correspondence,
 ) -> Result<Option<Collision>, AnalysisError> {
-    let a = compile_renderman(rm)?;
+    let a = compile::<RenderMan>(rm)?;
     let (universe, _) = corr.universe(&labels::renderman(rm), &BTreeSet::new());
     // Group the universe by OSL view; a letter is a pair of vertices of one view.
     let mut by_view: FxMap<String, Vec<renderman::Vertex>> = FxMap::default();
     let mut views: Vec<String> = Vec::new();
     for v in universe {
-        if let Some(w) = corr.osl_vertex(&v) {
+        if let Some(w) = corr.view(&v) {
             let key = w.to_string();
             if !by_view.contains_key(&key) {
                 views.push(key.clone());
@@ -279,7 +272,7 @@ pub fn collision(
                 let ls = ls();
                 let matched = path_of(ls.iter().map(|&l| pairs[l].0.clone()).collect());
                 let unmatched = path_of(ls.iter().map(|&l| pairs[l].1.clone()).collect());
-                let osl = corr.osl_path(&matched).expect("pairs share one OSL view");
+                let osl = corr.view_path(&matched).expect("pairs share one OSL view");
                 found = Some(Collision {
                     matched,
                     unmatched,

@@ -21,8 +21,9 @@ mod to_renderman;
 use std::fmt;
 
 use crate::analysis::AnalysisError;
-use crate::osl;
-use crate::renderman;
+use crate::dialect::Dialect;
+use crate::osl::{self, Osl};
+use crate::renderman::{self, RenderMan};
 
 pub use bound::Bound;
 pub use correspondence::{Correspondence, DeclarationError, Scattering};
@@ -112,101 +113,142 @@ impl From<AnalysisError> for TranslateError {
     }
 }
 
-fn read_osl(e: &osl::Lpe) -> Result<osl::Lpe, TranslateError> {
+/// The printed `e` read back in its dialect (nothing registered): the translation judged
+/// is the text a user copies.
+fn read_back<D: Dialect>(e: &D::Lpe) -> Result<D::Lpe, TranslateError> {
     let text = e.to_string();
-    osl::parse(&text, &osl::Registered::none()).map_err(|err| TranslateError::Unreadable {
+    D::parse(&text, &D::Registration::default()).map_err(|err| TranslateError::Unreadable {
         text: text.clone(),
         message: err.to_string(),
     })
 }
 
-fn read_renderman(e: &renderman::Lpe) -> Result<renderman::Lpe, TranslateError> {
-    let text = e.to_string();
-    renderman::parse(&text).map_err(|err| TranslateError::Unreadable {
-        text: text.clone(),
-        message: err.to_string(),
-    })
+/// A dialect expressions translate from: into the other one, [`Translate::Target`].
+pub trait Translate: Dialect {
+    /// The dialect translations are written in.
+    type Target: Dialect;
+    /// The translation of `source` under `corr`, with its verdict.
+    fn translate(
+        source: &Self::Lpe,
+        corr: &Correspondence,
+    ) -> Result<Translation<<Self::Target as Dialect>::Lpe>, TranslateError>;
+    /// A witness's path in this dialect (the RenderMan path, or its OSL view).
+    fn source_path(w: &Witness) -> Option<&Self::Path>;
+    /// A witness's path in the target dialect.
+    fn target_path(w: &Witness) -> Option<&<Self::Target as Dialect>::Path>;
 }
 
-/// Translates a RenderMan expression to OSL under `corr`.
+/// Translates `source` into the other dialect under `corr`.
 ///
 /// ```
-/// use lpe::translate::{to_osl, Correspondence};
+/// use lpe::renderman::RenderMan;
+/// use lpe::translate::{translate, Correspondence};
 ///
 /// let corr = Correspondence::default();
-/// let t = to_osl(&lpe::renderman::parse("C<RD>.*L").unwrap(), &corr).unwrap();
+/// let t = translate::<RenderMan>(&lpe::renderman::parse("C<RD>.*L").unwrap(), &corr).unwrap();
 /// assert!(t.exact);
 /// assert_eq!(t.text.to_string(), "<C.><RD><[RT].>*<L.>");
 /// // Lobe numbers are not OSL's: `D2` and `D1` are both `R,D`.
-/// let t = to_osl(&lpe::renderman::parse("C<RD2>L").unwrap(), &corr).unwrap();
+/// let t = translate::<RenderMan>(&lpe::renderman::parse("C<RD2>L").unwrap(), &corr).unwrap();
 /// assert!(!t.exact);
 /// ```
-pub fn to_osl(
-    e: &renderman::Lpe,
+pub fn translate<D: Translate>(
+    source: &D::Lpe,
     corr: &Correspondence,
-) -> Result<Translation<osl::Lpe>, TranslateError> {
-    let upper = read_osl(&to_osl::translate(e, corr, Bound::Upper))?;
-    let lower = read_osl(&to_osl::translate(e, corr, Bound::Lower))?;
-    let cu = cross::compare(e, &upper, corr)?;
-    let mut notes = Vec::new();
-    if e.prefixes != renderman::Prefixes::NONE {
-        let mut bare = e.clone();
-        bare.prefixes = renderman::Prefixes::NONE;
-        notes.push(format!(
-            "the prefixes of `{e}` are not carried: OSL has none (the OSL AOV accumulates \
-             as `{bare}` does)"
-        ));
-    }
-    if cu.equivalent() {
-        return Ok(Translation::exact(upper, lower, notes));
-    }
-    let mut reasons = Vec::new();
-    if let Some(c) = cross::collision(e, corr)? {
-        reasons.push(Reason::Collision(c));
-    }
-    if let Some(p) = cu.outside.clone() {
-        reasons.push(Reason::NoOslView(p));
-    }
-    if reasons.is_empty() {
-        reasons.push(Reason::Unsayable);
-    }
-    let cl = cross::compare(e, &lower, corr)?;
-    Ok(Translation {
-        text: upper,
-        exact: false,
-        reasons,
-        upper_witness: cu.osl_only,
-        lower,
-        lower_witness: cl.renderman_only,
-        notes,
-    })
+) -> Result<Translation<<D::Target as Dialect>::Lpe>, TranslateError> {
+    D::translate(source, corr)
 }
 
-/// Translates an OSL expression to RenderMan under `corr`: the RenderMan expression that
-/// matches a path exactly when the OSL one matches its OSL view.
-pub fn to_renderman(
-    f: &osl::Lpe,
-    corr: &Correspondence,
-) -> Result<Translation<renderman::Lpe>, TranslateError> {
-    let upper = read_renderman(&to_renderman::translate(f, corr, Bound::Upper))?;
-    let lower = read_renderman(&to_renderman::translate(f, corr, Bound::Lower))?;
-    let cu = cross::compare(&upper, f, corr)?;
-    if cu.equivalent() {
-        return Ok(Translation::exact(upper, lower, Vec::new()));
+impl Translate for RenderMan {
+    type Target = Osl;
+
+    fn source_path(w: &Witness) -> Option<&renderman::Path> {
+        Some(&w.renderman)
     }
-    let cl = cross::compare(&lower, f, corr)?;
-    Ok(Translation {
-        text: upper,
-        exact: false,
-        reasons: vec![Reason::Unsayable],
-        upper_witness: cu.renderman_only.or(cu.outside.map(|renderman| Witness {
-            renderman,
-            osl: None,
-        })),
-        lower,
-        lower_witness: cl.osl_only,
-        notes: Vec::new(),
-    })
+
+    fn target_path(w: &Witness) -> Option<&osl::Path> {
+        w.osl.as_ref()
+    }
+
+    fn translate(
+        e: &renderman::Lpe,
+        corr: &Correspondence,
+    ) -> Result<Translation<osl::Lpe>, TranslateError> {
+        let upper = read_back::<Osl>(&to_osl::translate(e, corr, Bound::Upper))?;
+        let lower = read_back::<Osl>(&to_osl::translate(e, corr, Bound::Lower))?;
+        let cu = cross::compare(e, &upper, corr)?;
+        let mut notes = Vec::new();
+        if e.prefixes != renderman::Prefixes::NONE {
+            let mut bare = e.clone();
+            bare.prefixes = renderman::Prefixes::NONE;
+            notes.push(format!(
+                "the prefixes of `{e}` are not carried: OSL has none (the OSL AOV accumulates \
+             as `{bare}` does)"
+            ));
+        }
+        if cu.equivalent() {
+            return Ok(Translation::exact(upper, lower, notes));
+        }
+        let mut reasons = Vec::new();
+        if let Some(c) = cross::collision(e, corr)? {
+            reasons.push(Reason::Collision(c));
+        }
+        if let Some(p) = cu.outside.clone() {
+            reasons.push(Reason::NoOslView(p));
+        }
+        if reasons.is_empty() {
+            reasons.push(Reason::Unsayable);
+        }
+        let cl = cross::compare(e, &lower, corr)?;
+        Ok(Translation {
+            text: upper,
+            exact: false,
+            reasons,
+            upper_witness: cu.osl_only,
+            lower,
+            lower_witness: cl.renderman_only,
+            notes,
+        })
+    }
+}
+
+/// OSL to RenderMan: the RenderMan expression that matches a path exactly when the OSL one
+/// matches its OSL view.
+impl Translate for Osl {
+    type Target = RenderMan;
+
+    fn source_path(w: &Witness) -> Option<&osl::Path> {
+        w.osl.as_ref()
+    }
+
+    fn target_path(w: &Witness) -> Option<&renderman::Path> {
+        Some(&w.renderman)
+    }
+
+    fn translate(
+        f: &osl::Lpe,
+        corr: &Correspondence,
+    ) -> Result<Translation<renderman::Lpe>, TranslateError> {
+        let upper = read_back::<RenderMan>(&to_renderman::translate(f, corr, Bound::Upper))?;
+        let lower = read_back::<RenderMan>(&to_renderman::translate(f, corr, Bound::Lower))?;
+        let cu = cross::compare(&upper, f, corr)?;
+        if cu.equivalent() {
+            return Ok(Translation::exact(upper, lower, Vec::new()));
+        }
+        let cl = cross::compare(&lower, f, corr)?;
+        Ok(Translation {
+            text: upper,
+            exact: false,
+            reasons: vec![Reason::Unsayable],
+            upper_witness: cu.renderman_only.or(cu.outside.map(|renderman| Witness {
+                renderman,
+                osl: None,
+            })),
+            lower,
+            lower_witness: cl.osl_only,
+            notes: Vec::new(),
+        })
+    }
 }
 
 #[cfg(test)]

@@ -7,8 +7,8 @@ fn rm(s: &str) -> renderman::Lpe {
     renderman::parse(s).unwrap()
 }
 
-fn osl_lpe(s: &str) -> osl::Lpe {
-    osl::parse(s, &osl::Registered::none()).unwrap()
+fn parse<D: Dialect>(s: &str) -> D::Lpe {
+    D::parse(s, &D::Registration::default()).unwrap()
 }
 
 fn corr() -> Correspondence {
@@ -24,7 +24,7 @@ fn show(w: &Option<Witness>) -> Option<String> {
 
 #[test]
 fn cross_comparisons_find_shortest_witnesses_on_each_side() {
-    let c = cross::compare(&rm("C<RS>L"), &osl_lpe("C<RS>L"), &corr()).unwrap();
+    let c = cross::compare(&rm("C<RS>L"), &parse::<Osl>("C<RS>L"), &corr()).unwrap();
     // RenderMan's S is every specular lobe; OSL's S only the singular one (S8).
     assert_eq!(
         show(&c.renderman_only).as_deref(),
@@ -32,16 +32,16 @@ fn cross_comparisons_find_shortest_witnesses_on_each_side() {
     );
     assert_eq!(c.osl_only, None);
     assert_eq!(c.outside, None);
-    let c = cross::compare(&rm("C.*L"), &osl_lpe("C<RD>L"), &corr()).unwrap();
+    let c = cross::compare(&rm("C.*L"), &parse::<Osl>("C<RD>L"), &corr()).unwrap();
     assert_eq!(show(&c.renderman_only).as_deref(), Some("C L / C,~ L,~"));
-    let c = cross::compare(&rm("C<RD>L"), &osl_lpe("C.*L"), &corr()).unwrap();
+    let c = cross::compare(&rm("C<RD>L"), &parse::<Osl>("C.*L"), &corr()).unwrap();
     assert_eq!(show(&c.osl_only).as_deref(), Some("C L / C,~ L,~"));
     // A user lobe has no OSL view.
-    let c = cross::compare(&rm("C(.|U)L"), &osl_lpe("C.L"), &corr()).unwrap();
+    let c = cross::compare(&rm("C(.|U)L"), &parse::<Osl>("C.L"), &corr()).unwrap();
     assert_eq!(c.outside.map(|p| p.to_string()).as_deref(), Some("C RU1 L"));
     assert!(c.renderman_only.is_none() && c.osl_only.is_none());
     assert!(
-        cross::compare(&rm("C<RS8>.*L"), &osl_lpe("C<RS>.*L"), &corr())
+        cross::compare(&rm("C<RS8>.*L"), &parse::<Osl>("C<RS>.*L"), &corr())
             .unwrap()
             .equivalent()
     );
@@ -50,21 +50,21 @@ fn cross_comparisons_find_shortest_witnesses_on_each_side() {
 #[test]
 fn cross_witnesses_are_the_first_found_and_every_kind_is_searched_for() {
     // Many paths differ each way; the witnesses are the shortest, not the last visited.
-    let c = cross::compare(&rm("C<RS>+L"), &osl_lpe("C<RS>+L"), &corr()).unwrap();
+    let c = cross::compare(&rm("C<RS>+L"), &parse::<Osl>("C<RS>+L"), &corr()).unwrap();
     assert_eq!(
         show(&c.renderman_only).as_deref(),
         Some("C RS1 L / C,~ R,G L,~")
     );
-    let c = cross::compare(&rm("C<RS8>+L"), &osl_lpe("C<R[GS]>+L"), &corr()).unwrap();
+    let c = cross::compare(&rm("C<RS8>+L"), &parse::<Osl>("C<R[GS]>+L"), &corr()).unwrap();
     assert_eq!(show(&c.osl_only).as_deref(), Some("C RS1 L / C,~ R,G L,~"));
     // The first witness stays when a longer one ends in other states (the OSL side
     // alive but not matching after `C RD1 L`).
-    let c = cross::compare(&rm("C.*L"), &osl_lpe("C<RD>LL"), &corr()).unwrap();
+    let c = cross::compare(&rm("C.*L"), &parse::<Osl>("C<RD>LL"), &corr()).unwrap();
     assert_eq!(show(&c.renderman_only).as_deref(), Some("C L / C,~ L,~"));
-    let c = cross::compare(&rm("C<RD>LL"), &osl_lpe("C.*L"), &corr()).unwrap();
+    let c = cross::compare(&rm("C<RD>LL"), &parse::<Osl>("C.*L"), &corr()).unwrap();
     assert_eq!(show(&c.osl_only).as_deref(), Some("C L / C,~ L,~"));
     // All three kinds at once: the search does not stop at the first.
-    let c = cross::compare(&rm("C(U|S)L"), &osl_lpe("C<RD>L"), &corr()).unwrap();
+    let c = cross::compare(&rm("C(U|S)L"), &parse::<Osl>("C<RD>L"), &corr()).unwrap();
     assert_eq!(
         show(&c.renderman_only).as_deref(),
         Some("C RS1 L / C,~ R,G L,~")
@@ -73,7 +73,7 @@ fn cross_witnesses_are_the_first_found_and_every_kind_is_searched_for() {
     assert_eq!(c.outside.map(|p| p.to_string()).as_deref(), Some("C RU1 L"));
     // A path with no OSL view counts only when the RenderMan side matches it: `CULDL` is
     // alive after `C RU1 L` (its automaton knows no path shape) but matches nothing.
-    let c = cross::compare(&rm("CULDL"), &osl_lpe("C[]L"), &corr()).unwrap();
+    let c = cross::compare(&rm("CULDL"), &parse::<Osl>("C[]L"), &corr()).unwrap();
     assert!(c.equivalent(), "{c:?}");
 }
 
@@ -92,11 +92,11 @@ fn collisions_are_two_paths_with_one_view() {
 }
 
 #[test]
-fn renderman_to_osl() {
-    let t = to_osl(&rm("C<RD>.*L"), &corr()).unwrap();
+fn translations_from_renderman() {
+    let t = translate::<RenderMan>(&rm("C<RD>.*L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "<C.><RD><[RT].>*<L.>");
-    let t = to_osl(&rm("C<RS2>L"), &corr()).unwrap();
+    let t = translate::<RenderMan>(&rm("C<RS2>L"), &corr()).unwrap();
     assert!(!t.exact);
     assert!(matches!(t.reasons[..], [Reason::Collision(_)]));
     assert_eq!(t.text.to_string(), "<C.><RG><L.>");
@@ -110,7 +110,7 @@ fn renderman_to_osl() {
         Some("C RS2 L / C,~ R,G L,~")
     );
     // "Any label but foo, or none" has no OSL spelling: a custom slot needs a label.
-    let t = to_osl(&rm("C<.D[^'foo']>L"), &corr()).unwrap();
+    let t = translate::<RenderMan>(&rm("C<.D[^'foo']>L"), &corr()).unwrap();
     assert_eq!(t.reasons, vec![Reason::Unsayable]);
     assert_eq!(t.text.to_string(), "<C.><[RT]D><L.>");
     assert_eq!(t.lower.to_string(), "<C.><[RT]D[^'foo']><L.>");
@@ -122,47 +122,47 @@ fn renderman_to_osl() {
         show(&t.lower_witness).as_deref(),
         Some("C RD1 L / C,~ R,D L,~")
     );
-    let t = to_osl(&rm("CU2L"), &corr()).unwrap();
+    let t = translate::<RenderMan>(&rm("CU2L"), &corr()).unwrap();
     assert!(matches!(&t.reasons[..], [Reason::NoOslView(p)] if p.to_string() == "C RU2 L"));
-    let t = to_osl(&rm("shadows;C<RD>L"), &corr()).unwrap();
+    let t = translate::<RenderMan>(&rm("shadows;C<RD>L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.notes.len(), 1);
     // Set algebra: the right side of `-` rounds the other way.
-    let t = to_osl(&rm("C.*L - C<.D[^'foo']>L"), &corr()).unwrap();
+    let t = translate::<RenderMan>(&rm("C.*L - C<.D[^'foo']>L"), &corr()).unwrap();
     assert_eq!(
         t.text.to_string(),
         "<C.><[RT].>*<L.> - <C.><[RT]D[^'foo']><L.>"
     );
     assert_eq!(t.lower.to_string(), "<C.><[RT].>*<L.> - <C.><[RT]D><L.>");
     // Alternatives keep their shape (`|` binds tighter than concatenation in both).
-    let t = to_osl(&rm("C(D|S)L"), &corr()).unwrap();
+    let t = translate::<RenderMan>(&rm("C(D|S)L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "<C.><[RT]D>|<[RT][GS]><L.>");
     // OSL has no empty alternative and no `{0}` after the first item: `(D|.{0})` is
     // `D{0,1}`, and a group of empty repetitions is nothing.
-    let t = to_osl(&rm("C(D|.{0})L"), &corr()).unwrap();
+    let t = translate::<RenderMan>(&rm("C(D|.{0})L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "<C.><[RT]D>{0,1}<L.>");
-    let t = to_osl(&rm("C(.{0}.{0,0})L"), &corr()).unwrap();
+    let t = translate::<RenderMan>(&rm("C(.{0}.{0,0})L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "<C.><L.>");
     // A declared singular lobe.
     let c = Correspondence::parse("S4=S").unwrap();
-    let t = to_osl(&rm("C<R[S4 S8]>L"), &c).unwrap();
+    let t = translate::<RenderMan>(&rm("C<R[S4 S8]>L"), &c).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "<C.><RS><L.>");
 }
 
 #[test]
-fn osl_to_renderman() {
-    let t = to_renderman(&osl_lpe("C<RD>.+[LO]"), &corr()).unwrap();
+fn translations_from_the_osl_dialect() {
+    let t = translate::<Osl>(&parse::<Osl>("C<RD>.+[LO]"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "C<RD>.+[LO]");
-    let t = to_renderman(&osl_lpe("C<RG>L"), &corr()).unwrap();
+    let t = translate::<Osl>(&parse::<Osl>("C<RG>L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "C<R[S1S2S3S4S5S6S7]>L");
     // A quoted negation needs a label; RenderMan's `[^'a']` takes unlabelled vertices.
-    let t = to_renderman(&osl_lpe("C<RD[^'a']>L"), &corr()).unwrap();
+    let t = translate::<Osl>(&parse::<Osl>("C<RD[^'a']>L"), &corr()).unwrap();
     assert_eq!(t.reasons, vec![Reason::Unsayable]);
     assert_eq!(t.text.to_string(), "C<RD[^'a']>L");
     assert_eq!(t.lower.to_string(), "C[^.]L");
@@ -176,18 +176,18 @@ fn osl_to_renderman() {
     );
     // Between a first and a last item that each take a vertex, OSL's `.` can only meet a
     // scattering vertex; as the first item only the camera, as the last only an emitter.
-    let t = to_renderman(&osl_lpe("..*."), &corr()).unwrap();
+    let t = translate::<Osl>(&parse::<Osl>("..*."), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "C.*[LO]");
     // Not when an end can be empty (`.` may be the camera), nor for a first item that is
     // no single vertex pattern.
-    let t = to_renderman(&osl_lpe("C{0,1}.L"), &corr()).unwrap();
+    let t = translate::<Osl>(&parse::<Osl>("C{0,1}.L"), &corr()).unwrap();
     assert!(t.exact, "{}", t.text);
-    let t = to_renderman(&osl_lpe("[CL].*L"), &corr()).unwrap();
+    let t = translate::<Osl>(&parse::<Osl>("[CL].*L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "[CL].*L");
     // Events the correspondence never produces match nothing.
-    let t = to_renderman(&osl_lpe("CBL"), &corr()).unwrap();
+    let t = translate::<Osl>(&parse::<Osl>("CBL"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "C[^.]L");
 }
@@ -216,8 +216,8 @@ fn errors_say_what_went_wrong() {
 }
 
 #[test]
-fn osl_to_renderman_keeps_groups_and_merges_single_vertex_alternatives() {
-    let t = to_renderman(&osl_lpe("C(<RD><TS>)*L"), &corr()).unwrap();
+fn translations_from_the_osl_dialect_keep_groups_and_merge_single_vertex_alternatives() {
+    let t = translate::<Osl>(&parse::<Osl>("C(<RD><TS>)*L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "C(<RD><TS8>)*L");
     // Letters where a letter says it: a label, an event, one named label in a triple.
@@ -227,16 +227,16 @@ fn osl_to_renderman_keeps_groups_and_merges_single_vertex_alternatives() {
         ("C<RD'a'>L", "C<RD'a'>L"),
         ("C<R.['a''b']>L", "C<R.['a''b']>L"),
     ] {
-        let t = to_renderman(&osl_lpe(osl_text), &corr()).unwrap();
+        let t = translate::<Osl>(&parse::<Osl>(osl_text), &corr()).unwrap();
         assert!(t.exact, "{osl_text}");
         assert_eq!(t.text.to_string(), renderman_text);
     }
     // Where every type may stand, the camera and reflections are two letters, not `.`.
-    let t = to_renderman(&osl_lpe("<[CR].>*L"), &corr()).unwrap();
+    let t = translate::<Osl>(&parse::<Osl>("<[CR].>*L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "[CR]*L");
     // Alternatives of single vertices, one of them already a class, are one class.
-    let t = to_renderman(&osl_lpe("C<RD>(<[LO].>|<R.>)"), &corr()).unwrap();
+    let t = translate::<Osl>(&parse::<Osl>("C<RD>(<[LO].>|<R.>)"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "C<RD>[LOR]");
 }

@@ -74,7 +74,7 @@ pub fn translate(e: &renderman::Lpe, corr: &Correspondence, bound: Bound) -> osl
 
 /// The OSL view of a universe vertex, `None` outside the correspondence.
 fn view(corr: &Correspondence, v: &renderman::Vertex, fresh: &str) -> Option<View> {
-    let w = corr.osl_vertex(v)?;
+    let w = corr.view(v)?;
     let event = match v.ty() {
         VertexType::C => "C",
         VertexType::R => "R",

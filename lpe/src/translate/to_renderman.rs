@@ -32,7 +32,7 @@ pub fn translate(e: &osl::Lpe, corr: &Correspondence, bound: Bound) -> renderman
     let vertices: Vec<(renderman::Vertex, Option<osl::Vertex>)> = universe
         .into_iter()
         .map(|v| {
-            let w = corr.osl_vertex(&v);
+            let w = corr.view(&v);
             (v, w)
         })
         .collect();
