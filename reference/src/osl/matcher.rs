@@ -174,26 +174,22 @@ impl<'a> Matcher<'a> {
     /// `body{min,max}` from `i`: the positions after exactly `k` iterations, united over
     /// `min <= k <= max`.
     fn repeat(&mut self, body: usize, r: Count, i: usize) -> BTreeSet<usize> {
-        // After exactly `min` iterations. The sequence of position sets is determined by
-        // its last element, so once a set repeats it cycles: jump ahead instead of
-        // iterating a large `min` one by one.
-        let mut seen: HashMap<BTreeSet<usize>, u32> = HashMap::new();
-        let mut history = vec![BTreeSet::from([i])];
+        // After exactly `min` iterations. The sequence of position sets S(k+1) =
+        // step(S(k)) reaches a fixpoint within (stream length + 1) steps, so a large `min`
+        // stops there: a body that can match nothing ends where it starts, so every set
+        // holds the one before it and the sets only grow; a body that cannot ends past
+        // its start, so the smallest position rises until the set is empty, which steps
+        // to itself.
+        let mut at_min = BTreeSet::from([i]);
         let mut k = 0u32;
-        let at_min = loop {
-            let cur = &history[k as usize];
-            if k == r.min {
-                break cur.clone();
+        while k < r.min {
+            let next = self.step(body, &at_min);
+            if next == at_min {
+                break;
             }
-            if let Some(&j) = seen.get(cur) {
-                let period = k - j;
-                break history[(j + (r.min - j) % period) as usize].clone();
-            }
-            seen.insert(cur.clone(), k);
-            let next = self.step(body, &cur.clone());
-            history.push(next);
+            at_min = next;
             k += 1;
-        };
+        }
         // Then the union over the optional iterations: U' = at_min ∪ step(U) only grows,
         // so it reaches its fixpoint within (stream length + 1) rounds.
         let mut union = at_min.clone();

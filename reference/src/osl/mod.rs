@@ -145,6 +145,92 @@ mod tests {
     }
 
     #[test]
+    fn zero_items_stray_parentheses_and_reversed_ranges() {
+        let zero = "A {0} item matches nothing here: only leading items of a sequence may be {0}";
+        // Every item dropped: the error sits where the sequence starts.
+        assert_eq!(error("C{0}"), format!("{zero} at 0"));
+        assert_eq!(error("C(D{0})L"), format!("{zero} at 2"));
+        assert_eq!(error("()"), "Empty group () not allowed at 0");
+        // A `)` with no group open is an item, and not a label.
+        assert_eq!(error("C)L"), "Unrecognized basic label: ) at 1");
+        assert_eq!(error("C)"), "Unrecognized basic label: ) at 1");
+        // `{m,n}` with m > n is `{m}`; equal bounds are that count.
+        assert!(m("C.{3,1}L", "C,_ R,D R,D R,D L,_"));
+        assert!(!m("C.{3,1}L", "C,_ R,D L,_"));
+        assert!(!m("C.{3,1}L", "C,_ R,D R,D R,D R,D L,_"));
+        assert!(m("C.{2,2}L", "C,_ R,D R,D L,_"));
+        assert!(!m("C.{2,2}L", "C,_ R,D R,D R,D L,_"));
+    }
+
+    #[test]
+    fn the_position_limit_counts_slot_alternatives_multiplied_out() {
+        let limited = |max_positions: u64| Registration {
+            limits: crate::error::Limits {
+                max_positions,
+                ..Default::default()
+            },
+            ..Registration::default()
+        };
+        // C is 1; `<(R|T)(D|G|S)>` stands for 2 x 3 patterns; `<(RD|T)x>` for 2, taken
+        // three times: 1 + 6 + 6 = 13.
+        let src = "C<(R|T)(D|G|S)>(<(RD|T)x>){3}";
+        assert!(parse(src, &limited(13)).is_ok());
+        let e = parse(src, &limited(12)).unwrap_err();
+        assert_eq!(
+            (e.kind, e.pos, e.message.as_str()),
+            (
+                crate::error::ErrorKind::Limit,
+                0,
+                "13 vertex positions after unrolling, more than 12"
+            )
+        );
+        // Alternation adds, and an `&` adds its operands.
+        assert!(parse("C|R|T & L", &limited(4)).is_ok());
+        assert!(parse("C|R|T & L", &limited(3)).is_err());
+    }
+
+    #[test]
+    fn unclosed_lists_and_labels_a_negation_never_takes() {
+        assert_eq!(
+            error("C[R"),
+            "Reached end of line looking for ] to end an or list at 3"
+        );
+        // `x` and `.` are errors in `[^…]` even where a renderer registered them.
+        let odd = reg(&["x"], &["."]);
+        for src in ["C[^x]L", "C[^.]L"] {
+            let e = parse(src, &odd).unwrap_err();
+            assert_eq!((e.message.as_str(), e.pos), ("Unrecognized basic label", 3));
+        }
+    }
+
+    #[test]
+    fn one_vertex_pattern_stands_for_at_most_256_patterns() {
+        let two = "(a|b)";
+        assert!(parse(
+            &format!("C<RD{}>L", two.repeat(8)),
+            &Registration::default()
+        )
+        .is_ok());
+        let over = format!("C<RD{}>L", two.repeat(9));
+        let e = parse(&over, &Registration::default()).unwrap_err();
+        assert_eq!(
+            (e.kind, e.message.as_str()),
+            (
+                crate::error::ErrorKind::Limit,
+                "one `<…>` stands for 512 vertex patterns, more than 256"
+            )
+        );
+        assert_eq!(e.pos, over.len() - 1);
+    }
+
+    #[test]
+    fn the_printer_quotes_only_what_is_not_one_plain_character() {
+        let printed = |src: &str| parse(src, &Registration::default()).unwrap().to_string();
+        assert_eq!(printed("C<RDa>L"), "<C.><RDa><L.>");
+        assert_eq!(printed("C<R'ab'>'x'"), "<C.><R'ab'><..'x'>");
+    }
+
+    #[test]
     fn nesting_is_bounded_without_overflowing_the_stack() {
         let deep = format!("{}C{}", "(".repeat(100_000), ")".repeat(100_000));
         let e = parse(&deep, &Registration::default()).unwrap_err();

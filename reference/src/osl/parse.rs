@@ -37,11 +37,9 @@ pub fn parse(src: &str, registration: &Registration) -> Result<Lpe, FrontError> 
                 reg: registration,
                 basic: &basic,
             };
-            let e = p.sequence(0, false)?;
-            if p.pos < p.end {
-                return Err(p.error("Unrecognized basic label: )"));
-            }
-            Ok(Algebra::Operand(e))
+            // Outside a group the sequence reads to the operand's end: a stray `)` is an
+            // item, and the item's error.
+            Ok(Algebra::Operand(p.sequence(0, false)?))
         },
     )
     .map_err(|mut e| {
@@ -161,15 +159,12 @@ impl Parser<'_> {
         }
         match parts.len() {
             0 if dropped => Err(self.zero_here(start)),
-            0 if group => Err(FrontError::new(
+            // Only a group can hold no item: `parse` and the set-algebra split reject a
+            // blank operand before its sequence is read.
+            0 => Err(FrontError::new(
                 ErrorKind::Syntax,
                 start.saturating_sub(1),
                 "Empty group () not allowed",
-            )),
-            0 => Err(FrontError::new(
-                ErrorKind::Syntax,
-                start,
-                "Empty expression",
             )),
             1 => Ok(parts.pop().unwrap_or(Expr::Nothing)),
             _ => Ok(Expr::Seq(parts)),
@@ -251,12 +246,9 @@ impl Parser<'_> {
                 if self.bump() != Some('}') {
                     return Err(bad(self));
                 }
-                Ok(match max {
-                    Some(m) if m < min => Count {
-                        min,
-                        max: Some(min),
-                    },
-                    m => Count { min, max: m },
+                Ok(Count {
+                    min,
+                    max: max.map(|m| m.max(min)),
                 })
             }
             _ => Err(bad(self)),
