@@ -109,6 +109,30 @@ fn the_nfa_budget_holds_the_follow_rows_to_the_byte() {
     );
 }
 
+/// The same budget counts OSL positions after unrolling: `C<RD>{3}L` is 1 + 3 + 1
+/// vertex positions and the start, 6 one-word rows: 48 bytes.
+#[test]
+fn the_nfa_budget_counts_unrolled_positions_in_the_osl_dialect() {
+    let reg = lpe::osl::Registered::none();
+    let aovs = vec![("a".to_string(), lpe::osl::parse("C<RD>{3}L", &reg).unwrap())];
+    let budget = |nfa_budget| Options {
+        nfa_budget,
+        ..Options::default()
+    };
+    let set = AovSet::compile_under(&aovs, &reg, &budget(48)).unwrap();
+    assert!(set
+        .match_path(&"C,_ R,D R,D R,D L,_".parse().unwrap())
+        .contains(0));
+    assert_eq!(
+        AovSet::compile_under(&aovs, &reg, &budget(47)).unwrap_err(),
+        CompileError::NfaOverBudget {
+            positions: 6,
+            bytes: Some(48),
+            budget: 47
+        }
+    );
+}
+
 /// A set of 1 437 NFA positions (a fuzzer's find: too wide for an `NfaState`, with a DFA
 /// far over the budget) compiles in the fast engine with default options and steps its
 /// lazy DFA. Its camera carries a label, which no path's does, so it matches nothing

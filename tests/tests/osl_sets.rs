@@ -91,6 +91,32 @@ fn emptiness_warnings_name_the_dead_vertex() {
 /// not compile (the `compile_fail` example on `lpe::AovSet`), where it used to give a
 /// class past the set's last, which stepped to the dead state. What is left to check at
 /// run time: the set's dialect has its name, and the set keeps its own expressions.
+/// An OSL set attempts the eager DFA within its dialect's own budget (2^20), however
+/// large the caller's: `C.*<RD>.{12}L` has a DFA of 12 290 states that the default
+/// 16 MiB would hold, and stays lazy; `.{10}` (3 074 states) gets its DFA. RenderMan sets
+/// attempt within the caller's budget.
+#[test]
+fn the_dfa_attempt_has_its_own_budget_in_the_osl_dialect() {
+    let reg = Registered::none();
+    let ten = set(&["C.*<RD>.{10}L"], &reg, &Options::default());
+    assert_eq!(ten.dfa_states(), Some(3074));
+    let twelve = set(&["C.*<RD>.{12}L"], &reg, &Options::default());
+    assert!(!twelve.uses_dfa());
+    let p = format!("C,_ R,D {}L,_", "T,S ".repeat(12));
+    assert!(twelve.match_path(&p.parse().unwrap()).contains(0));
+    let rm = lpe::renderman::parse("C.*<RD>.{12}L").unwrap();
+    assert!(AovSet::compile(&[("a".into(), rm)]).unwrap().uses_dfa());
+}
+
+/// A set keeps the registration it was compiled under.
+#[test]
+fn sets_keep_their_registration_in_the_osl_dialect() {
+    let reg: Registered = "events=U;scatters=Y".parse().unwrap();
+    let s = set(&["C<UY>L"], &reg, &Options::default());
+    assert_eq!(s.registration(), &reg);
+    assert!(s.match_path(&"C,_ U,Y L,_".parse().unwrap()).contains(0));
+}
+
 #[test]
 fn renderman_sets_say_their_dialect_and_keep_their_expressions() {
     let s = AovSet::compile(&[("d".into(), lpe::renderman::parse("C<RD>L").unwrap())]).unwrap();
