@@ -121,3 +121,29 @@ impl Count {
         }
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn errors_print_their_byte_message_and_kind() {
+        let e = FrontError::new(ErrorKind::Limit, 7, "too deep");
+        assert_eq!(e.to_string(), "byte 7: too deep (Limit)");
+    }
+
+    #[test]
+    fn counts_unroll_and_print_as_section_10_says() {
+        let c = |min, max| Count { min, max };
+        assert_eq!(c(3, None).unrolled(), 4);
+        assert_eq!(c(3, Some(5)).unrolled(), 5);
+        assert_eq!(c(5, Some(3)).unrolled(), 5);
+        assert_eq!(c(0, None).text(true), "*");
+        assert_eq!(c(1, None).text(true), "+");
+        assert_eq!(c(0, Some(1)).text(true), "?");
+        assert_eq!(c(0, Some(1)).text(false), "{0,1}");
+        assert_eq!(c(2, None).text(false), "{2,}");
+        assert_eq!(c(2, Some(2)).text(false), "{2}");
+        assert_eq!(c(2, Some(3)).text(false), "{2,3}");
+    }
+}

@@ -150,3 +150,79 @@ pub fn registered_in(lpe: &lpe::osl::Lpe) -> lpe::osl::Registered {
         scatters: Vec::new(),
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rm(src: &str) -> lpe::renderman::Lpe {
+        lpe::renderman::parse(src).unwrap()
+    }
+
+    fn osl_reg(src: &str, reg: &lpe::osl::Registered) -> lpe::osl::Lpe {
+        lpe::osl::parse(src, reg).unwrap()
+    }
+
+    #[test]
+    fn both_dialects_answer_through_a_borrowed_tree() {
+        let rd = rm("C<RD>L");
+        assert!(is_match(&&rd, &"C RD L".parse().unwrap()));
+        assert!(!is_match(&&rd, &"C RS L".parse().unwrap()));
+        let none = lpe::osl::Registered::none();
+        let o = osl_reg("C<RD>L", &none);
+        assert!(is_match(&&o, &"C,_ R,D L,_".parse().unwrap()));
+        assert!(!is_match(&o, &"C,_ R,G L,_".parse().unwrap()));
+        let tree = o.reference_tree();
+        assert!(!<&lpe::osl::Lpe>::tree_matches(
+            &tree,
+            &"C,_ R,G L,_".parse().unwrap()
+        ));
+    }
+
+    #[test]
+    fn expressions_and_atoms_answer_by_the_reference() {
+        let e = rm("C<RD>L");
+        assert!(is_expr_match(&e.expr, &"C RD L".parse().unwrap()));
+        assert!(!is_expr_match(&e.expr, &"C RS L".parse().unwrap()));
+        let mut atoms = Vec::new();
+        e.expr.for_each_atom(&mut |a| atoms.push(a.clone()));
+        let path: Path = "C RD L".parse().unwrap();
+        assert!(atom_matches(&atoms[1], &path.vertices()[1]));
+        assert!(!atom_matches(&atoms[1], &path.vertices()[0]));
+    }
+
+    /// lpe's limits may be raised past the reference's defaults: the canonical print of
+    /// what lpe accepted still parses.
+    #[test]
+    fn trees_past_the_default_limits_still_answer() {
+        let limits = lpe::renderman::Limits {
+            max_repeat: 1000,
+            ..lpe::renderman::Limits::default()
+        };
+        let parser = lpe::renderman::Parser::new(limits.clone(), Default::default());
+        let long = parser.parse("C.{300}L").unwrap();
+        let path: Path = format!("C{} L", " RD".repeat(300)).parse().unwrap();
+        assert!(is_match(&long, &path));
+        let none = lpe::osl::Registered::none();
+        let o = lpe::osl::parse_with("C.{300}L", &none, &limits).unwrap();
+        let path: lpe::osl::Path = format!("C,_{} L,_", " R,D".repeat(300)).parse().unwrap();
+        assert!(is_match(&o, &path));
+    }
+
+    #[test]
+    fn registered_labels_are_read_back_from_the_eaters_once_each() {
+        let reg: lpe::osl::Registered = "events=U;scatters=Y".parse().unwrap();
+        let o = osl_reg("C<RD>U<TY>L", &reg);
+        let back = registered_in(&o);
+        assert_eq!(
+            (back.events, back.scatters),
+            (vec!["U".to_string(), "Y".to_string()], vec![])
+        );
+        // Nothing registered: only built-in labels in the eaters, none read back.
+        let plain = osl_reg("C<RD>L", &lpe::osl::Registered::none());
+        assert!(registered_in(&plain).events.is_empty());
+        // The registered label stays basic for the reference: `U` is not eaten.
+        assert!(!is_match(&o, &"C,_ R,D,U U,_ T,Y L,_".parse().unwrap()));
+        assert!(is_match(&o, &"C,_ R,D,u U,_ T,Y L,_".parse().unwrap()));
+    }
+}

@@ -417,6 +417,23 @@ fn the_wide_nfa_matchers_dead_states_are_sound_in_every_word() {
 
 /// [`NfaState::active`] lists a hand-built wide state's positions: after `C RD1` behind a
 /// one-word padding, only the second AOV's positions (past 64) are active.
+/// `CDL`'s positions are the start (0), `C` (1), `D` (2) and `L` (3): each step leaves
+/// exactly the next one active.
+#[test]
+fn an_nfa_state_lists_its_active_positions_by_number() {
+    let exprs = [parse("CDL").unwrap()];
+    let set = AovSet::compile_with(&named(&exprs), &nfa_only()).unwrap();
+    let nfa = set.nfa().unwrap();
+    let rd1 = Vertex::scatter(VertexType::R, Event::new(EventKind::D, 1).unwrap(), None);
+    let mut s: NfaState = nfa.start();
+    let mut seen = vec![s.active().collect::<Vec<_>>()];
+    for v in [Vertex::camera(), rd1, Vertex::light(None)] {
+        s = nfa.step(s, nfa.classify(&v));
+        seen.push(s.active().collect());
+    }
+    assert_eq!(seen, [vec![0], vec![1], vec![2], vec![3]]);
+}
+
 #[test]
 fn a_wide_nfa_state_lists_its_active_positions() {
     let exprs = [padding(), parse("C.*<L.'key'>").unwrap()];

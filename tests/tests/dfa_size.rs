@@ -137,3 +137,37 @@ fn minimization_runs_when_its_work_lands_exactly_on_the_cap() {
     // One more b: 1250 * 2001 * 8 = 20 008 000, over the cap: kept unminimized.
     assert_eq!(default_set(&expr(1249, 743)).dfa_states(), Some(2001));
 }
+
+/// A set wider than the NFA state (more than 256 positions) attempts the eager DFA only
+/// within 2^20 row reads (per state built: classes x active positions x words), then
+/// steps lazily; a narrower set has no such bound. `C(<RD><RD>){150}L` is 303 positions
+/// (5 words) of 5 classes; beside `C.*<RD>.{11}L` its DFA (4 400 states) is built, beside
+/// `.{12}` the reads run out before the DFA does (it fits the byte budget, and fails even
+/// with a budget of 2^40). The same `.{12}` in a narrow set of 20 classes builds its
+/// 8 225 states, over a million row reads.
+#[test]
+fn only_sets_wider_than_the_nfa_state_bound_the_dfa_attempt_by_row_reads() {
+    let wide = "C(<RD><RD>){150}L";
+    let eleven = default_set(&format!("{wide} | C.*<RD>.{{11}}L"));
+    assert_eq!(
+        (eleven.nfa_positions(), eleven.dfa_states()),
+        (318, Some(4400))
+    );
+    let twelve = set(&format!("{wide} | C.*<RD>.{{12}}L"), 1 << 40);
+    assert_eq!(twelve.nfa_positions(), 319);
+    assert!(!twelve.uses_dfa());
+    let mut narrow = "C.*<RD>.{12}L".to_string();
+    for lobe in [
+        "TS1", "TS2", "TS3", "TS4", "TS5", "TS6", "TS7", "TD1", "TD2", "TD3",
+    ] {
+        narrow.push_str(&format!(" | C<{lobe}>L"));
+    }
+    for lobe in ["RS1", "RS2", "RS3", "RS4", "RS5"] {
+        narrow.push_str(&format!(" | C<{lobe}>L"));
+    }
+    let narrow = default_set(&narrow);
+    assert_eq!(
+        (narrow.class_count(), narrow.dfa_states()),
+        (20, Some(8225))
+    );
+}

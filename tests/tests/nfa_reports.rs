@@ -116,3 +116,22 @@ fn nfa_memory_is_tables_rows_classes_finals_and_ids() {
     assert_eq!(dfa.dfa_states(), Some(5));
     assert_eq!(nfa.memory_bytes() - dfa.memory_bytes(), 16_488 + 122 - 240);
 }
+
+/// Each NFA state the lazy DFA registers costs its subset's words and a fixed 53 bytes
+/// (the two 8-byte counts of its shared allocation, the list's and the map key's
+/// 16-byte pointers, the id and a map control byte, as above: 61 for one word). On
+/// `C(<RD><RD>){150}L`, 303 positions (5 words), stepping registers states at
+/// 8 * 5 + 53 = 93 bytes each, and nothing else grows.
+#[test]
+fn a_registered_state_costs_its_words_and_53_bytes() {
+    let [_, set] = both(&[("wide", "C(<RD><RD>){150}L")]);
+    assert_eq!(set.nfa_positions(), 303);
+    let words = set.nfa_positions().div_ceil(64);
+    assert_eq!(words, 5);
+    let before = (set.memory_bytes(), set.lazy_states().unwrap());
+    let path: Path = format!("C{} L", " RD".repeat(300)).parse().unwrap();
+    assert!(set.match_path(&path).contains(0));
+    let after = (set.memory_bytes(), set.lazy_states().unwrap());
+    assert!(after.1 > before.1 + 300, "{after:?}");
+    assert_eq!(after.0 - before.0, (after.1 - before.1) * (8 * words + 53));
+}

@@ -532,6 +532,14 @@ fn limits_bound_depth_counts_and_positions() {
     assert_eq!(err(&deep), (K::TooDeep { max: 128 }, 128));
     let deep = format!("{}C{}", "[".repeat(200), "]".repeat(200));
     assert!(matches!(err(&deep).0, K::TooDeep { .. }));
+    // Depth is nesting, not number: 200 sibling groups of every kind parse.
+    for unit in ["(C)", "[C]", "<(R)D>", "<R(D|G)>", "[^R]"] {
+        let src = unit.repeat(200);
+        assert!(
+            parse_with(&src, &none(), &Limits::default()).is_ok(),
+            "{unit}"
+        );
+    }
     assert_eq!(err("CD{257}"), (K::RepeatTooLarge { max: 256 }, 3));
     assert_eq!(
         err("CD{1,99999999999}"),

@@ -138,6 +138,44 @@ mod tests {
     }
 
     #[test]
+    fn set_algebra_operators_stand_outside_regions_and_negation_where_an_operand_starts() {
+        // `&` and `-` inside `<…>` or `[…]`, nested either way, are no operators: the
+        // operand's own parser refuses the character where it stands.
+        assert_eq!(err("C<[>&]D>L"), (ErrorKind::Syntax, 3));
+        assert_eq!(err("C[<]&>]L"), (ErrorKind::Syntax, 3));
+        assert_eq!(err("C[&]L"), (ErrorKind::Syntax, 2));
+        // `^` after an operand's first character, spaces or not, is no negation.
+        assert_eq!(err("C^L"), (ErrorKind::Syntax, 1));
+        assert_eq!(err("C ^L"), (ErrorKind::Syntax, 2));
+        // Where an operand starts, spaces between the `^`s and after them are allowed.
+        let twice = parse("C.*L & ^ ^C<RD>L", &Registration::default()).unwrap();
+        assert_eq!(twice.to_string(), "C.*L & (^(^C<RD>L))");
+        assert!(is_match(&twice, &"C RD L".parse().unwrap()));
+        assert!(!is_match(&twice, &"C RD RD L".parse().unwrap()));
+        // A group holding an operator must be a whole operand.
+        assert_eq!(err("(C.*L & C<RD>L) C"), (ErrorKind::Algebra, 6));
+        assert_eq!(err("(C.*L - C<RD>L)^C"), (ErrorKind::Algebra, 6));
+        // An operator inside a group that is only part of an operand.
+        assert_eq!(err("C(D & S)L"), (ErrorKind::Algebra, 4));
+        assert_eq!(err("C(D - S)L & C.*L"), (ErrorKind::Algebra, 4));
+        // Whole groups, and what follows them.
+        for src in [
+            "(C.*L - C<RD>L) & C.*DL",
+            "( C.*L - C<RD>L )&C.*DL",
+            "((C.*L - C<RD>L)) & (C.*DL)",
+        ] {
+            let l = parse(src, &Registration::default()).unwrap();
+            assert!(is_match(&l, &"C RD RD L".parse().unwrap()), "{src}");
+            assert!(!is_match(&l, &"C RD L".parse().unwrap()), "{src}");
+            assert!(!is_match(&l, &"C RS L".parse().unwrap()), "{src}");
+        }
+        // Algebra nests 128 deep (the negations of `^…^C.*L` each one level).
+        let nots = |n: usize| format!("{}C.*L", "^".repeat(n));
+        assert!(parse(&nots(128), &Registration::default()).is_ok());
+        assert_eq!(err(&nots(129)), (ErrorKind::Limit, 129));
+    }
+
+    #[test]
     fn nesting_is_bounded_without_overflowing_the_stack() {
         let deep = format!("C{}D{}L", "(".repeat(100_000), ")".repeat(100_000));
         // The 129th `(` (byte 129, after `C`) is one level too deep.
