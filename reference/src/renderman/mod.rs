@@ -176,6 +176,63 @@ mod tests {
     }
 
     #[test]
+    fn macro_chains_light_groups_prefixes_and_spaces() {
+        // Errors in an operand point past its leading spaces.
+        assert_eq!(err("  directDifuse"), (ErrorKind::UnknownMacro, 2));
+        assert_eq!(err("C.*L &  directDifuse"), (ErrorKind::UnknownMacro, 8));
+        assert_eq!(err("  diffuse_"), (ErrorKind::Syntax, 9));
+        assert_eq!(err("C.*L &  diffuse_ "), (ErrorKind::Syntax, 15));
+        // Macros nest 16 deep; a failure deep inside points at the outermost name.
+        let chain = |n: usize| {
+            let mut r = Registration::default();
+            for i in 1..n {
+                r.macros.insert(format!("m{i}"), format!("m{}", i + 1));
+            }
+            r.macros.insert(format!("m{n}"), "C.*L".to_string());
+            r
+        };
+        assert!(parse("m1", &chain(16)).is_ok());
+        for (src, at) in [("m1", 0), ("  m1", 2)] {
+            let e = parse(src, &chain(17)).unwrap_err();
+            assert_eq!((e.kind, e.pos), (ErrorKind::Limit, at));
+        }
+        // A light group is written into exactly the `<L.>` triples.
+        let lit = reg_ini(&[("lit", "(C<RD><L.>)|(C<TD><L.'fill'>)")]);
+        let keyed = parse("lit_key", &lit).unwrap();
+        let m = |p: &str| is_match(&keyed, &p.parse().unwrap());
+        assert!(m("C RD L'key'"));
+        assert!(m("C RD'x' L'key'"));
+        assert!(!m("C RD L'fill'"));
+        assert!(!m("C RD L"));
+        assert!(m("C TD L'fill'"), "`<L.'fill'>` keeps its label");
+        assert!(!m("C TD L'key'"));
+        // Spaces between atoms, and around prefixes after `lpe:`.
+        assert!(super::tests::m("C <RD> L", "C RD L"));
+        for src in [
+            "lpe: shadows; unoccluded; C<RD>L",
+            " lpe:unoccluded;  shadows;C<RD>L",
+        ] {
+            let l = parse(src, &Registration::default()).unwrap();
+            assert_eq!(l.to_string(), "unoccluded;shadows;C<RD>L", "{src}");
+        }
+    }
+
+    #[test]
+    fn the_position_limit_counts_atoms_after_unrolling() {
+        // C, three `.`, L: 5 atom positions.
+        let limited = |max_positions| Registration {
+            limits: crate::error::Limits {
+                max_positions,
+                ..Default::default()
+            },
+            ..Registration::default()
+        };
+        assert!(parse("C.{3}L", &limited(5)).is_ok());
+        let e = parse("C.{3}L", &limited(4)).unwrap_err();
+        assert_eq!((e.kind, e.pos), (ErrorKind::Limit, 0));
+    }
+
+    #[test]
     fn nesting_is_bounded_without_overflowing_the_stack() {
         let deep = format!("C{}D{}L", "(".repeat(100_000), ")".repeat(100_000));
         // The 129th `(` (byte 129, after `C`) is one level too deep.
