@@ -169,6 +169,16 @@ mod tests {
             assert!(!is_match(&l, &"C RD L".parse().unwrap()), "{src}");
             assert!(!is_match(&l, &"C RS L".parse().unwrap()), "{src}");
         }
+        // A whole group last, with spaces after it or not.
+        for src in ["C.*DL & (C.*L - C<RD>L)", "C.*DL & (C.*L - C<RD>L)  "] {
+            let l = parse(src, &Registration::default()).unwrap();
+            assert!(is_match(&l, &"C RD RD L".parse().unwrap()), "{src}");
+            assert!(!is_match(&l, &"C RD L".parse().unwrap()), "{src}");
+        }
+        // Algebra groups nest 128 deep too.
+        let groups = |n: usize| format!("{}C.*L & C<RD>L{}", "(".repeat(n), ")".repeat(n));
+        assert!(parse(&groups(128), &Registration::default()).is_ok());
+        assert_eq!(err(&groups(129)), (ErrorKind::Limit, 129));
         // Algebra nests 128 deep (the negations of `^…^C.*L` each one level).
         let nots = |n: usize| format!("{}C.*L", "^".repeat(n));
         assert!(parse(&nots(128), &Registration::default()).is_ok());
@@ -182,6 +192,9 @@ mod tests {
         assert_eq!(err("C.*L &  directDifuse"), (ErrorKind::UnknownMacro, 8));
         assert_eq!(err("  diffuse_"), (ErrorKind::Syntax, 9));
         assert_eq!(err("C.*L &  diffuse_ "), (ErrorKind::Syntax, 15));
+        assert_eq!(err("shadows;  directDifuse"), (ErrorKind::UnknownMacro, 10));
+        assert_eq!(err("lpe:  directDifuse"), (ErrorKind::UnknownMacro, 6));
+        assert_eq!(err("shadows;  diffuse_"), (ErrorKind::Syntax, 17));
         // Macros nest 16 deep; a failure deep inside points at the outermost name.
         let chain = |n: usize| {
             let mut r = Registration::default();
@@ -230,6 +243,59 @@ mod tests {
         assert!(parse("C.{3}L", &limited(5)).is_ok());
         let e = parse("C.{3}L", &limited(4)).unwrap_err();
         assert_eq!((e.kind, e.pos), (ErrorKind::Limit, 0));
+    }
+
+    #[test]
+    fn errors_say_what_is_wrong_where() {
+        let said = |src: &str| {
+            let e = parse(src, &Registration::default()).unwrap_err();
+            (e.kind, e.pos, e.message)
+        };
+        let syntax = |pos, m: &str| (ErrorKind::Syntax, pos, m.to_string());
+        assert_eq!(said("C\"a\"L"), syntax(1, "labels take single quotes"));
+        assert_eq!(said("C.*L & C;L"), syntax(8, "prefixes go first"));
+        assert_eq!(said("C)L"), syntax(1, "unmatched `)`"));
+        assert_eq!(said("C||L"), syntax(2, "`|` needs something on both sides"));
+        assert_eq!(said("C5L"), syntax(1, "a stray number"));
+        let misplaced = |pos, m: &str| (ErrorKind::TriplePosition, pos, m.to_string());
+        assert_eq!(
+            said("C<DR.>L"),
+            misplaced(2, "an event in the type position")
+        );
+        assert_eq!(
+            said("C<'a'..>L"),
+            misplaced(2, "the label belongs in the third position")
+        );
+        assert_eq!(
+            said("C<.'a'.>L"),
+            misplaced(3, "the label belongs in the third position")
+        );
+        assert_eq!(
+            said("C<RL.>L"),
+            misplaced(3, "a type letter in the event position")
+        );
+        assert_eq!(
+            said("C<..D>L"),
+            misplaced(4, "a letter in the label position")
+        );
+        assert_eq!(
+            said("C<...D>L"),
+            misplaced(5, "a letter in the label position")
+        );
+        assert_eq!(
+            said("C<....>L"),
+            misplaced(5, "a letter in the label position")
+        );
+    }
+
+    #[test]
+    fn the_printer_groups_what_would_otherwise_read_differently() {
+        let printed = |s: &str| parse(s, &Registration::default()).unwrap().to_string();
+        assert_eq!(printed("C(D(SD))L"), "C(D(SD))L");
+        // `|` binds tighter than concatenation: sequences inside an alternation keep
+        // their parentheses, atoms and repetitions do not.
+        assert_eq!(printed("C(D|SD|D*|[DS])L"), "C((D|S)(D|D*|[DS]))L");
+        assert_eq!(printed("C((DS)|D)L"), "C((DS)|D)L");
     }
 
     #[test]
