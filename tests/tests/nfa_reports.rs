@@ -135,3 +135,17 @@ fn a_registered_state_costs_its_words_and_53_bytes() {
     assert!(after.1 > before.1 + 300, "{after:?}");
     assert_eq!(after.0 - before.0, (after.1 - before.1) * (8 * words + 53));
 }
+
+/// A set's memory counts its vertex classes' tables, label text included: two sets
+/// that differ only in the length of one label differ by exactly that length.
+#[test]
+fn set_memory_counts_the_label_text() {
+    let long = "k".repeat(1000);
+    let [short_set, _] = both(&[("a", "C<RD'k'>L")]);
+    let [long_set, _] = both(&[("a", &format!("C<RD'{long}'>L"))]);
+    assert_eq!(
+        long_set.automaton().memory_bytes(),
+        short_set.automaton().memory_bytes()
+    );
+    assert_eq!(long_set.memory_bytes() - short_set.memory_bytes(), 999);
+}
