@@ -264,6 +264,18 @@ mod tests {
     }
 
     #[test]
+    fn a_label_comes_off_a_light_or_an_emissive_object_and_keeps_its_kind() {
+        let shrunk = |p: &str| -> Vec<String> {
+            shrink_path(&p.parse().unwrap())
+                .iter()
+                .map(|q| q.to_string())
+                .collect()
+        };
+        assert_eq!(shrunk("C L'key'"), ["C L"]);
+        assert_eq!(shrunk("C O'lamp'"), ["C O"]);
+    }
+
+    #[test]
     fn shrinking_terminates_and_stays_normalized() {
         let e = lpe::renderman::parse("C([^D'a'<T[^D2]['x']>]|(S{2,7})*)+L")
             .unwrap()
