@@ -2,11 +2,12 @@
 
 use std::ffi::c_char;
 
-use lpe::osl::Osl;
 use lpe::renderman::{RenderMan, Vertex};
 use lpe::Class;
 
-use crate::dialect::{osl, renderman, CDialect};
+use crate::dialect::{renderman, CDialect};
+// OSL's vertices are classified from their symbols, in the OSL dialect's own module.
+pub use crate::dialect::osl::lpe_classify_osl;
 use crate::set::{lpe_set, text};
 use crate::status::{guard, lpe_status};
 
@@ -72,7 +73,7 @@ fn vertex_of(v: &lpe_vertex) -> Result<Vertex, lpe_status> {
 
 /// Classifies the vertex `vertex` gives in `set`, which must be of dialect `D`, into
 /// `*out`.
-fn classify_into<D: CDialect>(
+pub(crate) fn classify_into<D: CDialect>(
     set: &lpe_set,
     out: &mut lpe_class,
     vertex: impl FnOnce() -> Result<D::Vertex, lpe_status>,
@@ -133,37 +134,4 @@ pub extern "C" fn lpe_classify_text(
     classify_into::<RenderMan>(set, out, || {
         renderman::vertex_from_text(src).ok_or(lpe_status::LPE_ERR_PARSE)
     })
-}
-
-/// The class of an OSL vertex, into `*out`: `count` symbols, in OSL's order: the event
-/// (`"C"`, `"R"`, `"T"`, `"L"`, `"O"`, `"B"`, `"V"` or a registered one), the scattering
-/// (`"D"`, `"G"`, `"S"`, `"s"` or a registered one), then the custom labels. Each is
-/// NUL-terminated UTF-8; a NULL entry is OSL's NONE, so an OSL renderer passes its
-/// ustrings' `c_str()` as they are. Classify every kind of scene vertex once, at load,
-/// and step with classes; a vertex of fewer than two symbols matches nothing, as in OSL.
-/// `LPE_ERR_RANGE`: `count` is 0; `LPE_ERR_UTF8`: a symbol that is not UTF-8;
-/// `LPE_ERR_UNSUPPORTED`: a RenderMan set (use `lpe_classify`).
-#[no_mangle]
-pub extern "C" fn lpe_classify_osl(
-    set: *const lpe_set,
-    symbols: *const *const c_char,
-    count: usize,
-    out: *mut lpe_class,
-) -> lpe_status {
-    // SAFETY: NULL or valid pointers from the caller.
-    let (Some(set), Some(out)) = (unsafe { set.as_ref() }, unsafe { out.as_mut() }) else {
-        return lpe_status::LPE_ERR_NULL;
-    };
-    if symbols.is_null() {
-        return lpe_status::LPE_ERR_NULL;
-    }
-    if count == 0 {
-        return lpe_status::LPE_ERR_RANGE;
-    }
-    if Osl::set_of(&set.set).is_none() {
-        return lpe_status::LPE_ERR_UNSUPPORTED;
-    }
-    // SAFETY: the caller passes `count` readable pointers (checked non-null).
-    let symbols = unsafe { std::slice::from_raw_parts(symbols, count) };
-    classify_into::<Osl>(set, out, || osl::vertex_of(symbols))
 }

@@ -159,7 +159,7 @@ mod tests {
         lpe::renderman::parse(src).unwrap()
     }
 
-    fn osl_reg(src: &str, reg: &lpe::osl::Registered) -> lpe::osl::Lpe {
+    fn parsed_under(src: &str, reg: &lpe::osl::Registered) -> lpe::osl::Lpe {
         lpe::osl::parse(src, reg).unwrap()
     }
 
@@ -169,7 +169,7 @@ mod tests {
         assert!(is_match(&&rd, &"C RD L".parse().unwrap()));
         assert!(!is_match(&&rd, &"C RS L".parse().unwrap()));
         let none = lpe::osl::Registered::none();
-        let o = osl_reg("C<RD>L", &none);
+        let o = parsed_under("C<RD>L", &none);
         assert!(is_match(&&o, &"C,_ R,D L,_".parse().unwrap()));
         assert!(!is_match(&o, &"C,_ R,G L,_".parse().unwrap()));
         let tree = o.reference_tree();
@@ -212,14 +212,14 @@ mod tests {
     #[test]
     fn registered_labels_are_read_back_from_the_eaters_once_each() {
         let reg: lpe::osl::Registered = "events=U;scatters=Y".parse().unwrap();
-        let o = osl_reg("C<RD>U<TY>L", &reg);
+        let o = parsed_under("C<RD>U<TY>L", &reg);
         let back = registered_in(&o);
         assert_eq!(
             (back.events, back.scatters),
             (vec!["U".to_string(), "Y".to_string()], vec![])
         );
         // Nothing registered: only built-in labels in the eaters, none read back.
-        let plain = osl_reg("C<RD>L", &lpe::osl::Registered::none());
+        let plain = parsed_under("C<RD>L", &lpe::osl::Registered::none());
         assert!(registered_in(&plain).events.is_empty());
         // The registered label stays basic for the reference: `U` is not eaten.
         assert!(!is_match(&o, &"C,_ R,D,U U,_ T,Y L,_".parse().unwrap()));
