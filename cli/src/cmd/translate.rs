@@ -235,11 +235,11 @@ where
         Some(p) => recheck(p, &[Expect { name, lpe, matches }]),
         None => Ok(()),
     };
+    let on = |renderman: &renderman::Path, osl: Option<&osl::Path>| Witness {
+        renderman: renderman.clone(),
+        osl: osl.cloned(),
+    };
     for r in &t.reasons {
-        let on = |renderman: &renderman::Path, osl: Option<&osl::Path>| Witness {
-            renderman: renderman.clone(),
-            osl: osl.cloned(),
-        };
         match r {
             Reason::Collision(c) => {
                 source(&on(&c.matched, Some(&c.osl)), true)?;
