@@ -6,8 +6,6 @@ use lpe::renderman::{RenderMan, Vertex};
 use lpe::Class;
 
 use crate::dialect::{renderman, CDialect};
-// OSL's vertices are classified from their symbols, in the OSL dialect's own module.
-pub use crate::dialect::osl::lpe_classify_osl;
 use crate::set::{lpe_set, text};
 use crate::status::{guard, lpe_status};
 

@@ -44,6 +44,8 @@ pub mod step;
 pub mod view;
 
 pub use classify::{lpe_class, lpe_vertex};
+// OSL vertices are classified from their symbols, in the OSL dialect's own module.
+pub use dialect::osl::lpe_classify_osl;
 pub use error::lpe_error;
 pub use set::{lpe_options, lpe_set};
 pub use status::lpe_status;
