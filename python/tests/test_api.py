@@ -128,6 +128,44 @@ def test_osl_aov_set():
     assert s.match([("C", None, None), ("R", "G", None), ("L", None, "key")]) == ["glossy"]
 
 
+def test_osl_tuple_labels_with_spaces_and_commas_are_quoted():
+    # §18.1: a label holding a space or comma is quoted in the text form; a tuple
+    # carries it unquoted, so the tuple's label must reach the matcher whole.
+    s = lpe.AovSet({"key": "C<R.'a b'>L", "comma": "C<R.'x,y'>L", "any": "C.*L"}, dialect="osl")
+    assert s.match([("C", None, None), ("R", "D", "a b"), ("L", None, None)]) == ["key", "any"]
+    assert s.match([("C", None, None), ("R", "D", "x,y"), ("L", None, None)]) == ["comma", "any"]
+    assert s.match([("C", None, None), ("R", "D", "a"), ("L", None, None)]) == ["any"]
+
+
+def test_reprs_name_the_type_and_its_counts():
+    assert repr(lpe.parse("C<RD>L")) == '<lpe.Lpe "C<RD>L" (renderman)>'
+    # OSL prints an item outside `<…>` as its vertex pattern (§18.3): C is <C.>.
+    assert repr(lpe.parse("C<RD>L", dialect="osl")) == '<lpe.Lpe "<C.><RD><L.>" (osl)>'
+    assert repr(aovs()) == "<lpe.AovSet 3 AOVs (renderman)>"
+    assert repr(lpe.AovSet({"a": "CL"}, dialect="osl")) == "<lpe.AovSet 1 AOVs (osl)>"
+    assert repr(aovs().explain("C RD L")) == '<lpe.Explanation landed=["direct", "any"]>'
+    assert repr(aovs().explain("C O")) == "<lpe.Explanation landed=[]>"
+
+
+def test_parsed_expressions_compare_and_hash_by_canonical_text_and_dialect():
+    direct = lpe.parse("C<RD>L")
+    # The same canonical text from another source is equal, and hashes alike.
+    assert direct == lpe.parse("C<RD>L")
+    macro = lpe.parse("indirectDiffuse")
+    assert macro == lpe.parse("C<RD>.+[<L.>O]") and macro.source != "C<RD>.+[<L.>O]"
+    assert hash(direct) == hash(lpe.parse("C<RD>L"))
+    assert len({direct, lpe.parse("C<RD>L")}) == 1
+    # Another text, another dialect, or no Lpe at all: unequal.
+    assert direct != lpe.parse("C<RS>L")
+    assert direct != lpe.parse("C<RD>L", dialect="osl")
+    assert direct != "C<RD>L"
+    assert not (direct == lpe.parse("C<RD>L", dialect="osl"))
+    # Distinct expressions spread over distinct hashes (a constant hash would not).
+    texts = ["C<RD>L", "C<RS>L", "C.*L", "CL", "C<TD>L"]
+    assert len({hash(lpe.parse(t)) for t in texts}) == len(texts)
+    assert len({lpe.parse(t) for t in texts + texts}) == len(texts)
+
+
 # --- equiv, partition ----------------------------------------------------------------
 
 
@@ -137,6 +175,19 @@ def test_equiv():
     # C.*L also matches the path with no bounce.
     assert lpe.equiv("C.+L", "C.*L") == "C L"
     assert lpe.equiv("C<RD>L", "C<RS>L", dialect="osl") is not None
+
+
+def test_equiv_returns_the_shorter_witness_and_the_first_expressions_on_a_tie():
+    # C<RD>L and CL: `C RD L` only the first matches, `C L` only the second: the
+    # shorter one is returned whichever side it is on.
+    assert lpe.equiv("C<RD>L", "CL") == "C L"
+    assert lpe.equiv("CL", "C<RD>L") == "C L"
+    # A tie (three vertices each side): the first expression's path.
+    a, b = "C<RD>L", "C<RS>L"
+    w = lpe.equiv(a, b)
+    assert lpe.AovSet({"a": a, "b": b}).match(w) == ["a"]
+    w = lpe.equiv(b, a)
+    assert lpe.AovSet({"a": a, "b": b}).match(w) == ["b"]
 
 
 def test_partition_gap_with_its_remainder():
@@ -162,6 +213,18 @@ def test_partition_outside_a_given_universe():
 def test_partition_of_bare_expressions_names_them_by_their_text():
     p = lpe.partition(["C.*[<L.>O]"])
     assert p.clean and p.remainder is None
+
+
+def test_a_partition_is_true_when_clean_and_prints_its_report():
+    clean = lpe.partition(["C.*[<L.>O]"])
+    assert bool(clean) is True
+    assert repr(clean) == "<lpe.Partition clean=true overlaps=0 gaps=0 outside=0>"
+    gap = lpe.partition({"any_light": "C.*L", "d2": "C<RD2>L"})
+    assert bool(gap) is False
+    assert repr(gap) == "<lpe.Partition clean=false overlaps=1 gaps=1 outside=0>"
+    # str() is the report `lpe-check partition` prints, which names the gap's witness.
+    assert str(gap) == gap.text and "C O" in str(gap)
+    assert str(clean) == clean.text and clean.text != ""
 
 
 # --- lint ----------------------------------------------------------------------------
