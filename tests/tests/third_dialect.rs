@@ -13,7 +13,8 @@
 //! more implementation each (`EngineDialect`: its reference verdict, its shrinking;
 //! `Generate`: its generators): the engine registry (`oracle` has no translation for it
 //! and says so), the differential harness on generated cases, and a planted bug found
-//! and minimized.
+//! and minimized; and the front-end comparison (`FrontEnds`), whose "reference" side
+//! here is lpe's parser with planted faults, one per kind of disagreement it reports.
 
 use std::fmt;
 use std::str::FromStr;
@@ -24,6 +25,7 @@ use lpe::automata::ir::PathShape;
 use lpe::renderman::ast::Item;
 use lpe::renderman::{self, alphabet::Alphabet, ast::Atom, Expr, Parser, RenderMan, Vertex};
 use lpe::{AovMask, AovSet, CompileError, Dialect, DialectLpe, PathMatcher};
+use lpe_engines::differential::front::{self, FrontCase, FrontEnds};
 use lpe_engines::differential::{self, Generate, Outcome, Run};
 use lpe_engines::{Engine, EngineDialect, EngineError, Matcher, Reference};
 use lpe_testkit::generate::{self, Choices, Config};
@@ -58,6 +60,31 @@ thread_local! {
     /// Plants a front-end bug in [`Letters`]'s parser on this thread: a tab between
     /// tokens is rejected (the grammar allows it).
     static PLANTED_TAB_REJECTION: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// Plants faults in [`Letters`]'s "reference" front end on this thread ([`FrontFaults`]).
+    static PLANTED_FRONT_FAULTS: std::cell::Cell<FrontFaults> = const { std::cell::Cell::new(FrontFaults::NONE) };
+}
+
+/// Faults of the stand-in reference front end, one per kind of front-end disagreement
+/// the comparison reports.
+#[derive(Clone, Copy, Debug, Default)]
+struct FrontFaults {
+    /// The tree reads every `D` (diffuse) as `S`: the matchers differ (a meaning finding).
+    reads_diffuse_as_specular: bool,
+    /// The printer writes every `D` as `S`, the tree is right (a print finding).
+    prints_diffuse_as_specular: bool,
+    /// The printer appends `)` (lpe's parser rejects the print: a reprint finding).
+    prints_a_stray_paren: bool,
+    /// Text without an `O` is rejected (an acceptance finding).
+    rejects_text_without_o: bool,
+}
+
+impl FrontFaults {
+    const NONE: FrontFaults = FrontFaults {
+        reads_diffuse_as_specular: false,
+        prints_diffuse_as_specular: false,
+        prints_a_stray_paren: false,
+        rejects_text_without_o: false,
+    };
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -306,6 +333,53 @@ impl EngineDialect for Letters {
     }
 }
 
+/// This dialect has no front end in the reference, so the front-end comparison's
+/// "reference" side is lpe's parser again, with the faults of [`PLANTED_FRONT_FAULTS`]:
+/// what it checks here is the comparison itself (that each kind of disagreement is
+/// found, kept while minimizing and reported), not a second reading of the grammar.
+impl FrontEnds for Letters {
+    fn reference_parse(text: &str, _: &()) -> Result<LettersLpe, (usize, String)> {
+        let faults = PLANTED_FRONT_FAULTS.with(|f| f.get());
+        if faults.rejects_text_without_o && !text.contains('O') {
+            return Err((0, "planted: no O".into()));
+        }
+        let text = if faults.reads_diffuse_as_specular {
+            text.replace('D', "S")
+        } else {
+            text.to_string()
+        };
+        renderman::parse(&swap(&text))
+            .map(LettersLpe)
+            .map_err(|e| RenderMan::parse_error(&e))
+    }
+    fn reference_print(tree: &LettersLpe) -> String {
+        let faults = PLANTED_FRONT_FAULTS.with(|f| f.get());
+        let mut text = tree.to_string();
+        if faults.prints_diffuse_as_specular {
+            text = text.replace('D', "S");
+        }
+        if faults.prints_a_stray_paren {
+            text.push(')');
+        }
+        text
+    }
+    fn suite_registration(_: &lpe_testkit::suite::Loaded) -> Option<()> {
+        None
+    }
+    const FUZZ_TARGETS: &'static [&'static str] = &[];
+    fn constructs() -> Vec<((), String)> {
+        Vec::new()
+    }
+}
+
+/// Runs `f` with `faults` planted in the stand-in reference front end.
+fn with_front_faults<T>(faults: FrontFaults, f: impl FnOnce() -> T) -> T {
+    PLANTED_FRONT_FAULTS.with(|p| p.set(faults));
+    let out = f();
+    PLANTED_FRONT_FAULTS.with(|p| p.set(FrontFaults::NONE));
+    out
+}
+
 /// RenderMan's generators, wrapped.
 impl Generate for Letters {
     type Config = Config;
@@ -495,4 +569,223 @@ fn a_planted_bug_is_found_and_minimized() {
     assert!(text.contains("reference: no-match"), "{text}");
     assert!(text.contains("label-blind: match"), "{text}");
     assert!(text.contains("E BD1 PS1 BD1'wall' BS1 PS2 L"), "{text}");
+}
+
+/// Without faults the two sides agree: on what both accept and on what both reject.
+#[test]
+fn the_front_end_comparison_agrees_without_a_fault() {
+    for text in ["E<BD>L", "E<BD>[LO]", "E(BD|PS)*L", "E<BD", ")"] {
+        assert_eq!(front::compare::<Letters>(text, &(), 1), None, "{text}");
+    }
+}
+
+/// Each planted fault of the reference side is found as its kind, with what each side
+/// read.
+#[test]
+fn each_planted_front_end_fault_is_found_as_its_kind() {
+    let reads = FrontFaults {
+        reads_diffuse_as_specular: true,
+        ..FrontFaults::NONE
+    };
+    // lpe reads E<BD>L (RenderMan's C<RD>L), the reference E<BS>L: a path aimed at
+    // either tells them apart, and the two answers differ.
+    let found = with_front_faults(reads, || front::compare::<Letters>("E<BD>L", &(), 1));
+    let Some((
+        front::Finding::Meaning {
+            path,
+            lpe: ours,
+            reference,
+        },
+        l,
+        r,
+    )) = found
+    else {
+        panic!("{found:?}");
+    };
+    assert_ne!(ours, reference, "{path}");
+    let on = LettersPath::from_str(&path).unwrap();
+    assert_eq!(Letters::reference(&lpe("E<BD>L"), &on), ours, "{path}");
+    assert_eq!(Letters::reference(&lpe("E<BS>L"), &on), reference, "{path}");
+    assert_eq!((l.as_str(), r.as_str()), ("`E<BD>L`", "`E<BS>L`"));
+    // Both reject: no finding, whatever the reference reads.
+    assert_eq!(
+        with_front_faults(reads, || front::compare::<Letters>("E<BD", &(), 1)),
+        None
+    );
+
+    // The printer writes E<BS>L for the right tree: the matchers agree on every path,
+    // lpe's tree and its reading of the print do not; the witness is a path of one.
+    let prints = FrontFaults {
+        prints_diffuse_as_specular: true,
+        ..FrontFaults::NONE
+    };
+    let found = with_front_faults(prints, || front::compare::<Letters>("E<BD>L", &(), 1));
+    let Some((front::Finding::Print { witness }, l, r)) = found else {
+        panic!("{found:?}");
+    };
+    let on = LettersPath::from_str(&witness).unwrap();
+    assert_ne!(
+        Letters::reference(&lpe("E<BD>L"), &on),
+        Letters::reference(&lpe("E<BS>L"), &on),
+        "{witness}"
+    );
+    assert_eq!((l.as_str(), r.as_str()), ("`E<BD>L`", "`E<BS>L`"));
+
+    let paren = FrontFaults {
+        prints_a_stray_paren: true,
+        ..FrontFaults::NONE
+    };
+    let found = with_front_faults(paren, || front::compare::<Letters>("E<BD>L", &(), 1));
+    assert_eq!(
+        found,
+        Some((
+            front::Finding::Reprint,
+            "`E<BD>L`".into(),
+            "`E<BD>L)`".into()
+        ))
+    );
+
+    // One side rejects: an acceptance finding, with the error's byte and message.
+    let rejects = FrontFaults {
+        rejects_text_without_o: true,
+        ..FrontFaults::NONE
+    };
+    let found = with_front_faults(rejects, || front::compare::<Letters>("E<BD>L", &(), 1));
+    assert_eq!(
+        found,
+        Some((
+            front::Finding::Acceptance,
+            "`E<BD>L`".into(),
+            "error at byte 0: planted: no O".into()
+        ))
+    );
+}
+
+/// Meaning is compared on paths up to 1 024 positions (lpe's tree and its re-parse of
+/// the print together) and equivalence up to 128; past each, the fault goes unseen by
+/// that step, as documented.
+#[test]
+fn the_front_end_comparison_stops_at_its_position_limits() {
+    // E(<BD'a0'>|…|<BD'a{n-1}'>)L: n + 2 positions a side, and short paths (a repeat
+    // count would need paths longer than the generator draws).
+    let text = |n: u64| {
+        let alternatives: Vec<String> = (0..n).map(|i| format!("<BD'a{i}'>")).collect();
+        format!("E({})L", alternatives.join("|"))
+    };
+    assert_eq!(Letters::positions(lpe(&text(2)).first(), None), 4);
+    let reads = FrontFaults {
+        reads_diffuse_as_specular: true,
+        ..FrontFaults::NONE
+    };
+    let meaning = |n| with_front_faults(reads, || front::compare::<Letters>(&text(n), &(), 1));
+    assert!(
+        matches!(meaning(510), Some((front::Finding::Meaning { .. }, _, _))),
+        "1 024 positions are compared"
+    );
+    assert_eq!(meaning(511), None, "1 026 positions are not");
+    let prints = FrontFaults {
+        prints_diffuse_as_specular: true,
+        ..FrontFaults::NONE
+    };
+    let print = |n| with_front_faults(prints, || front::compare::<Letters>(&text(n), &(), 1));
+    assert!(
+        matches!(print(62), Some((front::Finding::Print { .. }, _, _))),
+        "128 positions are checked for equivalence"
+    );
+    assert_eq!(print(63), None, "130 positions are not");
+}
+
+/// A misreading the generated paths miss (they are shorter than the 32 vertices it takes
+/// here) is found by the equivalence step, and its witness, answered differently by the
+/// two matchers, is reported as a meaning disagreement, not as a printer one.
+#[test]
+fn a_misreading_only_a_long_path_shows_is_a_meaning_finding() {
+    let reads = FrontFaults {
+        reads_diffuse_as_specular: true,
+        ..FrontFaults::NONE
+    };
+    let found = with_front_faults(reads, || front::compare::<Letters>("E<BD>{30}L", &(), 1));
+    let Some((
+        front::Finding::Meaning {
+            path,
+            lpe: ours,
+            reference,
+        },
+        _,
+        _,
+    )) = found
+    else {
+        panic!("{found:?}");
+    };
+    assert_eq!(path.split(' ').count(), 32, "{path}");
+    assert!(ours && !reference, "{path}");
+}
+
+/// A disagreement is minimized only through texts that disagree the same way: deleting
+/// the `O` would turn a print finding into an acceptance one, so the `O` stays. The
+/// report shows the minimized text, the original and both readings.
+#[test]
+fn a_front_end_disagreement_is_minimized_within_its_kind_and_reported() {
+    let faults = FrontFaults {
+        prints_diffuse_as_specular: true,
+        rejects_text_without_o: true,
+        ..FrontFaults::NONE
+    };
+    let case = FrontCase::<Letters> {
+        text: "E<BD>[LO]".into(),
+        registration: (),
+        origin: "planted".into(),
+    };
+    let d = with_front_faults(faults, || front::check::<Letters>(&case, 1)).expect("found");
+    assert!(matches!(d.finding, front::Finding::Print { .. }), "{d}");
+    assert!(d.text.len() < case.text.len(), "not minimized: {d}");
+    assert!(d.text.contains('O') && d.text.contains('D'), "{d}");
+    assert_eq!(d.original, "E<BD>[LO]");
+    let shown = d.to_string();
+    let lines: Vec<&str> = shown.lines().collect();
+    assert_eq!(
+        lines[0],
+        format!("front ends disagree on `{}` (planted)", d.text)
+    );
+    assert_eq!(lines[1], "  minimized from `E<BD>[LO]`");
+    // No registration line: this dialect registers nothing.
+    assert!(
+        lines[2].starts_with("  lpe's tree and lpe's reading"),
+        "{shown}"
+    );
+    assert_eq!(lines[3], format!("  lpe reads:       {}", d.lpe));
+    assert_eq!(lines[4], format!("  reference reads: {}", d.reference));
+    assert_eq!(lines.len(), 5, "{shown}");
+
+    // A text that is already minimal is reported without a "minimized from" line, and a
+    // meaning finding names both answers.
+    let reads = FrontFaults {
+        reads_diffuse_as_specular: true,
+        ..FrontFaults::NONE
+    };
+    let case = FrontCase::<Letters> {
+        text: "EDL".into(),
+        registration: (),
+        origin: "planted".into(),
+    };
+    let d = with_front_faults(reads, || front::check::<Letters>(&case, 1)).expect("found");
+    let front::Finding::Meaning {
+        lpe: ours,
+        reference,
+        ..
+    } = &d.finding
+    else {
+        panic!("{d}");
+    };
+    let word = |m: bool| if m { "match" } else { "no-match" };
+    let shown = d.to_string();
+    assert!(!shown.contains("minimized from"), "{shown}");
+    assert!(
+        shown.contains(&format!(
+            ": lpe {}, reference {}\n",
+            word(*ours),
+            word(*reference)
+        )),
+        "{shown}"
+    );
 }
