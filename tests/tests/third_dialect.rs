@@ -85,6 +85,14 @@ impl FrontFaults {
         prints_a_stray_paren: false,
         rejects_text_without_o: false,
     };
+    const READS_D_AS_S: FrontFaults = FrontFaults {
+        reads_diffuse_as_specular: true,
+        ..FrontFaults::NONE
+    };
+    const PRINTS_D_AS_S: FrontFaults = FrontFaults {
+        prints_diffuse_as_specular: true,
+        ..FrontFaults::NONE
+    };
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -571,11 +579,32 @@ fn a_planted_bug_is_found_and_minimized() {
     assert!(text.contains("E BD1 PS1 BD1'wall' BS1 PS2 L"), "{text}");
 }
 
+/// The front-end comparison of `text` with `faults` planted.
+fn compared(faults: FrontFaults, text: &str) -> Option<(front::Finding, String, String)> {
+    with_front_faults(faults, || front::compare::<Letters>(text, &(), 1))
+}
+
+/// A meaning finding's path and the two answers (lpe's, the reference's).
+fn meaning(found: Option<(front::Finding, String, String)>) -> (String, bool, bool) {
+    match found {
+        Some((
+            front::Finding::Meaning {
+                path,
+                lpe,
+                reference,
+            },
+            _,
+            _,
+        )) => (path, lpe, reference),
+        other => panic!("not a meaning finding: {other:?}"),
+    }
+}
+
 /// Without faults the two sides agree: on what both accept and on what both reject.
 #[test]
 fn the_front_end_comparison_agrees_without_a_fault() {
     for text in ["E<BD>L", "E<BD>[LO]", "E(BD|PS)*L", "E<BD", ")"] {
-        assert_eq!(front::compare::<Letters>(text, &(), 1), None, "{text}");
+        assert_eq!(compared(FrontFaults::NONE, text), None, "{text}");
     }
 }
 
@@ -583,43 +612,22 @@ fn the_front_end_comparison_agrees_without_a_fault() {
 /// read.
 #[test]
 fn each_planted_front_end_fault_is_found_as_its_kind() {
-    let reads = FrontFaults {
-        reads_diffuse_as_specular: true,
-        ..FrontFaults::NONE
-    };
     // lpe reads E<BD>L (RenderMan's C<RD>L), the reference E<BS>L: a path aimed at
     // either tells them apart, and the two answers differ.
-    let found = with_front_faults(reads, || front::compare::<Letters>("E<BD>L", &(), 1));
-    let Some((
-        front::Finding::Meaning {
-            path,
-            lpe: ours,
-            reference,
-        },
-        l,
-        r,
-    )) = found
-    else {
-        panic!("{found:?}");
-    };
+    let found = compared(FrontFaults::READS_D_AS_S, "E<BD>L");
+    let (_, l, r) = found.clone().unwrap();
+    assert_eq!((l.as_str(), r.as_str()), ("`E<BD>L`", "`E<BS>L`"));
+    let (path, ours, reference) = meaning(found);
     assert_ne!(ours, reference, "{path}");
     let on = LettersPath::from_str(&path).unwrap();
     assert_eq!(Letters::reference(&lpe("E<BD>L"), &on), ours, "{path}");
     assert_eq!(Letters::reference(&lpe("E<BS>L"), &on), reference, "{path}");
-    assert_eq!((l.as_str(), r.as_str()), ("`E<BD>L`", "`E<BS>L`"));
     // Both reject: no finding, whatever the reference reads.
-    assert_eq!(
-        with_front_faults(reads, || front::compare::<Letters>("E<BD", &(), 1)),
-        None
-    );
+    assert_eq!(compared(FrontFaults::READS_D_AS_S, "E<BD"), None);
 
     // The printer writes E<BS>L for the right tree: the matchers agree on every path,
     // lpe's tree and its reading of the print do not; the witness is a path of one.
-    let prints = FrontFaults {
-        prints_diffuse_as_specular: true,
-        ..FrontFaults::NONE
-    };
-    let found = with_front_faults(prints, || front::compare::<Letters>("E<BD>L", &(), 1));
+    let found = compared(FrontFaults::PRINTS_D_AS_S, "E<BD>L");
     let Some((front::Finding::Print { witness }, l, r)) = found else {
         panic!("{found:?}");
     };
@@ -635,9 +643,8 @@ fn each_planted_front_end_fault_is_found_as_its_kind() {
         prints_a_stray_paren: true,
         ..FrontFaults::NONE
     };
-    let found = with_front_faults(paren, || front::compare::<Letters>("E<BD>L", &(), 1));
     assert_eq!(
-        found,
+        compared(paren, "E<BD>L"),
         Some((
             front::Finding::Reprint,
             "`E<BD>L`".into(),
@@ -650,9 +657,8 @@ fn each_planted_front_end_fault_is_found_as_its_kind() {
         rejects_text_without_o: true,
         ..FrontFaults::NONE
     };
-    let found = with_front_faults(rejects, || front::compare::<Letters>("E<BD>L", &(), 1));
     assert_eq!(
-        found,
+        compared(rejects, "E<BD>L"),
         Some((
             front::Finding::Acceptance,
             "`E<BD>L`".into(),
@@ -673,26 +679,15 @@ fn the_front_end_comparison_stops_at_its_position_limits() {
         format!("E({})L", alternatives.join("|"))
     };
     assert_eq!(Letters::positions(lpe(&text(2)).first(), None), 4);
-    let reads = FrontFaults {
-        reads_diffuse_as_specular: true,
-        ..FrontFaults::NONE
-    };
-    let meaning = |n| with_front_faults(reads, || front::compare::<Letters>(&text(n), &(), 1));
+    let reads = |n| compared(FrontFaults::READS_D_AS_S, &text(n));
+    meaning(reads(510)); // 1 024 positions are compared
+    assert_eq!(reads(511), None, "1 026 positions are not");
+    let prints = |n| compared(FrontFaults::PRINTS_D_AS_S, &text(n));
     assert!(
-        matches!(meaning(510), Some((front::Finding::Meaning { .. }, _, _))),
-        "1 024 positions are compared"
-    );
-    assert_eq!(meaning(511), None, "1 026 positions are not");
-    let prints = FrontFaults {
-        prints_diffuse_as_specular: true,
-        ..FrontFaults::NONE
-    };
-    let print = |n| with_front_faults(prints, || front::compare::<Letters>(&text(n), &(), 1));
-    assert!(
-        matches!(print(62), Some((front::Finding::Print { .. }, _, _))),
+        matches!(prints(62), Some((front::Finding::Print { .. }, _, _))),
         "128 positions are checked for equivalence"
     );
-    assert_eq!(print(63), None, "130 positions are not");
+    assert_eq!(prints(63), None, "130 positions are not");
 }
 
 /// A misreading the generated paths miss (they are shorter than the 32 vertices it takes
@@ -700,23 +695,7 @@ fn the_front_end_comparison_stops_at_its_position_limits() {
 /// two matchers, is reported as a meaning disagreement, not as a printer one.
 #[test]
 fn a_misreading_only_a_long_path_shows_is_a_meaning_finding() {
-    let reads = FrontFaults {
-        reads_diffuse_as_specular: true,
-        ..FrontFaults::NONE
-    };
-    let found = with_front_faults(reads, || front::compare::<Letters>("E<BD>{30}L", &(), 1));
-    let Some((
-        front::Finding::Meaning {
-            path,
-            lpe: ours,
-            reference,
-        },
-        _,
-        _,
-    )) = found
-    else {
-        panic!("{found:?}");
-    };
+    let (path, ours, reference) = meaning(compared(FrontFaults::READS_D_AS_S, "E<BD>{30}L"));
     assert_eq!(path.split(' ').count(), 32, "{path}");
     assert!(ours && !reference, "{path}");
 }
@@ -727,18 +706,18 @@ fn a_misreading_only_a_long_path_shows_is_a_meaning_finding() {
 #[test]
 fn a_front_end_disagreement_is_minimized_within_its_kind_and_reported() {
     let faults = FrontFaults {
-        prints_diffuse_as_specular: true,
         rejects_text_without_o: true,
-        ..FrontFaults::NONE
+        ..FrontFaults::PRINTS_D_AS_S
     };
-    let case = FrontCase::<Letters> {
-        text: "E<BD>[LO]".into(),
+    let case = |text: &str| FrontCase::<Letters> {
+        text: text.into(),
         registration: (),
         origin: "planted".into(),
     };
-    let d = with_front_faults(faults, || front::check::<Letters>(&case, 1)).expect("found");
+    let d = with_front_faults(faults, || front::check::<Letters>(&case("E<BD>[LO]"), 1))
+        .expect("found");
     assert!(matches!(d.finding, front::Finding::Print { .. }), "{d}");
-    assert!(d.text.len() < case.text.len(), "not minimized: {d}");
+    assert!(d.text.len() < d.original.len(), "not minimized: {d}");
     assert!(d.text.contains('O') && d.text.contains('D'), "{d}");
     assert_eq!(d.original, "E<BD>[LO]");
     let shown = d.to_string();
@@ -759,16 +738,10 @@ fn a_front_end_disagreement_is_minimized_within_its_kind_and_reported() {
 
     // A text that is already minimal is reported without a "minimized from" line, and a
     // meaning finding names both answers.
-    let reads = FrontFaults {
-        reads_diffuse_as_specular: true,
-        ..FrontFaults::NONE
-    };
-    let case = FrontCase::<Letters> {
-        text: "EDL".into(),
-        registration: (),
-        origin: "planted".into(),
-    };
-    let d = with_front_faults(reads, || front::check::<Letters>(&case, 1)).expect("found");
+    let d = with_front_faults(FrontFaults::READS_D_AS_S, || {
+        front::check::<Letters>(&case("EDL"), 1)
+    })
+    .expect("found");
     let front::Finding::Meaning {
         lpe: ours,
         reference,
