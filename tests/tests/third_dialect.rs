@@ -93,6 +93,10 @@ impl FrontFaults {
         prints_diffuse_as_specular: true,
         ..FrontFaults::NONE
     };
+    const REJECTS_WITHOUT_O: FrontFaults = FrontFaults {
+        rejects_text_without_o: true,
+        ..FrontFaults::NONE
+    };
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -374,7 +378,8 @@ impl FrontEnds for Letters {
     fn suite_registration(_: &lpe_testkit::suite::Loaded) -> Option<()> {
         None
     }
-    const FUZZ_TARGETS: &'static [&'static str] = &[];
+    /// Read by the corpus test from a scratch root, not from the workspace's fuzz/.
+    const FUZZ_TARGETS: &'static [&'static str] = &["letters"];
     fn constructs() -> Vec<((), String)> {
         Vec::new()
     }
@@ -584,6 +589,15 @@ fn compared(faults: FrontFaults, text: &str) -> Option<(front::Finding, String, 
     with_front_faults(faults, || front::compare::<Letters>(text, &(), 1))
 }
 
+/// A front-end case of `text`, from the planted tests.
+fn planted(text: &str) -> FrontCase<Letters> {
+    FrontCase {
+        text: text.into(),
+        registration: (),
+        origin: "planted".into(),
+    }
+}
+
 /// A meaning finding's path and the two answers (lpe's, the reference's).
 fn meaning(found: Option<(front::Finding, String, String)>) -> (String, bool, bool) {
     match found {
@@ -653,10 +667,7 @@ fn each_planted_front_end_fault_is_found_as_its_kind() {
     );
 
     // One side rejects: an acceptance finding, with the error's byte and message.
-    let rejects = FrontFaults {
-        rejects_text_without_o: true,
-        ..FrontFaults::NONE
-    };
+    let rejects = FrontFaults::REJECTS_WITHOUT_O;
     assert_eq!(
         compared(rejects, "E<BD>L"),
         Some((
@@ -709,12 +720,7 @@ fn a_front_end_disagreement_is_minimized_within_its_kind_and_reported() {
         rejects_text_without_o: true,
         ..FrontFaults::PRINTS_D_AS_S
     };
-    let case = |text: &str| FrontCase::<Letters> {
-        text: text.into(),
-        registration: (),
-        origin: "planted".into(),
-    };
-    let d = with_front_faults(faults, || front::check::<Letters>(&case("E<BD>[LO]"), 1))
+    let d = with_front_faults(faults, || front::check::<Letters>(&planted("E<BD>[LO]"), 1))
         .expect("found");
     assert!(matches!(d.finding, front::Finding::Print { .. }), "{d}");
     assert!(d.text.len() < d.original.len(), "not minimized: {d}");
@@ -739,7 +745,7 @@ fn a_front_end_disagreement_is_minimized_within_its_kind_and_reported() {
     // A text that is already minimal is reported without a "minimized from" line, and a
     // meaning finding names both answers.
     let d = with_front_faults(FrontFaults::READS_D_AS_S, || {
-        front::check::<Letters>(&case("EDL"), 1)
+        front::check::<Letters>(&planted("EDL"), 1)
     })
     .expect("found");
     let front::Finding::Meaning {
@@ -760,5 +766,137 @@ fn a_front_end_disagreement_is_minimized_within_its_kind_and_reported() {
             word(*reference)
         )),
         "{shown}"
+    );
+}
+
+/// What [`front::minimize`] promises: no single character and no two adjacent ones can
+/// come off its result with a disagreement of the same kind left (checked here by
+/// trying every such deletion, independently of its search order).
+#[test]
+fn a_minimized_front_end_disagreement_is_one_minimal() {
+    let no_o = FrontFaults::REJECTS_WITHOUT_O;
+    for (faults, text) in [
+        (no_o, "E<BD>L'xy'"),
+        (FrontFaults::PRINTS_D_AS_S, "E<BD>[LO]"),
+        (FrontFaults::READS_D_AS_S, "E(<BD>|<PS>)*[LO]"),
+    ] {
+        let case = planted(text);
+        let d = with_front_faults(faults, || front::check::<Letters>(&case, 1)).expect(text);
+        let chars: Vec<char> = d.text.chars().collect();
+        for width in 1..=2 {
+            for at in 0..=chars.len().saturating_sub(width) {
+                let shorter: String = chars[..at].iter().chain(&chars[at + width..]).collect();
+                let again = compared(faults, &shorter);
+                assert!(
+                    !again.as_ref().is_some_and(|(f, _, _)| {
+                        std::mem::discriminant(f) == std::mem::discriminant(&d.finding)
+                    }),
+                    "{text}: `{}` minimized to `{}`, but `{shorter}` still disagrees: {again:?}",
+                    d.original,
+                    d.text
+                );
+            }
+        }
+    }
+}
+
+/// Minimization stops after [`front::MINIMIZE_BUDGET`] candidates: a label of 3 000
+/// characters, each deletable but only after the few before it were tried, is far
+/// from gone when the budget runs out.
+#[test]
+fn front_end_minimization_stops_at_its_budget() {
+    let no_o = FrontFaults::REJECTS_WITHOUT_O;
+    let text = format!("E<BD>L'{}'", "x".repeat(3000));
+    let d = with_front_faults(no_o, || front::check::<Letters>(&planted(&text), 1)).expect("found");
+    assert_eq!(d.finding, front::Finding::Acceptance);
+    assert!(d.text.len() < text.len(), "nothing came off");
+    assert!(
+        d.text.len() > 1000,
+        "{} characters left: more than {} candidates were tried",
+        d.text.len(),
+        front::MINIMIZE_BUDGET
+    );
+}
+
+/// A run's totals: every case counted once, agreement on rejection split by position
+/// (the first three kept as examples, long texts cut at 60 characters), disagreements
+/// minimized up to the limit and counted past it.
+#[test]
+fn a_front_end_run_counts_and_keeps_what_it_found() {
+    let no_o = FrontFaults::REJECTS_WITHOUT_O;
+    let long = format!("E<{}", "B".repeat(70));
+    let texts = [
+        "E<BD>L",    // lpe accepts, the reference rejects: disagreement 1
+        "E<BS>[LO]", // both accept and agree
+        "E<BD",      // both reject, at other positions: example 1
+        "E<BO",      // both reject at the same byte (the O passes the fault)
+        "EL",        // disagreement 2
+        "E<BS>L",    // disagreement 3: past the limit of 2, counted only
+        &long,       // both reject, at other positions: example 2, cut
+        "E<BDD",     // example 3
+        "E<BSS",     // at other positions, past the three examples
+    ];
+    let cases: Vec<FrontCase<Letters>> = texts.iter().map(|t| planted(t)).collect();
+    let t = with_front_faults(no_o, || front::run::<Letters>(cases, 1, 2));
+    assert_eq!(t.compared, 9);
+    assert_eq!(t.both_rejected, 5);
+    assert_eq!(t.other_positions, 4);
+    assert_eq!(t.disagreements.len(), 2);
+    assert_eq!(t.more, 1);
+    assert_eq!(t.count(), 3);
+    assert_eq!(
+        t.summary(),
+        "front ends compared 9 expressions (5 rejected by both, 4 of them at other positions), 3 disagreements"
+    );
+    let originals: Vec<&str> = t
+        .disagreements
+        .iter()
+        .map(|d| d.original.as_str())
+        .collect();
+    assert_eq!(originals, ["E<BD>L", "EL"]);
+    assert_eq!(t.position_examples.len(), 3);
+    let suffix = ", reference at byte 0 (planted: no O)";
+    for (example, text) in
+        t.position_examples
+            .iter()
+            .zip(["`E<BD`", &format!("`{}…`", &long[..60]), "`E<BDD`"])
+    {
+        assert!(
+            example.starts_with(&format!("{text}: lpe at byte ")),
+            "{example}"
+        );
+        assert!(example.ends_with(suffix), "{example}");
+    }
+}
+
+/// The corpus of a dialect's fuzz targets: every file of `fuzz/corpus/<target>/` and
+/// `fuzz/regressions/<target>/`, in name order, named by its path; notes (`*.md`) are
+/// not expressions.
+#[test]
+fn the_front_end_corpus_reads_the_fuzz_files_and_skips_notes() {
+    let root = std::env::temp_dir().join(format!("lpe-front-corpus-{}", std::process::id()));
+    let corpus = root.join("fuzz/corpus/letters");
+    let regressions = root.join("fuzz/regressions/letters");
+    std::fs::create_dir_all(&corpus).unwrap();
+    std::fs::create_dir_all(&regressions).unwrap();
+    std::fs::write(corpus.join("b"), "E<BD>L").unwrap();
+    std::fs::write(corpus.join("a"), "EL").unwrap();
+    std::fs::write(corpus.join("README.md"), "# not an expression").unwrap();
+    std::fs::write(regressions.join("crash-1"), "E<BS").unwrap();
+    let cases = front::corpus::<Letters>(&root);
+    std::fs::remove_dir_all(&root).unwrap();
+    let got: Vec<(String, String)> = cases
+        .unwrap()
+        .into_iter()
+        .map(|c| (c.origin, c.text))
+        .collect();
+    let want = [
+        ("fuzz/corpus/letters/a", "EL"),
+        ("fuzz/corpus/letters/b", "E<BD>L"),
+        ("fuzz/regressions/letters/crash-1", "E<BS"),
+    ];
+    assert_eq!(
+        got,
+        want.map(|(o, t)| (o.to_string(), t.to_string())).to_vec()
     );
 }
