@@ -89,6 +89,8 @@ fn agreement_exits_0_and_the_planted_bug_3_with_a_replay_that_replays() {
     let (code, out, err) = lpe_check(&["diff", "--external", clean, "--cases", "60"]);
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("agrees with every engine"), "{out}");
+    // The header names the matcher as its `hello` reply does.
+    assert!(out.contains("(naive-python, renderman dialect)"), "{out}");
     let buggy = "python3 examples/python/naive_matcher.py --plant-bug";
     let (code, out, _) = lpe_check(&[
         "diff",

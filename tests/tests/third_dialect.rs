@@ -617,7 +617,7 @@ fn meaning(found: Option<(front::Finding, String, String)>) -> (String, bool, bo
 /// Without faults the two sides agree: on what both accept and on what both reject.
 #[test]
 fn the_front_end_comparison_agrees_without_a_fault() {
-    for text in ["E<BD>L", "E<BD>[LO]", "E(BD|PS)*L", "E<BD", ")"] {
+    for text in ["E<BD>L", "E<BD>[OL]", "E(BD|PS)*L", "E<BD", ")"] {
         assert_eq!(compared(FrontFaults::NONE, text), None, "{text}");
     }
 }
@@ -720,19 +720,19 @@ fn a_front_end_disagreement_is_minimized_within_its_kind_and_reported() {
         rejects_text_without_o: true,
         ..FrontFaults::PRINTS_D_AS_S
     };
-    let d = with_front_faults(faults, || front::check::<Letters>(&planted("E<BD>[LO]"), 1))
+    let d = with_front_faults(faults, || front::check::<Letters>(&planted("E<BD>[OL]"), 1))
         .expect("found");
     assert!(matches!(d.finding, front::Finding::Print { .. }), "{d}");
     assert!(d.text.len() < d.original.len(), "not minimized: {d}");
     assert!(d.text.contains('O') && d.text.contains('D'), "{d}");
-    assert_eq!(d.original, "E<BD>[LO]");
+    assert_eq!(d.original, "E<BD>[OL]");
     let shown = d.to_string();
     let lines: Vec<&str> = shown.lines().collect();
     assert_eq!(
         lines[0],
         format!("front ends disagree on `{}` (planted)", d.text)
     );
-    assert_eq!(lines[1], "  minimized from `E<BD>[LO]`");
+    assert_eq!(lines[1], "  minimized from `E<BD>[OL]`");
     // No registration line: this dialect registers nothing.
     assert!(
         lines[2].starts_with("  lpe's tree and lpe's reading"),
@@ -777,7 +777,7 @@ fn a_minimized_front_end_disagreement_is_one_minimal() {
     let no_o = FrontFaults::REJECTS_WITHOUT_O;
     for (faults, text) in [
         (no_o, "E<BD>L'xy'"),
-        (FrontFaults::PRINTS_D_AS_S, "E<BD>[LO]"),
+        (FrontFaults::PRINTS_D_AS_S, "E<BD>[OL]"),
         (FrontFaults::READS_D_AS_S, "E(<BD>|<PS>)*[LO]"),
     ] {
         let case = planted(text);
