@@ -4,7 +4,7 @@
 use super::ast::{Expr, SymbolPattern as P, VertexPattern, WarningKind};
 use super::error::ErrorKind as K;
 use super::symbol::{Registered, Symbol};
-use super::{parse, parse_with};
+use super::{parse, parse_source, parse_with};
 use crate::automata::ir::Repetition;
 use crate::limits::Limits;
 
@@ -312,6 +312,9 @@ fn repetitions() {
         WarningKind::ReversedRange { min: 3, max: 1 }
     );
     assert_eq!(l.warnings[0].pos, 2);
+    // An equal pair is no reversed range: no warning.
+    assert_eq!(p("D{2,2}"), rep(sc("D"), 2, Some(2)));
+    assert!(parse("CD{2,2}", &none()).unwrap().warnings.is_empty());
     // One postfix per item: a second is read as a label.
     assert_eq!(err("C**"), (K::UnrecognizedBasicLabel("*".into()), 2));
     // No `?`.
@@ -557,6 +560,14 @@ fn limits_bound_depth_counts_and_positions() {
             max: 10
         }
     );
+    // Exactly at the limit is accepted: 1 + 4 * 2 + 1 positions.
+    assert!(parse_with("C(D{4}){2}L", &none(), &limits).is_ok());
+    // Sibling groups inside one slot's alternatives do not add up to depth either.
+    let siblings = format!("<({})D>", vec!["(R)"; 200].join("|"));
+    assert!(parse_with(&siblings, &none(), &Limits::default()).is_ok());
+    // A source with the `lpe:` mark reports positions in the whole source.
+    assert_eq!(parse_source("lpe:C<RD", &none()).unwrap_err().pos, 8);
+    assert_eq!(parse("C<RD", &none()).unwrap_err().pos, 4);
     // Every prefix of a tricky expression gives an answer, never a panic.
     let src = "C(R('a'+|G[^S]{2}[^OC]){2,}|(L|T*[sBO]{2,})+)<R.'é'>[^'x']";
     for (i, _) in src.char_indices() {

@@ -188,6 +188,10 @@ mod tests {
         assert_eq!("U".parse::<Registered>().unwrap_err().pos, 0);
         assert!("".parse::<Registered>().is_err());
         assert!("events=A=B".parse::<Registered>().is_err());
+        assert_eq!(
+            e.to_string(),
+            "at byte 9: `colors=Y` is neither `events=A,B` nor `scatters=Y` (or `-` for none)"
+        );
     }
 
     #[test]
