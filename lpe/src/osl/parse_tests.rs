@@ -312,6 +312,9 @@ fn repetitions() {
         WarningKind::ReversedRange { min: 3, max: 1 }
     );
     assert_eq!(l.warnings[0].pos, 2);
+    // Behind the `lpe:` mark, the warning points into the whole source.
+    let l = parse_source("lpe:CD{3,1}", &none()).unwrap();
+    assert_eq!(l.warnings[0].pos, 6);
     // An equal pair is no reversed range: no warning.
     assert_eq!(p("D{2,2}"), rep(sc("D"), 2, Some(2)));
     assert!(parse("CD{2,2}", &none()).unwrap().warnings.is_empty());
