@@ -1,7 +1,7 @@
 //! The parser, rule by rule and error by error; expected trees written by hand from the
 //! OSL facts (docs/language.md, OSL chapter).
 
-use super::ast::{Expr, SymbolPattern as P, VertexPattern, WarningKind};
+use super::ast::{Expr, Lpe, SymbolPattern as P, VertexPattern, WarningKind};
 use super::error::ErrorKind as K;
 use super::symbol::{Registered, Symbol};
 use super::{parse, parse_source, parse_with};
@@ -613,6 +613,26 @@ fn set_algebra_over_whole_expressions() {
     );
     assert_eq!(l.expr, p("C.*L"));
     assert_eq!(l.operands().len(), 3);
+    // Evaluated over the operands' answers, in operand order: in C.*L, not in C.*DL,
+    // not in CL (a path such as `C R,D R,G L`).
+    let answers = |a: [bool; 3]| {
+        let mut it = a.into_iter();
+        move |_: &Expr| it.next().unwrap()
+    };
+    assert!(l.eval(&mut answers([true, false, false])));
+    assert!(!l.eval(&mut answers([true, true, false])));
+    assert!(!l.eval(&mut answers([true, false, true])));
+    // The same formula over operand numbers, one per expression.
+    let f = Lpe::formulas([&l, &parse("CL", &none()).unwrap()]);
+    assert_eq!(f.len(), 2);
+    assert!(f[0].eval(&mut |&i| i == 0));
+    assert!(!f[0].eval(&mut |&i| i <= 1));
+    assert_eq!(f[1], Algebra::Leaf(3));
+    // A one-character label prints bare unless it means something inside `<>`.
+    assert_eq!(
+        parse("<R.'x'><R.'.'><R.'k'>", &none()).unwrap().to_string(),
+        "<R.'x'><R.'.'><R.k>"
+    );
     // An alternation operand prints in parentheses, the rest as the dialect prints.
     assert_eq!(
         parse("CL - [LO]", &none()).unwrap().to_string(),
