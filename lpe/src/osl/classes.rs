@@ -298,6 +298,30 @@ mod tests {
         VertexClasses::new(&pats.iter().collect::<Vec<_>>()).unwrap()
     }
 
+    /// The memory model: every table at its element's size, and each mentioned label's
+    /// text plus 24 bytes (its box and map entry).
+    #[test]
+    fn memory_counts_every_table_at_its_element_size_and_each_label() {
+        let vc = classes(&patterns(
+            &["C<RD'key'>[LO]", "C'lamp'L"],
+            &Registered::none(),
+        ));
+        assert!(!vc.trans.is_empty() && !vc.class_of.is_empty() && !vc.accept.is_empty());
+        let tables = std::mem::size_of_val(vc.trans.as_slice())
+            + std::mem::size_of_val(vc.class_of.as_slice())
+            + std::mem::size_of_val(vc.accept.as_slice());
+        // Every built-in label is mentioned (the eater tells them from the rest), then
+        // the custom ones of the patterns.
+        let mentioned = [
+            "B", "C", "D", "G", "L", "O", "R", "S", "T", "V", "key", "lamp", "s",
+        ];
+        let labels: usize = mentioned.iter().map(|l| l.len() + 24).sum();
+        let mut keys: Vec<&str> = vc.label_ids.keys().map(|k| &**k).collect();
+        keys.sort_unstable();
+        assert_eq!(keys, mentioned);
+        assert_eq!(vc.memory_bytes(), tables + labels);
+    }
+
     #[test]
     fn classes_agree_with_each_pattern_on_every_vertex() {
         let reg: Registered = "events=U;scatters=Y".parse().unwrap();

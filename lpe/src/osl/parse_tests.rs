@@ -628,6 +628,11 @@ fn set_algebra_over_whole_expressions() {
     assert!(f[0].eval(&mut |&i| i == 0));
     assert!(!f[0].eval(&mut |&i| i <= 1));
     assert_eq!(f[1], Algebra::Leaf(3));
+    // A count with equal bounds prints as one number.
+    assert_eq!(
+        parse("CD{3,3}L", &none()).unwrap().to_string(),
+        "<C.><.D>{3}<L.>"
+    );
     // A one-character label prints bare unless it means something inside `<>`.
     assert_eq!(
         parse("<R.'x'><R.'.'><R.'k'>", &none()).unwrap().to_string(),
