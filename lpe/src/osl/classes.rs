@@ -320,6 +320,8 @@ mod tests {
         keys.sort_unstable();
         assert_eq!(keys, mentioned);
         assert_eq!(vc.memory_bytes(), tables + labels);
+        // The automaton layer asks through the trait: the same count.
+        assert_eq!(ClassTable::memory_bytes(&vc), tables + labels);
     }
 
     #[test]
@@ -381,6 +383,26 @@ mod tests {
         // Representatives are members of their class.
         for c in 0..vc.class_count() {
             assert_eq!(vc.classify(vc.representative(c)).index(), c);
+        }
+    }
+
+    /// Past 64 patterns a class's accepting atoms take more than one word: each class
+    /// reads its own row.
+    #[test]
+    fn classes_of_more_than_64_patterns_accept_across_words() {
+        let srcs: Vec<String> = (0..70).map(|i| format!("<R.'l{i}'>")).collect();
+        let srcs: Vec<&str> = srcs.iter().map(String::as_str).collect();
+        let pats = patterns(&srcs, &Registered::none());
+        assert_eq!(pats.len(), 70);
+        let vc = classes(&pats);
+        for i in [0, 1, 63, 64, 69] {
+            let label = format!("l{i}");
+            let syms = ["R", "D", label.as_str()].map(Symbol::label).to_vec();
+            let c = vc.classify(&Vertex::new(syms.clone())).index();
+            for (a, p) in pats.iter().enumerate() {
+                assert_eq!(vc.accepts(c, a), a == i, "{p} on {syms:?}");
+                assert_eq!(p.accepts(&syms), a == i, "{p} on {syms:?}");
+            }
         }
     }
 

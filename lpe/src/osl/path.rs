@@ -244,6 +244,8 @@ mod tests {
         assert_eq!(p.vertices[0].symbols, [lbl("C"), lbl("_")]);
         assert_eq!(p.vertices[2].symbols, [lbl("R"), lbl("D"), lbl("1")]);
         assert_eq!(p.to_string(), "C,_ T,S R,D,1 L,_");
+        assert!(!p.is_empty());
+        assert!(Path::new(Vec::new()).is_empty());
     }
 
     #[test]
