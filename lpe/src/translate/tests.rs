@@ -77,6 +77,34 @@ fn cross_witnesses_are_the_first_found_and_every_kind_is_searched_for() {
     assert!(c.equivalent(), "{c:?}");
 }
 
+fn text<P: fmt::Display>(p: Option<&P>) -> Option<String> {
+    p.map(|p| p.to_string())
+}
+
+#[test]
+fn each_dialect_reads_its_own_side_of_a_witness() {
+    // `lpe-check translate` re-checks every witness with each dialect's reference matcher
+    // on the side these pick: the wrong side, or none, would skip or garble the re-check.
+    let c = cross::compare(&rm("C<RS>L"), &parse::<Osl>("C<RS>L"), &corr()).unwrap();
+    let w = c.renderman_only.unwrap();
+    let (rm_path, osl_path) = (Some("C RS1 L".to_string()), Some("C,~ R,G L,~".to_string()));
+    assert_eq!(text(<RenderMan as Translate>::source_path(&w)), rm_path);
+    assert_eq!(text(<RenderMan as Translate>::target_path(&w)), osl_path);
+    assert_eq!(text(<Osl as Translate>::source_path(&w)), osl_path);
+    assert_eq!(text(<Osl as Translate>::target_path(&w)), rm_path);
+    // A user lobe has no OSL view: only the RenderMan side has a path.
+    let c = cross::compare(&rm("C(.|U)L"), &parse::<Osl>("C.L"), &corr()).unwrap();
+    let w = Witness {
+        renderman: c.outside.unwrap(),
+        osl: None,
+    };
+    let user = Some("C RU1 L".to_string());
+    assert_eq!(text(<RenderMan as Translate>::source_path(&w)), user);
+    assert_eq!(text(<Osl as Translate>::target_path(&w)), user);
+    assert!(<RenderMan as Translate>::target_path(&w).is_none());
+    assert!(<Osl as Translate>::source_path(&w).is_none());
+}
+
 #[test]
 fn collisions_are_two_paths_with_one_view() {
     let c = cross::collision(&rm("C<RD2>L"), &corr()).unwrap().unwrap();
@@ -220,8 +248,11 @@ fn translations_from_the_osl_dialect_keep_groups_and_merge_single_vertex_alterna
     let t = translate::<Osl>(&parse::<Osl>("C(<RD><TS>)*L"), &corr()).unwrap();
     assert!(t.exact);
     assert_eq!(t.text.to_string(), "C(<RD><TS8>)*L");
-    // Letters where a letter says it: a label, an event, one named label in a triple.
+    // Letters where a letter says it: a type, any scattering vertex, a label, an event,
+    // one named label in a triple.
     for (osl_text, renderman_text) in [
+        ("C<T.>L", "CTL"),
+        ("C<[RT].>L", "C.L"),
         ("C'a'L", "C'a'L"),
         ("C.*<.D>.*[LO]", "C.*D.*[LO]"),
         ("C<RD'a'>L", "C<RD'a'>L"),

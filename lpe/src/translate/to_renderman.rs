@@ -299,7 +299,9 @@ fn item(types: Vec<VertexType>, events: Option<BTreeSet<Event>>, label: LabelPos
     vec![single_item(types, events, label)]
 }
 
-/// One item for `types`, `events` and `label`.
+/// One item for `types`, `events` and `label`, where the events or the label restrict
+/// (`item` spells the rest as letters): an event or a label alone where a letter says it,
+/// else a triple.
 fn single_item(types: Vec<VertexType>, events: Option<BTreeSet<Event>>, label: LabelPos) -> Item {
     let scattering_pair = types == [VertexType::R, VertexType::T];
     let ty = if scattering_pair {
@@ -317,8 +319,6 @@ fn single_item(types: Vec<VertexType>, events: Option<BTreeSet<Event>>, label: L
         Some(evs) => event_pos(&evs),
     };
     match (&ty, &event, &label) {
-        (TypePos::One(t), EventPos::Any, LabelPos::Any) => Item::Type(*t),
-        (TypePos::Any, EventPos::Any, LabelPos::Any) => Item::Any,
         (TypePos::Any, EventPos::One(e), LabelPos::Any) => Item::Event(*e),
         (TypePos::Any, EventPos::Any, LabelPos::One(l)) => Item::Label(l.clone()),
         _ => Item::Triple(Triple { ty, event, label }),
