@@ -139,6 +139,38 @@ mod tests {
     }
 
     #[test]
+    fn the_failure_test_is_asked_at_most_the_try_budget() {
+        // A failure test that never holds: each candidate is asked once, until the budget
+        // runs out, and the input comes back unchanged.
+        let exprs: Vec<Lpe> = ["C(<RD>'a')*.'b'.'c'.'d'[<L.>O]", "C.{2,5}'e'+L"]
+            .iter()
+            .map(|s| lpe::renderman::parse(s).unwrap())
+            .collect();
+        let path: Path = format!("C {}L'key'", "RD1'w' ".repeat(300))
+            .parse()
+            .unwrap();
+        // The premise: more candidates than the budget, counting the first loop's two
+        // (set members dropped) that are asked before the budget is first checked.
+        let reg = Default::default();
+        let paths = RenderMan::shrink_path(&path).len();
+        let expr_steps: usize = exprs
+            .iter()
+            .map(|e| RenderMan::shrink_expr(e, &reg).len())
+            .sum();
+        assert!(
+            2 + expr_steps + paths + expr_steps * paths > MAX_SHRINK_TRIES + 2,
+            "{expr_steps} {paths}"
+        );
+        let mut asked = 0;
+        let (e, p) = minimize_by::<RenderMan>(&reg, exprs.clone(), path.clone(), |_, _| {
+            asked += 1;
+            false
+        });
+        assert_eq!(asked, MAX_SHRINK_TRIES);
+        assert_eq!((e, p), (exprs, path));
+    }
+
+    #[test]
     fn sets_shrink_to_the_member_that_disagrees() {
         let engines: Vec<&dyn Engine<RenderMan>> = vec![&Reference, &LabelBlind];
         let exprs: Vec<Lpe> = ["C<RD>[<L.>O]", "C'key'L", "CD+L"]
