@@ -2,7 +2,7 @@
  * lpe: light path expressions for renderers, the C ABI (C99 and C++).
  *
  * Scene load: lpe_set_compile() once (RenderMan or OSL dialect), lpe_classify() (OSL:
- * lpe_classify_osl()) per material lobe, light and camera, lpe_set_step_view() once.
+ * lpe_classify_symbols()) per material lobe, light and camera, lpe_set_step_view() once.
  * Per path: start from the view's start, lpe_view_step() per vertex (inline: the table
  * load in your loop, no call while the set's DFA answers; lpe_step() is the call),
  * lpe_matches() at an emitter, lpe_view_is_dead() to stop early. A compiled lpe_set is
@@ -25,7 +25,7 @@
 #define LPE_DIALECT_RENDERMAN 0
 
 // Expressions in OSL's LPE dialect (docs/language.md §18), parsed under the labels
-// `lpe_options.osl_registered` names; classify vertices with `lpe_classify_osl`.
+// `lpe_options.osl_registered` names; classify vertices with `lpe_classify_symbols`.
 #define LPE_DIALECT_OSL 1
 
 // What a call did. `LPE_OK` is 0; every error is non-zero.
@@ -145,14 +145,14 @@ extern "C" {
 // The class of a vertex, into `*out`. Classify every kind of scene vertex once, at
 // load, and step with classes. `LPE_ERR_RANGE`: an unknown letter, a lobe out of
 // range, an event on `C`/`L`/`O`, a label on `C`; `LPE_ERR_UTF8`: a label that is not
-// UTF-8; `LPE_ERR_UNSUPPORTED`: an OSL set (use `lpe_classify_osl`).
+// UTF-8; `LPE_ERR_UNSUPPORTED`: an OSL set (use `lpe_classify_symbols`).
 enum lpe_status lpe_classify(const struct lpe_set *set,
                              const struct lpe_vertex *vertex,
                              struct lpe_class *out);
 
 // The class of one vertex written in path text form (docs/language.md §2.3), such as
 // `RD2'floor'`, `L'key'` or `C`, into `*out`. `LPE_ERR_PARSE` if it is not exactly one
-// vertex; `LPE_ERR_UNSUPPORTED` on an OSL set (use `lpe_classify_osl`).
+// vertex; `LPE_ERR_UNSUPPORTED` on an OSL set (use `lpe_classify_symbols`).
 enum lpe_status lpe_classify_text(const struct lpe_set *set,
                                   const char *vertex,
                                   struct lpe_class *out);
@@ -165,10 +165,10 @@ enum lpe_status lpe_classify_text(const struct lpe_set *set,
 // and step with classes; a vertex of fewer than two symbols matches nothing, as in OSL.
 // `LPE_ERR_RANGE`: `count` is 0; `LPE_ERR_UTF8`: a symbol that is not UTF-8;
 // `LPE_ERR_UNSUPPORTED`: a RenderMan set (use `lpe_classify`).
-enum lpe_status lpe_classify_osl(const struct lpe_set *set,
-                                 const char *const *symbols,
-                                 size_t count,
-                                 struct lpe_class *out);
+enum lpe_status lpe_classify_symbols(const struct lpe_set *set,
+                                     const char *const *symbols,
+                                     size_t count,
+                                     struct lpe_class *out);
 
 // The status this error stands for (`LPE_ERR_NULL` if `error` is NULL).
 enum lpe_status lpe_error_status(const struct lpe_error *error);

@@ -91,7 +91,7 @@ pub(crate) fn classify_into<D: CDialect>(
 /// The class of a vertex, into `*out`. Classify every kind of scene vertex once, at
 /// load, and step with classes. `LPE_ERR_RANGE`: an unknown letter, a lobe out of
 /// range, an event on `C`/`L`/`O`, a label on `C`; `LPE_ERR_UTF8`: a label that is not
-/// UTF-8; `LPE_ERR_UNSUPPORTED`: an OSL set (use `lpe_classify_osl`).
+/// UTF-8; `LPE_ERR_UNSUPPORTED`: an OSL set (use `lpe_classify_symbols`).
 #[no_mangle]
 pub extern "C" fn lpe_classify(
     set: *const lpe_set,
@@ -111,7 +111,7 @@ pub extern "C" fn lpe_classify(
 
 /// The class of one vertex written in path text form (docs/language.md §2.3), such as
 /// `RD2'floor'`, `L'key'` or `C`, into `*out`. `LPE_ERR_PARSE` if it is not exactly one
-/// vertex; `LPE_ERR_UNSUPPORTED` on an OSL set (use `lpe_classify_osl`).
+/// vertex; `LPE_ERR_UNSUPPORTED` on an OSL set (use `lpe_classify_symbols`).
 #[no_mangle]
 pub extern "C" fn lpe_classify_text(
     set: *const lpe_set,

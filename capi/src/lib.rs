@@ -18,7 +18,7 @@
 //! Both dialects: `LPE_DIALECT_RENDERMAN` sets classify vertices by type, event, lobe
 //! and label (`lpe_classify`, `lpe_classify_text`); `LPE_DIALECT_OSL` sets, compiled
 //! under the registration in `lpe_options.osl_registered`, classify a vertex from its
-//! symbols (`lpe_classify_osl`). Stepping is the same for both.
+//! symbols (`lpe_classify_symbols`). Stepping is the same for both.
 //!
 //! Modules: [`status`] (codes and the panic guard), [`error`] (the error object of a
 //! failed compile), [`set`] (compile, names, warnings, free), `dialect` (what the ABI
@@ -45,7 +45,7 @@ pub mod view;
 
 pub use classify::{lpe_class, lpe_vertex};
 // OSL vertices are classified from their symbols, in the OSL dialect's own module.
-pub use dialect::osl::lpe_classify_osl;
+pub use dialect::osl::lpe_classify_symbols;
 pub use error::lpe_error;
 pub use set::{lpe_options, lpe_set};
 pub use status::lpe_status;

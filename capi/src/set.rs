@@ -11,7 +11,7 @@ use crate::status::{guard, lpe_status};
 /// Expressions in RenderMan's LPE dialect (docs/language.md).
 pub const LPE_DIALECT_RENDERMAN: u32 = 0;
 /// Expressions in OSL's LPE dialect (docs/language.md §18), parsed under the labels
-/// `lpe_options.osl_registered` names; classify vertices with `lpe_classify_osl`.
+/// `lpe_options.osl_registered` names; classify vertices with `lpe_classify_symbols`.
 pub const LPE_DIALECT_OSL: u32 = 1;
 
 /// Compile-time knobs; start from `lpe_options_default()`.

@@ -8,7 +8,7 @@ use lpe_capi::classify::{lpe_classify, lpe_classify_text};
 use lpe_capi::error::{
     lpe_error_aov, lpe_error_free, lpe_error_message, lpe_error_position, lpe_error_status,
 };
-use lpe_capi::lpe_classify_osl;
+use lpe_capi::lpe_classify_symbols;
 use lpe_capi::set::*;
 use lpe_capi::status::lpe_status_message;
 use lpe_capi::step::{
@@ -269,7 +269,7 @@ fn bad_arguments_are_errors_not_crashes() {
     // An OSL vertex on a RenderMan set is the wrong dialect, not a crash.
     let syms = [null::<c_char>()];
     assert_eq!(
-        lpe_classify_osl(set.0, syms.as_ptr(), 1, &mut c),
+        lpe_classify_symbols(set.0, syms.as_ptr(), 1, &mut c),
         lpe_status::LPE_ERR_UNSUPPORTED
     );
     assert_eq!(
@@ -406,7 +406,7 @@ fn route_by_symbols(set: &Set, path: &str, stepping: Stepping) -> u64 {
             .collect();
         let mut c = lpe_class { id: u32::MAX };
         assert_eq!(
-            lpe_classify_osl(set.0, ptrs.as_ptr(), ptrs.len(), &mut c),
+            lpe_classify_symbols(set.0, ptrs.as_ptr(), ptrs.len(), &mut c),
             lpe_status::LPE_OK,
             "{vertex}"
         );
@@ -559,26 +559,26 @@ fn classifying_symbols_checks_its_arguments_and_the_dialect() {
     let d = CString::new("D").unwrap();
     let syms = [r.as_ptr(), d.as_ptr()];
     assert_eq!(
-        lpe_classify_osl(set.0, syms.as_ptr(), 2, &mut c),
+        lpe_classify_symbols(set.0, syms.as_ptr(), 2, &mut c),
         lpe_status::LPE_OK
     );
     assert!(c.id < lpe_set_class_count(set.0) as u32);
     assert_eq!(
-        lpe_classify_osl(set.0, syms.as_ptr(), 0, &mut c),
+        lpe_classify_symbols(set.0, syms.as_ptr(), 0, &mut c),
         lpe_status::LPE_ERR_RANGE
     );
     assert_eq!(
-        lpe_classify_osl(set.0, null(), 2, &mut c),
+        lpe_classify_symbols(set.0, null(), 2, &mut c),
         lpe_status::LPE_ERR_NULL
     );
     assert_eq!(
-        lpe_classify_osl(null(), syms.as_ptr(), 2, &mut c),
+        lpe_classify_symbols(null(), syms.as_ptr(), 2, &mut c),
         lpe_status::LPE_ERR_NULL
     );
     let bad_utf8 = [0xffu8, 0];
     let bad = [r.as_ptr(), bad_utf8.as_ptr().cast::<c_char>()];
     assert_eq!(
-        lpe_classify_osl(set.0, bad.as_ptr(), 2, &mut c),
+        lpe_classify_symbols(set.0, bad.as_ptr(), 2, &mut c),
         lpe_status::LPE_ERR_UTF8
     );
     // RenderMan vertices on an OSL set are the wrong dialect.

@@ -33,7 +33,7 @@ fn the_checked_in_header_is_current() {
         "#include <stdint.h>",
         // A state is one register-sized value.
         "uint32_t opaque;\n} lpe_state;",
-        "lpe_classify_osl(",
+        "lpe_classify_symbols(",
         "const char *osl_registered;",
         // The inline step, under a guard of its own (it follows LPE_H's #endif).
         "#ifndef LPE_H_INLINE",

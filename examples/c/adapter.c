@@ -271,7 +271,7 @@ static int osl_vertex(const char **p, char *buf, const char **symbols, lpe_class
         (*p)++;
     }
     if (**p && **p != ' ') return 0;
-    return lpe_classify_osl(set, symbols, count, c) == LPE_OK;
+    return lpe_classify_symbols(set, symbols, count, c) == LPE_OK;
 }
 
 /* Steps a path written in the dialect's text form and prints the names of the AOVs it

@@ -1,5 +1,5 @@
 //! OSL's dialect in the C ABI: sets compiled under the labels `osl_registered` names,
-//! and vertices from their symbols (`lpe_classify_osl`).
+//! and vertices from their symbols (`lpe_classify_symbols`).
 
 use std::ffi::c_char;
 
@@ -81,7 +81,7 @@ pub(crate) fn vertex_of(symbols: &[*const c_char]) -> Result<Vertex, lpe_status>
 /// `LPE_ERR_RANGE`: `count` is 0; `LPE_ERR_UTF8`: a symbol that is not UTF-8;
 /// `LPE_ERR_UNSUPPORTED`: a RenderMan set (use `lpe_classify`).
 #[no_mangle]
-pub extern "C" fn lpe_classify_osl(
+pub extern "C" fn lpe_classify_symbols(
     set: *const lpe_set,
     symbols: *const *const c_char,
     count: usize,
