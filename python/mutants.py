@@ -21,6 +21,7 @@ import glob
 import json
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import time
@@ -58,13 +59,14 @@ def main():
     only = {l.strip() for l in open(args.names) if l.strip()} if args.names else None
     done = {}
     if os.path.exists(args.out):
-        done = {json.loads(l)["name"]: json.loads(l) for l in open(args.out) if l.strip()}
+        records = (json.loads(l) for l in open(args.out) if l.strip())
+        done = {r["name"]: r for r in records}
     os.makedirs(os.path.dirname(os.path.abspath(args.out)), exist_ok=True)
 
     def build_and_install():
         b = subprocess.run(BUILD, cwd=ROOT, env=env, capture_output=True, text=True)
         if b.returncode == 0:
-            subprocess.run(["cp", str(built), module], check=True)
+            shutil.copyfile(built, module)
         return b.returncode == 0
 
     def pytest():
