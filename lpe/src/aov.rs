@@ -233,6 +233,19 @@ impl<D: Dialect> AovSet<D> {
         })
     }
 
+    /// The vertex classes and NFA of `aovs`' operands (hidden AOVs, numbered as
+    /// [`crate::algebra::formulas`] numbers them) with each AOV's formula over them, under
+    /// the checks and limits of a compile but without the DFA: what the analyses search.
+    pub(crate) fn operand_nfa(
+        aovs: &[(String, D::Lpe)],
+        opts: &Options,
+    ) -> Result<(D::Classes, Nfa, Vec<crate::algebra::Algebra<usize>>), CompileError> {
+        let hidden = Hidden::of(aovs)?;
+        let (classes, nfa, _) = Self::build_nfa(&hidden.operands, opts)?;
+        let formulas = crate::algebra::formulas(aovs.iter().map(|(_, l)| l));
+        Ok((classes, nfa, formulas))
+    }
+
     /// One follow row per position is the least an NFA needs: `positions^2 / 8` bytes.
     fn check_nfa_budget(positions: u64, opts: &Options) -> Result<(), CompileError> {
         let rows = positions

@@ -1,6 +1,9 @@
 //! Equivalence and inclusion of two expressions, with shortest witnesses.
 
-use super::search::{analysis_options, explore, AnalysisError};
+use super::budget::{AnalysisBudget, Decision, Meter, Undecided};
+use super::problem::{Problem, Stop};
+use super::search::{analysis_options, explore_metered, AnalysisError};
+use crate::algebra::Algebra;
 use crate::aov::AovSet;
 use crate::automata::mask::AovMask;
 use crate::dialect::{Dialect, DialectLpe};
@@ -23,7 +26,9 @@ impl<P> Comparison<P> {
 
 /// Compares two expressions of one dialect on every path of its path model (OSL's: every
 /// sequence of vertices): equivalence, inclusion, and shortest witnesses of the
-/// differences.
+/// differences. [`compare_within`] with the default [`AnalysisBudget`]; past it, the
+/// error [`AnalysisError::TooLarge`] (use [`compare_within`] to tell an undecided
+/// question from a failed compile).
 ///
 /// ```
 /// use lpe::analysis::compare;
@@ -42,21 +47,118 @@ where
     L: DialectLpe<Dialect = D>,
     D: Dialect<Lpe = L>,
 {
-    compare_in::<D>(a, b)
+    let budget = AnalysisBudget::default();
+    match compare_in::<D>(a, b, &budget)? {
+        Decision::Decided(c) => Ok(c),
+        Decision::Undecided(_) => Err(AnalysisError::TooLarge(budget.steps)),
+    }
 }
 
-/// [`compare`] with the dialect named (the expressions' bounds are the dialect's).
-fn compare_in<D: Dialect>(a: &D::Lpe, b: &D::Lpe) -> Result<Comparison<D::Path>, AnalysisError> {
-    let aovs = [("A".to_string(), a.clone()), ("B".to_string(), b.clone())];
-    let set = AovSet::<D>::compile_under(&aovs, &D::Registration::default(), &analysis_options())?;
-    differences(|visit| explore(&set, visit))
+/// [`compare`] within `budget`: [`Decision::Undecided`] when it runs out first.
+///
+/// Plain expressions and set algebra whose questions have few conjuncts are decided on
+/// the NFA of both, without determinizing either (module `antichain`): `C.*D.{k}L`
+/// against `C.*D.{k}[LO]` in `O(k^2)` nodes, where their DFAs have `2^k` states. Other
+/// set algebra is decided by a breadth-first search of the lazy DFA of both
+/// ([`compare_by_lazy_dfa`]). Either way the witnesses are the first shortest paths in
+/// the order of the set's vertex classes.
+///
+/// ```
+/// use lpe::analysis::{compare_within, AnalysisBudget, Decision};
+/// use lpe::renderman::parse;
+///
+/// let (a, b) = (parse("C.*D.{24}L").unwrap(), parse("C.*D.{24}[LO]").unwrap());
+/// let Decision::Decided(c) = compare_within(&a, &b, &AnalysisBudget::default()).unwrap() else {
+///     panic!("undecided")
+/// };
+/// assert_eq!((c.first_only, c.second_only.map(|p| p.len())), (None, Some(27)));
+/// // A budget of 10 search steps is not enough.
+/// let tiny = compare_within(&a, &b, &AnalysisBudget::steps(10)).unwrap();
+/// assert!(matches!(tiny, Decision::Undecided(_)));
+/// ```
+pub fn compare_within<D, L>(
+    a: &L,
+    b: &L,
+    budget: &AnalysisBudget,
+) -> Result<Decision<Comparison<D::Path>>, AnalysisError>
+where
+    L: DialectLpe<Dialect = D>,
+    D: Dialect<Lpe = L>,
+{
+    compare_in::<D>(a, b, budget)
+}
+
+/// [`compare_within`] on the lazy DFA of both expressions alone: a breadth-first search
+/// over its states, one budget step per state. Exponential on `C.*D.{k}L` against
+/// `C.*D.{k}[LO]`; kept as the independent oracle the NFA route is tested against and as
+/// the baseline of `lpe-check bench --analysis`. It shares with the NFA route the
+/// parsed trees, the vertex classes and the letters' order, not the search.
+pub fn compare_by_lazy_dfa<D, L>(
+    a: &L,
+    b: &L,
+    budget: &AnalysisBudget,
+) -> Result<Decision<Comparison<D::Path>>, AnalysisError>
+where
+    L: DialectLpe<Dialect = D>,
+    D: Dialect<Lpe = L>,
+{
+    let mut meter = Meter::new(budget);
+    by_lazy_dfa::<D>(&both::<D>(a, b), &mut meter)
+}
+
+/// The set a comparison compiles: `A`, then `B`.
+fn both<D: Dialect>(a: &D::Lpe, b: &D::Lpe) -> [(String, D::Lpe); 2] {
+    [("A".to_string(), a.clone()), ("B".to_string(), b.clone())]
+}
+
+fn by_lazy_dfa<D: Dialect>(
+    aovs: &[(String, D::Lpe)],
+    meter: &mut Meter,
+) -> Result<Decision<Comparison<D::Path>>, AnalysisError> {
+    let set = AovSet::<D>::compile_under(aovs, &D::Registration::default(), &analysis_options())?;
+    Ok(decided(differences(|visit| {
+        explore_metered(&set, meter, visit)
+    })))
+}
+
+fn decided<T>(r: Result<T, Undecided>) -> Decision<T> {
+    match r {
+        Ok(t) => Decision::Decided(t),
+        Err(u) => Decision::Undecided(u),
+    }
+}
+
+/// [`compare_within`] with the dialect named (the expressions' bounds are the dialect's).
+fn compare_in<D: Dialect>(
+    a: &D::Lpe,
+    b: &D::Lpe,
+    budget: &AnalysisBudget,
+) -> Result<Decision<Comparison<D::Path>>, AnalysisError> {
+    let aovs = both::<D>(a, b);
+    let mut meter = Meter::new(budget);
+    let problem = Problem::<D>::new(&aovs, &analysis_options())?;
+    let (fa, fb) = (&problem.formulas[0], &problem.formulas[1]);
+    let only = |x: &Algebra<usize>, y: &Algebra<usize>| {
+        Algebra::and(x.clone(), Algebra::complement(y.clone()))
+    };
+    let witnesses = problem
+        .witness(&only(fa, fb), &mut meter)
+        .and_then(|first| Ok((first, problem.witness(&only(fb, fa), &mut meter)?)));
+    match witnesses {
+        Ok((first_only, second_only)) => Ok(Decision::Decided(Comparison {
+            first_only,
+            second_only,
+        })),
+        Err(Stop::Undecided(u)) => Ok(Decision::Undecided(u)),
+        Err(Stop::TooManyConjuncts) => by_lazy_dfa::<D>(&aovs, &mut meter),
+    }
 }
 
 /// The first shortest witness each way, from a search over the set of `A` (AOV 0) and
 /// `B` (AOV 1).
 fn differences<P>(
-    run: impl FnOnce(&mut dyn FnMut(AovMask, &dyn Fn() -> P) -> bool) -> Result<(), AnalysisError>,
-) -> Result<Comparison<P>, AnalysisError> {
+    run: impl FnOnce(&mut dyn FnMut(AovMask, &dyn Fn() -> P) -> bool) -> Result<(), Undecided>,
+) -> Result<Comparison<P>, Undecided> {
     let mut out = Comparison {
         first_only: None,
         second_only: None,

@@ -17,14 +17,21 @@
 //! becomes a fresh name such as `other`). Callers that print witnesses should re-check
 //! them with an independent matcher; `lpe-check` does, with the reference matcher.
 
+mod antichain;
+mod budget;
 mod compare;
+mod dnf;
 mod partition;
+mod problem;
 mod search;
 mod unmatched;
 
 pub use crate::automata::emptiness::Warning;
-pub use compare::{compare, Comparison};
-pub use partition::{default_universe, partition, remainder, Partition};
+pub use budget::{AnalysisBudget, Decision, Limit, Undecided, DEFAULT_STEPS};
+pub use compare::{compare, compare_by_lazy_dfa, compare_within, Comparison};
+pub use partition::{
+    default_universe, partition, partition_by_lazy_dfa, partition_within, remainder, Partition,
+};
 pub(crate) use search::analysis_options;
 pub use search::{AnalysisError, MAX_SEARCH_STATES};
-pub use unmatched::warnings;
+pub use unmatched::{warnings, warnings_within};

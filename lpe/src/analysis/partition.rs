@@ -1,7 +1,9 @@
 //! Partition checks: does a list of AOVs split a universe of paths into disjoint parts
 //! that cover it, and if not, shortest witnesses of each overlap, gap and stray path.
 
-use super::search::{analysis_options, explore, AnalysisError};
+use super::budget::{AnalysisBudget, Decision, Meter, Undecided};
+use super::problem::{Problem, Stop};
+use super::search::{analysis_options, explore_metered, AnalysisError};
 use crate::algebra::{Algebra, SetExpr};
 use crate::aov::AovSet;
 use crate::automata::mask::AovMask;
@@ -30,7 +32,8 @@ impl<P> Partition<P> {
 /// [`default_universe`]): every universe path matched by exactly one AOV, none matching
 /// outside it. A dialect with a [`Dialect::domain`] (OSL) is checked on the paths of
 /// that domain only: overlaps and gaps inside `universe`, and AOV matches on such paths
-/// outside it.
+/// outside it. [`partition_within`] with the default [`AnalysisBudget`]; past it, the
+/// error [`AnalysisError::TooLarge`].
 pub fn partition<D, L>(
     aovs: &[(String, L)],
     universe: &L,
@@ -40,15 +43,54 @@ where
     L: DialectLpe<Dialect = D>,
     D: Dialect<Lpe = L>,
 {
-    partition_in::<D>(aovs, universe, registration)
+    let budget = AnalysisBudget::default();
+    match partition_in::<D>(aovs, universe, registration, &budget)? {
+        Decision::Decided(p) => Ok(p),
+        Decision::Undecided(_) => Err(AnalysisError::TooLarge(budget.steps)),
+    }
 }
 
-/// [`partition`] with the dialect named (the expressions' bounds are the dialect's).
-fn partition_in<D: Dialect>(
+/// [`partition`] within `budget` (summed over its searches: one per pair of AOVs, one
+/// for the gap, one per AOV outside the universe): [`Decision::Undecided`] when it runs
+/// out first. Decided on the NFA of the expressions as
+/// [`crate::analysis::compare_within`] is, or for set algebra with many conjuncts on
+/// their lazy DFA ([`partition_by_lazy_dfa`]).
+pub fn partition_within<D, L>(
+    aovs: &[(String, L)],
+    universe: &L,
+    registration: &D::Registration,
+    budget: &AnalysisBudget,
+) -> Result<Decision<Partition<D::Path>>, AnalysisError>
+where
+    L: DialectLpe<Dialect = D>,
+    D: Dialect<Lpe = L>,
+{
+    partition_in::<D>(aovs, universe, registration, budget)
+}
+
+/// [`partition_within`] by one breadth-first search of the lazy DFA of every AOV, one
+/// budget step per state: the oracle the NFA route is tested against.
+pub fn partition_by_lazy_dfa<D, L>(
+    aovs: &[(String, L)],
+    universe: &L,
+    registration: &D::Registration,
+    budget: &AnalysisBudget,
+) -> Result<Decision<Partition<D::Path>>, AnalysisError>
+where
+    L: DialectLpe<Dialect = D>,
+    D: Dialect<Lpe = L>,
+{
+    let (all, domain) = with_universe::<D>(aovs, universe, registration);
+    by_lazy_dfa::<D>(&all, domain, registration, &mut Meter::new(budget))
+}
+
+/// The expressions a partition check compiles: the domain (if the dialect has one), the
+/// universe, the AOVs; and whether there is a domain.
+fn with_universe<D: Dialect>(
     aovs: &[(String, D::Lpe)],
     universe: &D::Lpe,
     registration: &D::Registration,
-) -> Result<Partition<D::Path>, AnalysisError> {
+) -> (Vec<(String, D::Lpe)>, bool) {
     let domain = D::domain(registration);
     let mut all = Vec::with_capacity(aovs.len() + 2);
     if let Some(d) = &domain {
@@ -56,27 +98,104 @@ fn partition_in<D: Dialect>(
     }
     all.push(("universe".to_string(), universe.clone()));
     all.extend_from_slice(aovs);
-    let set = AovSet::compile_under(&all, registration, &analysis_options())?;
-    if domain.is_none() {
-        return split(|visit| explore(&set, visit), 1);
+    (all, domain.is_some())
+}
+
+/// [`partition_within`] with the dialect named (the expressions' bounds are the dialect's).
+fn partition_in<D: Dialect>(
+    aovs: &[(String, D::Lpe)],
+    universe: &D::Lpe,
+    registration: &D::Registration,
+    budget: &AnalysisBudget,
+) -> Result<Decision<Partition<D::Path>>, AnalysisError> {
+    let (all, domain) = with_universe::<D>(aovs, universe, registration);
+    let mut meter = Meter::new(budget);
+    let problem = Problem::<D>::new(&all, &analysis_options())?;
+    match on_nfa(&problem, domain, aovs.len(), &mut meter) {
+        Ok(p) => Ok(Decision::Decided(p)),
+        Err(Stop::Undecided(u)) => Ok(Decision::Undecided(u)),
+        Err(Stop::TooManyConjuncts) => by_lazy_dfa::<D>(&all, domain, registration, &mut meter),
     }
-    split(
-        |visit| {
-            explore(&set, &mut |m: AovMask, w: &dyn Fn() -> D::Path| {
-                // Outside the domain nothing counts: drop bit 0 there as if unmatched.
-                m.contains(0) && visit(m.iter().skip(1).map(|i| i - 1).collect(), w)
-            })
-        },
-        1,
-    )
+}
+
+/// The partition report from one NFA search per question: per pair of AOVs (their
+/// overlap), the gap, per AOV (its paths outside the universe). `problem`'s formulas are
+/// the domain's (if `domain`), the universe's, then the `n` AOVs'.
+fn on_nfa<D: Dialect>(
+    problem: &Problem<D>,
+    domain: bool,
+    n: usize,
+    meter: &mut Meter,
+) -> Result<Partition<D::Path>, Stop> {
+    let f = &problem.formulas;
+    let first = usize::from(domain) + 1;
+    let universe = f[first - 1].clone();
+    // Every question is asked on the domain's paths only.
+    let within = |q: Algebra<usize>| match domain {
+        true => Algebra::and(f[0].clone(), q),
+        false => q,
+    };
+    let mut out = Partition {
+        overlaps: Vec::new(),
+        gap: None,
+        outside: Vec::new(),
+    };
+    for i in 0..n {
+        for j in i + 1..n {
+            let both = Algebra::and(f[first + i].clone(), f[first + j].clone());
+            let q = within(Algebra::and(universe.clone(), both));
+            if let Some(w) = problem.witness(&q, meter)? {
+                out.overlaps.push((i, j, w));
+            }
+        }
+    }
+    let gap = (0..n).fold(universe.clone(), |acc, i| {
+        Algebra::minus(acc, f[first + i].clone())
+    });
+    out.gap = problem.witness(&within(gap), meter)?;
+    for i in 0..n {
+        let q = within(Algebra::minus(f[first + i].clone(), universe.clone()));
+        if let Some(w) = problem.witness(&q, meter)? {
+            out.outside.push((i, w));
+        }
+    }
+    Ok(out)
+}
+
+/// The partition report from one search of the lazy DFA of `all` (the domain if
+/// `domain`, the universe, the AOVs).
+fn by_lazy_dfa<D: Dialect>(
+    all: &[(String, D::Lpe)],
+    domain: bool,
+    registration: &D::Registration,
+    meter: &mut Meter,
+) -> Result<Decision<Partition<D::Path>>, AnalysisError> {
+    let set = AovSet::compile_under(all, registration, &analysis_options())?;
+    let report = if !domain {
+        split(|visit| explore_metered(&set, meter, visit), 1)
+    } else {
+        split(
+            |visit| {
+                explore_metered(&set, meter, &mut |m: AovMask, w: &dyn Fn() -> D::Path| {
+                    // Outside the domain nothing counts: drop bit 0 there as if unmatched.
+                    m.contains(0) && visit(m.iter().skip(1).map(|i| i - 1).collect(), w)
+                })
+            },
+            1,
+        )
+    };
+    Ok(match report {
+        Ok(p) => Decision::Decided(p),
+        Err(u) => Decision::Undecided(u),
+    })
 }
 
 /// Overlaps, the gap and strays from a search over a set whose AOV 0 is the universe and
 /// AOVs `first..` the parts (reported from 0).
 fn split<P>(
-    run: impl FnOnce(&mut dyn FnMut(AovMask, &dyn Fn() -> P) -> bool) -> Result<(), AnalysisError>,
+    run: impl FnOnce(&mut dyn FnMut(AovMask, &dyn Fn() -> P) -> bool) -> Result<(), Undecided>,
     first: usize,
-) -> Result<Partition<P>, AnalysisError> {
+) -> Result<Partition<P>, Undecided> {
     let mut out = Partition {
         overlaps: Vec::new(),
         gap: None,

@@ -3,6 +3,7 @@
 
 use std::fmt;
 
+use super::budget::{Meter, Undecided};
 use crate::aov::{AovSet, CompileError, Options};
 use crate::automata::ir::{Place, VertexClasses};
 use crate::automata::mask::{AovMask, Class, State};
@@ -42,23 +43,18 @@ impl From<CompileError> for AnalysisError {
     }
 }
 
-/// Visits every distinct end state of a complete path, shortest path first, calling
-/// `visit(mask, witness)`; `visit` returns `true` to stop. Dead states are pruned, so
-/// masks are never empty. Paths are the sequences of the dialect's [`Dialect::SHAPE`]
-/// (RenderMan's: `C`, scattering vertices, one emitter; OSL's: any sequence).
-pub(super) fn explore<D: Dialect>(
+/// Visits every distinct end state of a complete path on the set's DFA or lazy DFA,
+/// shortest path first, calling `visit(mask, witness)`; `visit` returns `true` to stop.
+/// Dead states are pruned, so masks are never empty. Paths are the sequences of the
+/// dialect's [`Dialect::SHAPE`] (RenderMan's: `C`, scattering vertices, one emitter;
+/// OSL's: any sequence). One step of `meter` per state visited. The route of the
+/// analyses for questions the NFA route does not take, and the oracle its tests compare
+/// it with.
+pub(super) fn explore_metered<D: Dialect>(
     set: &AovSet<D>,
-    visit: impl FnMut(AovMask, &dyn Fn() -> D::Path) -> bool,
-) -> Result<(), AnalysisError> {
-    explore_within(set, MAX_SEARCH_STATES, visit)
-}
-
-/// [`explore`], giving up past `cap` states.
-pub(super) fn explore_within<D: Dialect>(
-    set: &AovSet<D>,
-    cap: usize,
+    meter: &mut Meter,
     mut visit: impl FnMut(AovMask, &dyn Fn() -> D::Path) -> bool,
-) -> Result<(), AnalysisError> {
+) -> Result<(), Undecided> {
     let classes = set.classes();
     // Letters: (class, place) with a representative vertex.
     let letters: Vec<(Class, Place, D::Vertex)> = (0..classes.class_count())
@@ -70,7 +66,7 @@ pub(super) fn explore_within<D: Dialect>(
             })
         })
         .collect();
-    walk(set, &letters, D::SHAPE.automaton(), cap, |m, witness| {
+    walk(set, &letters, D::SHAPE.automaton(), meter, |m, witness| {
         visit(m, &|| D::path(witness()))
     })
 }
@@ -82,9 +78,9 @@ fn walk<D: Dialect, V: Clone>(
     set: &AovSet<D>,
     letters: &[(Class, Place, V)],
     shape: &Shape,
-    cap: usize,
+    meter: &mut Meter,
     mut visit: impl FnMut(AovMask, &dyn Fn() -> Vec<V>) -> bool,
-) -> Result<(), AnalysisError> {
+) -> Result<(), Undecided> {
     // Node: (state, shape state); parent index and letter, for the witness.
     let mut nodes: Vec<(State, u8, usize, usize)> = vec![(set.start(), 0, usize::MAX, 0)];
     let mut seen: FxSet<(State, u8)> = FxSet::default();
@@ -101,9 +97,7 @@ fn walk<D: Dialect, V: Clone>(
             if set.is_dead(next) || !seen.insert((next, t)) {
                 continue;
             }
-            if nodes.len() >= cap {
-                return Err(AnalysisError::TooLarge(cap));
-            }
+            meter.spend(1)?;
             nodes.push((next, t, head, l));
             if shape.accept[t as usize] {
                 let end = nodes.len() - 1;

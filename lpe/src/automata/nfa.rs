@@ -565,6 +565,14 @@ impl Nfa {
         &self.rows[p * self.words()..][..self.words()]
     }
 
+    /// The positions whose atom accepts `class` (empty for a class of another set): with
+    /// [`Nfa::follow_of`], one position's successors, for searches that follow a single
+    /// run instead of a subset.
+    pub(crate) fn accept_of(&self, class: usize) -> &[u64] {
+        let w = self.words();
+        self.accept.get(class * w..(class + 1) * w).unwrap_or(&[])
+    }
+
     /// The AOV position `p` ends, if it is final.
     pub(crate) fn final_aov(&self, p: usize) -> Option<usize> {
         (p != 0 && self.aov_of[p] != u32::MAX).then(|| self.aov_of[p] as usize)
