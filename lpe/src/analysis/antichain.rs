@@ -227,6 +227,13 @@ impl Graph {
 
     /// A shortest witness of `q` as letter indices, the first in letter order among the
     /// shortest; `None` if there is none.
+    ///
+    /// A layer is a list of groups, a group the kept nodes one word reaches (one subset:
+    /// the subset depends on the word alone), in the order of their words; a group and
+    /// a letter make the next layer's group of the word one letter longer. Nodes are
+    /// thus made in the order of their words, shortest first, then in letter order,
+    /// which a list of nodes expanded one by one does not give (two nodes of one word,
+    /// expanded apart, interleave their continuations).
     pub(super) fn shortest(
         &self,
         q: &Conjunct,
@@ -240,60 +247,65 @@ impl Graph {
         // antichain of subsets.
         let mut kept: FxMap<(Box<[u32]>, u8), Vec<u32>> = FxMap::default();
         kept.insert((nodes[0].0.runs.clone(), 0), vec![0]);
-        let mut layer: Vec<u32> = vec![0];
+        let mut layer: Vec<Vec<u32>> = vec![vec![0]];
         let mut reordered = false;
-        let mut depth = 0usize;
         let mut succ = Vec::new();
         while !layer.is_empty() {
-            depth += 1;
             let first_of_layer = nodes.len() as u32;
             let mut removed_here = false;
             let mut next_layer = Vec::new();
-            for &id in &layer {
-                if removed[id as usize] {
-                    continue;
-                }
-                let parent = nodes[id as usize].0.clone();
+            for group in &layer {
+                let members: Vec<(u32, Node)> = group
+                    .iter()
+                    .filter(|&&id| !removed[id as usize])
+                    .map(|&id| (id, nodes[id as usize].0.clone()))
+                    .collect();
                 for l in 0..self.letters.len() {
-                    self.successors(q, &parent, l, &mask, meter, &mut succ)?;
-                    for n in succ.drain(..) {
-                        let key = (n.runs.clone(), n.shape);
-                        let list = kept.entry(key).or_default();
-                        meter.spend(list.len())?;
-                        if list
-                            .iter()
-                            .any(|&k| subset_of(&nodes[k as usize].0.subset, &n.subset))
-                        {
-                            continue;
+                    let mut next_group = Vec::new();
+                    for (id, parent) in &members {
+                        self.successors(q, parent, l, &mask, meter, &mut succ)?;
+                        for n in succ.drain(..) {
+                            let key = (n.runs.clone(), n.shape);
+                            let list = kept.entry(key).or_default();
+                            meter.spend(list.len())?;
+                            if list
+                                .iter()
+                                .any(|&k| subset_of(&nodes[k as usize].0.subset, &n.subset))
+                            {
+                                continue;
+                            }
+                            list.retain(|&k| {
+                                // Not a subset of `n` (checked above): a strict superset.
+                                let sup = subset_of(&n.subset, &nodes[k as usize].0.subset);
+                                if sup && k >= first_of_layer {
+                                    removed[k as usize] = true;
+                                    removed_here = true;
+                                }
+                                !sup
+                            });
+                            let new = nodes.len() as u32;
+                            list.push(new);
+                            let witness = self.is_witness(q, &n, &excluded_finals);
+                            nodes.push((n, *id, l as u32));
+                            removed.push(false);
+                            next_group.push(new);
+                            if witness {
+                                let mut path = Vec::new();
+                                let mut i = new;
+                                while nodes[i as usize].1 != u32::MAX {
+                                    path.push(nodes[i as usize].2);
+                                    i = nodes[i as usize].1;
+                                }
+                                path.reverse();
+                                if !reordered {
+                                    return Ok(Some(path));
+                                }
+                                return Ok(Some(self.first_in_order(q, path, meter)));
+                            }
                         }
-                        list.retain(|&k| {
-                            // Not a subset of `n` (checked above), so a strict superset.
-                            let sup = subset_of(&n.subset, &nodes[k as usize].0.subset);
-                            if sup && k >= first_of_layer {
-                                removed[k as usize] = true;
-                                removed_here = true;
-                            }
-                            !sup
-                        });
-                        let new = nodes.len() as u32;
-                        list.push(new);
-                        let witness = self.is_witness(q, &n, &excluded_finals);
-                        nodes.push((n, id, l as u32));
-                        removed.push(false);
-                        next_layer.push(new);
-                        if witness {
-                            let mut path = Vec::with_capacity(depth);
-                            let mut i = new;
-                            while nodes[i as usize].1 != u32::MAX {
-                                path.push(nodes[i as usize].2);
-                                i = nodes[i as usize].1;
-                            }
-                            path.reverse();
-                            if !reordered {
-                                return Ok(Some(path));
-                            }
-                            return Ok(Some(self.first_in_order(q, path, meter)));
-                        }
+                    }
+                    if !next_group.is_empty() {
+                        next_layer.push(next_group);
                     }
                 }
             }
@@ -316,9 +328,10 @@ impl Graph {
     }
 
     /// The first witness of `q` of exactly `len` letters in letter order, if any: a
-    /// depth-first search in letter order. A node that has no witness continuation of
-    /// `r` more letters is remembered (by runs, shape state and `r`), and so is, by
-    /// subsumption, every node with a superset of its subset.
+    /// depth-first search in letter order over the groups of nodes one word reaches. A
+    /// node that has no witness continuation of `r` more letters is remembered (by runs,
+    /// shape state and `r`), and so is, by subsumption, every node with a superset of
+    /// its subset.
     pub(super) fn first_of_length(
         &self,
         q: &Conjunct,
@@ -326,69 +339,79 @@ impl Graph {
         meter: &mut Meter,
     ) -> Result<Option<Vec<u32>>, Undecided> {
         let (mask, excluded_finals) = self.excluded(q);
-        let start = self.start(q, &mask);
         if len == 0 {
             return Ok(None);
         }
-        // A frame: its node, its children (letter, node) and the next child to try.
+        // A frame: the nodes of one word and the next letter to try.
         struct Frame {
-            node: Node,
-            children: Vec<(u32, Node)>,
+            nodes: Vec<Node>,
             next: usize,
         }
-        let mut failed: FxMap<(Box<[u32]>, u8, usize), Vec<Box<[u64]>>> = FxMap::default();
+        type Failed = FxMap<(Box<[u32]>, u8, usize), Vec<Box<[u64]>>>;
+        let mut failed: Failed = FxMap::default();
         let mut succ = Vec::new();
-        let children = |n: &Node, meter: &mut Meter, succ: &mut Vec<Node>| {
-            let mut out = Vec::new();
-            for l in 0..self.letters.len() {
-                self.successors(q, n, l, &mask, meter, succ)?;
-                out.extend(succ.drain(..).map(|c| (l as u32, c)));
-            }
-            Ok::<_, Undecided>(out)
-        };
         let mut stack = vec![Frame {
-            children: children(&start, meter, &mut succ)?,
-            node: start,
+            nodes: vec![self.start(q, &mask)],
             next: 0,
         }];
         let mut path: Vec<u32> = Vec::new();
-        while let Some(top) = stack.last_mut() {
-            let Some((l, child)) = top.children.get(top.next).cloned() else {
-                // Every child failed: so does this node, with `len - depth` letters left.
-                let done = stack.pop().map(|f| f.node);
-                if let Some(n) = done {
+        while !stack.is_empty() {
+            let depth = stack.len();
+            let Some(top) = stack.last_mut() else { break };
+            if top.next == self.letters.len() {
+                // No letter led on: every node of the word fails with `len - depth`
+                // letters left.
+                if let Some(frame) = stack.pop() {
                     let left = len - stack.len();
-                    let list = failed.entry((n.runs, n.shape, left)).or_default();
-                    list.retain(|s| !subset_of(&n.subset, s));
-                    list.push(n.subset);
+                    for n in frame.nodes {
+                        let list = failed.entry((n.runs, n.shape, left)).or_default();
+                        list.retain(|s| !subset_of(&n.subset, s));
+                        list.push(n.subset);
+                    }
                 }
                 path.pop();
                 continue;
-            };
+            }
+            let l = top.next;
             top.next += 1;
-            let left = len - stack.len();
+            let left = len - depth;
+            let mut child: Vec<Node> = Vec::new();
+            for n in &top.nodes {
+                self.successors(q, n, l, &mask, meter, &mut succ)?;
+                for c in succ.drain(..) {
+                    // One word, one subset: nodes differ by runs and shape state.
+                    if child.iter().any(|x| x.runs == c.runs && x.shape == c.shape) {
+                        continue;
+                    }
+                    if let Some(list) = failed.get(&(c.runs.clone(), c.shape, left)) {
+                        meter.spend(list.len())?;
+                        if list.iter().any(|s| subset_of(s, &c.subset)) {
+                            continue;
+                        }
+                    }
+                    child.push(c);
+                }
+            }
+            if child.is_empty() {
+                continue;
+            }
             if left == 0 {
-                meter.spend(1)?;
-                if self.is_witness(q, &child, &excluded_finals) {
-                    path.push(l);
+                if child
+                    .iter()
+                    .any(|c| self.is_witness(q, c, &excluded_finals))
+                {
+                    path.push(l as u32);
                     return Ok(Some(path));
                 }
                 continue;
             }
-            if let Some(list) = failed.get(&(child.runs.clone(), child.shape, left)) {
-                meter.spend(list.len())?;
-                if list.iter().any(|s| subset_of(s, &child.subset)) {
-                    continue;
-                }
-            }
-            let grand = children(&child, meter, &mut succ)?;
-            path.push(l);
+            path.push(l as u32);
             stack.push(Frame {
-                node: child,
-                children: grand,
+                nodes: child,
                 next: 0,
             });
         }
         Ok(None)
     }
 }
+

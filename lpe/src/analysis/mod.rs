@@ -20,6 +20,8 @@
 mod antichain;
 mod budget;
 mod compare;
+#[cfg(test)]
+mod differential;
 mod dnf;
 mod partition;
 mod problem;
