@@ -79,11 +79,74 @@ pub fn parse(
     })
 }
 
+/// What `equiv` and `partition` return when the analysis ran out of its budget
+/// (`max_steps=`, `max_seconds=`) before deciding: not an answer, and not an error in
+/// the input. Truthy, so `if lpe.equiv(a, b):` ("not proved equivalent") stays on the
+/// safe side; test with `isinstance(r, lpe.Undecided)`.
+#[pyclass(module = "lpe", frozen, get_all)]
+pub struct Undecided {
+    /// Why: the limit reached, as `lpe-check` prints it after `undecided: `.
+    pub reason: String,
+}
+
+#[pymethods]
+impl Undecided {
+    fn __str__(&self) -> String {
+        self.reason.clone()
+    }
+
+    fn __repr__(&self) -> String {
+        format!("<lpe.Undecided {:?}>", self.reason)
+    }
+
+    fn __bool__(&self) -> bool {
+        true
+    }
+}
+
+impl Undecided {
+    fn of(u: &analysis::Undecided) -> Undecided {
+        Undecided {
+            reason: u.to_string(),
+        }
+    }
+}
+
+/// The analysis budget from `max_steps=` and `max_seconds=`.
+fn budget(
+    max_steps: Option<usize>,
+    max_seconds: Option<f64>,
+) -> PyResult<analysis::AnalysisBudget> {
+    let time = match max_seconds {
+        None => None,
+        Some(s) => Some(
+            std::time::Duration::try_from_secs_f64(s)
+                .map_err(|_| value_error("max_seconds must be a non-negative number"))?,
+        ),
+    };
+    Ok(analysis::AnalysisBudget {
+        steps: max_steps.unwrap_or(analysis::DEFAULT_STEPS),
+        time,
+    })
+}
+
+/// The answer of `equiv`: a witness (or `None`), or `Undecided`.
+#[derive(IntoPyObject)]
+pub enum EquivAnswer {
+    /// `None` when equivalent, else a shortest path telling them apart.
+    Decided(Option<String>),
+    /// The budget ran out first.
+    Undecided(Undecided),
+}
+
 /// `None` when expressions `a` and `b` match exactly the same paths, else the shortest
 /// path (as text) one matches and the other does not, re-checked with the reference
-/// matcher. Raises `LpeSyntaxError` when either does not parse.
+/// matcher; an `Undecided` when the analysis did not decide within `max_steps` search
+/// steps (default 4 000 000) or `max_seconds`. Raises `LpeSyntaxError` when either does
+/// not parse.
 #[pyfunction]
-#[pyo3(signature = (a, b, dialect = "renderman", ini = None, register = None))]
+#[pyo3(signature = (a, b, dialect = "renderman", ini = None, register = None, max_steps = None, max_seconds = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn equiv(
     py: Python<'_>,
     a: &str,
@@ -91,10 +154,13 @@ pub fn equiv(
     dialect: &str,
     ini: Option<PathBuf>,
     register: Option<&str>,
-) -> PyResult<Option<String>> {
+    max_steps: Option<usize>,
+    max_seconds: Option<f64>,
+) -> PyResult<EquivAnswer> {
+    let budget = budget(max_steps, max_seconds)?;
     with_dialect!(dialect::dialect_name(dialect)?, D => {
         let reg = dialect::registration::<D>(ini.as_ref(), register)?;
-        equiv_in::<D>(py, a, b, &reg)
+        equiv_in::<D>(py, a, b, &reg, &budget)
     })
 }
 
@@ -103,12 +169,16 @@ fn equiv_in<D: PyDialect>(
     a: &str,
     b: &str,
     reg: &D::Registration,
-) -> PyResult<Option<String>> {
+    budget: &analysis::AnalysisBudget,
+) -> PyResult<EquivAnswer> {
     let (ea, eb) = (
         dialect::parse::<D>(py, a, reg, None)?,
         dialect::parse::<D>(py, b, reg, None)?,
     );
-    let c = analysis::compare(&ea, &eb).map_err(value_error)?;
+    let c = match analysis::compare_within(&ea, &eb, budget).map_err(value_error)? {
+        analysis::Decision::Decided(c) => c,
+        analysis::Decision::Undecided(u) => return Ok(EquivAnswer::Undecided(Undecided::of(&u))),
+    };
     let mut shortest: Option<D::Path> = None;
     for (path, in_a) in [(&c.first_only, true), (&c.second_only, false)] {
         let Some(p) = path else { continue };
@@ -132,7 +202,7 @@ fn equiv_in<D: PyDialect>(
             shortest = Some(p.clone());
         }
     }
-    Ok(shortest.map(|p| p.to_string()))
+    Ok(EquivAnswer::Decided(shortest.map(|p| p.to_string())))
 }
 
 /// A partition check: overlaps, the gap, paths outside the universe, with witnesses.
@@ -212,8 +282,12 @@ fn members(obj: &Bound<'_, PyAny>) -> PyResult<Vec<(String, String)>> {
 /// `overlaps` `(a, b, witness)`, `gaps` (the shortest uncovered path, at most one),
 /// `outside` `(member, witness)`, `remainder` (an expression closing the gap), `clean`
 /// and `text` (`lpe-check partition`'s report).
+///
+/// Returns an `Undecided` instead when the analysis did not decide within `max_steps`
+/// search steps (default 4 000 000) or `max_seconds`.
 #[pyfunction]
-#[pyo3(signature = (members, universe = None, dialect = "renderman", ini = None, register = None))]
+#[pyo3(signature = (members, universe = None, dialect = "renderman", ini = None, register = None, max_steps = None, max_seconds = None))]
+#[allow(clippy::too_many_arguments)]
 pub fn partition(
     py: Python<'_>,
     members: &Bound<'_, PyAny>,
@@ -221,15 +295,27 @@ pub fn partition(
     dialect: &str,
     ini: Option<PathBuf>,
     register: Option<&str>,
-) -> PyResult<Partition> {
+    max_steps: Option<usize>,
+    max_seconds: Option<f64>,
+) -> PyResult<PartitionAnswer> {
+    let budget = budget(max_steps, max_seconds)?;
     let named = self::members(members)?;
     if named.is_empty() {
         return Err(value_error("partition needs at least one member"));
     }
     with_dialect!(dialect::dialect_name(dialect)?, D => {
         let reg = dialect::registration::<D>(ini.as_ref(), register)?;
-        partition_in::<D>(py, &named, universe, &reg)
+        partition_in::<D>(py, &named, universe, &reg, &budget)
     })
+}
+
+/// The answer of `partition`: the check, or `Undecided`.
+#[derive(IntoPyObject)]
+pub enum PartitionAnswer {
+    /// Decided.
+    Decided(Partition),
+    /// The budget ran out first.
+    Undecided(Undecided),
 }
 
 fn partition_in<D: PyDialect>(
@@ -237,21 +323,28 @@ fn partition_in<D: PyDialect>(
     named: &[(String, String)],
     universe: Option<&str>,
     reg: &D::Registration,
-) -> PyResult<Partition> {
+    budget: &analysis::AnalysisBudget,
+) -> PyResult<PartitionAnswer> {
     let aovs = named
         .iter()
         .map(|(n, e)| Ok((n.clone(), dialect::parse::<D>(py, e, reg, Some(n))?)))
         .collect::<PyResult<Vec<_>>>()?;
     let universe = dialect::parse::<D>(py, universe.unwrap_or(D::DEFAULT_UNIVERSE), reg, None)?;
-    let p = analysis::partition(&aovs, &universe, reg).map_err(value_error)?;
+    let p = match analysis::partition_within(&aovs, &universe, reg, budget).map_err(value_error)? {
+        analysis::Decision::Decided(p) => p,
+        analysis::Decision::Undecided(u) => {
+            return Ok(PartitionAnswer::Undecided(Undecided::of(&u)))
+        }
+    };
     let text = report(&aovs, &universe, &p).map_err(|d| disagreement(&d))?;
     let lobes = D::Lobes::default();
     let lint = Lint::<D> {
         registration: reg,
         lobes: &lobes,
+        budget: lpe::analysis::AnalysisBudget::default(),
     };
     let name = |i: usize| aovs[i].0.clone();
-    Ok(Partition {
+    Ok(PartitionAnswer::Decided(Partition {
         universe: universe.to_string(),
         overlaps: p
             .overlaps
@@ -270,5 +363,5 @@ fn partition_in<D: PyDialect>(
             .and_then(|_| lint.remainder(&aovs, &universe)),
         clean: p.is_clean(),
         text,
-    })
+    }))
 }

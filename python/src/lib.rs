@@ -32,6 +32,7 @@ fn _lpe(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("LpeSyntaxError", m.py().get_type::<error::LpeSyntaxError>())?;
     m.add_class::<analysis::Lpe>()?;
     m.add_class::<analysis::Partition>()?;
+    m.add_class::<analysis::Undecided>()?;
     m.add_class::<set::AovSet>()?;
     m.add_class::<set::Explanation>()?;
     m.add_function(wrap_pyfunction!(analysis::parse, m)?)?;

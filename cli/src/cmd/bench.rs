@@ -25,10 +25,18 @@ pub struct Args {
     /// wide, osl-basic).
     #[arg(long)]
     pub workload: Vec<String>,
+    /// Instead: time the equivalence check of `C.*D.{k}L` against `C.*D.{k}[LO]` for
+    /// k = 8..=24 on the NFA route and the lazy-DFA route ([`super::bench_analysis`]).
+    #[arg(long)]
+    pub analysis: bool,
 }
 
 /// Runs `lpe-check bench`.
 pub fn run(args: Args) -> ExitCode {
+    if args.analysis {
+        print!("{}", super::bench_analysis::table(8..=24));
+        return ExitCode::SUCCESS;
+    }
     let mut names: Vec<&str> = bench::workload::all().iter().map(|w| w.name).collect();
     names.push(bench::osl::WORKLOAD);
     if let Some(bad) = args.workload.iter().find(|w| !names.contains(&w.as_str())) {

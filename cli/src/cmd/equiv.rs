@@ -14,7 +14,7 @@ use std::process::ExitCode;
 
 use std::fmt::Display;
 
-use lpe::analysis::{self, Comparison};
+use lpe::analysis::{self, Comparison, Decision};
 use lpe::{with_dialect, DialectLpe};
 
 use crate::dialect::CliDialect;
@@ -43,6 +43,9 @@ pub struct Args {
     /// Cross-dialect only: changes to the default correspondence (docs/language.md §19.1).
     #[arg(long, default_value = "")]
     pub correspondence: String,
+    /// `--max-steps` and `--max-seconds`.
+    #[command(flatten)]
+    pub budget: witness::BudgetArgs,
 }
 
 /// Runs `lpe-check equiv`.
@@ -73,8 +76,9 @@ fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
         (Ok(a), Ok(b)) => (a, b),
         (Err(e), _) | (_, Err(e)) => return bad_input(e),
     };
-    let c = match analysis::compare(&a, &b) {
-        Ok(c) => c,
+    let c = match analysis::compare_within(&a, &b, &args.budget.budget()) {
+        Ok(Decision::Decided(c)) => c,
+        Ok(Decision::Undecided(u)) => return witness::exit_undecided(&u),
         Err(e) => return bad_input(format!("error: {e}")),
     };
     witness::exit_with(report(&a, &b, &c), c.equivalent())

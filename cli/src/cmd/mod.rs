@@ -1,6 +1,7 @@
 //! Subcommands of `lpe-check`, one module each; the binary only dispatches.
 
 pub mod bench;
+pub mod bench_analysis;
 pub mod diff;
 pub mod equiv;
 pub mod equiv_cross;

@@ -16,7 +16,7 @@
 
 use std::process::ExitCode;
 
-use lpe::analysis;
+use lpe::analysis::{self, Decision};
 use lpe::{with_dialect, AovSet, Options};
 use lpe_lint::check::partition::report;
 
@@ -39,6 +39,9 @@ pub struct Args {
     /// The AOVs: `name=expression`, or an expression or macro name.
     #[arg(required = true)]
     pub aovs: Vec<String>,
+    /// `--max-steps` and `--max-seconds`.
+    #[command(flatten)]
+    pub budget: witness::BudgetArgs,
 }
 
 /// Runs `lpe-check partition`.
@@ -63,8 +66,10 @@ fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
             println!("warning: {w}");
         }
     }
-    let p = match analysis::partition(&aovs, &universe, &registration) {
-        Ok(p) => p,
+    let budget = args.budget.budget();
+    let p = match analysis::partition_within(&aovs, &universe, &registration, &budget) {
+        Ok(Decision::Decided(p)) => p,
+        Ok(Decision::Undecided(u)) => return witness::exit_undecided(&u),
         Err(e) => return bad_input(format!("error: {e}")),
     };
     witness::exit_with(report(&aovs, &universe, &p), p.is_clean())

@@ -1,6 +1,7 @@
 //! Per-AOV checks of one file: parse errors, emptiness, equivalence, group labels, lobes.
 
 use crate::Document;
+use lpe::analysis::Decision;
 use lpe::renderman::LobeCategory;
 
 use super::dialect::{Lint, LintDialect};
@@ -41,7 +42,22 @@ pub fn check<D: LintDialect>(
         let b = linted[j].lpe.as_ref().expect("live AOVs parsed");
         let twin = live[..x].iter().copied().find(|&i| {
             let a = linted[i].lpe.as_ref().expect("live AOVs parsed");
-            dialect.equivalent(a, b)
+            match dialect.equivalent(a, b) {
+                Decision::Decided(same) => same,
+                Decision::Undecided(u) => {
+                    let mut f = finding(
+                        &linted[j],
+                        Kind::Undecided,
+                        format!(
+                            "whether it matches exactly the paths `{}` matches is {u}",
+                            linted[i].decl.name
+                        ),
+                    );
+                    f.other = Some(linted[i].decl.name.clone());
+                    findings.push(f);
+                    false
+                }
+            }
         });
         if let Some(i) = twin {
             let mut f = finding(

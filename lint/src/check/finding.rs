@@ -28,6 +28,9 @@ pub enum Kind {
     /// A stage that does not declare its dialect holds an expression that parses in
     /// RenderMan's and OSL's and means different things in each.
     AmbiguousDialect,
+    /// An equivalence or partition question the analysis could not decide within its
+    /// budget: neither a finding nor a clean bill, so it is reported, never silent.
+    Undecided,
 }
 
 impl Kind {
@@ -45,6 +48,7 @@ impl Kind {
             Kind::Gap => "gap",
             Kind::Outside => "outside",
             Kind::AmbiguousDialect => "ambiguous_dialect",
+            Kind::Undecided => "undecided",
         }
     }
 }

@@ -83,3 +83,58 @@ pub fn lint<D: LintDialect>(
     }
     Ok(out)
 }
+
+#[cfg(test)]
+mod undecided_tests {
+    use super::*;
+    use crate::{AovDecl, Format, Location};
+    use lpe::analysis::AnalysisBudget;
+    use lpe::renderman::RenderMan;
+
+    /// Two AOVs whose equivalence and partition take more than 50 search steps: with a
+    /// budget of 50, lint reports an `undecided` finding for the pair and one for the
+    /// partition, and neither an `equivalent` finding nor a clean partition. Treating an
+    /// undecided comparison as "not equivalent" without a finding fails it.
+    #[test]
+    fn questions_past_the_budget_are_undecided_findings() {
+        let mut doc = Document::new("scene.rib", Format::Rib);
+        for (name, source) in [("a", "C.*D.{12}L"), ("b", "(C.*D.{12}L)|(C.*S.{12}L)")] {
+            doc.aovs.push(AovDecl {
+                name: name.to_string(),
+                source: source.to_string(),
+                location: Location::Line { line: 1, column: 1 },
+                source_type: None,
+            });
+        }
+        doc.partitions.push(PartitionDecl {
+            name: "beauty".to_string(),
+            members: vec!["a".to_string(), "b".to_string()],
+            location: Location::Line { line: 2, column: 1 },
+        });
+        let registration = lpe::renderman::Parser::default();
+        let lobes = Default::default();
+        let dialect = Lint::<RenderMan> {
+            registration: &registration,
+            lobes: &lobes,
+            budget: AnalysisBudget::steps(50),
+        };
+        let both = BothDialects::new(lpe::renderman::Parser::default());
+        let universe = dialect
+            .parse(<RenderMan as lpe::Dialect>::DEFAULT_UNIVERSE)
+            .unwrap();
+        let out = lint(&[doc], &dialect, &both, &universe, &[]).unwrap();
+        let kinds: Vec<(&str, &str)> = out
+            .findings
+            .iter()
+            .map(|f| (f.kind.name(), f.subject.as_str()))
+            .collect();
+        assert_eq!(
+            kinds,
+            [("undecided", "b"), ("undecided", "beauty")],
+            "{out:?}"
+        );
+        assert!(out.findings[0]
+            .message
+            .contains("undecided within the budget of 50"));
+    }
+}

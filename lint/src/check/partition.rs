@@ -5,7 +5,7 @@
 
 use std::fmt::Display;
 
-use lpe::analysis::Partition;
+use lpe::analysis::{Decision, Partition};
 use lpe::DialectLpe;
 
 use super::dialect::{Lint, LintDialect};
@@ -49,8 +49,16 @@ pub fn check<D: LintDialect>(
     if !complete || named.is_empty() {
         return Ok(out);
     }
-    let Ok(p) = dialect.partition(&named, universe) else {
-        return Ok(out);
+    let p = match dialect.partition(&named, universe) {
+        Ok(Decision::Decided(p)) => p,
+        Ok(Decision::Undecided(u)) => {
+            findings.push(new(
+                Kind::Undecided,
+                format!("whether the members partition {universe} is {u}"),
+            ));
+            return Ok(out);
+        }
+        Err(_) => return Ok(out),
     };
     // The partition command's report re-checks every witness with the reference matcher.
     report(&named, universe, &p)?;

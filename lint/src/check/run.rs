@@ -144,6 +144,7 @@ where
     let dialect = Lint::<D> {
         registration: &registration,
         lobes: &lobes,
+        budget: lpe::analysis::AnalysisBudget::default(),
     };
     let universe = req.universe.unwrap_or(D::DEFAULT_UNIVERSE);
     let universe = dialect

@@ -202,11 +202,7 @@ impl Graph {
         loop {
             meter.spend(1)?;
             out.push(Node {
-                runs: at
-                    .iter()
-                    .zip(&choices)
-                    .map(|(&i, c)| c[i])
-                    .collect(),
+                runs: at.iter().zip(&choices).map(|(&i, c)| c[i]).collect(),
                 shape: t,
                 subset: subset.clone(),
             });
@@ -414,4 +410,3 @@ impl Graph {
         Ok(None)
     }
 }
-

@@ -32,9 +32,8 @@ fn body(rng: &mut SplitMix64, atoms: &[&str]) -> String {
 /// A random whole expression: `C`, a body, an emitter; a fifth of them set algebra of
 /// two such.
 fn expression(rng: &mut SplitMix64, atoms: &[&str], ends: &[&str]) -> String {
-    let mut one = |rng: &mut SplitMix64| {
-        format!("C{}{}", body(rng, atoms), ends[rng.below(ends.len())])
-    };
+    let mut one =
+        |rng: &mut SplitMix64| format!("C{}{}", body(rng, atoms), ends[rng.below(ends.len())]);
     match rng.below(10) {
         0 => format!("{} - {}", one(rng), one(rng)),
         1 => format!("{} & {}", one(rng), one(rng)),
@@ -216,4 +215,3 @@ fn a_tiny_budget_answers_undecided() {
     let (found, stopped) = warnings_within(&set, &AnalysisBudget::default());
     assert_eq!((found.len(), stopped), (1, None));
 }
-

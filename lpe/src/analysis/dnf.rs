@@ -37,9 +37,7 @@ fn terms(f: &Algebra<usize>, positive: bool, cap: usize) -> Option<Vec<Conjunct>
         (Algebra::Not(a), p) => terms(a, !p, cap),
         // a & b, and ^(a - b) = ^a | b: a union.
         (Algebra::And(a, b), true) => product(&terms(a, true, cap)?, &terms(b, true, cap)?, cap),
-        (Algebra::Minus(a, b), true) => {
-            product(&terms(a, true, cap)?, &terms(b, false, cap)?, cap)
-        }
+        (Algebra::Minus(a, b), true) => product(&terms(a, true, cap)?, &terms(b, false, cap)?, cap),
         (Algebra::And(a, b), false) => union(terms(a, false, cap)?, terms(b, false, cap)?, cap),
         (Algebra::Minus(a, b), false) => union(terms(a, false, cap)?, terms(b, true, cap)?, cap),
     }
@@ -97,7 +95,10 @@ mod tests {
         let f = Algebra::minus(Algebra::and(leaf(0), leaf(1)), leaf(2));
         assert_eq!(dnf(&f, 8), Some(vec![c(&[0, 1], &[2])]));
         // ^(0 - 1) & 2 = (^0 | 1) & 2.
-        let g = Algebra::and(Algebra::complement(Algebra::minus(leaf(0), leaf(1))), leaf(2));
+        let g = Algebra::and(
+            Algebra::complement(Algebra::minus(leaf(0), leaf(1))),
+            leaf(2),
+        );
         assert_eq!(dnf(&g, 8), Some(vec![c(&[2], &[0]), c(&[1, 2], &[])]));
         // 0 - 0 is empty.
         assert_eq!(dnf(&Algebra::minus(leaf(0), leaf(0)), 8), Some(vec![]));

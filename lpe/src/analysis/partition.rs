@@ -53,8 +53,8 @@ where
 /// [`partition`] within `budget` (summed over its searches: one per pair of AOVs, one
 /// for the gap, one per AOV outside the universe): [`Decision::Undecided`] when it runs
 /// out first. Decided on the NFA of the expressions as
-/// [`crate::analysis::compare_within`] is, or for set algebra with many conjuncts on
-/// their lazy DFA ([`partition_by_lazy_dfa`]).
+/// [`crate::analysis::compare_within`] is, with half the budget; for set algebra with
+/// many conjuncts, or past that half, on their lazy DFA ([`partition_by_lazy_dfa`]).
 pub fn partition_within<D, L>(
     aovs: &[(String, L)],
     universe: &L,
@@ -111,10 +111,14 @@ fn partition_in<D: Dialect>(
     let (all, domain) = with_universe::<D>(aovs, universe, registration);
     let mut meter = Meter::new(budget);
     let problem = Problem::<D>::new(&all, &analysis_options())?;
-    match on_nfa(&problem, domain, aovs.len(), &mut meter) {
+    // Half the budget for the NFA route, the rest for the lazy DFA if it gives up (as
+    // `compare_within` splits it).
+    let mut nfa_meter = meter.share(meter.left() / 2);
+    let on_nfa = on_nfa(&problem, domain, aovs.len(), &mut nfa_meter);
+    meter.absorb(&nfa_meter);
+    match on_nfa {
         Ok(p) => Ok(Decision::Decided(p)),
-        Err(Stop::Undecided(u)) => Ok(Decision::Undecided(u)),
-        Err(Stop::TooManyConjuncts) => by_lazy_dfa::<D>(&all, domain, registration, &mut meter),
+        Err(_) => by_lazy_dfa::<D>(&all, domain, registration, &mut meter),
     }
 }
 

@@ -78,9 +78,7 @@ impl<D: Dialect> Problem<D> {
         let mut best: Option<Vec<u32>> = None;
         for c in &conjuncts {
             if let Some(w) = self.graph.shortest(c, meter)? {
-                let better = best
-                    .as_ref()
-                    .is_none_or(|b| (w.len(), &w) < (b.len(), b));
+                let better = best.as_ref().is_none_or(|b| (w.len(), &w) < (b.len(), b));
                 if better {
                     best = Some(w);
                 }

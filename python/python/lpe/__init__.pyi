@@ -79,6 +79,13 @@ class Partition:
     def text(self) -> str: ...
     def __bool__(self) -> bool: ...
 
+class Undecided:
+    """An analysis that ran out of its budget before deciding (truthy)."""
+
+    @property
+    def reason(self) -> str: ...
+    def __bool__(self) -> bool: ...
+
 def parse(
     expr: str,
     dialect: Dialect = "renderman",
@@ -91,14 +98,18 @@ def equiv(
     dialect: Dialect = "renderman",
     ini: Optional[StrPath] = None,
     register: Optional[str] = None,
-) -> Optional[str]: ...
+    max_steps: Optional[int] = None,
+    max_seconds: Optional[float] = None,
+) -> Union[None, str, Undecided]: ...
 def partition(
     members: Union[Mapping[str, str], Iterable[Union[str, tuple[str, str]]]],
     universe: Optional[str] = None,
     dialect: Dialect = "renderman",
     ini: Optional[StrPath] = None,
     register: Optional[str] = None,
-) -> Partition: ...
+    max_steps: Optional[int] = None,
+    max_seconds: Optional[float] = None,
+) -> Union[Partition, Undecided]: ...
 
 class Finding:
     """One lint finding, with the fields of lpe-check lint --format json."""

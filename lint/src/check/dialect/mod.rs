@@ -11,7 +11,7 @@ pub mod renderman;
 
 use std::ops::Range;
 
-use lpe::analysis::{self, AnalysisError, Partition, Warning};
+use lpe::analysis::{self, AnalysisBudget, AnalysisError, Decision, Partition, Warning};
 use lpe::renderman::LobeCategory;
 use lpe::{AovSet, Options};
 
@@ -78,6 +78,9 @@ pub struct Lint<'a, D: LintDialect> {
     pub registration: &'a D::Registration,
     /// The lobe mappings.
     pub lobes: &'a D::Lobes,
+    /// The budget of each equivalence and partition question; past it the check
+    /// reports an `undecided` finding.
+    pub budget: AnalysisBudget,
 }
 
 impl<D: LintDialect> Lint<'_, D> {
@@ -94,9 +97,16 @@ impl<D: LintDialect> Lint<'_, D> {
             .map(|s| analysis::warnings(&s))
     }
 
-    /// Whether two AOVs render the same image.
-    pub fn equivalent(&self, a: &D::Lpe, b: &D::Lpe) -> bool {
-        D::accumulate_alike(a, b) && analysis::compare(a, b).is_ok_and(|c| c.equivalent())
+    /// Whether two AOVs render the same image, or [`Decision::Undecided`] when the
+    /// comparison ran out of [`Lint::budget`] (a compile error is "no").
+    pub fn equivalent(&self, a: &D::Lpe, b: &D::Lpe) -> Decision<bool> {
+        if !D::accumulate_alike(a, b) {
+            return Decision::Decided(false);
+        }
+        match analysis::compare_within(a, b, &self.budget) {
+            Ok(d) => d.map(|c| c.equivalent()),
+            Err(_) => Decision::Decided(false),
+        }
     }
 
     /// The group labels the AOV asks lights or objects of the scene to carry.
@@ -114,8 +124,8 @@ impl<D: LintDialect> Lint<'_, D> {
         &self,
         aovs: &[(String, D::Lpe)],
         universe: &D::Lpe,
-    ) -> Result<Partition<D::Path>, AnalysisError> {
-        analysis::partition(aovs, universe, self.registration)
+    ) -> Result<Decision<Partition<D::Path>>, AnalysisError> {
+        analysis::partition_within(aovs, universe, self.registration, &self.budget)
     }
 
     /// The remainder AOV as printed, when the printed text parses and closes the gap.
@@ -123,7 +133,7 @@ impl<D: LintDialect> Lint<'_, D> {
         let printed = analysis::remainder(aovs, universe).to_string();
         let mut closed = aovs.to_vec();
         closed.push(("remainder".into(), self.parse(&printed).ok()?));
-        let p = self.partition(&closed, universe).ok()?;
+        let p = self.partition(&closed, universe).ok()?.decided()?;
         p.gap.is_none().then_some(printed)
     }
 }
