@@ -8,10 +8,19 @@
 //! - emptiness ([`crate::aov::AovSet::warnings`], computed in the automata layer when a set
 //!   compiles) needs no determinization: a breadth-first search
 //!   over `(NFA position, shape state)` pairs, linear in the NFA;
-//! - comparisons and partitions need subsets of positions, so they search over
-//!   [`crate::State`]s (the DFA's when it was built, else NFA subsets made on the
-//!   fly), breadth-first, so the first witness found is a shortest one, bounded by
-//!   [`MAX_SEARCH_STATES`].
+//! - comparisons, partitions and set-algebra emptiness ask formulas over the operands
+//!   ("a path `A` matches and `B` does not"): in disjunctive normal form (`dnf`), each
+//!   conjunction searched on the Glushkov NFA of all operands (`problem`, `antichain`):
+//!   one NFA position per operand that must match, a subset of positions of those that
+//!   must not, subsumed nodes dropped, breadth-first by groups of one word, so the first
+//!   witness is the first shortest one in letter order; set algebra with many
+//!   conjunctions, and what that route leaves undecided on half the budget, searches the
+//!   set's [`crate::State`]s instead (the DFA's when it was built, else NFA subsets made
+//!   on the fly, `search`), the same way;
+//! - every call runs within an [`AnalysisBudget`] (`budget`) and answers
+//!   [`Decision::Undecided`] past it: `compare_within`, `partition_within`,
+//!   `warnings_within`. `compare` and `partition` keep their signatures and turn it into
+//!   [`AnalysisError::TooLarge`].
 //!
 //! A witness is built from one representative vertex per class (an unmentioned label
 //! becomes a fresh name such as `other`). Callers that print witnesses should re-check
