@@ -236,6 +236,7 @@ impl<D: Dialect> AovSet<D> {
     /// The vertex classes and NFA of `aovs`' operands (hidden AOVs, numbered as
     /// [`crate::algebra::formulas`] numbers them) with each AOV's formula over them, under
     /// the checks and limits of a compile but without the DFA: what the analyses search.
+    #[allow(clippy::type_complexity)]
     pub(crate) fn operand_nfa(
         aovs: &[(String, D::Lpe)],
         opts: &Options,

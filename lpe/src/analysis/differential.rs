@@ -32,7 +32,7 @@ fn body(rng: &mut SplitMix64, atoms: &[&str]) -> String {
 /// A random whole expression: `C`, a body, an emitter; a fifth of them set algebra of
 /// two such.
 fn expression(rng: &mut SplitMix64, atoms: &[&str], ends: &[&str]) -> String {
-    let mut one =
+    let one =
         |rng: &mut SplitMix64| format!("C{}{}", body(rng, atoms), ends[rng.below(ends.len())]);
     match rng.below(10) {
         0 => format!("{} - {}", one(rng), one(rng)),
