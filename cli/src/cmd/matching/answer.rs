@@ -9,6 +9,7 @@ use std::process::ExitCode;
 use lpe_engines::{Engine, EngineDialect};
 
 use crate::input::{bad_input, DialectArgs};
+use crate::pipe::write_failed;
 
 /// Arguments of `lpe-check match`.
 #[derive(clap::Args, Debug)]
@@ -137,8 +138,8 @@ pub fn batch(mut answer: impl FnMut(&str) -> LineOutcome) -> ExitCode {
             );
             v.to_string()
         };
-        if writeln!(out, "{shown}").is_err() {
-            return ExitCode::from(2);
+        if let Err(e) = writeln!(out, "{shown}") {
+            return write_failed(&e);
         }
     }
     finish(out, disagreed, failed)
@@ -171,16 +172,19 @@ pub fn answer_paths(
         };
         disagreed |= matches!(v, Verdict::Disagree(_));
         failed |= matches!(v, Verdict::Skipped(_));
-        if writeln!(out, "{v}").is_err() {
-            return ExitCode::from(2);
+        if let Err(e) = writeln!(out, "{v}") {
+            return write_failed(&e);
         }
     }
     finish(out, disagreed, failed)
 }
 
-/// Exit 3 on a disagreement, else 2 on an error, else 0.
+/// Exit 3 on a disagreement, else 2 on an error, else 0; the output's last buffered
+/// write failing decides first ([`write_failed`]).
 fn finish(mut out: impl Write, disagreed: bool, failed: bool) -> ExitCode {
-    let _ = out.flush();
+    if let Err(e) = out.flush() {
+        return write_failed(&e);
+    }
     if disagreed {
         ExitCode::from(3)
     } else if failed {
