@@ -1,9 +1,11 @@
 //! Cross-crate property tests and the data-driven conformance suite live in `tests/`;
 //! this library holds what the test files share, the suite's in-process runner
 //! ([`conformance`]; the loader is `lpe_testkit::suite`), and the workspace's file-level
-//! import graph that the layering test checks ([`imports`]).
+//! import graph that the layering test checks ([`imports`]) and its collapse onto
+//! folders, where no import may run back up ([`folders`]).
 
 pub mod conformance;
+pub mod folders;
 pub mod imports;
 
 use lpe::renderman::ast::{Atom, Expr, Item, Triple, TypePos};
