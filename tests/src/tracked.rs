@@ -62,7 +62,10 @@ mod tests {
     #[test]
     fn this_checkout_is_listed() {
         let tracked = tracked_files();
-        assert!(tracked.iter().any(|p| p == "tests/Cargo.toml"), "{tracked:?}");
+        assert!(
+            tracked.iter().any(|p| p == "tests/Cargo.toml"),
+            "{tracked:?}"
+        );
         assert!(!tracked.iter().any(|p| p.starts_with("target/")));
     }
 }
