@@ -1,14 +1,14 @@
-//! Every `Type::member` that a comment names in backquotes is still there: a method or
+//! Every `Owner::member` that a comment names in backquotes is still there: a method or
 //! field renamed or removed leaves no stale name in the comments that explain the code.
 //!
 //! Read as text over every tracked `.rs` file (`git ls-files`): the types are the names
 //! after `struct`, `enum`, `trait`, `type` and `union`; the members are the names after
 //! `fn` and the field names (`name:` opening a line, after any `pub`). In a comment (from
-//! `//` on), each backquoted span is read for `Type::member` pairs, a capitalised name
+//! `//` on), each backquoted span is read for `Owner::member` pairs, a capitalised name
 //! then a lowercase one (`lpe::AovSet::compile_with(..)` holds `AovSet::compile_with`).
-//! A pair counts when `Type` is a workspace type, and is stale when no workspace type has
+//! A pair counts when `Owner` is a workspace type, and is stale when no workspace type has
 //! a member of that name: which type defines it is not checked (cheap, and a renamed
-//! member rarely keeps its name on another type). `Type::Variant` (capitalised) and types
+//! member rarely keeps its name on another type). `Owner::Variant` (capitalised) and types
 //! from outside the workspace (`Vec::with_capacity`) are left out.
 
 use std::collections::BTreeSet;
@@ -38,8 +38,15 @@ fn words(text: &str) -> Vec<(&str, usize)> {
     out
 }
 
-/// The types and the members (methods, fields) `source` defines.
+/// The types and the members (methods, fields) `source` defines, its comments left out
+/// (they name types in prose: "a `type` alias").
 fn definitions(source: &str, types: &mut BTreeSet<String>, members: &mut BTreeSet<String>) {
+    let code: String = source
+        .lines()
+        .map(|l| l.find("//").map_or(l, |at| &l[..at]))
+        .collect::<Vec<_>>()
+        .join("\n");
+    let source = code.as_str();
     let w = words(source);
     for pair in w.windows(2) {
         match pair[0].0 {
@@ -76,7 +83,7 @@ fn is_member_name(s: &str) -> bool {
     s.starts_with(|c: char| c.is_ascii_lowercase() || c == '_')
 }
 
-/// The `Type::member` pairs in the backquoted spans of the comment on `line`.
+/// The `Owner::member` pairs in the backquoted spans of the comment on `line`.
 fn named_members(line: &str) -> Vec<(String, String)> {
     let Some(at) = line.find("//") else {
         return Vec::new();
@@ -94,12 +101,13 @@ fn named_members(line: &str) -> Vec<(String, String)> {
     out
 }
 
-/// Stale names that stand today and are to be cleared, as `Type::member`; the test
+/// Stale names that stand today and are to be cleared, as `Owner::member`; the test
 /// fails on any other, and on an entry here that no comment names any more.
 const NOT_YET_CLEARED: &[&str] = &["AovSet::compile_osl"];
 
 /// Planted fault: fails on a comment naming a member that no type has: checked by hand,
-/// writing `` `AovSet::compile_rib` `` in a comment of `lpe/src/aov.rs`.
+/// naming `compile_rib` of `AovSet` (as one backquoted path) in a comment of
+/// `lpe/src/aov.rs`.
 #[test]
 fn comments_name_only_members_that_exist() {
     let ws = workspace();
@@ -157,7 +165,7 @@ fn comments_name_only_members_that_exist() {
     );
 }
 
-/// Planted fault: fails when spans are read outside the comment (code names `Type::x`
+/// Planted fault: fails when spans are read outside the comment (code names `Owner::x`
 /// all the time) or when a capitalised second name counts: checked by hand, dropping
 /// the `find("//")` cut and the `is_member_name` test.
 #[test]

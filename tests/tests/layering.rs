@@ -117,9 +117,9 @@ fn lpe_modules() -> BTreeMap<String, BTreeSet<String>> {
     for f in &read {
         let top = f
             .strip_prefix("lpe/src/")
-            .and_then(|rel| match rel.split_once('/') {
-                Some((dir, _)) => Some(format!("{dir}/")),
-                None => Some(rel.to_string()),
+            .map(|rel| match rel.split_once('/') {
+                Some((dir, _)) => format!("{dir}/"),
+                None => rel.to_string(),
             });
         if let Some(m) = top.as_deref().and_then(module) {
             out.entry(m).or_default();
