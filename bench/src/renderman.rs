@@ -95,9 +95,7 @@ pub fn run(cfg: &Config, paths: &[Path]) -> Result<(Vec<Row>, Vec<Disagreement>)
         let bare = fast
             .dfa_states()
             .map(|n| shapes::BareTable::new(n, fast.class_count(), cfg.seed));
-        let nfa_classes = nfa_set
-            .as_ref()
-            .map(|s| chunked(paths, |c| classify(s, c)));
+        let nfa_classes = nfa_set.as_ref().map(|s| chunked(paths, |c| classify(s, c)));
 
         let enc = baseline::Encoding::new(aovs)?;
         let bytes = chunked(paths, |c| encode(&enc, c));
