@@ -13,7 +13,7 @@
 //!
 //! - [`renderman`]: RenderMan over a fixed-width byte encoding of vertices
 //!   ([`renderman::encode`]), by set algebra over the finite vertex universe
-//!   ([`renderman::translate`]);
+//!   ([`renderman::translate`](mod@renderman::translate));
 //! - [`osl`]: OSL over a byte encoding of the path's *symbol stream*, a different model
 //!   from the fast matcher's vertex classes, so the two check each other.
 //!
