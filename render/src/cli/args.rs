@@ -1,6 +1,5 @@
 //! Argument parsers and the input error of the CLI.
 
-use lpe_render::aov::AovError;
 use lpe_render::bench::BenchError;
 use lpe_render::inputs::SourceError;
 use lpe_render::integrator::RenderError;
@@ -24,8 +23,6 @@ pub enum InputError {
     Sources(#[from] SourceError),
     #[error(transparent)]
     Scene(#[from] SceneError),
-    #[error(transparent)]
-    Aov(#[from] AovError),
     #[error(transparent)]
     Render(#[from] RenderError),
     #[error(transparent)]
