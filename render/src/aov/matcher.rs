@@ -1,7 +1,8 @@
 //! The renderer's matchers behind `lpe::PathMatcher`, the seam the integrator is generic
-//! over (each in one dialect `D`, written once for every dialect): it classifies every vertex the scene can produce once, before rendering, then
-//! per path carries a `Copy` state from `start` (before any vertex: the integrator steps
-//! the camera itself) one vertex at a time, and at every emitter asks which AOVs match.
+//! over (each in one dialect `D`, written once for every dialect): it classifies every
+//! vertex the scene can produce once, before rendering, then per path carries a `Copy`
+//! state from `start` (before any vertex: the integrator steps the camera itself) one
+//! vertex at a time, and at every emitter asks which AOVs match.
 //! The fast matcher (`lpe::AovSet`) implements it in `lpe`; this module adds the
 //! whole-path engines.
 //!
