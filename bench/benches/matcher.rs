@@ -1,7 +1,7 @@
 //! `cargo bench -p lpe-bench --bench matcher`: the fast matcher against regex-automata,
 //! per vertex and at compile time, with criterion's statistics. The workloads, path
-//! sampler and baseline are [`lpe_bench`]'s, shared with `lpe-check bench` (which prints
-//! the benchmark table).
+//! sampler, baseline and RenderMan loops are [`lpe_bench`]'s, shared with
+//! `lpe-check bench` (which prints the benchmark table).
 //!
 //! Throughput is in vertices: criterion's `elem/s` is `1e9 / (ns per vertex)`.
 
@@ -9,7 +9,8 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, Criterion, Throughput};
 use lpe::{AovSet, Options};
-use lpe_bench::{self as bench, baseline, sample, shapes, workload};
+use lpe_bench::renderman::{encode, flatten, run_dense, run_lazy, run_vertices};
+use lpe_bench::{baseline, classify, run_classes, sample, shapes, workload};
 
 /// Small enough for quick runs, large enough to leave the caches' comfort zone no more
 /// than a renderer's tile does.
@@ -18,17 +19,17 @@ const VERTICES: usize = 200_000;
 fn matching(c: &mut Criterion) {
     let paths = sample::paths(VERTICES, 1);
     let vertices: usize = paths.iter().map(|p| p.len()).sum();
-    let flat = bench::flatten(&paths);
+    let flat = flatten(&paths);
     for w in workload::all() {
         let mut g = c.benchmark_group(format!("match/{}", w.name));
         g.throughput(Throughput::Elements(vertices as u64));
         let fast = AovSet::compile(&w.aovs).expect("workloads compile");
-        let classes = bench::classify(&fast, &paths);
+        let classes = classify(&fast, &paths);
         g.bench_function("fast, on vertices", |b| {
-            b.iter(|| bench::run_vertices(&fast, &flat))
+            b.iter(|| run_vertices(&fast, &flat))
         });
         g.bench_function("fast, on classes", |b| {
-            b.iter(|| bench::run_classes(fast.automaton(), &classes))
+            b.iter(|| run_classes(fast.automaton(), &classes))
         });
         let nfa_opts = Options {
             dfa_budget: 0,
@@ -44,7 +45,7 @@ fn matching(c: &mut Criterion) {
             });
         }
         if let Ok(nfa) = AovSet::compile_with(&w.aovs, &nfa_opts) {
-            let classes = bench::classify(&nfa, &paths);
+            let classes = classify(&nfa, &paths);
             let mut cache = nfa.cache();
             g.bench_function("lazy DFA, own cache", |b| {
                 b.iter(|| shapes::run_cached(&nfa, &mut cache, &classes))
@@ -56,18 +57,18 @@ fn matching(c: &mut Criterion) {
             }
         }
         let enc = baseline::Encoding::new(&w.aovs).expect("workload labels fit a byte");
-        let bytes = bench::encode(&enc, &paths);
+        let bytes = encode(&enc, &paths);
         let ra_nfa = baseline::nfa(&enc, &w.aovs).expect("the baseline NFA builds");
         if let Ok(dfa) = baseline::dense(&ra_nfa) {
             let start = baseline::dense_start(&dfa).expect("anchored start state");
             g.bench_function("regex-automata dense DFA", |b| {
-                b.iter(|| bench::run_dense(&dfa, start, &bytes))
+                b.iter(|| run_dense(&dfa, start, &bytes))
             });
         }
         if let Ok(dfa) = baseline::lazy(ra_nfa) {
             let mut cache = dfa.create_cache();
             g.bench_function("regex-automata lazy DFA", |b| {
-                b.iter(|| bench::run_lazy(&dfa, &mut cache, &bytes))
+                b.iter(|| run_lazy(&dfa, &mut cache, &bytes))
             });
         }
         g.finish();

@@ -1,18 +1,15 @@
-//! The benchmark's harness: flattened paths, one timed loop per engine, the timing
-//! discipline, rows and errors. A leaf below the benchmark ([`super::run`]) and its OSL
-//! rows and shapes, which all use it.
+//! The benchmark's harness, shared by every dialect's rows ([`crate::renderman`],
+//! [`crate::osl`]) and the caller shapes: flattened paths, the timed loop on classes
+//! (the automaton alone, the same code for every dialect), the timing discipline, what to
+//! run, rows and errors. Nothing here knows a dialect.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use lpe::aov::Automaton;
-use lpe::renderman::{Lpe, Path, Vertex};
 use lpe::{AovMask, AovSet, Class};
-use regex_automata::dfa::dense;
-use regex_automata::hybrid;
-use regex_automata::util::primitives::StateID;
 
-use super::baseline;
+use crate::baseline;
 
 /// Paths flattened for the timed loops: one contiguous buffer and path end offsets.
 pub struct Flat<T> {
@@ -23,7 +20,7 @@ pub struct Flat<T> {
 }
 
 impl<T> Flat<T> {
-    pub(super) fn build<P>(paths: &[P], mut f: impl FnMut(&P, &mut Vec<T>)) -> Flat<T> {
+    pub(crate) fn build<P>(paths: &[P], mut f: impl FnMut(&P, &mut Vec<T>)) -> Flat<T> {
         let mut items = Vec::new();
         let mut ends = Vec::with_capacity(paths.len());
         for p in paths {
@@ -51,39 +48,19 @@ pub fn classify<D: lpe::Dialect>(set: &AovSet<D>, paths: &[D::Path]) -> Flat<Cla
     })
 }
 
-/// The baseline's bytes for every path.
-pub fn encode(enc: &baseline::Encoding, paths: &[Path]) -> Flat<u8> {
-    Flat::build(paths, |p, out| enc.encode(p, out))
-}
-
 /// Paths per timed chunk: short enough (a fraction of a millisecond) that some
 /// repetition of each chunk runs without being preempted on a shared machine.
-pub(super) const CHUNK_PATHS: usize = 4096;
+pub(crate) const CHUNK_PATHS: usize = 4096;
 
 /// `f` applied to each chunk of paths.
-pub(super) fn chunked<P, T>(paths: &[P], f: impl Fn(&[P]) -> Flat<T>) -> Vec<Flat<T>> {
+pub(crate) fn chunked<P, T>(paths: &[P], f: impl Fn(&[P]) -> Flat<T>) -> Vec<Flat<T>> {
     paths.chunks(CHUNK_PATHS).map(f).collect()
 }
 
 /// A digest of a mask, so the loops' results cannot be optimized away.
 #[inline]
-pub(super) fn digest(m: AovMask) -> u64 {
+pub(crate) fn digest(m: AovMask) -> u64 {
     m.count() as u64 + u64::from(m.contains(0))
-}
-
-/// Every vertex, back to back (labels cloned in order, so they sit in order on the heap
-/// too): the vertices a renderer just made are in cache; `Vec<Path>` would add a cache
-/// miss per path that no other engine pays.
-pub fn flatten(paths: &[Path]) -> Flat<Vertex> {
-    Flat::build(paths, |p, out| out.extend(p.vertices().iter().cloned()))
-}
-
-/// The fast matcher on vertices (classification included).
-pub fn run_vertices(set: &AovSet<lpe::renderman::RenderMan>, vertices: &Flat<Vertex>) -> u64 {
-    vertices.paths().fold(0u64, |acc, p| {
-        let s = p.iter().fold(set.start(), |s, v| set.step(s, v));
-        acc.wrapping_add(digest(set.matches(s)))
-    })
 }
 
 /// The fast matcher (DFA or NFA) on classes computed beforehand: the automaton alone,
@@ -93,53 +70,6 @@ pub fn run_classes(set: &Automaton, classes: &Flat<Class>) -> u64 {
         let s = p.iter().fold(set.start(), |s, &c| set.step_class(s, c));
         acc.wrapping_add(digest(set.matches(s)))
     })
-}
-
-/// regex-automata's dense DFA, `next_state` per byte.
-pub fn run_dense(dfa: &dense::DFA<Vec<u32>>, start: StateID, bytes: &Flat<u8>) -> u64 {
-    bytes.paths().fold(0u64, |acc, p| {
-        acc.wrapping_add(digest(baseline::dense_run(dfa, start, p)))
-    })
-}
-
-/// regex-automata's dense DFA, encoding each path from its vertices first (into a
-/// reused buffer): the like-for-like comparison with [`run_vertices`].
-pub fn run_dense_encoding(
-    dfa: &dense::DFA<Vec<u32>>,
-    start: StateID,
-    enc: &baseline::Encoding,
-    vertices: &Flat<Vertex>,
-) -> u64 {
-    let mut buf = Vec::with_capacity(64);
-    vertices.paths().fold(0u64, |acc, p| {
-        buf.clear();
-        enc.encode_vertices(p, &mut buf);
-        acc.wrapping_add(digest(baseline::dense_run(dfa, start, &buf)))
-    })
-}
-
-/// regex-automata's lazy DFA; `None` if its cache gave up.
-pub fn run_lazy(
-    dfa: &hybrid::dfa::DFA,
-    cache: &mut hybrid::dfa::Cache,
-    bytes: &Flat<u8>,
-) -> Option<u64> {
-    let mut acc = 0u64;
-    for p in bytes.paths() {
-        acc = acc.wrapping_add(digest(baseline::lazy_run(dfa, cache, p)?));
-    }
-    Some(acc)
-}
-
-/// The reference matcher, one expression at a time.
-pub fn reference_mask(aovs: &[(String, Lpe)], p: &Path) -> AovMask {
-    let mut m = AovMask::EMPTY;
-    for (i, (_, l)) in aovs.iter().enumerate() {
-        if lpe_reference::is_match(l, p) {
-            m.insert(i);
-        }
-    }
-    m
 }
 
 /// What to run.
@@ -155,6 +85,13 @@ pub struct Config {
     pub seed: u64,
     /// Workload names to run (all if empty).
     pub workloads: Vec<String>,
+}
+
+impl Config {
+    /// Whether the workload named `name` is to run.
+    pub fn runs(&self, name: &str) -> bool {
+        self.workloads.is_empty() || self.workloads.iter().any(|n| n == name)
+    }
 }
 
 impl Default for Config {
@@ -189,14 +126,14 @@ pub struct Row {
 }
 
 /// A timed loop over the paths of one chunk; returns a digest of the answers.
-pub(super) type Job<'a> = Box<dyn FnMut(usize) -> u64 + 'a>;
+pub(crate) type Job<'a> = Box<dyn FnMut(usize) -> u64 + 'a>;
 
 /// Times every job on every chunk `reps` times, round-robin so that every engine sees
 /// the same machine load, and sums each job's best time per chunk: preemption on this
 /// shared machine then only costs a repetition, not the measurement. Each timed run
 /// follows an untimed one of the same job on the same chunk, so that every job finds its
 /// input in cache (else the job after one with other input pays the misses).
-pub(super) fn best_times(reps: usize, chunks: usize, jobs: &mut [Job<'_>]) -> Vec<Duration> {
+pub(crate) fn best_times(reps: usize, chunks: usize, jobs: &mut [Job<'_>]) -> Vec<Duration> {
     let mut best = vec![vec![Duration::MAX; chunks]; jobs.len()];
     for _ in 0..reps.max(1) {
         for c in 0..chunks {
@@ -213,7 +150,7 @@ pub(super) fn best_times(reps: usize, chunks: usize, jobs: &mut [Job<'_>]) -> Ve
 
 /// Builds `f` up to 5 times (fewer if slow), returning the last result and the fastest
 /// build time.
-pub(super) fn timed_build<T>(mut f: impl FnMut() -> T) -> (T, Duration) {
+pub(crate) fn timed_build<T>(mut f: impl FnMut() -> T) -> (T, Duration) {
     let t = Instant::now();
     let mut out = f();
     let mut fastest = t.elapsed();
@@ -231,7 +168,7 @@ pub(super) fn timed_build<T>(mut f: impl FnMut() -> T) -> (T, Duration) {
     (out, fastest)
 }
 
-pub(super) fn row(workload: &str, engine: &str) -> Row {
+pub(crate) fn row(workload: &str, engine: &str) -> Row {
     Row {
         workload: workload.to_string(),
         engine: engine.to_string(),

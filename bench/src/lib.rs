@@ -10,362 +10,50 @@
 //! in `lpe-render`: it renders with the renderer's internals, and the `lpe-render`
 //! binary that runs it would make the two packages depend on each other.
 //!
-//! Modules: [`workload`] (the AOV sets), [`sample`] (the path sampler), [`baseline`]
-//! (regex-automata's DFAs on their own encoding), [`shapes`] (the caller shapes: a
-//! renderer's loop, a bare table, a lazy DFA's own cache), [`osl`] (the OSL rows),
-//! `harness` (the flattened paths and the timed loops every row shares).
+//! Each dialect's rows are a sibling module with the same entry point, `run(cfg,
+//! paths)`: [`renderman`] (every workload through every engine and caller shape, against
+//! regex-automata) and [`osl`] (the OSL basic set on the same paths written as OSL
+//! paths, timed round-robin with the RenderMan basic set, so their ratio is a same-run
+//! comparison). What they share: `harness` (the flattened paths, the timed loop on
+//! classes, the timing discipline, rows and errors), [`sample`] (the path sampler: the
+//! paths are drawn as RenderMan paths, the vertices a renderer makes, and each dialect
+//! writes them in its own notation), [`workload`] (the RenderMan AOV sets, the OSL rows'
+//! peer among them), [`baseline`] (regex-automata's DFAs on their own encoding) and
+//! [`shapes`] (the caller shapes: a renderer's loop, a bare table, a lazy DFA's own
+//! cache).
 //!
-//! Every engine runs over the same sampled paths. The fast matcher is timed on
-//! [`Vertex`]es (classification included: a label hash lookup per labelled vertex) and on
-//! classes computed beforehand (what a renderer does once per material lobe); the
-//! regex-automata DFAs step their own two-byte encoding, computed beforehand; the
-//! reference matcher runs per whole path on a prefix of the paths. Before timing, every
-//! engine's answers are compared with the reference's on those paths.
-//!
-//! The OSL rows ([`osl`]) run the OSL basic set on the same paths written as OSL paths,
-//! timed round-robin with the RenderMan basic set, so their ratio is a same-run
-//! comparison.
+//! Every engine runs over the same sampled paths. The fast matcher is timed on vertices
+//! (classification included: a label hash lookup per labelled vertex) and on classes
+//! computed beforehand (what a renderer does once per material lobe); the regex-automata
+//! DFAs step their own two-byte encoding, computed beforehand; the reference matcher runs
+//! per whole path on a prefix of the paths. Before timing, every engine's answers are
+//! compared with its dialect's reference on those paths.
 
 pub mod baseline;
 mod harness;
 pub mod osl;
+pub mod renderman;
 pub mod sample;
 pub mod shapes;
 pub mod workload;
 
-use std::hint::black_box;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
-use lpe::renderman::Path;
-use lpe::{AovMask, AovSet, Options, PathMatcher};
 use tabled::builder::Builder;
 use tabled::settings::object::Columns;
 use tabled::settings::{Alignment, Style};
 
-use harness::{best_times, chunked, digest, row, timed_build, Job};
-pub use harness::{
-    classify, encode, flatten, reference_mask, run_classes, run_dense, run_dense_encoding,
-    run_lazy, run_vertices, BenchError, Config, Disagreement, Flat, Row,
-};
+pub use harness::{classify, run_classes, BenchError, Config, Disagreement, Flat, Row};
 
-/// Runs the benchmark; `Err` if any engine disagrees with the reference.
+/// Runs the benchmark: each dialect's rows on the same sampled paths; `Err` if any
+/// engine disagrees with its dialect's reference.
 pub fn run(cfg: &Config) -> Result<Vec<Row>, BenchError> {
     let paths = sample::paths(cfg.vertices, cfg.seed);
-    let flat = chunked(&paths, flatten);
-    let vertices: usize = paths.iter().map(Path::len).sum();
-    let checked = &paths[..cfg.reference_paths.min(paths.len())];
-    let checked_vertices: usize = checked.iter().map(Path::len).sum();
-    let ns = |d: Duration, n: usize| d.as_secs_f64() * 1e9 / n as f64;
     let mut rows = Vec::new();
     let mut disagreements = Vec::new();
-    for w in workload::all() {
-        if !cfg.workloads.is_empty() && !cfg.workloads.iter().any(|n| n == w.name) {
-            continue;
-        }
-        let aovs = &w.aovs;
-        let want: Vec<AovMask> = checked.iter().map(|p| reference_mask(aovs, p)).collect();
-        let mut check = |engine: &str, got: &mut dyn FnMut(&Path) -> Option<AovMask>| {
-            let bad = checked
-                .iter()
-                .zip(&want)
-                .filter(|(p, w)| got(p).is_some_and(|g| g != **w))
-                .count();
-            if bad > 0 {
-                disagreements.push(Disagreement {
-                    workload: w.name,
-                    engine: engine.to_string(),
-                    paths: bad,
-                });
-            }
-        };
-
-        // Build everything, check it against the reference, then time it.
-        let (fast, fast_time) = timed_build(|| AovSet::compile(aovs));
-        let fast = fast.map_err(|error| BenchError::Compile {
-            workload: w.name,
-            error,
-        })?;
-        check("fast", &mut |p| Some(fast.match_path(p)));
-        let fast_classes = chunked(&paths, |c| classify(&fast, c));
-        let nfa_opts = Options {
-            dfa_budget: 0,
-            ..Options::default()
-        };
-        let (nfa_set, nfa_set_time) = timed_build(|| AovSet::compile_with(aovs, &nfa_opts));
-        let nfa_set = nfa_set.ok();
-        if let Some(set) = &nfa_set {
-            check("nfa", &mut |p| Some(set.match_path(p)));
-            let mut cache = set.cache();
-            check("lazy DFA, own cache", &mut |p| {
-                let s = p.vertices().iter().fold(set.start(), |s, v| {
-                    set.step_with(&mut cache, s, set.classify(v))
-                });
-                Some(set.matches_with(&mut cache, s))
-            });
-            if let Some(wide) = set.nfa() {
-                check("bitset NFA", &mut |p| {
-                    Some(wide.match_vertices(p.vertices()))
-                });
-            }
-        }
-        let interned = chunked(&paths, |c| shapes::intern(&fast, c));
-        check("fast, on interned vertices", &mut |p| {
-            let s = p.vertices().iter().fold(fast.start(), |s, v| {
-                let l = fast.label_id(v.label());
-                fast.step_class(s, fast.classify_interned(v.ty(), v.event(), l))
-            });
-            Some(fast.matches(s))
-        });
-        let wavefronts: Vec<shapes::Wavefront> =
-            fast_classes.iter().map(shapes::Wavefront::new).collect();
-        let bare = fast
-            .dfa_states()
-            .map(|n| shapes::BareTable::new(n, fast.class_count(), cfg.seed));
-        let nfa_classes = nfa_set
-            .as_ref()
-            .map(|s| chunked(&paths, |c| classify(s, c)));
-
-        let enc = baseline::Encoding::new(aovs)?;
-        let bytes = chunked(&paths, |c| encode(&enc, c));
-        let (ra_nfa, ra_nfa_time) = timed_build(|| baseline::nfa(&enc, aovs));
-        let ra_nfa = ra_nfa?;
-        let (dense, dense_time) = timed_build(|| baseline::dense(&ra_nfa));
-        let dense = dense.and_then(|d| baseline::dense_start(&d).map(|s| (d, s)));
-        if let Ok((dfa, start)) = &dense {
-            check("regex-automata dense", &mut |p| {
-                let mut b = Vec::new();
-                enc.encode(p, &mut b);
-                Some(baseline::dense_run(dfa, *start, &b))
-            });
-        }
-        let (lazy, lazy_time) = timed_build(|| baseline::lazy(ra_nfa.clone()));
-        let mut lazy = lazy.map(|d| {
-            let c = d.create_cache();
-            (d, c)
-        });
-        if let Ok((dfa, cache)) = &mut lazy {
-            check("regex-automata lazy", &mut |p| {
-                let mut b = Vec::new();
-                enc.encode(p, &mut b);
-                baseline::lazy_run(dfa, cache, &b)
-            });
-        }
-
-        let lazy_gave_up = std::cell::Cell::new(false);
-        let mut jobs: Vec<Job<'_>> = vec![
-            Box::new(|c| run_vertices(&fast, &flat[c])),
-            Box::new(|c| shapes::run_interned(&fast, &interned[c])),
-            Box::new(|c| run_classes(fast.automaton(), &fast_classes[c])),
-            Box::new(|c| shapes::run_renderer(&fast, &fast_classes[c])),
-            Box::new(|c| shapes::run_heap_record(&fast, &fast_classes[c])),
-        ];
-        if let Some(t) = &bare {
-            jobs.push(Box::new(|c| shapes::run_bare(t, &fast_classes[c])));
-        }
-        jobs.push(Box::new(|c| shapes::run_batch(&fast, &wavefronts[c])));
-        if !fast.uses_dfa() {
-            let mut cache = fast.cache();
-            let (set, classes) = (&fast, &fast_classes);
-            jobs.push(Box::new(move |c| {
-                shapes::run_cached(set, &mut cache, &classes[c])
-            }));
-        }
-        if let (Some(set), Some(classes)) = (&nfa_set, &nfa_classes) {
-            let mut cache = set.cache();
-            jobs.push(Box::new(move |c| {
-                shapes::run_cached(set, &mut cache, &classes[c])
-            }));
-            if let Some(wide) = set.nfa() {
-                jobs.push(Box::new(move |c| shapes::run_renderer(&wide, &classes[c])));
-            }
-        }
-        if let Ok((dfa, start)) = &dense {
-            jobs.push(Box::new(|c| run_dense(dfa, *start, &bytes[c])));
-            let (enc, flat) = (&enc, &flat);
-            jobs.push(Box::new(move |c| {
-                run_dense_encoding(dfa, *start, enc, &flat[c])
-            }));
-        }
-        if let Ok((dfa, cache)) = &mut lazy {
-            let (bytes, gave_up) = (&bytes, &lazy_gave_up);
-            jobs.push(Box::new(move |c| {
-                run_lazy(dfa, cache, &bytes[c]).unwrap_or_else(|| {
-                    gave_up.set(true);
-                    0
-                })
-            }));
-        }
-        let mut times = best_times(cfg.reps, flat.len(), &mut jobs).into_iter();
-        drop(jobs);
-
-        let mut wrows = Vec::new();
-        let mut r = row(w.name, "fast, on vertices");
-        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-        r.compile = Some(fast_time);
-        r.memory = Some(fast.memory_bytes());
-        r.note = match fast.dfa_states() {
-            Some(n) => format!("DFA, {n} states, {} classes", fast.class_count()),
-            None => format!("lazy DFA, {} positions", fast.nfa_positions()),
-        };
-        wrows.push(r);
-        let mut r = row(w.name, "fast, on interned vertices");
-        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-        r.note = "labels interned at load: classify_interned, no hashing".into();
-        wrows.push(r);
-        let mut r = row(w.name, "fast, on classes");
-        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-        if !fast.uses_dfa() {
-            r.note = "lazy DFA, the State API's per-thread cache".into();
-        }
-        wrows.push(r);
-        let mut shaped = Vec::new();
-        let mut r = row(w.name, "renderer-shaped caller");
-        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-        r.note = "for loop, state in a local, PathMatcher::step".into();
-        shaped.push(r);
-        let mut r = row(w.name, "state in a heap path record");
-        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-        r.note = "read and written back through memory every step".into();
-        shaped.push(r);
-        let mut r = row(w.name, "bare dependent-load chain, same table shape");
-        let bare_ns = match &bare {
-            Some(_) => {
-                r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-                r.note = format!(
-                    "s = table[s + class], {} rows of {}, mask read at the end",
-                    fast.dfa_states().unwrap_or(0),
-                    fast.class_count().next_power_of_two()
-                );
-                r.ns_per_vertex
-            }
-            None => {
-                r.note = "no DFA table".into();
-                None
-            }
-        };
-        if let Some(b) = bare_ns {
-            for s in &mut shaped {
-                if let Some(x) = s.ns_per_vertex {
-                    s.note = format!("{}; {:.2}x the bare chain", s.note, x / b);
-                }
-            }
-        }
-        wrows.extend(shaped);
-        wrows.push(r);
-        let mut r = row(w.name, "batch step, wavefront");
-        r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-        r.note = "step_batch over the paths alive at each depth".into();
-        let one = wrows
-            .iter()
-            .find(|r| r.engine == "renderer-shaped caller")
-            .and_then(|r| r.ns_per_vertex);
-        if let (Some(x), Some(one)) = (r.ns_per_vertex, one) {
-            r.note = format!("{}; {:.2}x the renderer-shaped caller", r.note, x / one);
-        }
-        wrows.push(r);
-        let mut lazy_rows = Vec::new();
-        if !fast.uses_dfa() {
-            let mut r = row(w.name, "fast, own cache");
-            r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-            r.note = format!(
-                "lazy DFA, {} NFA states determinized",
-                fast.lazy_states().unwrap_or(0)
-            );
-            lazy_rows.push(r);
-        }
-        let mut r = row(w.name, "lazy DFA (dfa_budget 0), own cache");
-        let mut r_nfa = row(w.name, "bitset NFA, on classes");
-        match &nfa_set {
-            Some(set) => {
-                r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-                r.compile = Some(nfa_set_time);
-                r.memory = Some(set.memory_bytes());
-                r.note = format!("{} NFA states determinized", set.lazy_states().unwrap_or(0));
-                lazy_rows.push(r);
-                if set.nfa().is_some() {
-                    r_nfa.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-                }
-                r_nfa.note = format!("{} positions, wide state", set.nfa_positions());
-            }
-            None => {
-                r_nfa.note = format!(
-                    "over the {} positions a stepping state holds",
-                    64 * lpe::automata::mask::NFA_STATE_WORDS
-                )
-            }
-        }
-        lazy_rows.push(r_nfa);
-        wrows.extend(lazy_rows);
-        let mut r = row(w.name, "regex-automata dense DFA");
-        r.compile = Some(ra_nfa_time + dense_time);
-        let dense_ns = match &dense {
-            Ok((dfa, _)) => {
-                r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-                r.memory = Some(dfa.memory_usage());
-                r.note = "on its bytes, encoded beforehand".into();
-                r.ns_per_vertex
-            }
-            Err(e) => {
-                r.note = format!("no DFA: {e}");
-                None
-            }
-        };
-        wrows.push(r);
-        if dense.is_ok() {
-            let mut r = row(w.name, "regex-automata dense DFA, encoding included");
-            r.ns_per_vertex = times.next().map(|t| ns(t, vertices));
-            r.note = "encodes each path from its vertices, like `fast, on vertices`".into();
-            wrows.push(r);
-        }
-        let mut r = row(w.name, "regex-automata lazy DFA");
-        r.compile = Some(ra_nfa_time + lazy_time);
-        match &lazy {
-            Ok((dfa, cache)) => {
-                let t = times.next();
-                if lazy_gave_up.get() {
-                    r.note = "cache gave up".into();
-                } else {
-                    r.ns_per_vertex = t.map(|t| ns(t, vertices));
-                }
-                r.memory = Some(dfa.memory_usage() + cache.memory_usage());
-            }
-            Err(e) => r.note = format!("no lazy DFA: {e}"),
-        }
-        let lazy_ns = r.ns_per_vertex;
-        wrows.push(r);
-        // Lazy stepping against its peer, regex-automata's lazy DFA.
-        if let Some(l) = lazy_ns {
-            for r in wrows.iter_mut().filter(|r| {
-                r.engine.ends_with("own cache")
-                    || (!fast.uses_dfa() && r.engine == "fast, on classes")
-            }) {
-                if let Some(x) = r.ns_per_vertex {
-                    r.note = format!("{}; {:.2}x RA lazy", r.note, x / l);
-                }
-            }
-        }
-
-        let mut r = row(w.name, "reference, per path");
-        let t = Instant::now();
-        black_box(checked.iter().fold(0u64, |acc, p| {
-            acc.wrapping_add(digest(reference_mask(aovs, p)))
-        }));
-        r.ns_per_vertex = Some(ns(t.elapsed(), checked_vertices));
-        r.note = format!("{} paths", checked.len());
-        wrows.push(r);
-
-        for r in &mut wrows {
-            r.ratio = match (r.ns_per_vertex, dense_ns) {
-                (Some(x), Some(d)) => Some(x / d),
-                _ => None,
-            };
-        }
-        rows.extend(wrows);
-    }
-    if cfg.workloads.is_empty() || cfg.workloads.iter().any(|n| n == osl::WORKLOAD) {
-        let checked = cfg.reference_paths.min(paths.len());
-        let (osl_rows, bad) = osl::run(cfg.reps, &paths, checked)?;
-        rows.extend(osl_rows);
+    for dialect_rows in [renderman::run, osl::run] {
+        let (more, bad) = dialect_rows(cfg, &paths)?;
+        rows.extend(more);
         disagreements.extend(bad);
     }
     if disagreements.is_empty() {
@@ -444,6 +132,7 @@ const FIGURES: std::ops::Range<usize> = 2..6;
 #[cfg(test)]
 mod tests {
     use super::*;
+    use harness::row;
 
     #[test]
     fn table_is_markdown_with_right_aligned_figures() {

@@ -13,9 +13,10 @@ use lpe::osl::{self, Registered, Symbol};
 use lpe::renderman::{EventKind, Path, VertexType};
 use lpe::{AovMask, AovSet, Options};
 
-use super::harness::{
-    best_times, chunked, classify, row, run_classes, BenchError, Disagreement, Job, Row,
+use crate::harness::{
+    best_times, chunked, classify, row, run_classes, BenchError, Config, Disagreement, Job, Row,
 };
+use crate::workload;
 
 /// The workload name, as given to `--workload`.
 pub const WORKLOAD: &str = "osl-basic";
@@ -63,13 +64,13 @@ fn reference_mask(aovs: &[(String, osl::Lpe)], p: &osl::Path) -> AovMask {
     m
 }
 
-/// The OSL rows, and the engines that disagree with the OSL reference on the first
-/// `checked` paths.
-pub fn run(
-    reps: usize,
-    paths: &[Path],
-    checked: usize,
-) -> Result<(Vec<Row>, Vec<Disagreement>), BenchError> {
+/// The OSL rows (when `cfg` names [`WORKLOAD`]), and the engines that disagree with
+/// the OSL reference on the first `cfg.reference_paths` of `paths`.
+pub fn run(cfg: &Config, paths: &[Path]) -> Result<(Vec<Row>, Vec<Disagreement>), BenchError> {
+    if !cfg.runs(WORKLOAD) {
+        return Ok((Vec::new(), Vec::new()));
+    }
+    let (reps, checked) = (cfg.reps, cfg.reference_paths.min(paths.len()));
     let reg = Registered::none();
     let aovs: Vec<(String, osl::Lpe)> = osl::BASIC
         .iter()
@@ -112,7 +113,7 @@ pub fn run(
         redos = Some(set);
     }
     let redos = redos.expect("compiled at least once");
-    let rm_aovs = super::workload::all()
+    let rm_aovs = workload::all()
         .into_iter()
         .find(|w| w.name == "basic")
         .expect("the RenderMan basic workload")
@@ -215,7 +216,7 @@ mod tests {
             .map(|(n, s)| (n.to_string(), lpe::renderman::parse(s).unwrap()))
             .collect();
         let rm_set = AovSet::compile(&rm_aovs).unwrap();
-        for p in super::super::sample::paths(20_000, 3) {
+        for p in crate::sample::paths(20_000, 3) {
             if p.vertices()
                 .iter()
                 .any(|v| v.event().is_some_and(|e| e.kind() == EventKind::U))

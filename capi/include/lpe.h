@@ -21,12 +21,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
-// Expressions in RenderMan's LPE dialect (docs/language.md).
-#define LPE_DIALECT_RENDERMAN 0
-
 // Expressions in OSL's LPE dialect (docs/language.md §18), parsed under the labels
 // `lpe_options.osl_registered` names; classify vertices with `lpe_classify_symbols`.
 #define LPE_DIALECT_OSL 1
+
+// Expressions in RenderMan's LPE dialect (docs/language.md).
+#define LPE_DIALECT_RENDERMAN 0
 
 // What a call did. `LPE_OK` is 0; every error is non-zero.
 typedef enum lpe_status {

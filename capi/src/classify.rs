@@ -1,12 +1,18 @@
-//! Vertices to classes: once per material lobe, light and camera at scene load.
+//! Vertices to classes: once per material lobe, light and camera at scene load. One
+//! entry point per shape of C vertex, each a dialect's (`lpe_classify` and
+//! `lpe_classify_text` for RenderMan, `lpe_classify_symbols` for OSL; the reading of the
+//! C types is in that dialect's file of `dialect`), all through one generic
+//! `classify_into`.
 
 use std::ffi::c_char;
 
+use lpe::osl::Osl;
 use lpe::renderman::{RenderMan, Vertex};
 use lpe::Class;
 
-use crate::dialect::{renderman, CDialect};
-use crate::set::{lpe_set, text};
+use crate::args::text;
+use crate::dialect::{osl, renderman, CDialect};
+use crate::set::lpe_set;
 use crate::status::{guard, lpe_status};
 
 /// A vertex after classification. Plain data, only meaningful for the set that made it;
@@ -132,4 +138,37 @@ pub extern "C" fn lpe_classify_text(
     classify_into::<RenderMan>(set, out, || {
         renderman::vertex_from_text(src).ok_or(lpe_status::LPE_ERR_PARSE)
     })
+}
+
+/// The class of an OSL vertex, into `*out`: `count` symbols, in OSL's order: the event
+/// (`"C"`, `"R"`, `"T"`, `"L"`, `"O"`, `"B"`, `"V"` or a registered one), the scattering
+/// (`"D"`, `"G"`, `"S"`, `"s"` or a registered one), then the custom labels. Each is
+/// NUL-terminated UTF-8; a NULL entry is OSL's NONE, so an OSL renderer passes its
+/// ustrings' `c_str()` as they are. Classify every kind of scene vertex once, at load,
+/// and step with classes; a vertex of fewer than two symbols matches nothing, as in OSL.
+/// `LPE_ERR_RANGE`: `count` is 0; `LPE_ERR_UTF8`: a symbol that is not UTF-8;
+/// `LPE_ERR_UNSUPPORTED`: a RenderMan set (use `lpe_classify`).
+#[no_mangle]
+pub extern "C" fn lpe_classify_symbols(
+    set: *const lpe_set,
+    symbols: *const *const c_char,
+    count: usize,
+    out: *mut lpe_class,
+) -> lpe_status {
+    // SAFETY: NULL or valid pointers from the caller.
+    let (Some(set), Some(out)) = (unsafe { set.as_ref() }, unsafe { out.as_mut() }) else {
+        return lpe_status::LPE_ERR_NULL;
+    };
+    if symbols.is_null() {
+        return lpe_status::LPE_ERR_NULL;
+    }
+    if count == 0 {
+        return lpe_status::LPE_ERR_RANGE;
+    }
+    if Osl::set_of(&set.set).is_none() {
+        return lpe_status::LPE_ERR_UNSUPPORTED;
+    }
+    // SAFETY: the caller passes `count` readable pointers (checked non-null).
+    let symbols = unsafe { std::slice::from_raw_parts(symbols, count) };
+    classify_into::<Osl>(set, out, || osl::vertex_of(symbols))
 }

@@ -20,20 +20,23 @@
 //! under the registration in `lpe_options.osl_registered`, classify a vertex from its
 //! symbols (`lpe_classify_symbols`). Stepping is the same for both.
 //!
-//! Modules: [`status`] (codes and the panic guard), [`error`] (the error object of a
-//! failed compile), [`set`] (compile, names, warnings, free), `dialect` (what the ABI
-//! asks of each dialect, `CDialect` on `lpe`'s RenderMan and OSL markers, one file each;
-//! the set of any dialect), [`classify`] (vertices
-//! to classes), [`step`] (states: start, step, matches, is_dead; caches), [`view`] (the
-//! step view the header's inline `lpe_view_step` reads), [`bench`] (a benchmark-only
-//! export, not in the header, for `examples/c/step_bench.c`; the criterion step bench
-//! is `lpe-bench`'s, `cargo bench -p lpe-bench --bench step`).
+//! Modules: [`status`] (codes and the panic guard), `args` (C string arguments as
+//! text), [`error`] (the error object of a failed compile), `dialect` (what the ABI asks
+//! of each dialect beyond `lpe::Dialect`: `CDialect` on `lpe`'s RenderMan and OSL
+//! markers with its `LPE_DIALECT_*` number, one file each; the set of any dialect),
+//! [`set`] (compile, names, warnings, free), [`classify`] (vertices to classes: the
+//! entry points whose C vertex types are a dialect's), [`step`] (states: start, step,
+//! matches, is_dead; caches), [`view`] (the step view the header's inline
+//! `lpe_view_step` reads), [`bench`] (a benchmark-only export, not in the header, for
+//! `examples/c/step_bench.c`; the criterion step bench is `lpe-bench`'s,
+//! `cargo bench -p lpe-bench --bench step`). Each imports only modules listed before it.
 
 #![allow(non_camel_case_types)]
 // Every pointer argument is checked for null and documented in the header; marking the
 // functions `unsafe` would add nothing for C callers.
 #![allow(clippy::not_unsafe_ptr_arg_deref)]
 
+mod args;
 pub mod bench;
 pub mod classify;
 mod dialect;
@@ -44,8 +47,6 @@ pub mod step;
 pub mod view;
 
 pub use classify::{lpe_class, lpe_vertex};
-// OSL vertices are classified from their symbols, in the OSL dialect's own module.
-pub use dialect::osl::lpe_classify_symbols;
 pub use error::lpe_error;
 pub use set::{lpe_options, lpe_set};
 pub use status::lpe_status;

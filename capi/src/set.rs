@@ -4,15 +4,14 @@ use std::ffi::{c_char, CStr, CString};
 
 use lpe::{with_dialect, AovSet, Options};
 
+use crate::args::text;
 use crate::dialect::{self, CDialect, DialectSet};
 use crate::error::lpe_error;
 use crate::status::{guard, lpe_status};
 
-/// Expressions in RenderMan's LPE dialect (docs/language.md).
-pub const LPE_DIALECT_RENDERMAN: u32 = 0;
-/// Expressions in OSL's LPE dialect (docs/language.md §18), parsed under the labels
-/// `lpe_options.osl_registered` names; classify vertices with `lpe_classify_symbols`.
-pub const LPE_DIALECT_OSL: u32 = 1;
+// Each dialect's `LPE_DIALECT_*` number is defined beside its `CDialect` impl.
+pub use crate::dialect::osl::LPE_DIALECT_OSL;
+pub use crate::dialect::renderman::LPE_DIALECT_RENDERMAN;
 
 /// Compile-time knobs; start from `lpe_options_default()`.
 #[repr(C)]
@@ -59,17 +58,6 @@ pub extern "C" fn lpe_options_default() -> lpe_options {
         max_path_len: o.max_path_len.unwrap_or(0),
         osl_registered: std::ptr::null(),
     }
-}
-
-/// A C string argument, or the status saying why not.
-pub(crate) fn text<'a>(p: *const c_char) -> Result<&'a str, lpe_status> {
-    if p.is_null() {
-        return Err(lpe_status::LPE_ERR_NULL);
-    }
-    // SAFETY: checked non-null; the caller passes a NUL-terminated string.
-    unsafe { CStr::from_ptr(p) }
-        .to_str()
-        .map_err(|_| lpe_status::LPE_ERR_UTF8)
 }
 
 /// Compiles `count` AOVs into one set.

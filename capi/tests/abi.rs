@@ -4,11 +4,10 @@
 use std::ffi::{c_char, CStr, CString};
 use std::ptr::{null, null_mut};
 
-use lpe_capi::classify::{lpe_classify, lpe_classify_text};
+use lpe_capi::classify::{lpe_classify, lpe_classify_symbols, lpe_classify_text};
 use lpe_capi::error::{
     lpe_error_aov, lpe_error_free, lpe_error_message, lpe_error_position, lpe_error_status,
 };
-use lpe_capi::lpe_classify_symbols;
 use lpe_capi::set::*;
 use lpe_capi::status::lpe_status_message;
 use lpe_capi::step::{

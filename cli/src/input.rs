@@ -11,7 +11,7 @@ pub use crate::error::InputError;
 #[derive(clap::Args, Debug, Clone)]
 pub struct DialectArgs {
     /// The expression language: `renderman` or `osl`.
-    #[arg(long, default_value_t = lpe::DialectName::RenderMan)]
+    #[arg(long, default_value_t = lpe::DialectName::default())]
     pub dialect: lpe::DialectName,
     /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
     #[arg(long)]

@@ -13,6 +13,8 @@
 //!   (exit 2).
 //! - [`input`]: what the subcommands share to read their input (`--engine`,
 //!   `--dialect` with `--ini` or `--register`).
+//! - [`pipe`]: output into a closed pipe ends the run quietly (exit 141), as Unix tools
+//!   do, instead of a panic.
 //! - [`witness`]: the exit code and printing of reports whose witnesses
 //!   [`lpe_lint::witness`] re-checked with the reference matcher (`equiv`, `partition`,
 //!   `lint`).
@@ -21,4 +23,5 @@ pub mod cmd;
 pub mod dialect;
 pub mod error;
 pub mod input;
+pub mod pipe;
 pub mod witness;

@@ -40,6 +40,7 @@ enum Command {
 }
 
 fn main() -> ExitCode {
+    lpe_cli::pipe::quiet_on_closed_pipe();
     let cli = Cli::parse();
     // The reference matcher recurses a few frames per path vertex: give it room for
     // paths far longer than any renderer records.

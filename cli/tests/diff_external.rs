@@ -1,6 +1,7 @@
 //! `lpe-check diff --external` end to end: exit codes, the printed replay command and
-//! that it replays. Needs python3 for the example matcher (skipped with the reason
-//! printed when it is absent); the harness itself is tested in lpe-engines.
+//! that it replays. Needs python3 for the example matcher: a test that runs it fails,
+//! naming what to install, when python3 is absent (a skip would read as a pass); the
+//! harness itself is tested in lpe-engines.
 
 use std::process::Command;
 
@@ -17,15 +18,21 @@ fn lpe_check(args: &[&str]) -> (i32, String, String) {
     )
 }
 
-fn python() -> bool {
-    let ok = Command::new("python3")
+/// Panics unless `python3` runs: the tests that call this drive Python adapters, and
+/// returning early without it would report them as passing when nothing was checked.
+///
+/// Planted fault: with `PATH` emptied (`PATH= cargo test ...`, the test binary run
+/// directly) every such test fails with this message instead of passing.
+fn require_python3() {
+    let found = Command::new("python3")
         .arg("--version")
         .output()
         .is_ok_and(|o| o.status.success());
-    if !ok {
-        eprintln!("skipped: python3 is not installed, so the example matcher cannot run");
-    }
-    ok
+    assert!(
+        found,
+        "python3 is required for this test: install it (e.g. `apt-get install python3`) \
+         and put it on PATH"
+    );
 }
 
 #[test]
@@ -82,9 +89,7 @@ fn bad_input_exits_2() {
 
 #[test]
 fn agreement_exits_0_and_the_planted_bug_3_with_a_replay_that_replays() {
-    if !python() {
-        return;
-    }
+    require_python3();
     let clean = "python3 examples/python/naive_matcher.py";
     let (code, out, err) = lpe_check(&["diff", "--external", clean, "--cases", "60"]);
     assert_eq!(code, 0, "{out}{err}");
@@ -130,9 +135,7 @@ fn proxy_in_the_osl_dialect(flags: &str) -> String {
 
 #[test]
 fn runs_send_each_registration_and_replay_it_in_the_osl_dialect() {
-    if !python() {
-        return;
-    }
+    require_python3();
     let clean = proxy_in_the_osl_dialect("");
     let (code, out, err) = lpe_check(&[
         "diff",
@@ -194,9 +197,7 @@ fn runs_send_each_registration_and_replay_it_in_the_osl_dialect() {
 
 #[test]
 fn a_renderman_only_matcher_refuses_an_osl_run_with_exit_2() {
-    if !python() {
-        return;
-    }
+    require_python3();
     let (code, _, err) = lpe_check(&[
         "diff",
         "--external",
@@ -222,9 +223,7 @@ fn suite_dir(tag: &str, files: &[(&str, &str)]) -> std::path::PathBuf {
 
 #[test]
 fn the_osl_suite_replays_clean_through_the_osl_proxy() {
-    if !python() {
-        return;
-    }
+    require_python3();
     let proxy = proxy_in_the_osl_dialect("");
     let (code, out, err) = lpe_check(&[
         "diff",
@@ -260,9 +259,7 @@ fn the_osl_suite_replays_clean_through_the_osl_proxy() {
 
 #[test]
 fn a_planted_wrong_verdict_is_reported_with_its_file_and_case() {
-    if !python() {
-        return;
-    }
+    require_python3();
     let dir = suite_dir(
         "planted",
         &[
@@ -369,9 +366,7 @@ fn replays(out: &str) -> Vec<(i32, String)> {
 /// disagrees when replayed, and the header's case range ends at the last case asked.
 #[test]
 fn minimized_cases_still_disagree_when_replayed() {
-    if !python() {
-        return;
-    }
+    require_python3();
     let mut findings = 0;
     for seed in ["3", "4", "5"] {
         let (code, out, err) = planted_adapter_run("--miss-counted", &["--seed", seed]);
@@ -403,9 +398,7 @@ fn minimized_cases_still_disagree_when_replayed() {
 /// crash on `{0}` counts, no two crash findings carry the same request.
 #[test]
 fn a_candidate_that_crashed_is_not_sent_again() {
-    if !python() {
-        return;
-    }
+    require_python3();
     let (code, out, err) = planted_adapter_run(
         "--miss-counted --crash-on-zero",
         &["--seed", "4", "--max-restarts", "100"],
@@ -430,9 +423,7 @@ fn a_candidate_that_crashed_is_not_sent_again() {
 /// case instead of one that does not disagree.
 #[test]
 fn a_minimized_case_that_agrees_on_replay_falls_back_to_the_original() {
-    if !python() {
-        return;
-    }
+    require_python3();
     let (code, out, err) = planted_adapter_run("--miss-counted --flaky", &["--seed", "3"]);
     assert_eq!(code, 3, "{out}{err}");
     assert!(
@@ -464,9 +455,7 @@ fn a_minimized_case_that_agrees_on_replay_falls_back_to_the_original() {
 /// process past the budget to ask about the minimized case again.
 #[test]
 fn the_restart_budget_holds_during_minimization() {
-    if !python() {
-        return;
-    }
+    require_python3();
     let proxy = proxy_in_the_osl_dialect("--miss-counted --crash-after 1");
     for n in [0u64, 1, 5] {
         let budget = n.to_string();

@@ -57,7 +57,9 @@ impl Stage<'_> {
         s + "}\n"
     }
 
-    /// The finding kinds `lpe-check lint --dialect run` reports on this stage, in order.
+    /// The finding kinds `lpe-check lint --dialect run` reports on this stage, in order
+    /// (`run` empty: no `--dialect`, RenderMan's by default with undeclared stages read
+    /// both ways).
     fn kinds(&self, run: &str) -> Vec<String> {
         static NEXT: AtomicUsize = AtomicUsize::new(0);
         let file: PathBuf = std::env::temp_dir().join(format!(
@@ -67,7 +69,8 @@ impl Stage<'_> {
         ));
         std::fs::write(&file, self.usda()).unwrap();
         let out = Command::new(env!("CARGO_BIN_EXE_lpe-check"))
-            .args(["lint", "--format", "json", "--dialect", run])
+            .args(["lint", "--format", "json"])
+            .args(["--dialect", run].iter().filter(|_| !run.is_empty()))
             .args(self.universe.iter().flat_map(|u| ["--universe", u]))
             .arg(&file)
             .output()
@@ -244,7 +247,7 @@ fn an_undeclared_stage_whose_readings_differ_and_the_closest_whose_agree() {
         ..stage("", aovs)
     };
     pair(
-        "renderman",
+        "",
         "ambiguous_dialect",
         undeclared(&[("a", "C<RS>L")]),
         &[
@@ -252,6 +255,9 @@ fn an_undeclared_stage_whose_readings_differ_and_the_closest_whose_agree() {
             stage("renderman", &[("a", "C<RS>L")]),
         ],
     );
+    // The same stage with the dialect named on the command line lints clean.
+    let (ambiguous, named) = (undeclared(&[("a", "C<RS>L")]), "renderman");
+    assert_eq!(ambiguous.kinds(named), Vec::<String>::new());
 }
 
 #[test]

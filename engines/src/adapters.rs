@@ -1,22 +1,22 @@
 //! The workspace's own matchers behind [`Engine`]: the backtracking reference and lpe's
 //! AOV set in its two stepping modes, each written once for every dialect.
 
-use lpe::{AovMask, AovSet, Options};
+use lpe::{AovMask, AovSet, Dialect, Options};
 
-use crate::dialect::EngineDialect;
+use crate::dialect::ReferenceDialect;
 use crate::engine::{fits_mask, Engine, EngineError, Matcher};
 
-/// The backtracking reference matcher ([`EngineDialect::reference`]) on the trees of the
+/// The backtracking reference matcher ([`ReferenceDialect::reference`]) on the trees of the
 /// reference's own front end, one expression at a time.
 pub struct Reference;
 
 /// Crate-visible so the harness's planted-bug engines (differential tests) answer like
 /// the reference on their rewritten expressions without a copy of this type.
-pub(crate) struct ReferenceMatcher<D: EngineDialect>(pub(crate) Vec<D::ReferenceTree>);
+pub(crate) struct ReferenceMatcher<D: ReferenceDialect>(pub(crate) Vec<D::ReferenceTree>);
 
-impl<D: EngineDialect> ReferenceMatcher<D> {
+impl<D: ReferenceDialect> ReferenceMatcher<D> {
     /// Every expression read by the reference's own front end
-    /// ([`EngineDialect::reference_tree`]).
+    /// ([`ReferenceDialect::reference_tree`]).
     pub(crate) fn new(
         exprs: &[D::Lpe],
         registration: &D::Registration,
@@ -29,7 +29,7 @@ impl<D: EngineDialect> ReferenceMatcher<D> {
     }
 }
 
-impl<D: EngineDialect> Matcher<D> for ReferenceMatcher<D> {
+impl<D: ReferenceDialect> Matcher<D> for ReferenceMatcher<D> {
     fn which(&self, path: &D::Path) -> AovMask {
         self.0
             .iter()
@@ -40,13 +40,13 @@ impl<D: EngineDialect> Matcher<D> for ReferenceMatcher<D> {
     }
 }
 
-impl<D: EngineDialect> Engine<D> for Reference {
+impl<D: ReferenceDialect> Engine<D> for Reference {
     fn name(&self) -> &'static str {
         "reference"
     }
 
     /// Each expression read again by the reference's own front end, under the
-    /// registration (see [`EngineDialect::reference_tree`]).
+    /// registration (see [`ReferenceDialect::reference_tree`]).
     fn compile(
         &self,
         exprs: &[D::Lpe],
@@ -65,9 +65,9 @@ pub struct Fast;
 /// and not only on sets whose DFA is too large.
 pub struct BitsetNfa;
 
-struct AovSetMatcher<D: EngineDialect>(AovSet<D>);
+struct AovSetMatcher<D: Dialect>(AovSet<D>);
 
-impl<D: EngineDialect> Matcher<D> for AovSetMatcher<D> {
+impl<D: Dialect> Matcher<D> for AovSetMatcher<D> {
     fn which(&self, path: &D::Path) -> AovMask {
         self.0.match_path(path)
     }
@@ -83,7 +83,7 @@ fn numbered<T: Clone>(exprs: &[T]) -> Vec<(String, T)> {
 }
 
 /// lpe's AOV set of `exprs` under `registration`, compiled with `opts`.
-pub(crate) fn compile_set<D: EngineDialect>(
+pub(crate) fn compile_set<D: Dialect>(
     exprs: &[D::Lpe],
     registration: &D::Registration,
     opts: &Options,
@@ -101,7 +101,7 @@ pub(crate) fn nfa_only() -> Options {
     }
 }
 
-impl<D: EngineDialect> Engine<D> for Fast {
+impl<D: Dialect> Engine<D> for Fast {
     fn name(&self) -> &'static str {
         "fast"
     }
@@ -115,7 +115,7 @@ impl<D: EngineDialect> Engine<D> for Fast {
     }
 }
 
-impl<D: EngineDialect> Engine<D> for BitsetNfa {
+impl<D: Dialect> Engine<D> for BitsetNfa {
     fn name(&self) -> &'static str {
         "nfa"
     }

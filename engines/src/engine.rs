@@ -8,12 +8,14 @@
 //!
 //! The seam is generic over the dialect: [`Engine<D>`] compiles `D`'s expressions under
 //! `D`'s registration into a [`Matcher<D>`] over `D`'s paths. Every engine of the
-//! workspace implements it once for every [`EngineDialect`], so a dialect joins the
-//! registry by implementing that trait, not by a method per dialect here.
+//! workspace implements it once for every dialect with what it runs on (the reference
+//! for a [`ReferenceDialect`](crate::dialect::ReferenceDialect), the oracle for an
+//! [`OracleDialect`](crate::dialect::OracleDialect), lpe's automata for any), so a
+//! dialect joins the registry by implementing those traits, not by a method per dialect
+//! here.
 
 use lpe::{AovMask, Dialect, MAX_AOVS};
 
-use crate::dialect::EngineDialect;
 pub use crate::error::EngineError;
 
 /// A compiled expression set over `D`'s paths. `Send`, so a multi-threaded caller (the
@@ -25,7 +27,7 @@ pub trait Matcher<D: Dialect>: Send {
 }
 
 /// A matching engine for dialect `D`.
-pub trait Engine<D: EngineDialect>: Sync {
+pub trait Engine<D: Dialect>: Sync {
     /// Short name, as given to `--engine`.
     fn name(&self) -> &'static str;
     /// Compiles a set of expressions, parsed under `registration`.

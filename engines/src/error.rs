@@ -1,10 +1,12 @@
-//! Why an engine produced no matcher: [`EngineError`]. In a file of its own (importing
-//! only the oracle's error type), so that the seam ([`crate::engine`]) and the
-//! dialects' trait ([`crate::dialect`]), which both name it, do not import each other.
+//! Why an engine produced no matcher: [`EngineError`], and the `oracle` engine's own
+//! reasons, [`BuildError`]. A leaf of the crate (it imports nothing of it): the engine
+//! seam ([`crate::engine`]), the dialects' traits ([`crate::dialect`]) and the engines
+//! all name these types, and none of them may sit below the others for it.
 
 use lpe::Dialect;
-
-use crate::regex::error::BuildError;
+use regex_automata::dfa::dense;
+use regex_automata::hybrid;
+use regex_automata::nfa::thompson;
 
 /// Why an engine produced no matcher. Displayed as `cannot build: <why>`.
 #[derive(Clone, Debug, thiserror::Error)]
@@ -52,4 +54,29 @@ impl From<BuildError> for EngineError {
     fn from(e: BuildError) -> Self {
         EngineError::Regex(e)
     }
+}
+
+/// Why the regex-automata engine cannot build a set. regex-automata's errors are boxed:
+/// they are large, and every `compile` result carries this type.
+#[derive(Clone, Debug, thiserror::Error)]
+pub enum BuildError {
+    /// The set mentions more distinct labels than the label byte can number.
+    #[error("{labels} distinct labels, the byte encoding holds {max}")]
+    TooManyLabels {
+        /// Distinct labels the set mentions.
+        labels: usize,
+        /// Most the encoding holds (`regex::renderman::encode::MAX_LABELS`, or
+        /// `regex::osl::MAX_SYMBOLS` for an OSL set).
+        max: usize,
+    },
+    /// The Thompson NFA is over [`crate::regex::SizeLimits::nfa`] (or otherwise unbuildable).
+    #[error("NFA: {0}")]
+    Nfa(Box<thompson::BuildError>),
+    /// The dense DFA failed for a reason other than its size limit (over the limit,
+    /// the eager engine falls back to the lazy DFA).
+    #[error("DFA: {0}")]
+    Dfa(Box<dense::BuildError>),
+    /// The lazy DFA could not be configured.
+    #[error("lazy DFA: {0}")]
+    LazyDfa(Box<hybrid::BuildError>),
 }

@@ -26,21 +26,21 @@ use arbitrary::Unstructured;
 use lpe::algebra::SetExpr;
 use lpe::osl::Osl;
 use lpe::renderman::RenderMan;
-use lpe::Options;
+use lpe::{Dialect, Options};
 use lpe_testkit::generate::Choices;
 use lpe_testkit::grammar::Coverage;
 
 use crate::adapters::{compile_set, nfa_only, Fast, Reference};
-use crate::dialect::EngineDialect;
+use crate::dialect::{EngineDialect, ReferenceDialect, WireDialect};
 use crate::differential::{self, draw, Agreement, Generate, Outcome};
 use crate::engine::{Engine, EngineError, Matcher};
 use crate::registry;
 
 /// `parse`, `osl_parse`: never panics; parse -> print -> parse gives the same tree
-/// ([`EngineDialect::same_tree`]) and prints the same again. A first line that is a
-/// registration ([`EngineDialect::registration_line`], OSL's `events=U;scatters=Y`)
+/// ([`WireDialect::same_tree`]) and prints the same again. A first line that is a
+/// registration ([`WireDialect::registration_line`], OSL's `events=U;scatters=Y`)
 /// applies to the rest.
-pub fn parse<D: EngineDialect>(data: &[u8]) {
+pub fn parse<D: WireDialect>(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
     let (registration, src) = text
         .split_once('\n')
@@ -62,7 +62,7 @@ pub fn parse<D: EngineDialect>(data: &[u8]) {
 }
 
 /// `path_text`: never panics; a parsed path prints and re-parses to itself.
-pub fn path_text<D: EngineDialect>(data: &[u8]) {
+pub fn path_text<D: Dialect>(data: &[u8]) {
     let text = String::from_utf8_lossy(data);
     let Ok(path) = text.parse::<D::Path>() else {
         return;
@@ -159,7 +159,7 @@ fn compare<D: EngineDialect>(
 }
 
 /// The agreement of an outcome; panics on a disagreement, or if the reference refused.
-fn agreement<D: EngineDialect>(outcome: Outcome<D>) -> Agreement {
+fn agreement<D: ReferenceDialect + WireDialect>(outcome: Outcome<D>) -> Agreement {
     match outcome {
         Outcome::Disagree(c) => panic!("{c}"),
         Outcome::Agree(a) => {
@@ -182,7 +182,7 @@ fn agreement<D: EngineDialect>(outcome: Outcome<D>) -> Agreement {
 /// the case's paths have at most a dozen; smaller sets, most cases, still compile exact.
 const EXACT_POSITIONS: u64 = 32;
 
-fn needs_bounding<D: EngineDialect>(exprs: &[D::Lpe]) -> bool {
+fn needs_bounding<D: Dialect>(exprs: &[D::Lpe]) -> bool {
     let operands = exprs.iter().flat_map(|e| e.operands());
     operands.map(|o| D::positions(o, None)).sum::<u64>() > EXACT_POSITIONS
 }
@@ -209,7 +209,7 @@ impl ForPaths {
     }
 }
 
-impl<D: EngineDialect> Engine<D> for ForPaths {
+impl<D: Dialect> Engine<D> for ForPaths {
     fn name(&self) -> &'static str {
         self.name
     }
@@ -247,10 +247,10 @@ fn table(name: &str) -> Option<(Body, bool)> {
     ];
     let differentials: [(&str, Body); 3] = [
         ("differential", |d| {
-            differential::<RenderMan>(d, 1..=1, &renderman_config())
+            differential::<RenderMan>(d, 1..=1, &Default::default())
         }),
         ("aov_set", |d| {
-            differential::<RenderMan>(d, 2..=6, &renderman_config().with_max_atoms(6))
+            differential::<RenderMan>(d, 2..=6, &RenderMan::config(6))
         }),
         ("osl_differential", |d| {
             differential::<Osl>(d, 1..=4, &Default::default())
@@ -260,10 +260,6 @@ fn table(name: &str) -> Option<(Body, bool)> {
     find(&parses)
         .map(|b| (b, false))
         .or_else(|| find(&differentials).map(|b| (b, true)))
-}
-
-fn renderman_config() -> <RenderMan as Generate>::Config {
-    lpe_testkit::generate::Config::default()
 }
 
 /// Runs the fuzz target called `name` on `data` (what `fuzz/fuzz_targets/NAME.rs`

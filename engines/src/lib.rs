@@ -1,17 +1,20 @@
 //! LPE matching engines behind one trait, and the tools that run them side by side.
 //!
-//! - [`dialect`]: [`EngineDialect`], what the engines and harnesses need of a dialect
-//!   beyond `lpe::Dialect` (reference verdict, oracle translation, shrinking, the
-//!   external protocol's view); [`renderman`] and [`osl`]: its two implementations,
-//!   with their case generators.
+//! - [`dialect`]: what the engines and harnesses need of a dialect beyond
+//!   `lpe::Dialect`, one trait per concern (the reference matcher, the oracle's
+//!   translation, the minimizer's moves, a case as text on the wire), and
+//!   [`EngineDialect`], all four; [`renderman`] and [`osl`]: their two
+//!   implementations, with the dialects' case generators and front ends.
 //! - [`engine`]: the seam, [`Engine<D>`] compiles a set of `D`'s expressions into a
 //!   [`Matcher<D>`] that answers, per whole path, which of them match (an
-//!   `lpe::AovMask`); [`error`]: [`EngineError`], why an engine refused a set.
+//!   `lpe::AovMask`); [`error`]: [`EngineError`], why an engine refused a set (a leaf
+//!   every other module may name).
 //! - [`adapters`]: the workspace's own matchers behind that seam, the backtracking
 //!   [`Reference`], lpe's [`Fast`] matcher (minimized DFA, NFA over budget) and its
 //!   [`BitsetNfa`] alone.
-//! - [`regex`]: the independent second engine, LPE translated to `regex-automata` over a
-//!   byte encoding of vertices ([`regex::RegexEngine`], registered as `oracle`).
+//! - [`regex`]: the independent second engine, LPE translated to `regex-automata`
+//!   ([`regex::RegexEngine`], registered as `oracle`), one translation per dialect
+//!   beside the engine.
 //! - [`registry`]: [`all()`] and [`by_name()`] (per dialect), the one list of engines every tool uses;
 //!   the names (`reference`, `oracle`, `fast`, `nfa`) are what `lpe-check --engine` takes.
 //! - [`differential`]: the differential harness, generated cases, and the shrinker that
@@ -36,6 +39,8 @@ pub mod registry;
 pub mod renderman;
 
 pub use adapters::{BitsetNfa, Fast, Reference};
-pub use dialect::EngineDialect;
+pub use dialect::{
+    EngineDialect, OracleDialect, ReferenceDialect, ShrinkDialect, WireDialect, WireRegistration,
+};
 pub use engine::{Engine, EngineError, Matcher};
 pub use registry::{all, by_name, names};

@@ -1,7 +1,8 @@
-//! OSL on this crate's seams: its [`EngineDialect`] (the symbol-stream reference
-//! matcher of `lpe_reference::osl`, the oracle's translation of `regex/osl.rs`, the
-//! shrinker's moves of `differential/shrink/osl.rs`, its registered labels on the wire
-//! and in replays) and its generators ([`Generate`], `lpe_testkit::generate::osl`).
+//! OSL on this crate's seams: the dialect traits of [`crate::dialect`] (the
+//! symbol-stream reference matcher of `lpe_reference::osl`, the oracle's translation of
+//! `regex/osl.rs`, the shrinker's moves of `differential/shrink/osl.rs`, its registered
+//! labels in reports, on the wire and in fuzz inputs), its front ends ([`FrontEnds`])
+//! and its generators ([`Generate`], `lpe_testkit::generate::osl`).
 
 use lpe::osl::{Error, Expr, Lpe, Osl, Path, Registered};
 use lpe_testkit::generate::{self, Choices};
@@ -10,15 +11,16 @@ use lpe_testkit::grammar::{self, Coverage};
 use lpe::DialectName;
 use lpe_testkit::suite::Loaded;
 
-use crate::dialect::EngineDialect;
+use crate::dialect::{
+    OracleDialect, ReferenceDialect, ShrinkDialect, Translation, WireDialect, WireRegistration,
+};
 use crate::differential::front::{constructs, FrontEnds};
 use crate::differential::shrink;
 use crate::differential::Generate;
-use crate::engine::EngineError;
-use crate::external::protocol::Registration;
-use crate::regex::{self, Translation};
+use crate::error::EngineError;
+use crate::regex::osl as oracle;
 
-impl EngineDialect for Osl {
+impl ReferenceDialect for Osl {
     type ReferenceTree = lpe_reference::osl::Lpe;
 
     fn reference_tree(
@@ -37,15 +39,19 @@ impl EngineDialect for Osl {
     fn reference(tree: &lpe_reference::osl::Lpe, path: &Path) -> bool {
         lpe_reference::osl::is_match(tree, path)
     }
+}
 
+impl OracleDialect for Osl {
     fn oracle(exprs: &[Lpe]) -> Result<Translation<Osl>, EngineError> {
-        let (symbols, hirs) = regex::osl::translate(exprs)?;
+        let (symbols, hirs) = oracle::translate(exprs)?;
         Ok(Translation {
             encoder: Box::new(symbols),
             hirs,
         })
     }
+}
 
+impl ShrinkDialect for Osl {
     fn shrink_expr(e: &Lpe, registered: &Registered) -> Vec<Lpe> {
         let basic = registered.basic_labels();
         shrink::shrink_set_expr(
@@ -58,23 +64,17 @@ impl EngineDialect for Osl {
     fn shrink_path(p: &Path) -> Vec<Path> {
         shrink::osl::shrink_path(p)
     }
+}
 
+impl WireDialect for Osl {
     fn context(registered: &Registered) -> String {
         format!("registered: {registered}")
     }
 
     /// Always sent, empty lists when nothing is registered: an OSL matcher's
     /// registration is per set.
-    fn wire_registration(registered: &Registered) -> Option<Registration> {
-        Some(Registration::from(registered))
-    }
-
-    fn replay_args(registered: &Registered) -> Vec<String> {
-        if *registered == Registered::none() {
-            Vec::new()
-        } else {
-            vec!["--register".into(), registered.to_string()]
-        }
+    fn wire_registration(registered: &Registered) -> Option<WireRegistration> {
+        Some(WireRegistration::from(registered))
     }
 
     fn parse_error(e: &Error) -> (usize, String) {
@@ -88,6 +88,16 @@ impl EngineDialect for Osl {
     /// The trees only: warnings carry source positions, which reprinting moves.
     fn same_tree(a: &Lpe, b: &Lpe) -> bool {
         a.expr == b.expr
+    }
+}
+
+/// OSL's registered labels as a `compile` request carries them.
+impl From<&Registered> for WireRegistration {
+    fn from(r: &Registered) -> WireRegistration {
+        WireRegistration {
+            events: r.events.clone(),
+            scatters: r.scatters.clone(),
+        }
     }
 }
 

@@ -1,6 +1,8 @@
-//! RenderMan on this crate's seams: its [`EngineDialect`] (the reference matcher of
-//! `lpe_reference`, the oracle's translation of `regex/translate.rs`, the shrinker's
-//! moves) and its generators ([`Generate`], `lpe_testkit::generate`).
+//! RenderMan on this crate's seams: the dialect traits of [`crate::dialect`] (the
+//! reference matcher of `lpe_reference`, the oracle's translation of `regex/renderman/`,
+//! the shrinker's moves of `differential/shrink/renderman.rs`, parse errors as the
+//! external protocol compares them), its front ends ([`FrontEnds`]) and its generators
+//! ([`Generate`], `lpe_testkit::generate`).
 
 use lpe::renderman::macros::MacroTable;
 use lpe::renderman::{Error, Expr, Lpe, Parser, Path, Prefixes, RenderMan};
@@ -11,14 +13,14 @@ use lpe::renderman::Config as Ini;
 use lpe::DialectName;
 use lpe_testkit::suite::Loaded;
 
-use crate::dialect::EngineDialect;
+use crate::dialect::{OracleDialect, ReferenceDialect, ShrinkDialect, Translation, WireDialect};
 use crate::differential::front::{constructs, FrontEnds};
-use crate::differential::shrink;
+use crate::differential::shrink::renderman as shrink;
 use crate::differential::Generate;
-use crate::engine::EngineError;
-use crate::regex::{self, Translation};
+use crate::error::EngineError;
+use crate::regex::renderman as oracle;
 
-impl EngineDialect for RenderMan {
+impl ReferenceDialect for RenderMan {
     type ReferenceTree = lpe_reference::renderman::Lpe;
 
     /// lpe's print has its macros expanded; the user macros go along anyway (as plain
@@ -39,15 +41,19 @@ impl EngineDialect for RenderMan {
     fn reference(tree: &lpe_reference::renderman::Lpe, path: &Path) -> bool {
         lpe_reference::renderman::is_match(tree, path)
     }
+}
 
+impl OracleDialect for RenderMan {
     fn oracle(exprs: &[Lpe]) -> Result<Translation<RenderMan>, EngineError> {
-        let (labels, hirs) = regex::translate(exprs)?;
+        let (labels, hirs) = oracle::translate(exprs)?;
         Ok(Translation {
             encoder: Box::new(labels),
             hirs,
         })
     }
+}
 
+impl ShrinkDialect for RenderMan {
     /// The expression's shrinks without prefixes ([`shrink::shrink_lpe`]), then the same
     /// expression without them (prefixes never affect matching; dropping them helps
     /// reading).
@@ -64,7 +70,10 @@ impl EngineDialect for RenderMan {
     fn shrink_path(p: &Path) -> Vec<Path> {
         shrink::shrink_path(p)
     }
+}
 
+/// Nothing registered travels: the parser's macros are expanded in the printed trees.
+impl WireDialect for RenderMan {
     fn parse_error(e: &Error) -> (usize, String) {
         (e.span().start, e.message().to_string())
     }

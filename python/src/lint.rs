@@ -14,24 +14,26 @@ use crate::error::{disagreement, value_error};
 
 /// Lints `files` as `lpe-check lint --format json` does; returns the report's JSON text.
 #[pyfunction]
-#[pyo3(signature = (files, partitions = Vec::new(), universe = None, dialect = "renderman", ini = None, register = None, rename = None))]
+#[pyo3(signature = (files, partitions = Vec::new(), universe = None, dialect = None, ini = None, register = None, rename = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn lint_json(
     py: Python<'_>,
     files: Vec<PathBuf>,
     partitions: Vec<String>,
     universe: Option<String>,
-    dialect: &str,
+    dialect: Option<&str>,
     ini: Option<PathBuf>,
     register: Option<String>,
     rename: Option<(String, String)>,
 ) -> PyResult<String> {
-    let name = dialect::dialect_name(dialect)?;
+    // No dialect named: RenderMan's, with undeclared stages read both ways.
+    let name = dialect::dialect_name(dialect.unwrap_or("renderman"))?;
     let req = Request {
         files: &files,
         ini: ini.as_deref(),
         partitions: &partitions,
         universe: universe.as_deref(),
+        dialect_given: dialect.is_some(),
     };
     let json = py.allow_threads(
         || with_dialect!(name, D => lint_in::<D>(&req, register.as_deref(), rename.as_ref())),

@@ -2,14 +2,12 @@
 //! path at a time (`match`), in a batch (`match_many`, parsing and matching with the
 //! GIL released), or explained vertex by vertex (`explain`, `lpe_lint::explain`).
 //! The set is generic over the dialect ([`Compiled`]); the Python class holds one of
-//! the two ([`Inner`]).
+//! any dialect behind [`AnySet`].
 
 use std::borrow::Cow;
 use std::collections::HashMap;
 use std::path::PathBuf;
 
-use lpe::osl::Osl;
-use lpe::renderman::RenderMan;
 use lpe::{with_dialect, AovMask, Options};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
@@ -48,14 +46,71 @@ impl<D: PyDialect> Compiled<D> {
             registration,
         })
     }
+}
 
-    fn names(&self, mask: AovMask) -> Vec<String> {
-        mask.iter().map(|i| self.set.names()[i].clone()).collect()
+/// Parses and matches every path of `texts`, on as many threads as there are cores for
+/// a long list (the answers in order).
+fn match_all<D: PyDialect>(
+    set: &lpe::AovSet<D>,
+    texts: &[Cow<'_, str>],
+) -> Vec<Result<AovMask, String>> {
+    let one = |t: &Cow<'_, str>| dialect::parse_path::<D>(t).map(|p| set.match_path(&p));
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get().min(8));
+    if threads == 1 || texts.len() < 4096 {
+        return texts.iter().map(one).collect();
+    }
+    let chunk = texts.len().div_ceil(threads);
+    std::thread::scope(|scope| {
+        let workers: Vec<_> = texts
+            .chunks(chunk)
+            .map(|part| scope.spawn(move || part.iter().map(one).collect::<Vec<_>>()))
+            .collect();
+        workers
+            .into_iter()
+            .flat_map(|w| w.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
+            .collect()
+    })
+}
+
+/// A compiled set of any dialect: what `AovSet` asks of its [`Compiled`].
+///
+/// A trait object, because a Python class cannot be generic: `AovSet` holds a
+/// `Compiled<D>` whose `D` is a run-time choice. That choice is made once, in
+/// `AovSet.__new__`, by `lpe::registry` (`DialectName` from the `dialect=` name,
+/// `with_dialect!` to the type), the one place names map to types; nothing here names a
+/// dialect, so a new one needs no change to this file.
+trait AnySet: Send + Sync {
+    /// The AOV names, in order.
+    fn names(&self) -> &[String];
+    /// The number of AOVs.
+    fn len(&self) -> usize;
+    /// `AovSet.match`: the names of the AOVs one path lands in.
+    fn match_one(&self, path: &Bound<'_, PyAny>) -> PyResult<Vec<String>>;
+    /// `AovSet.match_many`: one tuple of names per path.
+    fn match_many<'py>(
+        &self,
+        py: Python<'py>,
+        paths: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyList>>;
+    /// `AovSet.explain`: how one path went through the set.
+    fn explain(&self, path: &Bound<'_, PyAny>) -> PyResult<Explanation>;
+}
+
+impl<D: PyDialect> AnySet for Compiled<D>
+where
+    Compiled<D>: Send + Sync,
+{
+    fn names(&self) -> &[String] {
+        self.set.names()
+    }
+
+    fn len(&self) -> usize {
+        self.set.len()
     }
 
     fn match_one(&self, path: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
         let p = dialect::path::<D>(path)?;
-        Ok(self.names(self.set.match_path(&p)))
+        Ok(names_in(self.set.names(), self.set.match_path(&p)))
     }
 
     fn match_many<'py>(
@@ -109,46 +164,9 @@ impl<D: PyDialect> Compiled<D> {
     }
 }
 
-/// Parses and matches every path of `texts`, on as many threads as there are cores for
-/// a long list (the answers in order).
-fn match_all<D: PyDialect>(
-    set: &lpe::AovSet<D>,
-    texts: &[Cow<'_, str>],
-) -> Vec<Result<AovMask, String>> {
-    let one = |t: &Cow<'_, str>| dialect::parse_path::<D>(t).map(|p| set.match_path(&p));
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get().min(8));
-    if threads == 1 || texts.len() < 4096 {
-        return texts.iter().map(one).collect();
-    }
-    let chunk = texts.len().div_ceil(threads);
-    std::thread::scope(|scope| {
-        let workers: Vec<_> = texts
-            .chunks(chunk)
-            .map(|part| scope.spawn(move || part.iter().map(one).collect::<Vec<_>>()))
-            .collect();
-        workers
-            .into_iter()
-            .flat_map(|w| w.join().unwrap_or_else(|e| std::panic::resume_unwind(e)))
-            .collect()
-    })
-}
-
-/// One compiled set, of either dialect.
-pub enum Inner {
-    /// RenderMan's.
-    RenderMan(Box<Compiled<RenderMan>>),
-    /// OSL's.
-    Osl(Box<Compiled<Osl>>),
-}
-
-/// `inner` as `s: &Compiled<D>` in `body`, whichever the dialect.
-macro_rules! on_set {
-    ($inner:expr, $s:ident => $body:expr) => {
-        match $inner {
-            Inner::RenderMan($s) => $body,
-            Inner::Osl($s) => $body,
-        }
-    };
+/// The names of the AOVs in `mask`, in set order.
+fn names_in(names: &[String], mask: AovMask) -> Vec<String> {
+    mask.iter().map(|i| names[i].clone()).collect()
 }
 
 /// Named AOVs (a dict `{name: expr}` or a list of `(name, expr)` pairs) of one dialect
@@ -157,7 +175,7 @@ macro_rules! on_set {
 /// None). Raises `LpeSyntaxError` (with `.aov`) for an AOV that does not parse.
 #[pyclass(module = "lpe", frozen)]
 pub struct AovSet {
-    inner: Inner,
+    inner: Box<dyn AnySet>,
     dialect: &'static str,
 }
 
@@ -198,7 +216,7 @@ impl AovSet {
         let name = dialect::dialect_name(dialect)?;
         let inner = with_dialect!(name, D => {
             let reg = dialect::registration::<D>(ini.as_ref(), register)?;
-            wrap(Compiled::<D>::new(py, &named, reg)?)
+            Box::new(Compiled::<D>::new(py, &named, reg)?) as Box<dyn AnySet>
         });
         Ok(AovSet {
             inner,
@@ -209,7 +227,7 @@ impl AovSet {
     /// The AOV names, in order.
     #[getter]
     fn names(&self) -> Vec<String> {
-        on_set!(&self.inner, s => s.set.names().to_vec())
+        self.inner.names().to_vec()
     }
 
     /// The dialect name.
@@ -219,7 +237,7 @@ impl AovSet {
     }
 
     fn __len__(&self) -> usize {
-        on_set!(&self.inner, s => s.set.len())
+        self.inner.len()
     }
 
     fn __repr__(&self) -> String {
@@ -230,7 +248,7 @@ impl AovSet {
     /// path that is not one of the dialect, `TypeError` for a value that is no path.
     #[pyo3(name = "match")]
     fn match_(&self, path: &Bound<'_, PyAny>) -> PyResult<Vec<String>> {
-        on_set!(&self.inner, s => s.match_one(path))
+        self.inner.match_one(path)
     }
 
     /// `match` of every path of the iterable `paths`, one tuple of names per path (equal
@@ -242,34 +260,13 @@ impl AovSet {
         py: Python<'py>,
         paths: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyList>> {
-        on_set!(&self.inner, s => s.match_many(py, paths))
+        self.inner.match_many(py, paths)
     }
 
     /// How `path` went through the set, vertex by vertex (`lpe-check explain`'s report).
     fn explain(&self, path: &Bound<'_, PyAny>) -> PyResult<Explanation> {
-        on_set!(&self.inner, s => s.explain(path))
+        self.inner.explain(path)
     }
-}
-
-/// The set of dialect `D` as an [`Inner`].
-trait Wrap: PyDialect + Sized {
-    fn wrap(c: Compiled<Self>) -> Inner;
-}
-
-impl Wrap for RenderMan {
-    fn wrap(c: Compiled<RenderMan>) -> Inner {
-        Inner::RenderMan(Box::new(c))
-    }
-}
-
-impl Wrap for Osl {
-    fn wrap(c: Compiled<Osl>) -> Inner {
-        Inner::Osl(Box::new(c))
-    }
-}
-
-fn wrap<D: Wrap>(c: Compiled<D>) -> Inner {
-    D::wrap(c)
 }
 
 /// What `AovSet.explain` found.

@@ -1,10 +1,10 @@
 //! `lpe-render bench`: what LPE tracking costs.
 
-use lpe::renderman::{LobeMap, Parser};
-use lpe::DialectName;
+use lpe::renderman::LobeMap;
 
-use crate::aov::{AovError, AovList};
-use crate::integrator::RenderError;
+use crate::aov::{AovError, AovList, SceneDialect};
+use crate::integrator::{render, RenderError, Settings};
+use crate::scene::Scene;
 
 /// Why the bench could not run.
 #[derive(Debug, thiserror::Error)]
@@ -14,11 +14,9 @@ pub enum BenchError {
     #[error(transparent)]
     Render(#[from] RenderError),
 }
-use crate::integrator::{render, Settings};
-use crate::scene::Scene;
 
 /// `lpe-render bench`: cost of LPE tracking, the same scene and samples rendered with
-/// beauty only (matcher off) and with 32 AOVs (in either dialect), back to back in each round (alternating
+/// beauty only (matcher off) and with 32 AOVs (in any dialect), back to back in each round (alternating
 /// which goes first, so neither always runs on a warmer cache). The overhead is the
 /// median over rounds of the paired ratio of process CPU times, which resists load that
 /// drifts during the run better than comparing separate best times, and does not count
@@ -37,106 +35,40 @@ pub struct Bench {
     pub paths: u64,
 }
 
-/// Distinct, plausible AOVs the bench pads its list with, per dialect.
-const RENDERMAN_EXTRA: [(&str, &str); 8] = [
-    ("caustics", "lpe:caustics"),
-    ("diffuseLegacy", "lpe:diffuse"),
-    ("specularLegacy", "lpe:specular"),
-    ("emissionLegacy", "lpe:emission"),
-    ("twoBounce", "C.{2}[<L.>O]"),
-    ("threeBounce", "C.{3}[<L.>O]"),
-    ("diffuseOnly", "C<RD>+[<L.>O]"),
-    ("specThenDiffuse", "C<RS>.*<RD>.*[<L.>O]"),
-];
-const OSL_EXTRA: [(&str, &str); 25] = [
-    ("glossy", "C<.G>.*[LO]"),
-    ("delta", "C<.S>.*[LO]"),
-    ("directGlossy", "C<RG>[LO]"),
-    ("indirectGlossy", "C<RG>.+[LO]"),
-    ("directDelta", "C<RS>[LO]"),
-    ("indirectDelta", "C<RS>.+[LO]"),
-    ("glossyTransmission", "C<TG>.*[LO]"),
-    ("deltaTransmission", "C<TS>.*[LO]"),
-    ("caustics", "C<.D>.*<.[GS]>.*[LO]"),
-    ("key", "C.*<L.'key'>"),
-    ("fill", "C.*<L.'fill'>"),
-    ("rim", "C.*<L.'rim'>"),
-    ("lights", "C.*L"),
-    ("objects", "C.*O"),
-    ("floor", "C<.D'floor'>.*[LO]"),
-    ("glass", "C<.S'glass'>.*[LO]"),
-    ("directKey", "C<RD><L.'key'>"),
-    ("indirectKey", "C<RD>.+<L.'key'>"),
-    ("twoBounce", "C.{2}[LO]"),
-    ("threeBounce", "C.{3}[LO]"),
-    ("diffuseOnly", "C<RD>+[LO]"),
-    ("specThenDiffuse", "C<R[GS]>.*<RD>.*[LO]"),
-    ("diffuseThenGlossy", "C<RD>.*<RG>.*[LO]"),
-    ("noDelta", "C[^S]*[LO]"),
-    ("fourBouncesOrMore", "C.{4,}[LO]"),
-];
-
-/// The bench's 32 AOVs in `dialect`: the defaults, the extras above, then
-/// `bounces{k}`, paths of at least `4 + k` bounces.
-pub fn aovs(dialect: DialectName, scene: &Scene, parser: &Parser) -> Result<AovList, AovError> {
-    let (mut aovs, extra, emitter) = match dialect {
-        DialectName::RenderMan => (
-            AovList::defaults(scene, parser)?,
-            &RENDERMAN_EXTRA[..],
-            "[<L.>O]",
-        ),
-        DialectName::Osl => (
-            AovList::basic::<lpe::osl::Osl>(parser)?,
-            &OSL_EXTRA[..],
-            "[LO]",
-        ),
-    };
-    for (n, s) in extra {
+/// The bench's 32 AOVs in dialect `D`: its defaults, its extras
+/// ([`SceneDialect::BENCH_EXTRA`]), then `bounces{k}`, paths of at least `4 + k` bounces.
+pub fn aovs<D: SceneDialect>(
+    scene: &Scene,
+    registration: &D::Registration,
+) -> Result<AovList<D>, AovError> {
+    let mut aovs = AovList::defaults(scene, registration)?;
+    for (n, s) in D::BENCH_EXTRA {
         if aovs.aovs.len() >= 32 {
             break;
         }
-        aovs.push(n, s, parser)?;
+        aovs.push(n, s, registration)?;
     }
     let mut k = 0;
     while aovs.aovs.len() < 32 {
         aovs.push(
             &format!("bounces{k}"),
-            &format!("C.{{{},}}{emitter}", 4 + k),
-            parser,
+            &format!("C.{{{},}}{}", 4 + k, D::EMITTER),
+            registration,
         )?;
         k += 1;
     }
     Ok(aovs)
 }
 
-pub fn bench(
+/// The bench with the 32 AOVs of [`aovs`] in dialect `D`, nothing registered.
+pub fn bench<D: SceneDialect>(
     scene: &Scene,
     lobes: &LobeMap,
-    parser: &Parser,
     settings: &Settings,
     rounds: usize,
 ) -> Result<Bench, BenchError> {
-    bench_in(
-        DialectName::RenderMan,
-        scene,
-        lobes,
-        parser,
-        settings,
-        rounds,
-    )
-}
-
-/// [`bench`] with the 32 AOVs of [`aovs`] in `dialect`.
-pub fn bench_in(
-    dialect: DialectName,
-    scene: &Scene,
-    lobes: &LobeMap,
-    parser: &Parser,
-    settings: &Settings,
-    rounds: usize,
-) -> Result<Bench, BenchError> {
-    let aovs = aovs(dialect, scene, parser)?;
-    let none = AovList::default();
+    let aovs = aovs::<D>(scene, &D::Registration::default())?;
+    let none = AovList::<D>::new();
     let (mut tb, mut ta) = (f64::INFINITY, f64::INFINITY);
     let (mut cpu_ratios, mut wall_ratios) = (Vec::new(), Vec::new());
     let mut paths = 0;
@@ -172,8 +104,7 @@ fn median(xs: &mut [f64]) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use lpe::renderman::Config;
-    use lpe::with_dialect;
+    use lpe::renderman::{Config, RenderMan};
     use lpe::{AovSet, Options};
 
     /// The bench measures the eager DFA step in both dialects: a padding AOV that blew
@@ -181,30 +112,26 @@ mod tests {
     /// fail to compile, instead.
     #[test]
     fn the_bench_sets_have_32_distinct_aovs_and_an_eager_dfa() {
-        let cfg = Config::default();
-        let parser = Parser::new(cfg.limits.clone(), cfg.macros.clone());
         for name in ["cornell", "still-life"] {
-            let scene = Scene::load(name, &cfg.lobes).unwrap();
-            for dialect in DialectName::ALL {
-                let list = aovs(dialect, &scene, &parser).unwrap();
-                assert_eq!(list.aovs.len(), 32, "{name} {dialect}");
-                assert_eq!(list.dialect, dialect);
-                let mut names: Vec<&str> = list.aovs.iter().map(|a| a.name.as_str()).collect();
-                names.sort_unstable();
-                names.dedup();
-                assert_eq!(names.len(), 32, "{name} {dialect}: duplicate names");
-                let (uses_dfa, warnings) = with_dialect!(dialect, D => {
-                    let set = AovSet::<D>::compile_under(
-                        &list.named::<D>(),
-                        &Default::default(),
-                        &Options::default(),
-                    )
-                    .unwrap();
-                    (set.uses_dfa(), set.warnings().to_vec())
-                });
-                assert!(uses_dfa, "{name} {dialect}: lazy");
-                assert!(warnings.is_empty(), "{name} {dialect}: {warnings:?}");
-            }
+            let scene = Scene::load(name, &Config::default().lobes).unwrap();
+            has_32_distinct_aovs_and_an_eager_dfa::<RenderMan>(&scene);
+            has_32_distinct_aovs_and_an_eager_dfa::<lpe::osl::Osl>(&scene);
         }
+    }
+
+    fn has_32_distinct_aovs_and_an_eager_dfa<D: SceneDialect>(scene: &Scene) {
+        let (name, dialect) = (&scene.name, D::NAME);
+        let list = aovs::<D>(scene, &Default::default()).unwrap();
+        assert_eq!(list.aovs.len(), 32, "{name} {dialect}");
+        let mut names: Vec<&str> = list.names().collect();
+        names.sort_unstable();
+        names.dedup();
+        assert_eq!(names.len(), 32, "{name} {dialect}: duplicate names");
+        let set =
+            AovSet::<D>::compile_under(&list.named(), &Default::default(), &Options::default())
+                .unwrap();
+        assert!(set.uses_dfa(), "{name} {dialect}: lazy");
+        let warnings = set.warnings();
+        assert!(warnings.is_empty(), "{name} {dialect}: {warnings:?}");
     }
 }

@@ -19,7 +19,7 @@ use glam::{DVec3, Vec3};
 use rayon::prelude::*;
 
 use crate::aov::matcher::AovMask;
-use crate::aov::{AovFlags, AovList};
+use crate::aov::AovFlags;
 use crate::sampling::max_component;
 
 mod by_state;
@@ -140,7 +140,15 @@ pub struct Film {
     pub aov_rejected: u64,
 }
 
+/// Most bytes a render's film may take.
+pub const MAX_FILM_BYTES: u128 = 8 << 30;
+
 impl Film {
+    /// Bytes of the sums of a `width` x `height` film of `layers` layers (f64 RGB each).
+    pub fn bytes(width: usize, height: usize, layers: usize) -> u128 {
+        (width * height) as u128 * layers as u128 * 24
+    }
+
     pub fn new(
         width: usize,
         height: usize,
@@ -283,19 +291,20 @@ pub struct Weighting {
 }
 
 impl Weighting {
-    pub fn new(aovs: &AovList, clamp: Option<f32>) -> Weighting {
+    /// The weighting of AOVs that accumulate as `flags` say (one per AOV, in order).
+    pub fn new(flags: Vec<AovFlags>, clamp: Option<f32>) -> Weighting {
         let which = |keep: &dyn Fn(&AovFlags) -> bool| -> AovMask {
-            (aovs.aovs.iter().enumerate())
-                .filter(|(_, a)| keep(&a.flags))
+            (flags.iter().enumerate())
+                .filter(|(_, f)| keep(f))
                 .map(|(i, _)| i)
                 .collect()
         };
         let plain = |f: &AovFlags| f.values_like_beauty() && !f.overwrite && !f.noinfinitecheck;
         Weighting {
-            flags: aovs.aovs.iter().map(|a| a.flags).collect(),
             like_beauty: which(&|f| f.values_like_beauty()),
             plain: which(&plain),
             direct: which(&|f| !plain(f)),
+            flags,
             clamp,
         }
     }
@@ -533,6 +542,7 @@ fn prefetch(data: &[DVec3]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::aov::AovList;
 
     /// One AOV per prefix combination under test, each matching every path (`C.*L`
     /// stands in: routing never looks at the expression, only at the flags and at the
@@ -557,13 +567,13 @@ mod tests {
     fn weighting_of(prefixes: &[&str], clamp: Option<f32>) -> Weighting {
         let config = lpe::renderman::Config::default();
         let parser = lpe::renderman::Parser::new(config.limits.clone(), config.macros.clone());
-        let mut aovs = AovList::default();
+        let mut aovs = AovList::<lpe::renderman::RenderMan>::new();
         for (i, prefixes) in prefixes.iter().enumerate() {
             let prefixes = if *prefixes == "plain" { "" } else { prefixes };
             aovs.push(&format!("a{i}"), &format!("{prefixes}C.*L"), &parser)
                 .unwrap();
         }
-        Weighting::new(&aovs, clamp)
+        Weighting::new(aovs.flags(), clamp)
     }
 
     /// Commits `v` as the only sample of the one-pixel film `film` (rows: 1) and

@@ -1,13 +1,14 @@
 //! The formal partition check a render reports before tracing: decided by
 //! `lpe::analysis` for every path, with a witness the reference matcher confirms.
 
+use lpe::renderman::RenderMan;
 use lpe::renderman::{Parser, Path};
 use lpe_render::aov::{AovList, Partition};
 use lpe_render::verify::invariants::formal_partition;
 
-fn list(aovs: &[(&str, &str)], declare: bool) -> AovList {
+fn list(aovs: &[(&str, &str)], declare: bool) -> AovList<RenderMan> {
     let parser = Parser::default();
-    let mut l = AovList::default();
+    let mut l = AovList::<RenderMan>::new();
     let members = aovs
         .iter()
         .map(|(n, s)| l.push(n, s, &parser).unwrap())

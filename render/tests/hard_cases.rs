@@ -2,6 +2,7 @@
 //! or an independent computation; statistical ones state their significance.
 
 use glam::{DVec3, Vec3};
+use lpe::renderman::RenderMan;
 use lpe::renderman::{LobeMap, Parser};
 use lpe_render::aov::AovList;
 use lpe_render::film::Accumulation;
@@ -27,7 +28,7 @@ fn wo(cos: f32) -> Vec3 {
     Vec3::new((1.0 - cos * cos).max(0.0).sqrt(), 0.0, cos)
 }
 
-fn render(scene: &Scene, aovs: &AovList, settings: &Settings) -> Render {
+fn render(scene: &Scene, aovs: &AovList<RenderMan>, settings: &Settings) -> Render {
     lpe_render::integrator::render(scene, aovs, &lobes(), settings).unwrap()
 }
 
@@ -336,7 +337,7 @@ fn mis_weights_stay_finite_and_complementary_for_pdfs_from_0_to_1e30_and_beyond(
     // In a render: a near-mirror (alpha 1e-7, pdf peak ~1e13) lit by a 1e-6 sphere light
     // (light pdf ~1e12), a point light and a dome: nothing is rejected as non-finite.
     let scene = Scene::from_toml(known::MIS_EXTREMES, "mis", &lobes()).unwrap();
-    let aovs = AovList::defaults(&scene, &Parser::default()).unwrap();
+    let aovs = AovList::<RenderMan>::defaults(&scene, &Parser::default()).unwrap();
     for technique in [Technique::Mis, Technique::BsdfOnly, Technique::LightOnly] {
         let s = Settings {
             width: 16,
@@ -491,7 +492,7 @@ position = [1.0, 2.0, -2.0]
 intensity = [10.0, 10.0, 10.0]
 "#;
     let scene = Scene::from_toml(text, "inside", &lobes()).unwrap();
-    let aovs = AovList::defaults(&scene, &Parser::default()).unwrap();
+    let aovs = AovList::<RenderMan>::defaults(&scene, &Parser::default()).unwrap();
     let r = render(
         &scene,
         &aovs,

@@ -7,6 +7,7 @@ mod common;
 
 use common::{parser, render, scene};
 use lpe::renderman::Config;
+use lpe::renderman::RenderMan;
 use lpe_render::aov::AovList;
 use lpe_render::integrator;
 use lpe_render::integrator::Settings;
@@ -19,7 +20,7 @@ fn small(w: usize, spp: u32) -> Settings {
 
 #[test]
 fn the_check_suite_passes() {
-    let list = verify::suite::check_suite(Some(2), &mut |_| {}).unwrap();
+    let list = verify::suite::check_suite::<RenderMan>(Some(2), &mut |_| {}).unwrap();
     let failed: Vec<_> = list.iter().filter(|i| i.failed()).collect();
     assert!(failed.is_empty(), "{failed:#?}");
     // Everything is actually checked but the formal check of the per-lobe set, which is
@@ -50,10 +51,10 @@ fn holdout_paths_move_from_beauty_to_the_holdouts_aov() {
     let with = scene("still-life");
     let mut without = with.clone();
     without.objects.iter_mut().for_each(|o| o.holdout = false);
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::<RenderMan>::new();
     let h = aovs.push("held", "holdouts;C.*[<L.>O]", &parser()).unwrap();
     let a = render(&with, &aovs, &small(32, 4));
-    let b = render(&without, &AovList::default(), &small(32, 4));
+    let b = render(&without, &AovList::<RenderMan>::new(), &small(32, 4));
     let mut moved = 0.0;
     for y in 0..32 {
         for x in 0..32 {
@@ -77,10 +78,10 @@ fn noclamp_aov_equals_the_unclamped_beauty_and_clamping_bites() {
     let mut clamped = scene("cornell");
     clamped.settings.clamp = Some(0.5);
     let unclamped = scene("cornell");
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::<RenderMan>::new();
     let i = aovs.push("all", "noclamp;C.*[<L.>O]", &parser()).unwrap();
     let a = render(&clamped, &aovs, &small(24, 4));
-    let b = render(&unclamped, &AovList::default(), &small(24, 4));
+    let b = render(&unclamped, &AovList::<RenderMan>::new(), &small(24, 4));
     assert!(
         a.film.layer_bits_equal(1 + i, &b.film, 0),
         "noclamp AOV differs from unclamped beauty"
@@ -97,7 +98,7 @@ fn nothruput_is_the_identity_on_direct_paths() {
     // lighting `nothruput;` changes nothing, bit for bit; for indirect paths it must.
     let s = scene("cornell");
     let p = parser();
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::<RenderMan>::new();
     let d = aovs.push("d", "C<RD>[<L.>O]", &p).unwrap();
     let dn = aovs.push("dn", "nothruput;C<RD>[<L.>O]", &p).unwrap();
     let i = aovs.push("i", "C<RD>.+[<L.>O]", &p).unwrap();
@@ -111,7 +112,7 @@ fn nothruput_is_the_identity_on_direct_paths() {
 fn user_lobe_pseudo_paths_carry_the_albedo_and_only_when_asked() {
     let s = scene("still-life");
     let p = parser();
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::<RenderMan>::new();
     let a = aovs.push("albedo", "overwrite;C<RU2>L", &p).unwrap();
     let r = render(&s, &aovs, &small(32, 2));
     assert!(r.plan.user_lobes);
@@ -119,9 +120,9 @@ fn user_lobe_pseudo_paths_carry_the_albedo_and_only_when_asked() {
     let v = r.film.pixel(16, 31, 1 + a);
     assert_eq!(v.to_array().map(|x| x as f32), [0.55, 0.5, 0.45]);
     // User lobes are not light transport: beauty is unaffected.
-    let plain = render(&s, &AovList::default(), &small(32, 2));
+    let plain = render(&s, &AovList::<RenderMan>::new(), &small(32, 2));
     assert!(r.film.layer_bits_equal(0, &plain.film, 0));
-    let mut no_user = AovList::default();
+    let mut no_user = AovList::<RenderMan>::new();
     no_user.push("d", "lpe:directDiffuse", &p).unwrap();
     assert!(!render(&s, &no_user, &small(8, 1)).plan.user_lobes);
 }
@@ -129,7 +130,7 @@ fn user_lobe_pseudo_paths_carry_the_albedo_and_only_when_asked() {
 #[test]
 fn exr_reads_back_with_the_expected_layers_and_values() {
     let s = scene("cornell");
-    let aovs = AovList::for_render(&s, &parser()).unwrap();
+    let aovs = AovList::<RenderMan>::for_render(&s, &parser()).unwrap();
     let r = render(
         &s,
         &aovs,
@@ -220,7 +221,7 @@ fn non_finite_samples_are_rejected_everywhere_but_in_noinfinitecheck_aovs() {
     "#;
     let s = Scene::from_toml(text, "huge.toml", &Config::default().lobes).unwrap();
     let p = parser();
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::<RenderMan>::new();
     let checked = aovs.push("checked", "C.*[<L.>O]", &p).unwrap();
     let kept = aovs.push("kept", "noinfinitecheck;C.*[<L.>O]", &p).unwrap();
     let r = render(&s, &aovs, &small(8, 2));
@@ -251,7 +252,7 @@ fn label_classes_split_paths_by_lpegroup() {
     // first vertex is diffuse (`<.D>` = R or T with a D event), per pixel.
     let s = scene("still-life");
     let p = parser();
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::<RenderMan>::new();
     let floor = aovs.push("floor", "C<.D'floor'>.*[<L.>O]", &p).unwrap();
     let other = aovs.push("other", "C<.D[^'floor']>.*[<L.>O]", &p).unwrap();
     let all = aovs.push("all", "C<.D>.*[<L.>O]", &p).unwrap();

@@ -8,7 +8,7 @@
 use lpe::osl::Osl;
 use lpe::renderman::RenderMan;
 use lpe::{AovSet, PathMatcher};
-use lpe_render::aov::vertex::{SceneClassifier, SceneDialect, SceneVertex};
+use lpe_render::aov::{SceneClassifier, SceneDialect, SceneVertex};
 use lpe_testkit::labels::{groups, LABELS_CHECKED};
 
 fn check<D: SceneDialect>() {

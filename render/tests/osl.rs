@@ -6,7 +6,8 @@
 mod common;
 
 use common::{parser, render, run, scene};
-use lpe::DialectName;
+use lpe::osl::{Osl, Registered};
+use lpe::renderman::RenderMan;
 use lpe_render::aov::AovList;
 use lpe_render::integrator::Settings;
 use lpe_render::verify::{self, invariants};
@@ -19,8 +20,7 @@ fn small(w: usize, spp: u32) -> Settings {
 fn the_osl_basic_set_sums_to_beauty_and_is_proven_a_partition() {
     for name in ["cornell", "still-life"] {
         let s = scene(name);
-        let aovs = AovList::for_render_in(DialectName::Osl, &s, &parser()).unwrap();
-        assert_eq!(aovs.dialect, DialectName::Osl);
+        let aovs = AovList::<Osl>::for_render(&s, &Registered::none()).unwrap();
         let sources: Vec<&str> = aovs.aovs.iter().map(|a| a.source.as_str()).collect();
         assert_eq!(
             sources,
@@ -62,9 +62,9 @@ fn the_osl_basic_set_sums_to_beauty_and_is_proven_a_partition() {
 fn the_formal_check_finds_an_osl_gap_with_its_witness() {
     // Without `transmissive` the OSL basic set misses paths whose first bounce is a
     // glossy or delta transmission: a shortest one is the witness.
-    let mut aovs = AovList::new(DialectName::Osl);
+    let mut aovs = AovList::<Osl>::new();
     for (n, src) in lpe::osl::BASIC.iter().filter(|(n, _)| *n != "transmissive") {
-        aovs.push(n, src, &parser()).unwrap();
+        aovs.push(n, src, &Registered::none()).unwrap();
     }
     let formal = invariants::formal_partition(&aovs);
     assert_eq!(formal[0].passed, None, "undeclared: informational");
@@ -78,7 +78,7 @@ fn the_formal_check_finds_an_osl_gap_with_its_witness() {
 
 #[test]
 fn the_osl_check_suite_passes_with_everything_checked() {
-    let list = verify::suite::check_suite_in(DialectName::Osl, Some(2), &mut |_| {}).unwrap();
+    let list = verify::suite::check_suite::<Osl>(Some(2), &mut |_| {}).unwrap();
     let failed: Vec<_> = list.iter().filter(|i| i.passed != Some(true)).collect();
     assert!(failed.is_empty(), "{failed:#?}");
     for name in [
@@ -116,11 +116,11 @@ const SAME_MEANING: [(&str, &str, &str); 10] = [
 #[test]
 fn aovs_in_the_osl_dialect_give_the_images_of_the_renderman_aovs_that_mean_the_same() {
     let s = scene("still-life");
-    let mut renderman = AovList::default();
-    let mut osl = AovList::new(DialectName::Osl);
+    let mut renderman = AovList::<RenderMan>::new();
+    let mut osl = AovList::<Osl>::new();
     for (name, rm, o) in SAME_MEANING {
         renderman.push(name, rm, &parser()).unwrap();
-        osl.push(name, o, &parser()).unwrap();
+        osl.push(name, o, &Registered::none()).unwrap();
     }
     let a = render(&s, &renderman, &small(32, 8));
     let b = render(&s, &osl, &small(32, 8));
@@ -142,13 +142,15 @@ fn glossy_and_delta_split_what_renderman_calls_specular() {
     // RenderMan's `S` is OSL's `G` or `S`: the two OSL AOVs sum to the RenderMan one
     // (to rounding: the sums are formed in another order), and both are lit.
     let s = scene("still-life");
-    let mut renderman = AovList::default();
+    let mut renderman = AovList::<RenderMan>::new();
     renderman
         .push("specular", "C<RS>.*[<L.>O]", &parser())
         .unwrap();
-    let mut osl = AovList::new(DialectName::Osl);
-    osl.push("glossy", "C<RG>.*[LO]", &parser()).unwrap();
-    osl.push("delta", "C<RS>.*[LO]", &parser()).unwrap();
+    let mut osl = AovList::<Osl>::new();
+    osl.push("glossy", "C<RG>.*[LO]", &Registered::none())
+        .unwrap();
+    osl.push("delta", "C<RS>.*[LO]", &Registered::none())
+        .unwrap();
     let a = render(&s, &renderman, &small(24, 4));
     let b = render(&s, &osl, &small(24, 4));
     let (spec, glossy, delta) = (a.film.layer(1), b.film.layer(1), b.film.layer(2));

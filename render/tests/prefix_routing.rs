@@ -9,6 +9,7 @@
 //! lobe, shadows on the floor, a quad, a sphere and a dome light.
 
 use glam::DVec3;
+use lpe::renderman::RenderMan;
 use lpe::renderman::{Config, Parser};
 use lpe_render::aov::AovList;
 use lpe_render::integrator::{self, Render, Settings, Technique};
@@ -89,9 +90,9 @@ fn scene() -> Scene {
     Scene::from_toml(SCENE, "prefix_routing.toml", &Config::default().lobes).unwrap()
 }
 
-fn aovs(sources: &[String]) -> AovList {
+fn aovs(sources: &[String]) -> AovList<RenderMan> {
     let p = parser();
-    let mut list = AovList::default();
+    let mut list = AovList::<RenderMan>::new();
     for (i, s) in sources.iter().enumerate() {
         list.push(&format!("a{i}"), s, &p).unwrap();
     }

@@ -4,13 +4,13 @@
 
 mod common;
 
-use common::{parser, render, scene};
+use common::{render, scene};
 use lpe::osl::Osl;
 use lpe::renderman::{RenderMan, VertexType};
-use lpe::translate::{translate, Correspondence};
-use lpe::DialectName;
-use lpe_render::aov::vertex::{SceneDialect, SceneVertex};
+use lpe::translate::{translate, Correspondence, Translate};
+use lpe::Dialect;
 use lpe_render::aov::AovList;
+use lpe_render::aov::{SceneDialect, SceneVertex};
 
 #[test]
 fn the_default_correspondence_is_the_renderers_osl_mapping() {
@@ -49,31 +49,23 @@ fn the_default_correspondence_is_the_renderers_osl_mapping() {
     assert!(checked > 40, "{checked} vertices");
 }
 
-/// Renders `source` (in `from`) and its exact translations on the still life; every
-/// translated layer must equal its source layer bit for bit. Returns how many were exact.
-fn renders_the_same(from: DialectName, sources: &[(&str, &str)]) -> usize {
+/// Renders `sources` (in dialect `D`) and their exact translations (in its target) on
+/// the still life; every translated layer must equal its source layer bit for bit.
+/// Returns how many were exact.
+fn renders_the_same<D>(sources: &[(&str, &str)]) -> usize
+where
+    D: SceneDialect + Translate,
+    D::Target: SceneDialect,
+{
     let corr = Correspondence::default();
-    let to = match from {
-        DialectName::RenderMan => DialectName::Osl,
-        DialectName::Osl => DialectName::RenderMan,
-    };
-    let (mut a, mut b) = (AovList::new(from), AovList::new(to));
+    let (mut a, mut b) = (AovList::<D>::new(), AovList::<D::Target>::new());
+    let from = D::Registration::default();
+    let to = <D::Target as Dialect>::Registration::default();
     for (name, src) in sources {
-        let translated = match from {
-            DialectName::RenderMan => {
-                let t =
-                    translate::<RenderMan>(&lpe::renderman::parse(src).unwrap(), &corr).unwrap();
-                t.exact.then(|| t.text.to_string())
-            }
-            DialectName::Osl => {
-                let f = lpe::osl::parse(src, &lpe::osl::Registered::none()).unwrap();
-                let t = translate::<Osl>(&f, &corr).unwrap();
-                t.exact.then(|| t.text.to_string())
-            }
-        };
-        if let Some(text) = translated {
-            a.push(name, src, &parser()).unwrap();
-            b.push(name, &text, &parser()).unwrap();
+        let t = translate::<D>(&D::parse(src, &from).unwrap(), &corr).unwrap();
+        if t.exact {
+            a.push(name, src, &from).unwrap();
+            b.push(name, &t.text.to_string(), &to).unwrap();
         }
     }
     let s = scene("still-life");
@@ -101,23 +93,20 @@ fn renders_the_same(from: DialectName, sources: &[(&str, &str)]) -> usize {
 
 #[test]
 fn renderman_aovs_translated_to_osl_render_the_same_layers() {
-    let exact = renders_the_same(
-        DialectName::RenderMan,
-        &[
-            ("directDiffuse", "directDiffuse"),
-            ("indirectDiffuse", "indirectDiffuse"),
-            ("subsurface", "subsurface"),
-            ("directSpecular", "directSpecular"),
-            ("indirectSpecular", "indirectSpecular"),
-            ("transmissive", "transmissive"),
-            ("emissive", "emissive"),
-            ("glass", "C<TS8>.*[<L.>O]"),
-            ("caustics", "caustics"),
-            ("floorBounce", "C<RD'floor'>.*[<L.>O]"),
-            // Not expressible (lobe numbers): skipped, and counted below.
-            ("clearcoat", "directSpecularClearcoatLobe"),
-        ],
-    );
+    let exact = renders_the_same::<RenderMan>(&[
+        ("directDiffuse", "directDiffuse"),
+        ("indirectDiffuse", "indirectDiffuse"),
+        ("subsurface", "subsurface"),
+        ("directSpecular", "directSpecular"),
+        ("indirectSpecular", "indirectSpecular"),
+        ("transmissive", "transmissive"),
+        ("emissive", "emissive"),
+        ("glass", "C<TS8>.*[<L.>O]"),
+        ("caustics", "caustics"),
+        ("floorBounce", "C<RD'floor'>.*[<L.>O]"),
+        // Not expressible (lobe numbers): skipped, and counted below.
+        ("clearcoat", "directSpecularClearcoatLobe"),
+    ]);
     assert_eq!(exact, 10);
 }
 
@@ -126,6 +115,6 @@ fn aovs_of_the_osl_dialect_translated_to_renderman_render_the_same_layers() {
     let mut sources: Vec<(&str, &str)> = lpe::osl::BASIC.to_vec();
     sources.push(("glossyAny", "C.*<.G>.*[LO]"));
     sources.push(("floor", "C<RD'floor'>.*[LO]"));
-    let exact = renders_the_same(DialectName::Osl, &sources);
+    let exact = renders_the_same::<Osl>(&sources);
     assert_eq!(exact, 9);
 }

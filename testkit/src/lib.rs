@@ -8,9 +8,10 @@
 //!   `lpe-capi`'s tests, the renderer's matcher in `lpe-render`'s, external matchers in
 //!   `lpe-check diff --external CMD --suite DIR`.
 //! - [`generate`]: random expressions, AOV sets and paths aimed at them, from any
-//!   source of choices (lpe's `SplitMix64`, or fuzz input through `arbitrary`); the
-//!   differential harness (`lpe-check diff`) and the fuzz bodies (`lpe_engines::fuzzing`)
-//!   draw their cases here, OSL's in [`generate::osl`].
+//!   source of choices (lpe's `SplitMix64`, or fuzz input through `arbitrary`), one
+//!   file per dialect ([`generate::renderman`], [`generate::osl`]); the differential
+//!   harness (`lpe-check diff`) and the fuzz bodies (`lpe_engines::fuzzing`) draw their
+//!   cases here.
 //! - [`grammar`]: expression *text* from each dialect's documented grammar, with a
 //!   count of the productions written (`lpe-check diff --coverage`).
 //! - [`labels`]: labels one byte apart at every position and length, UTF-8 included.

@@ -227,20 +227,20 @@ pub fn aov_expr() -> impl Strategy<Value = Expr> {
 }
 
 /// `n` paths aimed at `expr` (walks, near misses, noise: see
-/// [`crate::generate::biased_path`]), drawn from a seed.
+/// [`crate::generate::renderman::biased_path`]), drawn from a seed.
 ///
 /// The seed does not shrink meaningfully; pair this with an expression strategy, whose
 /// shrinking does the work, or with a minimizer such as the differential harness's.
 pub fn biased_paths(expr: &Expr, n: usize) -> impl Strategy<Value = Vec<Path>> {
     let expr = expr.clone();
     any::<u64>().prop_map(move |seed| {
-        let cfg = crate::generate::Config {
+        let cfg = crate::generate::renderman::Config {
             labels: LABELS.map(str::to_string).to_vec(),
-            ..crate::generate::Config::default()
+            ..crate::generate::renderman::Config::default()
         };
         let mut rng = lpe::rng::SplitMix64::new(seed);
         (0..n)
-            .map(|_| crate::generate::biased_path(&expr, &mut rng, &cfg))
+            .map(|_| crate::generate::renderman::biased_path(&expr, &mut rng, &cfg))
             .collect()
     })
 }

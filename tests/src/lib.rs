@@ -1,10 +1,14 @@
 //! Cross-crate property tests and the data-driven conformance suite live in `tests/`;
 //! this library holds what the test files share, the suite's in-process runner
 //! ([`conformance`]; the loader is `lpe_testkit::suite`), and the workspace's file-level
-//! import graph that the layering test checks ([`imports`]).
+//! import graph that the layering test checks ([`imports`]) and its collapse onto
+//! folders, where no import may run back up ([`folders`]); the files git tracks, which
+//! are the workspace apart from what builds write into it ([`tracked`]).
 
 pub mod conformance;
+pub mod folders;
 pub mod imports;
+pub mod tracked;
 
 use lpe::renderman::ast::{Atom, Expr, Item, Triple, TypePos};
 use lpe::renderman::{Event, Lpe, Vertex, VertexType};

@@ -3,46 +3,40 @@
 //! no stale path in the docs (the mutation-testing commands of docs/testing.md, for
 //! instance, are run as written).
 //!
-//! A path counts when its first segment is a folder of the workspace. Left out: paths
-//! with a placeholder segment in capitals (`fuzz/corpus/TARGET/`), globs, and what a build
-//! writes (`target/`, a `build/` folder).
+//! A path counts when its first segment is a folder of the workspace: a top-level folder
+//! that holds files git tracks (`git ls-files`), not whatever the checkout's directory
+//! listing holds. A folder that builds and runs write (`out/` from `lpe-render`, whose
+//! `out/converge` docs/accuracy.md names, `target/`) is untracked, so a path under it is
+//! an output the docs describe, not a workspace path to check, whether or not a run has
+//! made it. Left out as well: paths with a placeholder segment in capitals
+//! (`fuzz/corpus/TARGET/`), globs, and what a build writes inside tracked folders
+//! (`fuzz/target/`, a `build/` folder).
 
+use std::collections::BTreeSet;
 use std::fs;
-use std::path::{Path, PathBuf};
 
-fn workspace() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .parent()
-        .unwrap()
-        .to_path_buf()
-}
+use lpe_tests::imports::workspace;
+use lpe_tests::tracked::{top_folders, tracked_files};
 
-/// The markdown files users read.
-fn docs(ws: &Path) -> Vec<PathBuf> {
-    let mut out = vec![ws.join("README.md")];
-    let mut dirs: Vec<PathBuf> = fs::read_dir(ws)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.is_dir())
-        .collect();
-    dirs.sort();
-    for d in &dirs {
-        if d.join("README.md").is_file() {
-            out.push(d.join("README.md"));
-        }
-    }
-    for e in fs::read_dir(ws.join("docs")).unwrap() {
-        let p = e.unwrap().path();
-        if p.extension().is_some_and(|x| x == "md") {
-            out.push(p);
-        }
-    }
-    out.push(ws.join("tests/testdata/README.md"));
-    out
+/// The markdown files users read, from the tracked list: the top `README.md`, each
+/// top-level folder's, `docs/*.md` and `tests/testdata/README.md`.
+fn docs(tracked: &[String]) -> Vec<&str> {
+    tracked
+        .iter()
+        .map(String::as_str)
+        .filter(|p| {
+            let segs: Vec<&str> = p.split('/').collect();
+            match segs[..] {
+                ["README.md"] | [_, "README.md"] => true,
+                ["docs", name] => name.ends_with(".md"),
+                _ => *p == "tests/testdata/README.md",
+            }
+        })
+        .collect()
 }
 
 /// The backquoted spans of `text` that look like workspace paths.
-fn paths_in(text: &str, top: &[String]) -> Vec<String> {
+fn paths_in(text: &str, top: &BTreeSet<String>) -> Vec<String> {
     let mut out = Vec::new();
     for (i, span) in text.split('`').enumerate() {
         // Odd pieces are inside backquotes.
@@ -58,7 +52,7 @@ fn paths_in(text: &str, top: &[String]) -> Vec<String> {
             .iter()
             .any(|s| s.len() > 1 && s.chars().all(|c| c.is_ascii_uppercase() || c == '_'));
         let built = segs.iter().any(|s| *s == "target" || *s == "build");
-        if top.iter().any(|t| t == segs[0]) && !placeholder && !built {
+        if top.contains(segs[0]) && !placeholder && !built {
             out.push(span.to_string());
         }
     }
@@ -68,23 +62,22 @@ fn paths_in(text: &str, top: &[String]) -> Vec<String> {
 #[test]
 fn docs_name_only_paths_that_exist() {
     let ws = workspace();
-    let top: Vec<String> = fs::read_dir(&ws)
-        .unwrap()
-        .map(|e| e.unwrap().path())
-        .filter(|p| p.is_dir())
-        .map(|p| p.file_name().unwrap().to_string_lossy().into_owned())
-        .filter(|n| !n.starts_with('.') && n != "target")
-        .collect();
+    let tracked = tracked_files();
+    let top = top_folders(&tracked);
+    let docs = docs(&tracked);
+    // Sanity: the doc list holds what it claims to.
+    for doc in ["README.md", "docs/accuracy.md", "tests/testdata/README.md"] {
+        assert!(docs.contains(&doc), "{doc} not read: {docs:?}");
+    }
     let mut missing = Vec::new();
     let mut seen = 0;
-    for doc in docs(&ws) {
-        let text = fs::read_to_string(&doc).unwrap();
+    for doc in docs {
+        let text = fs::read_to_string(ws.join(doc)).unwrap();
         for (n, line) in text.lines().enumerate() {
             for p in paths_in(line, &top) {
                 seen += 1;
                 if !ws.join(&p).exists() {
-                    let rel = doc.strip_prefix(&ws).unwrap().display().to_string();
-                    missing.push(format!("{rel}:{}: `{p}`", n + 1));
+                    missing.push(format!("{doc}:{}: `{p}`", n + 1));
                 }
             }
         }
@@ -100,8 +93,20 @@ fn docs_name_only_paths_that_exist() {
 
 #[test]
 fn the_reader_takes_paths_and_leaves_placeholders() {
-    let top = vec!["lpe".to_string(), "fuzz".to_string(), "target".to_string()];
+    let top: BTreeSet<String> = ["lpe", "fuzz", "target"].map(String::from).into();
     let line = "see `lpe/src/aov.rs`, `fuzz/corpus/TARGET/`, `lpe/src/*.rs`, \
                 `target/release/x`, `--flag a/b` and `other/x.rs`";
     assert_eq!(paths_in(line, &top), ["lpe/src/aov.rs"]);
+}
+
+/// Planted fault: fails when the workspace's folders come from the directory listing
+/// (every folder of the checkout) rather than the tracked files: checked by hand, passing
+/// the listing's folders (with `out`) to `paths_in`. The same fault failed
+/// `docs_name_only_paths_that_exist` on a checkout where `lpe-render` had written `out/`.
+#[test]
+fn an_untracked_output_folder_is_no_workspace_folder() {
+    let tracked = ["docs/accuracy.md", "render/src/main.rs"].map(String::from);
+    let top = top_folders(&tracked);
+    let line = "writes `out/converge/table.md` from `render/src/main.rs`";
+    assert_eq!(paths_in(line, &top), ["render/src/main.rs"]);
 }

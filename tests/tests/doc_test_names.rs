@@ -76,7 +76,10 @@ fn defined_in(text: &str, out: &mut BTreeSet<String>) {
 #[test]
 fn every_test_the_testing_doc_names_is_defined() {
     let ws = workspace();
-    let named = names_in(&fs::read_to_string(ws.join("docs/testing.md")).unwrap());
+    let mut named = names_in(&fs::read_to_string(ws.join("docs/testing.md")).unwrap());
+    named.extend(names_in(
+        &fs::read_to_string(ws.join("docs/mutants.toml")).unwrap(),
+    ));
     // Sanity: the doc names many tests (a reader that finds none checks nothing).
     assert!(named.len() > 100, "only {} names found", named.len());
     let mut files = Vec::new();

@@ -10,7 +10,8 @@
 //! warnings); a differential check of the set against the reference matcher, which
 //! shares no automaton with it (both read RenderMan's parser, so that part is checked
 //! by RenderMan's own suites, not here); and the tools of `lpe-engines`, which need one
-//! more implementation each (`EngineDialect`: its reference verdict, its shrinking;
+//! more implementation each (`ReferenceDialect`: its reference verdict; `OracleDialect`:
+//! none, the default; `ShrinkDialect`: its shrinking; `WireDialect`: its parse errors;
 //! `Generate`: its generators): the engine registry (`oracle` has no translation for it
 //! and says so), the differential harness on generated cases, and a planted bug found
 //! and minimized; and the front-end comparison (`FrontEnds`), whose "reference" side
@@ -27,7 +28,10 @@ use lpe::renderman::{self, alphabet::Alphabet, ast::Atom, Expr, Parser, RenderMa
 use lpe::{AovMask, AovSet, CompileError, Dialect, DialectLpe, PathMatcher};
 use lpe_engines::differential::front::{self, FrontCase, FrontEnds};
 use lpe_engines::differential::{self, Generate, Outcome, Run};
-use lpe_engines::{Engine, EngineDialect, EngineError, Matcher, Reference};
+use lpe_engines::{
+    Engine, EngineError, Matcher, OracleDialect, Reference, ReferenceDialect, ShrinkDialect,
+    WireDialect,
+};
 use lpe_testkit::generate::{self, Choices, Config};
 use lpe_testkit::grammar::{self, Coverage};
 
@@ -318,9 +322,8 @@ fn the_set_agrees_with_the_reference_matcher() {
 // --- The tools of `lpe-engines`: one implementation of each of their traits. ---
 
 /// The reference is RenderMan's on the same trees (through lpe's printer: this dialect
-/// has no front end of its own in the reference); shrinking is RenderMan's on them.
-/// No oracle translation: the `oracle` engine refuses this dialect.
-impl EngineDialect for Letters {
+/// has no front end of its own in the reference).
+impl ReferenceDialect for Letters {
     type ReferenceTree = LettersLpe;
     fn reference_tree(lpe: &LettersLpe, _: &()) -> Result<LettersLpe, EngineError> {
         Ok(lpe.clone())
@@ -328,6 +331,13 @@ impl EngineDialect for Letters {
     fn reference(lpe: &LettersLpe, path: &LettersPath) -> bool {
         lpe_reference::is_match(&lpe.0, &path.0)
     }
+}
+
+/// No oracle translation (the default): the `oracle` engine refuses this dialect.
+impl OracleDialect for Letters {}
+
+/// Shrinking is RenderMan's on the same trees.
+impl ShrinkDialect for Letters {
     fn shrink_expr(e: &LettersLpe, _: &()) -> Vec<LettersLpe> {
         RenderMan::shrink_expr(&e.0, &Parser::default())
             .into_iter()
@@ -340,6 +350,10 @@ impl EngineDialect for Letters {
             .map(LettersPath)
             .collect()
     }
+}
+
+/// Errors as RenderMan's; nothing registered to report or send.
+impl WireDialect for Letters {
     fn parse_error(e: &renderman::Error) -> (usize, String) {
         RenderMan::parse_error(e)
     }

@@ -1,8 +1,9 @@
 //! What the C ABI asks of a dialect beyond [`lpe::Dialect`]: [`CDialect`], implemented
 //! on `lpe`'s markers in [`renderman`] and [`osl`] (its `LPE_DIALECT_*` number, what
 //! `lpe_set_compile` registers from its `ini_text` or `osl_registered` argument, how a
-//! parse error reads), and [`DialectSet`], a compiled set of any of them. Compiling is
-//! written once over it; classifying is per dialect only where the C types differ.
+//! parse error reads), with the reading of one vertex of its C types beside it, and
+//! [`DialectSet`], a compiled set of any of them. Compiling is written once over it; classifying is per
+//! dialect only where the C types differ.
 
 pub(crate) mod osl;
 pub(crate) mod renderman;
@@ -47,6 +48,15 @@ pub(crate) fn by_id(id: u32) -> Option<DialectName> {
 }
 
 /// A compiled set of any dialect: its vertex classes differ, its automaton does not.
+///
+/// An enum, not a generic parameter or a trait object, for two reasons. The C ABI has
+/// one `lpe_set` type for every dialect, so the set it holds cannot be generic. And
+/// every `lpe_step` reads the automaton through it: a match on the discriminant, which
+/// inlines into the step and costs a predictable branch, where a trait object would
+/// cost an indirect call per vertex. The enum only stores: which dialect an
+/// `LPE_DIALECT_*` number names is decided in [`by_id`] through `lpe::registry`
+/// (`DialectName`, `with_dialect!`), the one place names map to types; each dialect
+/// reaches its variant through its own [`CDialect::wrap`] and [`CDialect::set_of`].
 // The variants differ in size, but there is one per `lpe_set`, which the caller holds
 // behind a pointer already; boxing the larger would add a load to every OSL step.
 #[allow(clippy::large_enum_variant)]

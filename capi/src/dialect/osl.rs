@@ -7,10 +7,13 @@ use lpe::osl::{Error, Osl, Registered, RegisteredError, Symbol, Vertex};
 use lpe::AovSet;
 
 use super::{CDialect, DialectSet};
-use crate::classify::{classify_into, lpe_class};
+use crate::args::text;
 use crate::error::lpe_error;
-use crate::set::{lpe_set, text, LPE_DIALECT_OSL};
 use crate::status::lpe_status;
+
+/// Expressions in OSL's LPE dialect (docs/language.md §18), parsed under the labels
+/// `lpe_options.osl_registered` names; classify vertices with `lpe_classify_symbols`.
+pub const LPE_DIALECT_OSL: u32 = 1;
 
 impl CDialect for Osl {
     const ID: u32 = LPE_DIALECT_OSL;
@@ -70,37 +73,4 @@ pub(crate) fn vertex_of(symbols: &[*const c_char]) -> Result<Vertex, lpe_status>
         })
         .collect::<Result<_, _>>()
         .map(Vertex::new)
-}
-
-/// The class of an OSL vertex, into `*out`: `count` symbols, in OSL's order: the event
-/// (`"C"`, `"R"`, `"T"`, `"L"`, `"O"`, `"B"`, `"V"` or a registered one), the scattering
-/// (`"D"`, `"G"`, `"S"`, `"s"` or a registered one), then the custom labels. Each is
-/// NUL-terminated UTF-8; a NULL entry is OSL's NONE, so an OSL renderer passes its
-/// ustrings' `c_str()` as they are. Classify every kind of scene vertex once, at load,
-/// and step with classes; a vertex of fewer than two symbols matches nothing, as in OSL.
-/// `LPE_ERR_RANGE`: `count` is 0; `LPE_ERR_UTF8`: a symbol that is not UTF-8;
-/// `LPE_ERR_UNSUPPORTED`: a RenderMan set (use `lpe_classify`).
-#[no_mangle]
-pub extern "C" fn lpe_classify_symbols(
-    set: *const lpe_set,
-    symbols: *const *const c_char,
-    count: usize,
-    out: *mut lpe_class,
-) -> lpe_status {
-    // SAFETY: NULL or valid pointers from the caller.
-    let (Some(set), Some(out)) = (unsafe { set.as_ref() }, unsafe { out.as_mut() }) else {
-        return lpe_status::LPE_ERR_NULL;
-    };
-    if symbols.is_null() {
-        return lpe_status::LPE_ERR_NULL;
-    }
-    if count == 0 {
-        return lpe_status::LPE_ERR_RANGE;
-    }
-    if Osl::set_of(&set.set).is_none() {
-        return lpe_status::LPE_ERR_UNSUPPORTED;
-    }
-    // SAFETY: the caller passes `count` readable pointers (checked non-null).
-    let symbols = unsafe { std::slice::from_raw_parts(symbols, count) };
-    classify_into::<Osl>(set, out, || vertex_of(symbols))
 }

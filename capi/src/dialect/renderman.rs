@@ -10,9 +10,12 @@ use lpe::renderman::{
 use lpe::AovSet;
 
 use super::{CDialect, DialectSet};
+use crate::args::text;
 use crate::error::lpe_error;
-use crate::set::{text, LPE_DIALECT_RENDERMAN};
 use crate::status::lpe_status;
+
+/// Expressions in RenderMan's LPE dialect (docs/language.md).
+pub const LPE_DIALECT_RENDERMAN: u32 = 0;
 
 impl CDialect for RenderMan {
     const ID: u32 = LPE_DIALECT_RENDERMAN;

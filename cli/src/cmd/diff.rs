@@ -25,8 +25,10 @@
 //! disagreement is printed minimized and makes the exit code 3, like any other finding.
 //!
 //! With `--external 'CMD ARGS'` the cases go to an external matcher over the protocol of
-//! docs/protocol.md instead (see [`super::external`]); with `--suite DIR` as well, the
-//! conformance suite's cases instead of generated ones (see [`super::external_suite`]).
+//! docs/protocol.md instead (see [`external`]), each finding printed with the command
+//! that replays it ([`replay`]); with `--suite DIR` as well, the conformance suite's
+//! cases instead of generated ones (see [`external_suite`]). The arguments are
+//! [`args`], which every one of them reads.
 
 use std::process::ExitCode;
 use std::time::Instant;
@@ -39,6 +41,10 @@ use lpe_testkit::grammar;
 use crate::input::{bad_input, select_engines};
 
 pub mod args;
+pub mod external;
+pub mod external_suite;
+pub mod replay;
+
 pub use args::Args;
 
 /// Runs `lpe-check diff`.
@@ -50,7 +56,7 @@ pub fn run(args: Args) -> ExitCode {
         );
     }
     if args.external.is_some() {
-        return super::external::run(&args);
+        return external::run(&args);
     }
     with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
 }

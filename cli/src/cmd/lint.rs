@@ -8,7 +8,10 @@
 //! `--partition`), each overlap, the gap and stray paths with shortest witnesses and the
 //! remainder AOV. ini files (positional or `--ini`) configure the parsing of every file.
 //! `--dialect osl [--register …]` reads every AOV as OSL's dialect (ini files are then an
-//! error: their macros and lobe mappings are RenderMan's).
+//! error: their macros and lobe mappings are RenderMan's). Without `--dialect` the run
+//! reads RenderMan's, and a stage that declares no dialect is also read as OSL's to
+//! report the AOVs whose two readings differ (`ambiguous_dialect`); naming the dialect
+//! says which renderer the files are for, and that check is not run.
 //! Exit 0 clean, 1 findings, 2 an unreadable file or bad argument, 3 a witness the
 //! reference matcher refused. docs/lint.md has the JSON schema.
 //!
@@ -54,14 +57,30 @@ pub struct Args {
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,
-    /// `--dialect` (every file's AOVs are read in it) and `--register`.
-    #[command(flatten)]
-    pub lang: DialectArgs,
+    /// The expression language every file's AOVs are read in: `renderman` or `osl`
+    /// (default `renderman`, with undeclared stages also checked for readings that
+    /// differ between the two).
+    #[arg(long)]
+    pub dialect: Option<lpe::DialectName>,
+    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
+    #[arg(long)]
+    pub register: Option<String>,
+}
+
+impl Args {
+    /// `--dialect` (or RenderMan's, the default) with `--register`, as the other
+    /// subcommands read them.
+    fn lang(&self) -> DialectArgs {
+        DialectArgs {
+            dialect: self.dialect.unwrap_or(lpe::DialectName::RenderMan),
+            register: self.register.clone(),
+        }
+    }
 }
 
 /// Runs `lpe-check lint`.
 pub fn run(args: Args) -> ExitCode {
-    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
+    with_dialect!(args.lang().dialect, D => run_in::<D>(&args))
 }
 
 fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
@@ -70,8 +89,9 @@ fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
         ini: args.ini.as_deref(),
         partitions: &args.partition,
         universe: args.universe.as_deref(),
+        dialect_given: args.dialect.is_some(),
     };
-    let out = match run::run::<D, _>(&req, |ini| args.lang.registration::<D>(ini)) {
+    let out = match run::run::<D, _>(&req, |ini| args.lang().registration::<D>(ini)) {
         Ok(out) => out,
         Err(RunError::Disagreement(e)) => {
             eprintln!("{e}");

@@ -11,6 +11,11 @@
 //! columns) is in the dialect's file: [`renderman`] (`EXPR<TAB>PATH` lines, `--ini`
 //! macros) and [`osl`] (`--dialect osl`: `EXPR<TAB>REGISTERED<TAB>PATH` lines).
 //! [`answer`] holds the arguments, the verdict over every engine and the printing.
+//!
+//! `--batch` streams: one line in, one line out, with bounded memory. Each distinct
+//! expression (with its registration) is compiled once by every engine and kept for
+//! the lines that repeat it ([`BatchCache`], at most [`MAX_CACHED_EXPRESSIONS`] at a
+//! time), and a long run reports its progress on stderr every few seconds.
 
 use std::process::ExitCode;
 
@@ -23,7 +28,10 @@ pub mod dialect;
 pub mod osl;
 pub mod renderman;
 
-pub use answer::{answer_paths, batch, verdict, Args, LineOutcome, Verdict};
+pub use answer::{
+    answer_paths, batch, verdict, Args, BatchCache, Compiled, LineOutcome, Verdict,
+    MAX_CACHED_EXPRESSIONS,
+};
 pub use dialect::MatchDialect;
 
 /// Runs `lpe-check match`.
@@ -47,7 +55,8 @@ fn run_in<D: MatchDialect>(args: &Args) -> ExitCode {
         Err(e) => return bad_input(e),
     };
     if args.batch {
-        return batch(|line| D::batch_line(&engines, &registration, line));
+        let mut cache = BatchCache::default();
+        return batch(|line| D::batch_line(&engines, &registration, line, &mut cache));
     }
     let lpe = match D::read_arg(args.expr.as_deref().unwrap_or_default(), &registration) {
         Ok(l) => l,

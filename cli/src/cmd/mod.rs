@@ -6,8 +6,6 @@ pub mod diff;
 pub mod equiv;
 pub mod equiv_cross;
 pub mod explain;
-pub mod external;
-pub mod external_suite;
 pub mod lint;
 pub mod matching;
 pub mod parse;

@@ -1,5 +1,6 @@
 //! What the subcommands ask of an expression language beyond [`lpe::Dialect`] and
-//! [`LintDialect`]: [`CliDialect`], implemented on `lpe`'s dialect markers in
+//! [`LintDialect`]: [`CliDialect`] (its registration read from and written back to
+//! arguments, how its errors print), implemented on `lpe`'s dialect markers in
 //! [`renderman`] and [`osl`]. Each subcommand is one function generic over it,
 //! dispatched once on `--dialect` with [`lpe::with_dialect!`].
 
@@ -39,6 +40,14 @@ pub trait CliDialect: LintDialect {
 
     /// A path argument's error, as `explain` prints it after `error: `.
     fn path_error(text: &str, e: &Self::PathError) -> String;
+
+    /// The arguments that give `registration` back (what [`CliDialect::registration`]
+    /// reads), as a replay command writes them; none, the default, for the default
+    /// registration.
+    fn registration_args(registration: &Self::Registration) -> Vec<String> {
+        let _ = registration;
+        Vec::new()
+    }
 
     /// The warnings `parse` prints on stderr for an expression that parsed.
     fn parse_warnings(lpe: &Self::Lpe) -> Vec<String> {

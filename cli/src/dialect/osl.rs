@@ -21,6 +21,15 @@ impl CliDialect for Osl {
             .map_err(InputError::Register)
     }
 
+    /// `--register`, unless nothing is registered (`-`, the default).
+    fn registration_args(registered: &Registered) -> Vec<String> {
+        if *registered == Registered::none() {
+            Vec::new()
+        } else {
+            vec!["--register".into(), registered.to_string()]
+        }
+    }
+
     fn parse_arg(src: &str, registered: &Registered) -> Result<osl::Lpe, Error> {
         osl::parse_source(src, registered)
     }

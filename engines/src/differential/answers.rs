@@ -1,11 +1,12 @@
 //! Each engine's answers on one path: what the comparison ([`super::check`](mod@super::check))
 //! and the minimizer ([`super::minimize`](mod@super::minimize)) both ask.
 
-use crate::dialect::EngineDialect;
+use lpe::Dialect;
+
 use crate::engine::{bits, Engine};
 
 /// Each engine's answers (one per expression) on one path of `D`, or its build error.
-pub fn answers_in<D: EngineDialect>(
+pub fn answers_in<D: Dialect>(
     engines: &[&dyn Engine<D>],
     registration: &D::Registration,
     exprs: &[D::Lpe],

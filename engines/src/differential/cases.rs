@@ -13,18 +13,18 @@
 
 use lpe::algebra::SetExpr;
 use lpe::rng::SplitMix64 as Rng;
+use lpe::Dialect;
 use lpe_testkit::generate::Choices;
 use lpe_testkit::grammar::Coverage;
 
 use super::check::{check_in, Outcome};
 use super::counterexample::Counterexample;
 use super::generate::{draw, Generate};
-use crate::dialect::EngineDialect;
 use crate::engine::Engine;
 
 /// One generated case.
 #[derive(Clone, Debug)]
-pub struct Case<D: EngineDialect> {
+pub struct Case<D: Dialect> {
     /// What the expressions were parsed under (OSL's registered labels).
     pub registration: D::Registration,
     /// The expressions (one, or an AOV set).
@@ -103,7 +103,7 @@ pub fn generate_case<D: Generate>(seed: u64, index: u64, cfg: &D::Config, paths:
 
 /// Totals of a run.
 #[derive(Debug)]
-pub struct Totals<D: EngineDialect> {
+pub struct Totals<D: Dialect> {
     /// Cases run.
     pub cases: u64,
     /// Expression/path pairs compared.
@@ -282,7 +282,7 @@ mod tests {
     /// few hundred cases has dozens), and paths aimed at operands: some algebra
     /// expression matches some of its paths (by the reference), so the algebra is not
     /// only ever checked on non-matches.
-    fn assert_some_algebra_that_matches<D: EngineDialect>(
+    fn assert_some_algebra_that_matches<D: lpe::Dialect>(
         cases: &[Case<D>],
         has_algebra: impl Fn(&D::Lpe) -> bool,
         reference_match: impl Fn(&D::Lpe, &D::Path) -> bool,

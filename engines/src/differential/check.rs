@@ -5,7 +5,7 @@ use lpe::{Dialect, DialectLpe};
 use super::answers::answers_in;
 use super::counterexample::Counterexample;
 use super::minimize::minimize_in;
-use crate::dialect::EngineDialect;
+use crate::dialect::{EngineDialect, ShrinkDialect};
 use crate::engine::Engine;
 use crate::registry;
 
@@ -24,14 +24,14 @@ pub struct Agreement {
 
 /// The result of a differential check.
 #[derive(Clone, Debug)]
-pub enum Outcome<D: EngineDialect> {
+pub enum Outcome<D: Dialect> {
     /// All engines that could build agree on every path.
     Agree(Agreement),
     /// Two engines differ; minimized.
     Disagree(Box<Counterexample<D>>),
 }
 
-impl<D: EngineDialect> Outcome<D> {
+impl<D: Dialect> Outcome<D> {
     /// True for [`Outcome::Agree`].
     pub fn is_agreement(&self) -> bool {
         matches!(self, Outcome::Agree(_))
@@ -62,7 +62,7 @@ where
 
 /// Runs the given engines on an AOV set compiled as one, under the dialect's default
 /// registration.
-pub fn check_with<D: EngineDialect>(
+pub fn check_with<D: ShrinkDialect>(
     engines: &[&dyn Engine<D>],
     exprs: &[D::Lpe],
     paths: &[D::Path],
@@ -72,7 +72,7 @@ pub fn check_with<D: EngineDialect>(
 
 /// Runs the given engines on a set of expressions parsed under `registration`,
 /// compiled as one.
-pub fn check_in<D: EngineDialect>(
+pub fn check_in<D: ShrinkDialect>(
     engines: &[&dyn Engine<D>],
     registration: &D::Registration,
     exprs: &[D::Lpe],

@@ -2,13 +2,15 @@
 
 use std::fmt;
 
-use crate::dialect::EngineDialect;
+use lpe::Dialect;
+
+use crate::dialect::WireDialect;
 
 /// Engines that disagree, on a minimized input.
 #[derive(Clone, Debug)]
-pub struct Counterexample<D: EngineDialect> {
+pub struct Counterexample<D: Dialect> {
     /// What the expressions were parsed under (OSL's registered labels), printed as
-    /// the report's context line ([`EngineDialect::context`]).
+    /// the report's context line ([`WireDialect::context`]).
     pub registration: D::Registration,
     /// The minimized expressions (one for [`check`](super::check())).
     pub exprs: Vec<D::Lpe>,
@@ -20,7 +22,7 @@ pub struct Counterexample<D: EngineDialect> {
     pub original: (Vec<D::Lpe>, D::Path),
 }
 
-impl<D: EngineDialect> fmt::Display for Counterexample<D> {
+impl<D: WireDialect> fmt::Display for Counterexample<D> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(f, "engines disagree (minimized):")?;
         let context = D::context(&self.registration);

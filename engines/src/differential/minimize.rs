@@ -3,11 +3,13 @@
 //! disagree.
 
 use super::answers::answers_in;
-use crate::dialect::EngineDialect;
+use lpe::Dialect;
+
+use crate::dialect::ShrinkDialect;
 use crate::engine::Engine;
 
 /// Whether at least two engines that build give different answers on `path`.
-fn disagrees<D: EngineDialect>(
+fn disagrees<D: Dialect>(
     engines: &[&dyn Engine<D>],
     registration: &D::Registration,
     exprs: &[D::Lpe],
@@ -25,7 +27,7 @@ const MAX_SHRINK_TRIES: usize = 20_000;
 
 /// Greedy minimization: take the first simpler input on which the engines still
 /// disagree, and start again from it, until no simpler input disagrees.
-pub fn minimize_in<D: EngineDialect>(
+pub fn minimize_in<D: ShrinkDialect>(
     engines: &[&dyn Engine<D>],
     registration: &D::Registration,
     exprs: Vec<D::Lpe>,
@@ -41,7 +43,7 @@ pub fn minimize_in<D: EngineDialect>(
 /// and a path step together) on which `fails` still holds, and start again from it,
 /// until no simpler input fails. `lpe-check diff --external` passes a test that re-asks
 /// the external process.
-pub fn minimize_by<D: EngineDialect>(
+pub fn minimize_by<D: ShrinkDialect>(
     registration: &D::Registration,
     mut exprs: Vec<D::Lpe>,
     mut path: D::Path,

@@ -1,19 +1,22 @@
 //! The differential harness: every engine on the same expressions and paths.
 //!
-//! Everything here is written once over [`EngineDialect`](crate::EngineDialect) (what a
-//! dialect's expressions, paths and registration are, how they shrink); what a case
-//! shares is the dialect's registration, passed beside the expressions.
+//! Everything here is written once over the dialect traits of [`crate::dialect`] (what
+//! a dialect's expressions, paths and registration are, how they shrink, how a report
+//! shows the registration); what a case shares is the dialect's registration, passed
+//! beside the expressions.
 //!
 //! - [`check`](mod@check): [`check()`] (one expression), [`check_set`] (an AOV set
 //!   compiled at once), [`check_with`] (chosen engines) and [`check_in`] (under a
 //!   registration) run each engine and compare the answers path by path. Agreement comes back with counts (pairs compared, how
 //!   many matched, which engines could not build); a disagreement comes back as a
 //!   minimized [`Counterexample`].
-//! - [`minimize`](mod@minimize): the minimizer, which takes [`shrink`]'s steps
-//!   (expression subtrees dropped or simplified, set members dropped, and path vertices
-//!   dropped or unlabelled) for as long as the engines still disagree, so what is printed
-//!   is small enough to read; [`answers`]: each engine's answers on one path, which both
-//!   the comparison and the minimizer ask.
+//! - [`minimize`](mod@minimize): the minimizer, which takes each dialect's
+//!   [`ShrinkDialect`](crate::dialect::ShrinkDialect) steps (expression subtrees dropped
+//!   or simplified, set members dropped, and path vertices dropped or unlabelled) for as
+//!   long as the engines still disagree, so what is printed is small enough to read;
+//!   [`shrink`]: those steps, the moves all dialects share and each dialect's own
+//!   ([`shrink::renderman`], [`shrink::osl`]); [`answers`]: each engine's answers on one
+//!   path, which both the comparison and the minimizer ask.
 //! - [`counterexample`]: what a disagreement reports, and how it prints.
 //! - [`generate`]: [`Generate`], a dialect's case generators (from `lpe_testkit`): trees,
 //!   and text from the dialect's grammar ([`draw`]: half of each, a rejected text kept
@@ -44,7 +47,6 @@ pub use check::{check, check_in, check_set, check_with, Agreement, Outcome};
 pub use counterexample::Counterexample;
 pub use generate::{draw, Drawn, Generate};
 pub use minimize::{minimize_by, minimize_in};
-pub use shrink::{shrink_expr, shrink_path};
 
 #[cfg(test)]
 pub(crate) mod tests {

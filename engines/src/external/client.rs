@@ -9,11 +9,11 @@
 use std::fmt;
 use std::time::Duration;
 
-use super::process::{Line, Process, Wait};
+use super::process::{Line, Process, Wait, MAX_LINE};
 use super::protocol::{
-    self, AovSource, Body, Registration, Reply, Request, Violation, PROTOCOL_MINOR,
-    PROTOCOL_VERSION,
+    self, AovSource, Body, Reply, Request, Violation, PROTOCOL_MINOR, PROTOCOL_VERSION,
 };
+use crate::dialect::WireRegistration;
 
 /// What went wrong on one request.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -222,7 +222,7 @@ impl Client {
     pub fn compile(
         &mut self,
         aovs: Vec<AovSource>,
-        registered: Option<Registration>,
+        registered: Option<WireRegistration>,
     ) -> Result<Reply, Fault> {
         self.ensure()?;
         self.request(Body::Compile { aovs, registered })
@@ -349,7 +349,7 @@ impl Client {
                 0,
                 match extra {
                     Line::Text(l) | Line::NotUtf8(l) => FaultKind::Extra(shorten(&l)),
-                    Line::TooLong => FaultKind::Extra(format!("(over {} bytes)", super::MAX_LINE)),
+                    Line::TooLong => FaultKind::Extra(format!("(over {MAX_LINE} bytes)")),
                     Line::Eof => crash(),
                 },
             ));
@@ -374,7 +374,7 @@ impl Client {
             }
             Ok(Line::TooLong) => {
                 return Err(FaultKind::Reply {
-                    line: format!("(over {} bytes)", super::MAX_LINE),
+                    line: format!("(over {MAX_LINE} bytes)"),
                     violation: Violation::Malformed("line too long".into()),
                 })
             }

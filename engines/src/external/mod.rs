@@ -10,7 +10,8 @@
 //!   process and the next request starts a fresh one.
 //! - [`harness`]: `lpe-check diff --external`, generated cases compared with every
 //!   engine, disagreements minimized by re-asking the external process (the moves of
-//!   [`crate::differential::shrink`]), a replay command per finding.
+//!   [`crate::differential::shrink`]); its report is structured data, each finding with
+//!   the set, path and registration that replay it.
 
 pub mod client;
 pub mod harness;
@@ -20,4 +21,4 @@ pub mod protocol;
 pub use client::{Client, Fault, FaultKind, StartError};
 pub use harness::{run, Answer, Cases, Disagreement, Finding, Report, Setup};
 pub use process::MAX_LINE;
-pub use protocol::{AovSource, Registration, Reply, PROTOCOL_MINOR, PROTOCOL_VERSION};
+pub use protocol::{AovSource, Reply, PROTOCOL_MINOR, PROTOCOL_VERSION};

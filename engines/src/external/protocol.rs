@@ -8,6 +8,8 @@
 
 use serde::{Deserialize, Serialize};
 
+use crate::dialect::WireRegistration;
+
 /// The protocol version this harness speaks: a matcher must answer `hello` with it.
 pub const PROTOCOL_VERSION: u32 = 1;
 
@@ -46,7 +48,7 @@ pub enum Body {
         aovs: Vec<AovSource>,
         /// OSL only (absent for RenderMan): the labels to register before parsing.
         #[serde(skip_serializing_if = "Option::is_none")]
-        registered: Option<Registration>,
+        registered: Option<WireRegistration>,
     },
     /// Which AOVs of the compiled set each path lands in.
     Match {
@@ -64,25 +66,6 @@ pub struct AovSource {
     pub name: String,
     /// Its expression, in the dialect's notation.
     pub expr: String,
-}
-
-/// The user labels an OSL matcher registers before it parses a set's expressions (OSL's
-/// `AccumAutomata::addEventType` and `addScatteringType`, in this order).
-#[derive(Clone, Debug, Serialize, PartialEq, Eq, Default)]
-pub struct Registration {
-    /// Extra event types.
-    pub events: Vec<String>,
-    /// Extra scattering types.
-    pub scatters: Vec<String>,
-}
-
-impl From<&lpe::osl::Registered> for Registration {
-    fn from(r: &lpe::osl::Registered) -> Registration {
-        Registration {
-            events: r.events.clone(),
-            scatters: r.scatters.clone(),
-        }
-    }
 }
 
 impl Request {
@@ -263,7 +246,10 @@ mod tests {
                     name: "a0".into(),
                     expr: "CDY+U".into(),
                 }],
-                registered: Some(Registration::from(&"events=U;scatters=Y".parse().unwrap())),
+                registered: Some(WireRegistration {
+                    events: vec!["U".into()],
+                    scatters: vec!["Y".into()],
+                }),
             },
         };
         assert_eq!(

@@ -23,13 +23,13 @@
 
 use std::collections::BTreeSet;
 
+use lpe::automata::ir::Repetition;
 use lpe::osl::{Expr, Lpe, Osl, Path, Symbol, SymbolPattern};
-use lpe::renderman::ast::Repetition;
-use regex_syntax::hir::{Hir, Look};
+use regex_syntax::hir::Hir;
 
-use super::error::BuildError;
-use super::translate::{byte_class, repeat};
-use super::translation::Encoder;
+use super::hir::{byte_class, repeat, to_the_end};
+use crate::dialect::Encoder;
+use crate::error::BuildError;
 
 /// The STOP byte.
 pub const STOP: u8 = 0x00;
@@ -183,7 +183,7 @@ pub fn translate(exprs: &[Lpe]) -> Result<(Symbols, Vec<Hir>), BuildError> {
     let symbols = Symbols::new(names)?;
     let hirs = operands
         .iter()
-        .map(|e| Hir::concat(vec![symbols.expr(e), Hir::look(Look::End)]))
+        .map(|e| to_the_end(symbols.expr(e)))
         .collect();
     Ok((symbols, hirs))
 }

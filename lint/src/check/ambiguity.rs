@@ -7,8 +7,9 @@
 //! dialects, [`lpe::translate::cross::compare`] decides under the default
 //! correspondence whether the RenderMan reading matches a path exactly when the OSL
 //! reading matches its OSL view; when not, one witness is re-checked with both reference
-//! matchers and reported ([`Kind::AmbiguousDialect`]). The run's `--dialect` does not
-//! matter: the file itself does not say, and it is the file that travels.
+//! matchers and reported ([`Kind::AmbiguousDialect`]). A run whose dialect the user
+//! named (`--dialect`, `dialect=`) reads every file in it and does not run this check:
+//! the user has said which renderer the stage is for.
 
 use lpe::osl::{self, Registered};
 use lpe::renderman;

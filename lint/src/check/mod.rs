@@ -6,8 +6,9 @@
 //! ([`aovs`]), group labels no light or object of the stage carries and numbered lobes
 //! no mapping feeds ([`labels`], [`dialect`], [`aovs`]), expressions of a stage that does
 //! not declare its dialect that mean different things in RenderMan's and OSL's
-//! ([`ambiguity`], whatever the run's dialect), and the declared partitions ([`partition`]),
-//! each a [`Finding`], collected in an [`outcome`]; [`text`] and [`json`] print them. [`dialect`] is what the checks
+//! ([`ambiguity`], unless the user named the run's dialect), and the declared partitions
+//! ([`partition`]), each a [`Finding`], collected in an [`outcome`]; [`text`] and
+//! [`json`] print them. [`dialect`] is what the checks
 //! ask of the expression language ([`dialect::LintDialect`], implemented on `lpe`'s
 //! RenderMan and OSL markers), so they are written once.
 
@@ -33,13 +34,14 @@ use crate::witness::Disagreement;
 use crate::{Document, PartitionDecl};
 
 /// Lints the documents read (ini documents contribute only partitions) in `dialect`, and
-/// the AOVs of those that declare no dialect in `both` too; then the `extra` partitions
+/// the AOVs of those that declare no dialect in `both` too (`None`: the user named the
+/// dialect, nothing is ambiguous); then the `extra` partitions
 /// over the AOVs of every file. Witnesses are re-checked with the reference matcher; a
 /// failed re-check is an engine bug, returned as the error.
 pub fn lint<D: LintDialect>(
     docs: &[Document],
     dialect: &Lint<'_, D>,
-    both: &BothDialects,
+    both: Option<&BothDialects>,
     universe: &D::Lpe,
     extra: &[PartitionDecl],
 ) -> Result<Outcome<D::Lpe>, Disagreement> {
@@ -57,7 +59,9 @@ pub fn lint<D: LintDialect>(
             lpe: None,
         }));
         aovs::check(doc, &mut out.aovs[first..], dialect, &mut out.findings);
-        ambiguity::check(doc, &out.aovs[first..], both, &mut out.findings)?;
+        if let Some(both) = both {
+            ambiguity::check(doc, &out.aovs[first..], both, &mut out.findings)?;
+        }
         for p in &doc.partitions {
             let checked = partition::check(
                 &file,

@@ -26,6 +26,10 @@ pub struct Request<'a> {
     pub partitions: &'a [String],
     /// The universe partitions split (`None`: the dialect's default).
     pub universe: Option<&'a str>,
+    /// Whether the user named the dialect (`--dialect`, `dialect=`): every file is then
+    /// read in it and none is ambiguous, so `ambiguous_dialect` is not checked. When the
+    /// dialect is only the default, a stage that declares none is read both ways.
+    pub dialect_given: bool,
 }
 
 /// Why a run could not check anything.
@@ -137,9 +141,9 @@ where
         message: e.to_string(),
     })?;
     let read = inputs::read_all(&inis, &others, &limits);
-    // Whatever the run's dialect, undeclared stages are read in both, RenderMan with the
-    // ini files' macros.
-    let both = BothDialects::new(read.config.parser());
+    // Unless the user named the dialect, undeclared stages are read in both, RenderMan
+    // with the ini files' macros.
+    let both = (!req.dialect_given).then(|| BothDialects::new(read.config.parser()));
     let (registration, lobes) = D::configured(registration, &read.config);
     let dialect = Lint::<D> {
         registration: &registration,
@@ -151,7 +155,7 @@ where
         .parse(universe)
         .map_err(|e| RunError::Universe(e.message))?;
     let extra = inputs::command_line_partitions(req.partitions);
-    let outcome = super::lint(&read.docs, &dialect, &both, &universe, &extra)
+    let outcome = super::lint(&read.docs, &dialect, both.as_ref(), &universe, &extra)
         .map_err(RunError::Disagreement)?;
     Ok(Run {
         outcome,

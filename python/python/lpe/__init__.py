@@ -154,7 +154,7 @@ def lint(
     files_or_stage,
     partitions=(),
     universe=None,
-    dialect="renderman",
+    dialect=None,
     ini=None,
     register=None,
 ) -> LintReport:
@@ -166,7 +166,10 @@ def lint(
     loaded): it is exported flattened (``Usd.Stage.ExportToString``) to a temporary
     ``.usda`` file that the Rust reader reads, and its findings name the root layer's
     file. ``partitions`` are lists of AOV names, each ``"a,b,c"`` or a list of names,
-    that must partition ``universe``. Returns a ``LintReport``; a bad argument raises
+    that must partition ``universe``. ``dialect`` (``"renderman"`` or ``"osl"``) reads
+    every AOV in that dialect; left ``None``, AOVs are read as RenderMan's and a stage
+    that declares no dialect is also checked for AOVs whose RenderMan and OSL readings
+    differ (``ambiguous_dialect``). Returns a ``LintReport``; a bad argument raises
     ``TypeError`` or ``ValueError`` (an unreadable file is in ``report.files``, as in
     the JSON report).
     """

@@ -147,7 +147,7 @@ def lint(
     files_or_stage: Union[StrPath, Iterable[StrPath], Any],
     partitions: Iterable[Union[str, Sequence[str]]] = (),
     universe: Optional[str] = None,
-    dialect: Dialect = "renderman",
+    dialect: Optional[Dialect] = None,
     ini: Optional[StrPath] = None,
     register: Optional[str] = None,
 ) -> LintReport: ...

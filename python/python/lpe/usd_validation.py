@@ -89,7 +89,7 @@ def configure(dialect=None, ini=None, register=None, universe=None, partitions=(
     global _options
     given = (dialect, ini, register, universe, tuple(partitions))
     _options = None if given == (None, None, None, None, ()) else {
-        "dialect": dialect or "renderman",
+        "dialect": dialect,
         "ini": ini,
         "register": register,
         "universe": universe,
@@ -105,7 +105,7 @@ def options() -> dict:
         return dict(_options)
     env = os.environ.get
     return {
-        "dialect": env("LPE_DIALECT") or "renderman",
+        "dialect": env("LPE_DIALECT") or None,
         "ini": env("LPE_INI") or None,
         "register": env("LPE_REGISTER") or None,
         "universe": env("LPE_UNIVERSE") or None,

@@ -1,7 +1,8 @@
 //! The renderer's matchers behind `lpe::PathMatcher`, the seam the integrator is generic
-//! over: it classifies every vertex the scene can produce once, before rendering, then
-//! per path carries a `Copy` state from `start` (before any vertex: the integrator steps
-//! the camera itself) one vertex at a time, and at every emitter asks which AOVs match.
+//! over (each in one dialect `D`, written once for every dialect): it classifies every
+//! vertex the scene can produce once, before rendering, then per path carries a `Copy`
+//! state from `start` (before any vertex: the integrator steps the camera itself) one
+//! vertex at a time, and at every emitter asks which AOVs match.
 //! The fast matcher (`lpe::AovSet`) implements it in `lpe`; this module adds the
 //! whole-path engines.
 //!
@@ -13,13 +14,9 @@
 //! it with any engine of the `lpe-engines` registry, which is how `converge` times the
 //! regex-automata engine (`oracle`).
 
-#[cfg(feature = "engines")]
-use lpe::renderman::Parser;
-use lpe::renderman::{Lpe, Path, RenderMan, Vertex, VertexType};
-use lpe::DialectName;
 use lpe_reference::lpe_tree::ReferenceMatch;
 
-use super::vertex::{SceneClassifier, SceneDialect, SceneVertex};
+use super::dialect::{SceneClassifier, SceneDialect};
 use std::hash::{Hash, Hasher};
 use std::sync::{Mutex, RwLock};
 
@@ -93,19 +90,19 @@ fn thread_slot() -> usize {
     rayon::current_thread_index().map_or(0, |i| i + 1) % SLOTS
 }
 
-/// An engine that answers for whole paths only (it cannot be stepped per vertex): which
-/// AOVs match `path`, a complete path ending at an emitter.
-pub trait WholePath: Sync {
-    fn which(&self, path: &Path) -> AovMask;
+/// An engine that answers for whole paths of dialect `D` only (it cannot be stepped per
+/// vertex): which AOVs match `path`, a complete path ending at an emitter.
+pub trait WholePath<D: SceneDialect>: Sync {
+    fn which(&self, path: &D::Path) -> AovMask;
 }
 
 /// The reference matcher on each expression, each read once by the reference's own
 /// front end (from lpe's print) when the engine is built, not per path.
-pub struct Reference(Vec<lpe_reference::renderman::Lpe>);
+pub struct Reference<D: SceneDialect>(Vec<<D::Lpe as ReferenceMatch>::Tree>);
 
-impl Reference {
+impl<D: SceneDialect> Reference<D> {
     /// The reference engine for these expressions (at most [`MAX_AOVS`]).
-    pub fn new(aovs: &[Lpe]) -> Result<Reference, MatcherError> {
+    pub fn new(aovs: &[D::Lpe]) -> Result<Reference<D>, MatcherError> {
         check_count(aovs)?;
         Ok(Reference(
             aovs.iter().map(ReferenceMatch::reference_tree).collect(),
@@ -113,15 +110,15 @@ impl Reference {
     }
 }
 
-impl WholePath for Reference {
-    fn which(&self, path: &Path) -> AovMask {
+impl<D: SceneDialect> WholePath<D> for Reference<D> {
+    fn which(&self, path: &D::Path) -> AovMask {
         (0..self.0.len())
-            .filter(|&i| Lpe::tree_matches(&self.0[i], path))
+            .filter(|&i| D::Lpe::tree_matches(&self.0[i], path))
             .collect()
     }
 }
 
-fn check_count(aovs: &[Lpe]) -> Result<(), MatcherError> {
+fn check_count<L>(aovs: &[L]) -> Result<(), MatcherError> {
     match aovs.len() {
         n if n > MAX_AOVS => Err(MatcherError::TooMany {
             count: n,
@@ -135,23 +132,23 @@ fn check_count(aovs: &[Lpe]) -> Result<(), MatcherError> {
 /// Its compiled matchers keep a mutable cache (the lazy DFA), so each thread slot
 /// compiles its own on first use.
 #[cfg(feature = "engines")]
-pub struct CheckEngine {
-    engine: &'static dyn lpe_engines::Engine<RenderMan>,
-    aovs: Vec<Lpe>,
-    compiled: Vec<Mutex<Option<Box<dyn lpe_engines::Matcher<RenderMan>>>>>,
+pub struct CheckEngine<D: lpe_engines::EngineDialect> {
+    engine: &'static dyn lpe_engines::Engine<D>,
+    aovs: Vec<D::Lpe>,
+    compiled: Vec<Mutex<Option<Box<dyn lpe_engines::Matcher<D>>>>>,
 }
 
 #[cfg(feature = "engines")]
-impl CheckEngine {
-    /// Compiles `aovs` with `engine` once up front, so an engine that cannot build the
-    /// set says so here and not mid-render.
+impl<D: lpe_engines::EngineDialect> CheckEngine<D> {
+    /// Compiles `aovs` with `engine` once up front (nothing registered), so an engine
+    /// that cannot build the set says so here and not mid-render.
     pub fn new(
-        engine: &'static dyn lpe_engines::Engine<RenderMan>,
-        aovs: &[Lpe],
-    ) -> Result<CheckEngine, MatcherError> {
+        engine: &'static dyn lpe_engines::Engine<D>,
+        aovs: &[D::Lpe],
+    ) -> Result<CheckEngine<D>, MatcherError> {
         check_count(aovs)?;
         let first = engine
-            .compile(aovs, &Parser::default())
+            .compile(aovs, &D::Registration::default())
             .map_err(|e| MatcherError::Engine {
                 engine: engine.name(),
                 reason: e.to_string(),
@@ -166,28 +163,28 @@ impl CheckEngine {
     }
 }
 #[cfg(feature = "engines")]
-impl WholePath for CheckEngine {
-    fn which(&self, path: &Path) -> AovMask {
+impl<D: lpe_engines::EngineDialect + SceneDialect> WholePath<D> for CheckEngine<D> {
+    fn which(&self, path: &D::Path) -> AovMask {
         let mut slot = self.compiled[thread_slot()]
             .lock()
             .unwrap_or_else(|e| e.into_inner());
         let m = slot.get_or_insert_with(|| {
             self.engine
-                .compile(&self.aovs, &Parser::default())
+                .compile(&self.aovs, &D::Registration::default())
                 .expect("the engine compiled this set in CheckEngine::new")
         });
         m.which(path)
     }
 }
 
-/// [`PathMatcher`] over a [`WholePath`] engine: the state records the path's vertices,
-/// and at an emitter the engine judges the whole path, optionally memoized per distinct
-/// vertex sequence.
-pub struct WholePathMatcher<W> {
+/// [`PathMatcher`] over a [`WholePath`] engine of dialect `D`: the state records the
+/// path's vertices, and at an emitter the engine judges the whole path, optionally
+/// memoized per distinct vertex sequence.
+pub struct WholePathMatcher<D: SceneDialect, W> {
     engine: W,
     /// Class id -> vertex; grows during classification (before rendering), then only
     /// read, by every thread at every emitter: a read lock does not serialize them.
-    alphabet: RwLock<Vec<Vertex>>,
+    alphabet: RwLock<Vec<D::Vertex>>,
     memo: Vec<Mutex<Memo>>,
     /// Answer from the memo (the renderer's default); off, every emitter reached runs
     /// the engine (what the verification engines cost, shown by `converge`).
@@ -196,11 +193,11 @@ pub struct WholePathMatcher<W> {
 
 /// The reference engine memoized: the renderer's fallback when the fast matcher
 /// cannot build a set.
-pub type ReferenceMatcher = WholePathMatcher<Reference>;
+pub type ReferenceMatcher<D> = WholePathMatcher<D, Reference<D>>;
 
-impl<W: WholePath> WholePathMatcher<W> {
+impl<D: SceneDialect, W: WholePath<D>> WholePathMatcher<D, W> {
     /// Answers each distinct path once.
-    pub fn memoized(engine: W) -> WholePathMatcher<W> {
+    pub fn memoized(engine: W) -> WholePathMatcher<D, W> {
         WholePathMatcher {
             engine,
             alphabet: RwLock::new(Vec::new()),
@@ -210,7 +207,7 @@ impl<W: WholePath> WholePathMatcher<W> {
     }
 
     /// Runs the engine at every emitter reached.
-    pub fn direct(engine: W) -> WholePathMatcher<W> {
+    pub fn direct(engine: W) -> WholePathMatcher<D, W> {
         WholePathMatcher {
             memoize: false,
             ..WholePathMatcher::memoized(engine)
@@ -226,27 +223,21 @@ impl<W: WholePath> WholePathMatcher<W> {
                 .map(|&i| alphabet[i as usize].clone()),
         );
         drop(alphabet);
-        if !vertices
-            .last()
-            .is_some_and(|v| matches!(v.ty(), VertexType::L | VertexType::O))
-        {
-            return AovMask::EMPTY;
-        }
-        // A sequence the integrator builds is always a well-formed path; if not, no AOV
+        // A sequence the integrator asks about is always a whole path; if not, no AOV
         // can match it.
-        let Ok(path) = Path::new(vertices) else {
-            return AovMask::EMPTY;
-        };
-        self.engine.which(&path)
+        match D::whole_path(vertices) {
+            Some(path) => self.engine.which(&path),
+            None => AovMask::EMPTY,
+        }
     }
 }
 
-impl<W: WholePath> PathMatcher for WholePathMatcher<W> {
-    type Vertex = Vertex;
+impl<D: SceneDialect, W: WholePath<D>> PathMatcher for WholePathMatcher<D, W> {
+    type Vertex = D::Vertex;
     type Class = u16;
     type State = RefState;
 
-    fn classify(&self, v: &Vertex) -> u16 {
+    fn classify(&self, v: &D::Vertex) -> u16 {
         let mut a = self.alphabet.write().unwrap_or_else(|e| e.into_inner());
         if let Some(i) = a.iter().position(|x| x == v) {
             return i as u16;
@@ -289,20 +280,14 @@ impl<W: WholePath> PathMatcher for WholePathMatcher<W> {
     }
 }
 
-/// The whole-path engines judge RenderMan expressions.
-impl<W: WholePath> SceneClassifier for WholePathMatcher<W> {
-    fn classify_scene(&self, v: &SceneVertex) -> u16 {
-        self.classify(&RenderMan::scene_vertex(v))
-    }
-
-    fn dialect(&self) -> DialectName {
-        DialectName::RenderMan
-    }
+impl<D: SceneDialect, W: WholePath<D>> SceneClassifier for WholePathMatcher<D, W> {
+    type Dialect = D;
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use lpe::renderman::{Lpe, Path, RenderMan, Vertex};
 
     #[test]
     fn mask_iterates_in_order() {
@@ -358,16 +343,41 @@ mod tests {
     #[test]
     fn reference_matcher_agrees_with_is_match() {
         let exprs = exprs();
-        let m = ReferenceMatcher::memoized(Reference::new(&exprs).unwrap());
+        let m = ReferenceMatcher::<RenderMan>::memoized(Reference::new(&exprs).unwrap());
         agrees_with_is_match(&m, &exprs, &PATHS);
+    }
+
+    #[test]
+    fn the_reference_matcher_judges_osl_paths_like_is_match() {
+        let none = lpe::osl::Registered::none();
+        let exprs: Vec<lpe::osl::Lpe> = ["C<RD>[LO]", "C.*<L.'key'>", "C<.G>.*[LO]", "CO"]
+            .iter()
+            .map(|s| lpe::osl::parse(s, &none).unwrap())
+            .collect();
+        let m = ReferenceMatcher::<lpe::osl::Osl>::memoized(Reference::new(&exprs).unwrap());
+        for (text, want) in [
+            ("C,~ R,D L,~,key", vec![0, 1]),
+            ("C,~ R,G R,D L,~", vec![2]),
+            ("C,~ O,~", vec![3]),
+            ("C,~ T,S L,~,fill", vec![]),
+        ] {
+            let path: lpe::osl::Path = text.parse().unwrap();
+            let mut s = m.start();
+            for v in &path.vertices {
+                s = m.step(s, m.classify(v));
+            }
+            let want: AovMask = want.into_iter().collect();
+            assert_eq!(m.matches(s), want, "{text}");
+        }
     }
 
     #[cfg(feature = "engines")]
     #[test]
     fn the_oracle_through_check_engine_agrees_with_is_match_on_every_thread() {
         let exprs = exprs();
-        let m =
-            WholePathMatcher::direct(CheckEngine::new(&lpe_engines::regex::LAZY, &exprs).unwrap());
+        let m = WholePathMatcher::direct(
+            CheckEngine::<RenderMan>::new(&lpe_engines::regex::LAZY, &exprs).unwrap(),
+        );
         // Slot 0 holds the matcher compiled up front; rayon workers compile their own.
         agrees_with_is_match(&m, &exprs, &PATHS);
         rayon::scope(|s| {
@@ -380,8 +390,8 @@ mod tests {
     #[test]
     fn too_many_aovs_is_an_error_for_every_whole_path_engine() {
         let many = vec![lpe::renderman::parse("CL").unwrap(); MAX_AOVS + 1];
-        assert!(Reference::new(&many).is_err());
+        assert!(Reference::<RenderMan>::new(&many).is_err());
         #[cfg(feature = "engines")]
-        assert!(CheckEngine::new(&lpe_engines::regex::LAZY, &many).is_err());
+        assert!(CheckEngine::<RenderMan>::new(&lpe_engines::regex::LAZY, &many).is_err());
     }
 }

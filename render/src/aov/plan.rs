@@ -7,7 +7,8 @@
 
 use serde::Serialize;
 
-use crate::aov::AovList;
+use super::dialect::SceneDialect;
+use super::list::{Aov, AovList};
 use crate::scene::Scene;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -33,11 +34,11 @@ pub struct Plan {
 impl Plan {
     /// The plan the scene and AOVs call for. `user_lobes` is settled later, by asking
     /// the matcher whether any AOV matches a pseudo path the scene can produce.
-    pub fn derive(scene: &Scene, aovs: &AovList, beauty: bool) -> Plan {
-        let any = |f: &dyn Fn(&crate::aov::Aov) -> bool| aovs.aovs.iter().any(f);
+    pub fn derive<D: SceneDialect>(scene: &Scene, aovs: &AovList<D>, beauty: bool) -> Plan {
+        let any = |f: &dyn Fn(&Aov<D>) -> bool| aovs.aovs.iter().any(f);
         Plan {
             matching: !aovs.aovs.is_empty(),
-            labels: any(&|a| a.expr.names_labels()),
+            labels: any(&|a| D::names_labels(&a.expr)),
             user_lobes: true,
             unshadowed: any(&|a| a.flags.unoccluded || a.flags.shadows),
             transmission: scene.materials.iter().any(|m| m.transmits()),
@@ -47,7 +48,7 @@ impl Plan {
     }
 
     /// Every effect on: the generic path.
-    pub fn all_effects(aovs: &AovList) -> Plan {
+    pub fn all_effects<D: SceneDialect>(aovs: &AovList<D>) -> Plan {
         Plan {
             matching: !aovs.aovs.is_empty(),
             labels: true,

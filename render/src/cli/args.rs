@@ -1,9 +1,7 @@
 //! Argument parsers and the input error of the CLI.
 
-use std::path::PathBuf;
-
-use lpe_render::aov::AovError;
 use lpe_render::bench::BenchError;
+use lpe_render::inputs::SourceError;
 use lpe_render::integrator::RenderError;
 use lpe_render::output::OutputError;
 use lpe_render::scene::SceneError;
@@ -21,41 +19,10 @@ pub enum ArgError {
 /// Input problems: printed, exit status 2.
 #[derive(Debug, thiserror::Error)]
 pub enum InputError {
-    #[error("{}: {source}", path.display())]
-    Read {
-        path: PathBuf,
-        source: std::io::Error,
-    },
-    #[error("{}:{source}", path.display())]
-    Ini {
-        path: PathBuf,
-        source: lpe::renderman::ini::IniError,
-    },
-    #[error("{}:{at}: {source}", path.display())]
-    DisplayAov {
-        path: PathBuf,
-        at: Box<lpe_lint::Location>,
-        source: AovError,
-    },
-    /// `--ini` with `--dialect osl`: its macros and lobe mappings are RenderMan's.
-    #[error(
-        "--ini holds RenderMan macros and lobe mappings; it does not apply to --dialect osl \
-         (OSL vertices scatter D, G or S by the lobe's model, whatever its lobe number)"
-    )]
-    IniWithOsl,
     #[error(transparent)]
-    Usd(#[from] lpe_lint::ReadError),
-    #[error("{width}x{height} with {aovs} AOVs needs {:.1} GiB of film; at most 8 GiB", *bytes as f64 / (1u64 << 30) as f64)]
-    FilmTooLarge {
-        width: usize,
-        height: usize,
-        aovs: usize,
-        bytes: u128,
-    },
+    Sources(#[from] SourceError),
     #[error(transparent)]
     Scene(#[from] SceneError),
-    #[error(transparent)]
-    Aov(#[from] AovError),
     #[error(transparent)]
     Render(#[from] RenderError),
     #[error(transparent)]

@@ -1,21 +1,20 @@
 //! `lpe-render bench`: the cost of LPE tracking.
 
+use lpe_render::aov::SceneDialect;
 use lpe_render::integrator::{self, Settings};
 use lpe_render::scene::Scene;
 
 use crate::args::InputError;
 
-pub fn run(
-    dialect: lpe::DialectName,
+pub fn run<D: SceneDialect>(
     scene: &str,
     spp: u32,
     res: (usize, usize),
     threads: Option<usize>,
     rounds: usize,
 ) -> Result<bool, InputError> {
-    let config = lpe::renderman::Config::default();
-    let parser = lpe::renderman::Parser::new(config.limits.clone(), config.macros.clone());
-    let scene = Scene::load(scene, &config.lobes)?;
+    let lobes = lpe::renderman::LobeMap::default();
+    let scene = Scene::load(scene, &lobes)?;
     let settings = Settings {
         width: res.0,
         height: res.1,
@@ -23,8 +22,7 @@ pub fn run(
         threads,
         ..Settings::default()
     };
-    let b =
-        lpe_render::bench::bench_in(dialect, &scene, &config.lobes, &parser, &settings, rounds)?;
+    let b = lpe_render::bench::bench::<D>(&scene, &lobes, &settings, rounds)?;
     println!(
         "bench `{}` {}x{} {} spp, {} thread(s), {rounds} rounds, matcher: {}",
         scene.name,
@@ -40,7 +38,7 @@ pub fn run(
             &["configuration", "best CPU s", "paths per CPU s"],
             [
                 ("beauty only".to_string(), b.beauty_seconds),
-                (format!("{} AOVs ({dialect})", b.aov_count), b.aov_seconds),
+                (format!("{} AOVs ({})", b.aov_count, D::NAME), b.aov_seconds),
             ]
             .map(|(what, t)| vec![
                 what,

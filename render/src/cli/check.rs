@@ -2,14 +2,15 @@
 
 use std::time::Instant;
 
+use lpe_render::aov::SceneDialect;
+
 use crate::args::InputError;
 use crate::render::print_invariants;
 
-pub fn run(dialect: lpe::DialectName, threads: Option<usize>) -> Result<bool, InputError> {
+pub fn run<D: SceneDialect>(threads: Option<usize>) -> Result<bool, InputError> {
     let t0 = Instant::now();
-    let list = lpe_render::verify::suite::check_suite_in(dialect, threads, &mut |s| {
-        eprintln!("  rendered {s}")
-    })?;
+    let list =
+        lpe_render::verify::suite::check_suite::<D>(threads, &mut |s| eprintln!("  rendered {s}"))?;
     eprintln!("invariants:");
     let ok = print_invariants(&list);
     let failed = list.iter().filter(|i| i.failed()).count();

@@ -3,8 +3,12 @@
 //! `lpe-render bench` measures what LPE tracking costs.
 //!
 //! Exit status: 0 success, 1 an invariant failed, 2 bad input.
+//!
+//! The dialect of the AOVs is read here and turned into a type once
+//! ([`lpe::with_dialect!`]); every subcommand is generic over it from there on.
 
 use clap::{Parser, Subcommand};
+use lpe::with_dialect;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
@@ -83,8 +87,10 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => render::run(&cli.render),
-        Some(Command::Check { threads, dialect }) => check::run(dialect, threads),
+        None => with_dialect!(cli.render.dialect, D => render::run::<D>(&cli.render)),
+        Some(Command::Check { threads, dialect }) => {
+            with_dialect!(dialect, D => check::run::<D>(threads))
+        }
         Some(Command::Bench {
             scene,
             spp,
@@ -92,7 +98,7 @@ fn main() -> ExitCode {
             threads,
             rounds,
             dialect,
-        }) => bench::run(dialect, &scene, spp, res, Some(threads), rounds),
+        }) => with_dialect!(dialect, D => bench::run::<D>(&scene, spp, res, Some(threads), rounds)),
         Some(Command::Converge {
             quick,
             out,

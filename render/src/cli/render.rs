@@ -1,16 +1,14 @@
 //! `lpe-render [OPTIONS]`: render a scene into beauty + AOVs and write the outputs.
 
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::time::Instant;
 
-use lpe::DialectName;
-use lpe_render::aov::{
-    parse_display_channels, split_aov_arg, usd_render_vars, AovList, DisplayChannels,
-};
+use lpe_render::aov::SceneDialect;
+use lpe_render::inputs::{self, Inputs, Sources};
 use lpe_render::integrator::{self, Settings};
+use lpe_render::invariant::Invariant;
 use lpe_render::output::{self, Report};
-use lpe_render::scene::Scene;
-use lpe_render::verify::invariants::{self, Invariant};
+use lpe_render::verify::invariants;
 
 use crate::args::{parse_res, positive_u32, positive_usize, InputError};
 
@@ -59,41 +57,6 @@ pub struct RenderArgs {
     pub all_effects: bool,
 }
 
-fn load_config(ini: Option<&PathBuf>) -> Result<lpe::renderman::Config, InputError> {
-    let Some(path) = ini else {
-        return Ok(lpe::renderman::Config::default());
-    };
-    let text = std::fs::read_to_string(path).map_err(|source| InputError::Read {
-        path: path.clone(),
-        source,
-    })?;
-    lpe::renderman::Config::from_ini(&text).map_err(|source| InputError::Ini {
-        path: path.clone(),
-        source,
-    })
-}
-
-/// Prints the warnings of channels read from `path` and appends its AOVs.
-fn push_channels(
-    aovs: &mut AovList,
-    read: DisplayChannels,
-    path: &Path,
-    parser: &lpe::renderman::Parser,
-) -> Result<(), InputError> {
-    for w in read.warnings {
-        eprintln!("warning: {w}");
-    }
-    for c in read.channels {
-        aovs.push(&c.name, &c.source, parser)
-            .map_err(|source| InputError::DisplayAov {
-                path: path.to_path_buf(),
-                at: Box::new(c.location.clone()),
-                source,
-            })?;
-    }
-    Ok(())
-}
-
 pub fn print_invariants(list: &[Invariant]) -> bool {
     for i in list {
         eprintln!("  {}", i.line());
@@ -104,56 +67,24 @@ pub fn print_invariants(list: &[Invariant]) -> bool {
     !list.iter().any(Invariant::failed)
 }
 
-pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
+/// Renders in dialect `D`: reads the inputs, renders, checks the invariants and writes
+/// the outputs, printing as it goes.
+pub fn run<D: SceneDialect>(args: &RenderArgs) -> Result<bool, InputError> {
     let t0 = Instant::now();
-    if args.dialect == DialectName::Osl && args.ini.is_some() {
-        return Err(InputError::IniWithOsl);
-    }
-    let config = load_config(args.ini.as_ref())?;
-    let parser = lpe::renderman::Parser::new(config.limits.clone(), config.macros.clone());
-    let scene = Scene::load(&args.scene, &config.lobes)?;
-
-    let mut aovs = AovList::new(args.dialect);
-    if let Some(path) = &args.display {
-        let text = std::fs::read_to_string(path).map_err(|source| InputError::Read {
-            path: path.clone(),
-            source,
-        })?;
-        let read = parse_display_channels(&text, &path.display().to_string())?;
-        push_channels(&mut aovs, read, path, &parser)?;
-    }
-    if let Some(path) = &args.usd {
-        let stage = lpe_lint::read::usd::read(path, &lpe_lint::read::Limits::default())?;
-        let mut read = usd_render_vars(&stage);
-        for w in &mut read.warnings {
-            *w = format!("{}: {w}", path.display());
-        }
-        push_channels(&mut aovs, read, path, &parser)?;
-    }
-    for arg in &args.aovs {
-        let (name, source) = split_aov_arg(arg)?;
-        aovs.push(name, source, &parser)?;
-    }
-    if args.display.is_none() && args.usd.is_none() && args.aovs.is_empty() {
-        aovs = AovList::for_render_in(args.dialect, &scene, &parser)?;
-    }
-    for (lobe, names) in config.lobes.user_collisions(&integrator::USER_SIGNALS) {
-        aovs.notes.push(format!(
-            "user signals {} share lobe {lobe}: they overwrite each other",
-            names.join(", ")
-        ));
-    }
-
-    // The film holds f64 RGB per pixel per layer; refuse sizes that cannot fit rather
-    // than abort on allocation.
-    let film_bytes = (args.res.0 * args.res.1) as u128 * (1 + aovs.aovs.len()) as u128 * 24;
-    if film_bytes > 8 << 30 {
-        return Err(InputError::FilmTooLarge {
-            width: args.res.0,
-            height: args.res.1,
-            aovs: aovs.aovs.len(),
-            bytes: film_bytes,
-        });
+    let Inputs {
+        scene,
+        lobes,
+        aovs,
+        warnings,
+    } = inputs::gather::<D>(&Sources {
+        scene: &args.scene,
+        ini: args.ini.as_deref(),
+        display: args.display.as_deref(),
+        usd: args.usd.as_deref(),
+        aovs: &args.aovs,
+    })?;
+    for w in warnings {
+        eprintln!("warning: {w}");
     }
     let settings = Settings {
         width: args.res.0,
@@ -173,18 +104,17 @@ pub fn run(args: &RenderArgs) -> Result<bool, InputError> {
         settings.height,
         settings.spp,
         aovs.aovs.len(),
-        aovs.dialect,
+        D::NAME,
         threads,
         integrator::ENGINE
     );
     let all = args.all_effects;
-    let render =
-        integrator::render_announcing(&scene, &aovs, &config.lobes, &settings, &mut |plan| {
-            eprintln!("effects plan{}:", if all { " (--all-effects)" } else { "" });
-            for line in plan.describe() {
-                eprintln!("  {line}");
-            }
-        })?;
+    let render = integrator::render_announcing(&scene, &aovs, &lobes, &settings, &mut |plan| {
+        eprintln!("effects plan{}:", if all { " (--all-effects)" } else { "" });
+        for line in plan.describe() {
+            eprintln!("  {line}");
+        }
+    })?;
     let mut invariants = invariants::formal_partition(&aovs);
     invariants.extend(invariants::invariants(&scene, &aovs, &render));
     eprintln!(

@@ -1,25 +1,23 @@
 //! Render dispatch: the one place that picks the matcher a render uses.
 
 use lpe::renderman::LobeMap;
-use lpe::DialectName;
+use lpe::AovSet;
 
 use super::settings::{Render, RenderError, Settings};
 use super::setup::Integrator;
 use crate::aov::matcher::{Reference, ReferenceMatcher, RenderMatcher};
-use crate::aov::osl::is_builtin_label;
-use crate::aov::AovList;
+use crate::aov::{AovList, SceneDialect};
 use crate::scene::Scene;
 
 /// Renders `scene` with `aovs`.
 ///
-/// ENGINE: the one place that picks the matcher: the fast matcher (`lpe::AovSet`),
-/// or, for a RenderMan set it refuses to compile (over its size limits), the memoized
-/// reference matcher with a warning on stderr. Both give the same image; only the time
-/// differs. An OSL list compiles with `AovSet::compile_osl` (nothing registered), whose
-/// lazy DFA takes what the eager one cannot; a set it still refuses is an error.
-pub fn render(
+/// ENGINE: the one place that picks the matcher: the fast matcher (`lpe::AovSet`,
+/// nothing registered; its lazy DFA takes what the eager one cannot), or, for a set it
+/// refuses to compile (over its size limits), the memoized reference matcher with a
+/// warning on stderr. Both give the same image; only the time differs.
+pub fn render<D: SceneDialect>(
     scene: &Scene,
-    aovs: &AovList,
+    aovs: &AovList<D>,
     lobes: &LobeMap,
     settings: &Settings,
 ) -> Result<Render, RenderError> {
@@ -28,40 +26,28 @@ pub fn render(
 
 /// [`render`], calling `on_plan` with the effects plan once it is decided, before any
 /// sample is traced (the CLI prints it).
-pub fn render_announcing(
+pub fn render_announcing<D: SceneDialect>(
     scene: &Scene,
-    aovs: &AovList,
+    aovs: &AovList<D>,
     lobes: &LobeMap,
     settings: &Settings,
     on_plan: &mut dyn FnMut(&crate::aov::plan::Plan),
 ) -> Result<Render, RenderError> {
-    if aovs.dialect == DialectName::Osl {
-        check_osl_labels(scene)?;
-        let set = lpe::AovSet::compile_under(
-            &aovs.named::<lpe::osl::Osl>(),
-            &lpe::osl::Registered::none(),
-            &lpe::Options::default(),
-        )
-        .map_err(|e| RenderError::Compile {
-            reason: e.to_string(),
-        })?;
-        return render_with(&set, scene, aovs, lobes, settings, on_plan);
-    }
-    match lpe::AovSet::compile(&aovs.named::<lpe::renderman::RenderMan>()) {
+    check_labels::<D>(scene)?;
+    match AovSet::<D>::compile(&aovs.named()) {
         Ok(set) => render_with(&set, scene, aovs, lobes, settings, on_plan),
         Err(e) => {
             eprintln!(
                 "warning: the fast matcher refused this AOV set ({e}); using the reference matcher"
             );
-            let matcher = ReferenceMatcher::memoized(Reference::new(&aovs.lpes())?);
+            let matcher = ReferenceMatcher::<D>::memoized(Reference::new(&aovs.lpes())?);
             render_with(&matcher, scene, aovs, lobes, settings, on_plan)
         }
     }
 }
 
-/// Under OSL a scene label is a custom label, which OSL's eater skips only if it is not
-/// a built-in label: a light group `S` would stop `L` from matching its lights. Refused.
-fn check_osl_labels(scene: &Scene) -> Result<(), RenderError> {
+/// The scene's labels, each as the dialect can show it ([`SceneDialect::refused_label`]).
+fn check_labels<D: SceneDialect>(scene: &Scene) -> Result<(), RenderError> {
     let objects = scene.objects.iter().filter_map(|o| {
         Some((
             format!("object `{}` lpegroup", o.name),
@@ -75,11 +61,12 @@ fn check_osl_labels(scene: &Scene) -> Result<(), RenderError> {
         .filter_map(|(i, l)| Some((format!("light {i} group"), l.group.as_ref()?)));
     match objects
         .chain(lights)
-        .find(|(_, label)| is_builtin_label(label))
+        .find_map(|(owner, label)| Some((owner, label, D::refused_label(label)?)))
     {
-        Some((owner, label)) => Err(RenderError::OslBuiltinLabel {
+        Some((owner, label, why)) => Err(RenderError::SceneLabel {
             owner,
             label: label.clone(),
+            why,
         }),
         None => Ok(()),
     }
@@ -89,7 +76,7 @@ fn check_osl_labels(scene: &Scene) -> Result<(), RenderError> {
 pub fn render_with<M: RenderMatcher>(
     matcher: &M,
     scene: &Scene,
-    aovs: &AovList,
+    aovs: &AovList<M::Dialect>,
     lobes: &LobeMap,
     settings: &Settings,
     on_plan: &mut dyn FnMut(&crate::aov::plan::Plan),

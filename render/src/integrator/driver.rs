@@ -9,7 +9,7 @@ use super::contributions::Tally;
 use super::settings::{Render, RenderError};
 use super::setup::Integrator;
 use crate::aov::matcher::RenderMatcher;
-use crate::film::{Film, SampleValues};
+use crate::film::{Film, SampleValues, MAX_FILM_BYTES};
 use crate::rng::Rng;
 
 impl<M: RenderMatcher> Integrator<'_, M> {
@@ -18,6 +18,15 @@ impl<M: RenderMatcher> Integrator<'_, M> {
         let s = self.settings;
         let (w, h) = (s.width, s.height);
         let n = self.weighting.len();
+        let bytes = Film::bytes(w, h, 1 + n);
+        if bytes > MAX_FILM_BYTES {
+            return Err(RenderError::FilmTooLarge {
+                width: w,
+                height: h,
+                aovs: n,
+                bytes,
+            });
+        }
         let mut film = Film::new(w, h, s.spp, self.weighting.overwrite(), s.accumulation);
         let mut builder = rayon::ThreadPoolBuilder::new();
         if let Some(t) = s.threads {

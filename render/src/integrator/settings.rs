@@ -3,7 +3,7 @@
 
 use crate::aov::matcher::MatcherError;
 use crate::aov::plan::Plan;
-use crate::film::{Accumulation, Film};
+use crate::film::{Accumulation, Film, MAX_FILM_BYTES};
 
 /// Why a render could not run.
 #[derive(Debug, thiserror::Error)]
@@ -15,13 +15,21 @@ pub enum RenderError {
     /// The fast matcher refused the AOV set (only where no fallback is wanted).
     #[error("the fast matcher cannot compile this AOV set: {reason}")]
     Compile { reason: String },
-    /// Under `--dialect osl`, a scene label that is one of OSL's built-in labels.
-    #[error(
-        "{owner} `{label}` is a built-in OSL label: under --dialect osl scene labels are \
-         custom labels, and OSL's eater would not skip this one (so `L` or `R` would miss \
-         its vertices); rename it"
-    )]
-    OslBuiltinLabel { owner: String, label: String },
+    /// A scene label the AOVs' dialect cannot show (`why` is the dialect's reason).
+    #[error("{owner} `{label}` {why}")]
+    SceneLabel {
+        owner: String,
+        label: String,
+        why: &'static str,
+    },
+    /// The film would not fit in memory: refused rather than aborting on allocation.
+    #[error("{width}x{height} with {aovs} AOVs needs {:.1} GiB of film; at most {} GiB", *bytes as f64 / (1u64 << 30) as f64, MAX_FILM_BYTES >> 30)]
+    FilmTooLarge {
+        width: usize,
+        height: usize,
+        aovs: usize,
+        bytes: u128,
+    },
 }
 
 /// Which strategies estimate direct lighting (`converge` compares them).

@@ -4,13 +4,11 @@
 //! methods on it in files of their own.
 
 use lpe::renderman::{LobeCategory, LobeMap, VertexType};
-use lpe::DialectName;
 
 use super::settings::{Settings, USER_SIGNALS};
 use crate::aov::matcher::{AovMask, PathMatcher, RenderMatcher};
 use crate::aov::plan::Plan;
-use crate::aov::vertex::{SceneClassifier, SceneVertex};
-use crate::aov::AovList;
+use crate::aov::{AovList, SceneClassifier, SceneDialect, SceneVertex};
 use crate::camera::Camera;
 use crate::film::Weighting;
 use crate::material::Scattering;
@@ -57,10 +55,9 @@ impl<C: Copy> Vertices<C> {
     ) -> Self {
         let label = |l: &Option<String>| if labels { l.clone() } else { None };
         let camera = m.classify_scene(&SceneVertex::Camera);
-        // User lobes are RenderMan's: OSL has no pseudo paths (docs/language.md §18.12).
-        // Their vertices are RenderMan ones, whose class on an OSL set lpe leaves
-        // unspecified, so they are not even asked for.
-        let user_lobes = m.dialect() == DialectName::RenderMan;
+        // Pseudo paths exist only in a dialect with user lobes: in another their vertices
+        // would show as ordinary scattering, so they are not even asked for.
+        let user_lobes = M::Dialect::USER_LOBES;
         let mut scatter = Vec::new();
         let mut glow = Vec::new();
         let mut user = Vec::new();
@@ -90,7 +87,7 @@ impl<C: Copy> Vertices<C> {
             }));
             let pseudo = |sig: UserSignal| {
                 let ev = lobes.event(LobeCategory::User, sig.name());
-                // Only asked of RenderMan sets, which ignore the scattering.
+                // Only asked of dialects with user lobes, which show the event.
                 let s = m.step(
                     m.step(m.start(), camera),
                     m.classify_scene(&SceneVertex::Scatter {
@@ -153,7 +150,7 @@ pub struct Integrator<'a, M: RenderMatcher> {
 impl<'a, M: RenderMatcher> Integrator<'a, M> {
     pub fn new(
         scene: &'a Scene,
-        aovs: &AovList,
+        aovs: &AovList<M::Dialect>,
         matcher: &'a M,
         lobes: &LobeMap,
         settings: &'a Settings,
@@ -172,7 +169,7 @@ impl<'a, M: RenderMatcher> Integrator<'a, M> {
         Integrator {
             scene,
             matcher,
-            weighting: Weighting::new(aovs, scene.settings.clamp),
+            weighting: Weighting::new(aovs.flags(), scene.settings.clamp),
             dome: scene.dome(),
             vertices,
             plan,

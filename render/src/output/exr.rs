@@ -9,11 +9,13 @@ use std::io::Cursor;
 use std::path::Path;
 
 use super::error::OutputError;
+use lpe::Dialect;
+
 use crate::aov::AovList;
 use crate::film::Film;
 
 /// The EXR file as bytes: 32-bit float channels, ZIP-compressed (lossless).
-pub fn exr_bytes(film: &Film, aovs: &AovList) -> Result<Vec<u8>, OutputError> {
+pub fn exr_bytes<D: Dialect>(film: &Film, aovs: &AovList<D>) -> Result<Vec<u8>, OutputError> {
     let size = Vec2(film.width, film.height);
     let mut channels = Vec::new();
     for (layer, name) in layer_names(aovs).into_iter().enumerate() {
@@ -88,7 +90,7 @@ pub fn read_exr(path: &Path) -> Result<Vec<ExrLayer>, OutputError> {
 }
 
 /// Layer names in file order: `None` is beauty.
-pub(crate) fn layer_names(aovs: &AovList) -> Vec<Option<&str>> {
+pub(crate) fn layer_names<D: Dialect>(aovs: &AovList<D>) -> Vec<Option<&str>> {
     std::iter::once(None)
         .chain(aovs.aovs.iter().map(|a| Some(a.name.as_str())))
         .collect()

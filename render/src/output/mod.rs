@@ -6,6 +6,8 @@
 use image::RgbImage;
 use std::path::{Path, PathBuf};
 
+use lpe::Dialect;
+
 use crate::aov::AovList;
 use crate::film::Film;
 
@@ -44,10 +46,10 @@ pub fn atomic_write(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
 
 /// Writes the EXR, the PNG previews, the contact sheet and the report into `dir`;
 /// returns the files written.
-pub fn write_all(
+pub fn write_all<D: Dialect>(
     dir: &Path,
     film: &Film,
-    aovs: &AovList,
+    aovs: &AovList<D>,
     report: &mut Report,
 ) -> Result<Vec<PathBuf>, OutputError> {
     let mut files = Vec::new();

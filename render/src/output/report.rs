@@ -5,10 +5,12 @@ use serde::Serialize;
 
 use super::table::markdown;
 
+use lpe::Dialect;
+
 use crate::aov::AovList;
 use crate::integrator::{Render, Settings};
+use crate::invariant::Invariant;
 use crate::scene::Scene;
-use crate::verify::invariants::Invariant;
 
 /// Timing of a render.
 #[derive(Clone, Debug, Serialize)]
@@ -136,11 +138,11 @@ impl Report {
     /// The report of one render: `threads` is the worker count it ran with; the files,
     /// the contact sheet order and the total time are filled in when the outputs are
     /// written.
-    pub fn new(
+    pub fn new<D: Dialect>(
         scene: &Scene,
         settings: &Settings,
         threads: usize,
-        aovs: &AovList,
+        aovs: &AovList<D>,
         render: &Render,
         invariants: Vec<Invariant>,
     ) -> Report {
@@ -152,7 +154,7 @@ impl Report {
             seed: settings.seed,
             threads,
             matcher: crate::integrator::ENGINE.into(),
-            dialect: aovs.dialect.to_string(),
+            dialect: D::NAME.to_string(),
             timing: Timing {
                 render_seconds: render.seconds,
                 total_seconds: 0.0,

@@ -3,96 +3,23 @@
 //! closed form, determinism against a second render.
 
 use glam::DVec3;
-use serde::Serialize;
 
 use super::stats::{critical_z, mean_and_se, sidak};
-use crate::aov::{AovList, Partition};
+use lpe::Dialect;
+
+use crate::aov::{AovList, Partition, SceneDialect};
 use crate::film::Film;
 use crate::integrator::Render;
+use crate::invariant::Invariant;
 use crate::scene::furnace::{furnace_params, FURNACE_BOUNCES};
 use crate::scene::Scene;
-use lpe::DialectName;
-
-/// One checked property and its measured error.
-#[derive(Clone, Debug, Serialize)]
-pub struct Invariant {
-    pub name: String,
-    /// The measured error (its meaning is in `detail`).
-    pub measured: f64,
-    pub tolerance: f64,
-    /// `None`: not checked, or informational (e.g. a formal check of a set that need
-    /// not partition every path).
-    pub passed: Option<bool>,
-    pub detail: String,
-    /// Decided on the automata for every possible path (no measurement: `measured` and
-    /// `tolerance` mean nothing; `detail` says what was decided, with a witness path).
-    pub formal: bool,
-}
-
-impl Invariant {
-    fn new(
-        name: impl Into<String>,
-        measured: f64,
-        tolerance: f64,
-        detail: impl Into<String>,
-    ) -> Self {
-        Invariant {
-            name: name.into(),
-            measured,
-            tolerance,
-            passed: Some(measured <= tolerance),
-            detail: detail.into(),
-            formal: false,
-        }
-    }
-
-    /// The measurement as printed (`-` for a formal check).
-    pub fn measured_text(&self) -> String {
-        if self.formal {
-            "-".into()
-        } else {
-            format!("{:.3e}", self.measured)
-        }
-    }
-
-    /// The tolerance as printed (`-` for a formal check).
-    pub fn tolerance_text(&self) -> String {
-        if self.formal {
-            "-".into()
-        } else {
-            format!("{:.3e}", self.tolerance)
-        }
-    }
-
-    /// One console line: the outcome and name, then what was measured against what,
-    /// or for a formal check what was decided and its witness.
-    pub fn line(&self) -> String {
-        let tag = match self.passed {
-            Some(true) => "pass",
-            Some(false) => "FAIL",
-            None => "skip",
-        };
-        if self.formal {
-            format!("[{tag}] {} — {}", self.name, self.detail)
-        } else {
-            format!(
-                "[{tag}] {} — measured {:.3e} (tolerance {:.3e})",
-                self.name, self.measured, self.tolerance
-            )
-        }
-    }
-
-    pub fn failed(&self) -> bool {
-        self.passed == Some(false)
-    }
-}
 
 /// Relative tolerance of "sums to beauty" (the bound; f64 films reach ~1e-15).
 pub const PARTITION_TOLERANCE: f64 = 1e-5;
 
 /// Largest per-pixel, per-channel relative error of `sum(members) - beauty`, relative
 /// to `max(|beauty|, 1e-12)` (a pixel with zero beauty must have zero sum).
-pub fn partition(film: &Film, aovs: &AovList, p: &Partition) -> Invariant {
+pub fn partition<D: Dialect>(film: &Film, aovs: &AovList<D>, p: &Partition) -> Invariant {
     let mut worst = 0.0f64;
     let mut at = (0, 0);
     for y in 0..film.height {
@@ -125,7 +52,7 @@ pub fn partition(film: &Film, aovs: &AovList, p: &Partition) -> Invariant {
 }
 
 /// No NaN or infinity in any output layer.
-pub fn finite(film: &Film, aovs: &AovList) -> Invariant {
+pub fn finite<D: Dialect>(film: &Film, aovs: &AovList<D>) -> Invariant {
     let mut bad = Vec::new();
     for layer in 0..film.layers {
         let n = film.layer(layer).iter().filter(|v| !v.is_finite()).count();
@@ -152,17 +79,17 @@ pub fn finite(film: &Film, aovs: &AovList) -> Invariant {
     )
 }
 
-/// The formal partition check (`lpe::analysis::partition`, or `partition_osl` for an
-/// OSL list): decides from the automata, before any sample is traced, whether each
-/// declared partition (or, with none declared, the whole AOV set) partitions beauty's
-/// universe, with a shortest witness path if not. This is a statement about every
-/// possible path, not about this scene.
+/// The formal partition check (`lpe::analysis::partition`): decides from the automata,
+/// before any sample is traced, whether each declared partition (or, with none declared,
+/// the whole AOV set) partitions beauty's universe, with a shortest witness path if not.
+/// This is a statement about every possible path, not about this scene.
 ///
-/// The universe is `C.*[<L.>O]` for RenderMan and `lpe::osl::UNIVERSE`,
-/// `C<[RT][DGS]>*[LO]`, for OSL: every OSL path the renderer produces is in it (camera
-/// `C,~`; events `R`/`T` scattering `D`, `G` or `S`; an `L` or `O` emitter; custom
-/// labels never built-in ones), so a partition of it partitions the renderer's paths.
-pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
+/// The universe is the dialect's default one (`Dialect::DEFAULT_UNIVERSE`, nothing
+/// registered): `C.*[<L.>O]` for RenderMan and `C<[RT][DGS]>*[LO]` for OSL, where every
+/// OSL path the renderer produces lies (camera `C,~`; events `R`/`T` scattering `D`, `G`
+/// or `S`; an `L` or `O` emitter; custom labels never built-in ones), so a partition of
+/// it partitions the renderer's paths.
+pub fn formal_partition<D: SceneDialect>(aovs: &AovList<D>) -> Vec<Invariant> {
     // Requested AOVs with no declared partition need not partition beauty: say whether
     // they do, but only a declared (universal) partition that fails is a failure.
     let sets: Vec<(String, Vec<usize>, bool)> = if aovs.partitions.is_empty() {
@@ -174,40 +101,28 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
             .map(|p| (p.name.clone(), p.members.clone(), p.universal))
             .collect()
     };
-    let parser = lpe::renderman::Parser::default();
-    let universe = lpe::analysis::default_universe::<lpe::renderman::RenderMan>(&parser);
-    let registered = lpe::osl::Registered::none();
-    let osl_universe = lpe::analysis::default_universe::<lpe::osl::Osl>(&registered);
+    let registration = D::Registration::default();
+    let universe = lpe::analysis::default_universe::<D>(&registration);
+    let named = aovs.named();
     sets.into_iter()
         .map(|(name, members, universal)| {
             let names: Vec<&str> = members
                 .iter()
                 .map(|&i| aovs.aovs[i].name.as_str())
                 .collect();
-            let checked = match aovs.dialect {
-                DialectName::RenderMan => lpe::analysis::partition(
-                    &pick(aovs.named::<lpe::renderman::RenderMan>(), &members),
-                    &universe,
-                    &parser,
-                )
-                .map(|r| (universe.to_string(), failures(&r, &names))),
-                DialectName::Osl => lpe::analysis::partition(
-                    &pick(aovs.named::<lpe::osl::Osl>(), &members),
-                    &osl_universe,
-                    &registered,
-                )
-                .map(|r| {
-                    let u = lpe::osl::UNIVERSE.to_string();
-                    (u, failures(&r, &names))
-                }),
-            };
+            let picked: Vec<_> = members.iter().map(|&i| named[i].clone()).collect();
+            let checked = lpe::analysis::partition(&picked, &universe, &registration)
+                .map(|r| failures(&r, &names));
             let (passed, detail) = match checked {
-                Ok((u, why)) if why.is_empty() => (
+                Ok(why) if why.is_empty() => (
                     Some(true),
-                    format!("every path of {u} matches exactly one AOV"),
+                    format!(
+                        "every path of {} matches exactly one AOV",
+                        D::DEFAULT_UNIVERSE
+                    ),
                 ),
-                Ok((_, why)) if universal => (Some(false), why.join("; ")),
-                Ok((_, why)) => {
+                Ok(why) if universal => (Some(false), why.join("; ")),
+                Ok(why) => {
                     // Expected: e.g. the per-lobe set covers only the lobes this scene
                     // uses (the render-time sum checks that); report, do not fail.
                     let why = why.join("; ");
@@ -225,12 +140,6 @@ pub fn formal_partition(aovs: &AovList) -> Vec<Invariant> {
             }
         })
         .collect()
-}
-
-/// The members of a partition out of a list's `(name, expression)` pairs (a list is in
-/// one dialect, so its `named*` pairs are indexed like its AOVs).
-fn pick<T: Clone>(all: Vec<T>, members: &[usize]) -> Vec<T> {
-    members.iter().map(|&i| all[i].clone()).collect()
 }
 
 /// What keeps a partition check from being clean, with witnesses (empty: clean).
@@ -316,7 +225,7 @@ pub fn zero_mean_test(name: &str, values: &[f64], z_crit: f64, detail: &str) -> 
 pub const ALPHA: f64 = 1e-3;
 
 /// The invariants one render can check by itself.
-pub fn invariants(scene: &Scene, aovs: &AovList, render: &Render) -> Vec<Invariant> {
+pub fn invariants<D: Dialect>(scene: &Scene, aovs: &AovList<D>, render: &Render) -> Vec<Invariant> {
     let film = &render.film;
     let mut out: Vec<Invariant> = aovs
         .partitions

@@ -14,11 +14,12 @@ use crate::camera::Camera;
 use crate::integrator::Settings;
 pub use crate::scene::furnace::{furnace_params, FURNACE_BOUNCES};
 use crate::scene::Scene;
+use lpe::renderman::RenderMan;
 
 /// A scene with a reference value for every pixel of beauty and of each AOV.
 pub struct Known {
     pub scene: Scene,
-    pub aovs: AovList,
+    pub aovs: AovList<RenderMan>,
     pub width: usize,
     pub height: usize,
     /// `reference[layer][pixel]`, layer 0 beauty, `1 + i` AOV `i`, pixels row-major.
@@ -180,7 +181,7 @@ fn direct_known(
     reference: Vec<DVec3>,
     source: &str,
 ) -> Result<Known, VerifyError> {
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::<RenderMan>::new();
     aovs.push("direct", "C<RD>L", &Parser::default())?;
     Ok(Known {
         scene,
@@ -201,7 +202,7 @@ pub fn furnace(width: usize, height: usize, lobes: &LobeMap) -> Result<Known, Ve
     let (a, le) = furnace_params(&scene).ok_or_else(|| VerifyError::NotAFurnace {
         scene: scene.name.clone(),
     })?;
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::<RenderMan>::new();
     let mut reference = vec![vec![DVec3::splat(le / (1.0 - a)); width * height]];
     for k in 0..=CONVERGE_FURNACE_BOUNCES {
         aovs.push(
@@ -233,7 +234,7 @@ pub fn cornell(
 ) -> Result<Known, VerifyError> {
     let scene = Scene::load("cornell", lobes)?;
     let parser = Parser::default();
-    let aovs = AovList::basic::<lpe::renderman::RenderMan>(&parser)?;
+    let aovs = AovList::<RenderMan>::basic(&parser)?;
     const REF_SEED: u64 = 0x5EED_CAFE;
     let file = cache_dir.join(format!(
         "converge_ref_cornell_{width}x{height}_{ref_spp}spp_{REF_SEED:x}.bin"
@@ -299,7 +300,7 @@ pub const INTENSITIES: [(f64, [f32; 3]); 4] = [
 ];
 
 /// The plane lit by [`INTENSITIES`], with AOV `gK = C<RD><L.'gK'>` per light.
-pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList), VerifyError> {
+pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList<RenderMan>), VerifyError> {
     let text: Vec<String> = INTENSITIES
         .iter()
         .enumerate()
@@ -310,7 +311,7 @@ pub fn intensities_scene(lobes: &LobeMap) -> Result<(Scene, AovList), VerifyErro
         "intensities",
         lobes,
     )?;
-    let mut aovs = AovList::default();
+    let mut aovs = AovList::<RenderMan>::new();
     for k in 0..INTENSITIES.len() {
         aovs.push(
             &format!("g{k}"),

@@ -1,7 +1,7 @@
 //! The matchers `converge` times ([`MatcherRow`]), apart from `converge` so that the
 //! known-answer scenes ([`super::known`]), which `converge` renders, can render with one.
 
-use lpe::renderman::LobeMap;
+use lpe::renderman::{LobeMap, RenderMan};
 use serde::Serialize;
 
 #[cfg(feature = "engines")]
@@ -62,7 +62,7 @@ impl MatcherRow {
     pub fn render(
         self,
         scene: &Scene,
-        aovs: &AovList,
+        aovs: &AovList<RenderMan>,
         lobes: &LobeMap,
         settings: &Settings,
     ) -> Result<Render, RenderError> {
@@ -72,11 +72,9 @@ impl MatcherRow {
                 dfa_budget,
                 ..lpe::Options::default()
             };
-            lpe::AovSet::compile_with(&aovs.named::<lpe::renderman::RenderMan>(), &opts).map_err(
-                |e| RenderError::Compile {
-                    reason: e.to_string(),
-                },
-            )
+            lpe::AovSet::compile_with(&aovs.named(), &opts).map_err(|e| RenderError::Compile {
+                reason: e.to_string(),
+            })
         };
         use crate::integrator::render_with;
         let quiet = &mut |_: &crate::aov::plan::Plan| {};
@@ -88,16 +86,18 @@ impl MatcherRow {
             MatcherRow::Nfa => render_with(&fast(0)?, scene, aovs, lobes, settings, quiet),
             #[cfg(feature = "engines")]
             MatcherRow::Oracle => {
-                let m =
-                    WholePathMatcher::direct(CheckEngine::new(&lpe_engines::regex::LAZY, &lpes)?);
+                let m = WholePathMatcher::<RenderMan, _>::direct(CheckEngine::new(
+                    &lpe_engines::regex::LAZY,
+                    &lpes,
+                )?);
                 render_with(&m, scene, aovs, lobes, settings, quiet)
             }
             MatcherRow::ReferenceMemo => {
-                let m = WholePathMatcher::memoized(Reference::new(&lpes)?);
+                let m = WholePathMatcher::<RenderMan, _>::memoized(Reference::new(&lpes)?);
                 render_with(&m, scene, aovs, lobes, settings, quiet)
             }
             MatcherRow::Reference => {
-                let m = WholePathMatcher::direct(Reference::new(&lpes)?);
+                let m = WholePathMatcher::<RenderMan, _>::direct(Reference::new(&lpes)?);
                 render_with(&m, scene, aovs, lobes, settings, quiet)
             }
         }

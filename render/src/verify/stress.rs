@@ -16,6 +16,7 @@ use crate::integrator::{Render, Settings, Technique};
 use crate::material::Lobe;
 use crate::rng::Rng;
 use crate::scene::Scene;
+use lpe::renderman::RenderMan;
 
 /// One measured property.
 #[derive(Clone, Debug, serde::Serialize)]
@@ -55,7 +56,7 @@ pub fn mixed_partition(
     lobes: &LobeMap,
 ) -> Result<(Vec<(Accumulation, f64)>, DVec3), VerifyError> {
     let scene = Scene::from_toml(MIXED, "mixed", lobes)?;
-    let aovs = AovList::basic::<lpe::renderman::RenderMan>(&Parser::default())?;
+    let aovs = AovList::<RenderMan>::basic(&Parser::default())?;
     let basic = &aovs.partitions[0];
     let render = |accumulation| {
         let settings = Settings {
@@ -120,7 +121,7 @@ pub fn ggx_furnace(alpha: f32, cos: f32, n: usize) -> (f64, f64, usize) {
     (m, se, bad)
 }
 
-fn render(scene: &Scene, aovs: &AovList, s: &Settings) -> Result<Render, VerifyError> {
+fn render(scene: &Scene, aovs: &AovList<RenderMan>, s: &Settings) -> Result<Render, VerifyError> {
     Ok(crate::integrator::render(
         scene,
         aovs,
@@ -181,7 +182,7 @@ pub fn run(quick: bool) -> Result<Vec<Row>, VerifyError> {
     }
 
     let scene = Scene::from_toml(MIS_EXTREMES, "mis-extremes", &lobes)?;
-    let aovs = AovList::defaults(&scene, &Parser::default())?;
+    let aovs = AovList::<RenderMan>::defaults(&scene, &Parser::default())?;
     for t in [Technique::Mis, Technique::BsdfOnly, Technique::LightOnly] {
         let r = render(
             &scene,

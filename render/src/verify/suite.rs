@@ -1,13 +1,13 @@
 //! `lpe-render check`: every invariant on small renders of the built-in scenes.
 
-use super::VerifyError;
-use lpe::renderman::Parser;
-use lpe::DialectName;
+use lpe::renderman::{Parser, RenderMan};
 
-use super::invariants::{self as check, invariants, Invariant, ALPHA};
+use super::invariants::{self as check, invariants, ALPHA};
 use super::stats::critical_z;
-use crate::aov::AovList;
+use super::VerifyError;
+use crate::aov::{AovList, SceneDialect};
 use crate::integrator::{render, Render, Settings, Technique};
+use crate::invariant::Invariant;
 use crate::scene::Scene;
 
 /// Settings for the small renders of the check suite.
@@ -22,26 +22,19 @@ fn small(width: usize, spp: u32, threads: Option<usize>) -> Settings {
     }
 }
 
-/// `lpe-render check`: every invariant on small renders of the built-in scenes.
-pub fn check_suite(
-    threads: Option<usize>,
-    log: &mut dyn FnMut(&str),
-) -> Result<Vec<Invariant>, VerifyError> {
-    check_suite_in(DialectName::RenderMan, threads, log)
-}
-
-/// `lpe-render check --dialect D`. RenderMan: the whole suite. OSL: what depends on the
-/// dialect: the OSL basic set's sums to beauty (and the furnace's closed form) on the
-/// built-in scenes, the OSL and RenderMan basic sets' same-named AOVs bit-identical, and
-/// the formal partition check over the OSL universe. The estimator, prefix and
-/// determinism checks are the RenderMan suite's: the dialect changes no sample.
-pub fn check_suite_in(
-    dialect: DialectName,
+/// `lpe-render check --dialect D`. What depends on the dialect: its default AOVs' sums to
+/// beauty (and the furnace's closed form) on the built-in scenes, and the formal
+/// partition check over its universe. In the renderer's own dialect
+/// ([`SceneDialect::NATIVE`], RenderMan's) the estimator, prefix and determinism checks
+/// follow, written in it; another dialect's basic set is instead checked against the
+/// RenderMan basic AOVs of the same name, bit for bit: the dialect changes no sample.
+pub fn check_suite<D: SceneDialect>(
     threads: Option<usize>,
     log: &mut dyn FnMut(&str),
 ) -> Result<Vec<Invariant>, VerifyError> {
     let cfg = lpe::renderman::Config::default();
     let parser = Parser::new(cfg.limits.clone(), cfg.macros.clone());
+    let registration = D::Registration::default();
     let load = |n: &str| Scene::load(n, &cfg.lobes);
     let mut out = Vec::new();
 
@@ -52,7 +45,7 @@ pub fn check_suite_in(
         ("furnace", 32, 64),
     ] {
         let scene = load(name)?;
-        let aovs = AovList::for_render_in(dialect, &scene, &parser)?;
+        let aovs = AovList::<D>::for_render(&scene, &registration)?;
         let r = render(&scene, &aovs, &cfg.lobes, &small(width, spp, threads))?;
         log(&format!(
             "{name}: {width}x{width}, {spp} spp, {:.2}s",
@@ -63,26 +56,29 @@ pub fn check_suite_in(
             i
         }));
     }
-    if dialect == DialectName::Osl {
+    if !D::NATIVE {
         let scene = load("still-life")?;
-        let osl = AovList::basic::<lpe::osl::Osl>(&parser)?;
-        let renderman = AovList::basic::<lpe::renderman::RenderMan>(&parser)?;
-        let a = render(&scene, &osl, &cfg.lobes, &small(24, 4, threads))?;
-        let b = render(&scene, &renderman, &cfg.lobes, &small(24, 4, threads))?;
+        let view = AovList::<D>::basic(&registration)?;
+        let native = AovList::<RenderMan>::basic(&parser)?;
+        let a = render(&scene, &view, &cfg.lobes, &small(24, 4, threads))?;
+        let b = render(&scene, &native, &cfg.lobes, &small(24, 4, threads))?;
         out.push(identical(
-            "still-life: OSL basic AOVs bit-identical with RenderMan's of the same name",
+            &format!(
+                "still-life: {} bit-identical with RenderMan's of the same name",
+                D::BASIC_PARTITION
+            ),
             &a,
             &b,
-            &pairs_all(&osl),
+            &pairs_all(view.aovs.len()),
         ));
-        out.extend(check::formal_partition(&osl));
+        out.extend(check::formal_partition(&view));
         return Ok(out);
     }
 
     // shadows = unoccluded - occluded, per pixel in expectation.
     {
         let scene = load("still-life")?;
-        let mut aovs = AovList::default();
+        let mut aovs = AovList::<RenderMan>::new();
         let u = aovs.push("unocc", "unoccluded;C<RD>L", &parser)?;
         let d = aovs.push("occ", "C<RD>L", &parser)?;
         let s = aovs.push("shadow", "shadows;C<RD>L", &parser)?;
@@ -114,7 +110,7 @@ pub fn check_suite_in(
         ("still-life", Technique::Mis, Technique::LightOnly),
     ] {
         let scene = load(name)?;
-        let mut aovs = AovList::default();
+        let mut aovs = AovList::<RenderMan>::new();
         aovs.push("direct", "C<RD>L", &parser)?;
         let settings = |technique, seed| Settings {
             technique,
@@ -143,14 +139,14 @@ pub fn check_suite_in(
     // 3: determinism across threads, AOV sets and the effects plan.
     {
         let scene = load("cornell")?;
-        let aovs = AovList::for_render(&scene, &parser)?;
+        let aovs = AovList::<RenderMan>::for_render(&scene, &parser)?;
         let one = render(&scene, &aovs, &cfg.lobes, &small(24, 4, Some(1)))?;
         let two = render(&scene, &aovs, &cfg.lobes, &small(24, 4, Some(2)))?;
         out.push(identical(
             "cornell: 1 vs 2 threads, all layers bit-identical",
             &one,
             &two,
-            &pairs_all(&aovs),
+            &pairs_all(aovs.aovs.len()),
         ));
         let (a, b) = (
             crate::output::exr_bytes(&one.film, &aovs)?,
@@ -167,8 +163,8 @@ pub fn check_suite_in(
     }
     {
         let scene = load("still-life")?;
-        let full = AovList::for_render(&scene, &parser)?;
-        let mut few = AovList::default();
+        let full = AovList::<RenderMan>::for_render(&scene, &parser)?;
+        let mut few = AovList::<RenderMan>::new();
         for name in ["indirectDiffuse", "transmissive", "emissive"] {
             few.push(name, &format!("lpe:{name}"), &parser)?;
         }
@@ -196,20 +192,21 @@ pub fn check_suite_in(
             "still-life: all layers bit-identical with the effects plan vs --all-effects",
             &a,
             &c,
-            &pairs_all(&full),
+            &pairs_all(full.aovs.len()),
         ));
     }
 
     // 5: the formal partition check: every possible path, decided on the automata.
     let scene = load("cornell")?;
-    out.extend(check::formal_partition(&AovList::for_render(
+    out.extend(check::formal_partition(&AovList::<RenderMan>::for_render(
         &scene, &parser,
     )?));
     Ok(out)
 }
 
-fn pairs_all(aovs: &AovList) -> Vec<(usize, usize)> {
-    (0..=aovs.aovs.len()).map(|i| (i, i)).collect()
+/// Beauty and each of `aovs` AOVs, paired with the same layer of another film.
+fn pairs_all(aovs: usize) -> Vec<(usize, usize)> {
+    (0..=aovs).map(|i| (i, i)).collect()
 }
 
 /// Counts layer pairs that differ in any bit.

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use lpe::renderman::{Config, Parser};
-use lpe_render::aov::AovList;
+use lpe_render::aov::{AovList, SceneDialect};
 use lpe_render::integrator::{self, Render, Settings};
 use lpe_render::scene::Scene;
 
@@ -33,7 +33,7 @@ pub fn small(w: usize, spp: u32, seed: u64) -> Settings {
 }
 
 /// Renders `s` with `aovs` and the default lobe map.
-pub fn render(s: &Scene, aovs: &AovList, settings: &Settings) -> Render {
+pub fn render<D: SceneDialect>(s: &Scene, aovs: &AovList<D>, settings: &Settings) -> Render {
     integrator::render(s, aovs, &Config::default().lobes, settings).unwrap()
 }
 

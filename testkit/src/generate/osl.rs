@@ -1,17 +1,20 @@
-//! Random OSL expressions, registrations and paths (features `arbitrary` or `proptest`).
+//! Random OSL expressions, registrations and paths aimed at them.
 //!
-//! The same approach as the RenderMan generators one level up: expressions are built as
-//! expanded trees ([`lpe::osl::Expr`]) that keep the parser's invariants (two slot
-//! patterns and up to a few custom items per vertex pattern, an eater excluding the
-//! registration's basic labels exactly when there are fewer than five custom items), and
-//! paths are built **from** an expression (a walk choosing symbols each slot accepts and
-//! sometimes extra labels for the eater), then mutated into near misses, or drawn as
-//! noise. Paths use the expressions' labels often, and also NONE, `_`, registered labels,
-//! labels with a space and one label ([`STRANGER`]) no expression mentions.
+//! The same approach as the RenderMan generators beside it ([`super::renderman`]):
+//! expressions are built as expanded trees ([`lpe::osl::Expr`]) that keep the parser's
+//! invariants (two slot patterns and up to a few custom items per vertex pattern, an
+//! eater excluding the registration's basic labels exactly when there are fewer than
+//! five custom items), and paths are built **from** an expression (a walk choosing
+//! symbols each slot accepts and sometimes extra labels for the eater), then mutated into
+//! near misses, or drawn as noise. Paths use the expressions' labels often, and also
+//! NONE, `_`, registered labels, labels with a space and one label ([`STRANGER`]) no
+//! expression mentions.
 
-use super::Choices;
 use lpe::osl::{Expr, Lpe, Path, Registered, Symbol, SymbolPattern, Vertex, VertexPattern};
 use lpe::renderman::ast::Repetition;
+
+use super::choices::Choices;
+use super::set_algebra::algebra_over;
 
 /// A path label no generated expression mentions.
 pub const STRANGER: &str = "zz";
@@ -228,7 +231,7 @@ pub fn expr(c: &mut impl Choices, reg: &Registered, cfg: &Config) -> Expr {
 /// expressions instead (when [`Config::set_algebra`]).
 pub fn lpe(c: &mut impl Choices, reg: &Registered, cfg: &Config) -> Lpe {
     if c.chance(8) && cfg.set_algebra {
-        return Lpe::from_algebra(super::algebra_over(c, &mut |c| aov_shaped(c, reg, cfg)));
+        return Lpe::from_algebra(algebra_over(c, &mut |c| aov_shaped(c, reg, cfg)));
     }
     Lpe::new(aov_shaped(c, reg, cfg))
 }

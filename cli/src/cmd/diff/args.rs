@@ -1,5 +1,5 @@
 //! The arguments of `lpe-check diff`, apart from the command so that `diff --external`
-//! ([`crate::cmd::external`]) reads them without importing the command that calls it.
+//! ([`super::external`]) reads them without importing the command that calls it.
 
 use lpe_engines::differential::Run;
 

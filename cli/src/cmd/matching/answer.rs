@@ -3,12 +3,15 @@
 //! the dialects' files ([`super::renderman`], [`super::osl`]) read it without importing
 //! the command that dispatches to them.
 
+use std::collections::HashMap;
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
+use std::time::{Duration, Instant};
 
-use lpe_engines::{Engine, EngineDialect};
+use lpe_engines::{Engine, EngineDialect, Matcher};
 
 use crate::input::{bad_input, DialectArgs};
+use crate::pipe::write_failed;
 
 /// Arguments of `lpe-check match`.
 #[derive(clap::Args, Debug)]
@@ -63,34 +66,112 @@ impl std::fmt::Display for Verdict {
     }
 }
 
-/// Runs every engine on one expression, parsed under `registration`, and one path. An
-/// engine that cannot build the expression is reported but does not count as
-/// disagreeing.
+/// One expression compiled once by every selected engine (or each engine's reason it
+/// could not), asked about any number of paths.
+pub struct Compiled<'e, D: EngineDialect> {
+    engines: Vec<(&'static str, Built<'e, D>)>,
+}
+
+/// One engine's matcher for an expression, or why it could not build one.
+type Built<'e, D> = Result<Box<dyn Matcher<D> + 'e>, String>;
+
+impl<'e, D: EngineDialect> Compiled<'e, D> {
+    /// Compiles `lpe`, parsed under `registration`, with each of `engines`.
+    pub fn new(
+        engines: &[&'e dyn Engine<D>],
+        registration: &D::Registration,
+        lpe: &D::Lpe,
+    ) -> Self {
+        let engines = engines
+            .iter()
+            .map(|e| {
+                let built = e
+                    .compile(std::slice::from_ref(lpe), registration)
+                    .map_err(|why| format!("skip({why})"));
+                (e.name(), built)
+            })
+            .collect();
+        Compiled { engines }
+    }
+
+    /// Every engine's answer on `path`. An engine that could not build the expression
+    /// is reported but does not count as disagreeing.
+    pub fn verdict(&self, path: &D::Path) -> Verdict {
+        let mut answers = Vec::new();
+        let mut skips = Vec::new();
+        for (name, built) in &self.engines {
+            match built {
+                Ok(m) => answers.push((*name, m.which(path).contains(0))),
+                Err(why) => skips.push((*name, why.clone())),
+            }
+        }
+        let shown = |b: bool| if b { "match" } else { "no-match" }.to_string();
+        match answers.first() {
+            None => Verdict::Skipped(skips),
+            Some(&(_, first)) if answers.iter().all(|(_, a)| *a == first) => {
+                if first {
+                    Verdict::Match
+                } else {
+                    Verdict::NoMatch
+                }
+            }
+            Some(_) => Verdict::Disagree(answers.into_iter().map(|(e, a)| (e, shown(a))).collect()),
+        }
+    }
+}
+
+/// Runs every engine on one expression, parsed under `registration`, and one path.
 pub fn verdict<D: EngineDialect>(
     engines: &[&dyn Engine<D>],
     registration: &D::Registration,
     lpe: &D::Lpe,
     path: &D::Path,
 ) -> Verdict {
-    let mut answers = Vec::new();
-    let mut skips = Vec::new();
-    for e in engines {
-        match e.compile(std::slice::from_ref(lpe), registration) {
-            Ok(m) => answers.push((e.name(), m.which(path).contains(0))),
-            Err(why) => skips.push((e.name(), format!("skip({why})"))),
+    Compiled::new(engines, registration, lpe).verdict(path)
+}
+
+/// Most distinct expressions `match --batch` keeps compiled at once. Past it the cache
+/// starts afresh, so memory stays bounded on an input of millions of distinct
+/// expressions, while a batch that repeats a few expressions (the usual shape: many
+/// paths per AOV) compiles each of them once.
+pub const MAX_CACHED_EXPRESSIONS: usize = 1024;
+
+/// What `match --batch` has compiled so far, by the columns of a line that decide the
+/// compiled expression (the expression, and for OSL the registration): the expression
+/// compiled by every engine, or the line's error message when it does not parse.
+pub struct BatchCache<'e, D: EngineDialect> {
+    compiled: HashMap<String, Result<Compiled<'e, D>, String>>,
+}
+
+impl<'e, D: EngineDialect> Default for BatchCache<'e, D> {
+    fn default() -> Self {
+        BatchCache {
+            compiled: HashMap::new(),
         }
     }
-    let shown = |b: bool| if b { "match" } else { "no-match" }.to_string();
-    match answers.first() {
-        None => Verdict::Skipped(skips),
-        Some(&(_, first)) if answers.iter().all(|(_, a)| *a == first) => {
-            if first {
-                Verdict::Match
-            } else {
-                Verdict::NoMatch
-            }
+}
+
+impl<'e, D: EngineDialect> BatchCache<'e, D> {
+    /// The entry for `key`, made by `compile` the first time it is asked for.
+    pub fn get_or_compile(
+        &mut self,
+        key: &str,
+        compile: impl FnOnce() -> Result<Compiled<'e, D>, String>,
+    ) -> &Result<Compiled<'e, D>, String> {
+        if !self.compiled.contains_key(key) && self.compiled.len() >= MAX_CACHED_EXPRESSIONS {
+            self.compiled.clear();
         }
-        Some(_) => Verdict::Disagree(answers.into_iter().map(|(e, a)| (e, shown(a))).collect()),
+        self.compiled.entry(key.to_string()).or_insert_with(compile)
+    }
+
+    /// How many expressions are compiled now.
+    pub fn len(&self) -> usize {
+        self.compiled.len()
+    }
+
+    /// Whether nothing is compiled yet.
+    pub fn is_empty(&self) -> bool {
+        self.compiled.is_empty()
     }
 }
 
@@ -120,7 +201,9 @@ pub fn batch(mut answer: impl FnMut(&str) -> LineOutcome) -> ExitCode {
     let mut failed = false;
     let stdout = std::io::stdout();
     let mut out = std::io::BufWriter::new(stdout.lock());
+    let mut progress = Progress::new();
     for line in std::io::stdin().lock().lines() {
+        progress.line();
         let line = match line {
             Ok(l) => l,
             Err(e) => return bad_input(format!("error: reading stdin: {e}")),
@@ -137,11 +220,40 @@ pub fn batch(mut answer: impl FnMut(&str) -> LineOutcome) -> ExitCode {
             );
             v.to_string()
         };
-        if writeln!(out, "{shown}").is_err() {
-            return ExitCode::from(2);
+        if let Err(e) = writeln!(out, "{shown}") {
+            return write_failed(&e);
         }
     }
     finish(out, disagreed, failed)
+}
+
+/// A line on stderr every [`PROGRESS_EVERY`] while a batch runs, so that a long run
+/// shows it is alive and how far it got; a short run prints none.
+struct Progress {
+    lines: u64,
+    next: Instant,
+}
+
+/// How often a long `match --batch` run reports its progress on stderr.
+pub const PROGRESS_EVERY: Duration = Duration::from_secs(5);
+
+impl Progress {
+    fn new() -> Self {
+        Progress {
+            lines: 0,
+            next: Instant::now() + PROGRESS_EVERY,
+        }
+    }
+
+    /// Counts one input line, reporting when the interval has passed (the clock is read
+    /// once every 4 096 lines: reading it per line would cost more than a cached answer).
+    fn line(&mut self) {
+        self.lines += 1;
+        if self.lines.is_multiple_of(4096) && Instant::now() >= self.next {
+            eprintln!("match --batch: {} lines answered", self.lines);
+            self.next = Instant::now() + PROGRESS_EVERY;
+        }
+    }
 }
 
 /// Prints `answer`'s verdict for each path text: exit 2 at the first path that does not
@@ -171,21 +283,133 @@ pub fn answer_paths(
         };
         disagreed |= matches!(v, Verdict::Disagree(_));
         failed |= matches!(v, Verdict::Skipped(_));
-        if writeln!(out, "{v}").is_err() {
-            return ExitCode::from(2);
+        if let Err(e) = writeln!(out, "{v}") {
+            return write_failed(&e);
         }
     }
     finish(out, disagreed, failed)
 }
 
-/// Exit 3 on a disagreement, else 2 on an error, else 0.
+/// Exit 3 on a disagreement, else 2 on an error, else 0; the output's last buffered
+/// write failing decides first ([`write_failed`]).
 fn finish(mut out: impl Write, disagreed: bool, failed: bool) -> ExitCode {
-    let _ = out.flush();
+    if let Err(e) = out.flush() {
+        return write_failed(&e);
+    }
     if disagreed {
         ExitCode::from(3)
     } else if failed {
         ExitCode::from(2)
     } else {
         ExitCode::SUCCESS
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The batch cache, with an engine that counts its compiles. Checked against planted
+    //! faults: a cache that never stores (every line compiles: the count test fails), a
+    //! key without OSL's registration column (the second registration answers as the
+    //! first: the OSL test fails), and a cache that never clears (the bound test fails).
+
+    use std::sync::atomic::{AtomicUsize, Ordering};
+
+    use lpe::osl::Osl;
+    use lpe::renderman::{Parser, RenderMan};
+    use lpe_engines::{Engine, EngineDialect, EngineError, Matcher};
+
+    use super::{BatchCache, Compiled, MAX_CACHED_EXPRESSIONS};
+    use crate::cmd::matching::MatchDialect;
+
+    /// The `fast` engine, counting how often it is asked to compile.
+    struct Counting(AtomicUsize);
+
+    impl<D: EngineDialect> Engine<D> for Counting {
+        fn name(&self) -> &'static str {
+            "counting"
+        }
+        fn compile(
+            &self,
+            exprs: &[D::Lpe],
+            registration: &D::Registration,
+        ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+            self.0.fetch_add(1, Ordering::Relaxed);
+            lpe_engines::by_name::<D>("fast")
+                .expect("the fast engine")
+                .compile(exprs, registration)
+        }
+    }
+
+    fn answers<D: MatchDialect>(
+        engine: &Counting,
+        registration: &D::Registration,
+        lines: &[&str],
+    ) -> Vec<String> {
+        let engines: Vec<&dyn Engine<D>> = vec![engine];
+        let mut cache = BatchCache::default();
+        lines
+            .iter()
+            .map(|l| D::batch_line(&engines, registration, l, &mut cache).to_string())
+            .collect()
+    }
+
+    #[test]
+    fn each_distinct_expression_compiles_once() {
+        let engine = Counting(AtomicUsize::new(0));
+        let lines = [
+            "C<RD>L\tC RD L",
+            "C<RD>L\tC RS L",
+            "C.*L\tC RS RD L",
+            "C<RD>L\tC TD L",
+            "C.*L\tC L",
+            "C(\tC L",
+            "C(\tC RD L",
+        ];
+        let got = answers::<RenderMan>(&engine, &Parser::default(), &lines);
+        assert_eq!(
+            got[..5],
+            ["match", "no-match", "match", "no-match", "match"]
+        );
+        assert!(got[5].starts_with("error: expression:"), "{got:?}");
+        assert_eq!(
+            got[5], got[6],
+            "a cached parse error answers as the first time"
+        );
+        assert_eq!(
+            engine.0.load(Ordering::Relaxed),
+            2,
+            "two distinct expressions"
+        );
+    }
+
+    #[test]
+    fn osl_lines_are_cached_by_expression_and_registration() {
+        let engine = Counting(AtomicUsize::new(0));
+        // A registered `U` is a basic label, which the eater no longer skips: the same
+        // expression text reads differently under the two registrations.
+        let lines = [
+            "CRL\tevents=U\tC,_ R,D,U L,_",
+            "CRL\t-\tC,_ R,D,U L,_",
+            "CRL\tevents=U\tC,_ R,D,U L,_",
+        ];
+        let got = answers::<Osl>(&engine, &Default::default(), &lines);
+        assert_eq!(got, ["no-match", "match", "no-match"]);
+        assert_eq!(engine.0.load(Ordering::Relaxed), 2);
+    }
+
+    #[test]
+    fn the_cache_holds_at_most_its_bound() {
+        let mut cache: BatchCache<'_, RenderMan> = BatchCache::default();
+        for i in 0..=MAX_CACHED_EXPRESSIONS {
+            cache.get_or_compile(&format!("C.{{{i}}}L"), || {
+                Ok(Compiled {
+                    engines: Vec::new(),
+                })
+            });
+            assert!(cache.len() <= MAX_CACHED_EXPRESSIONS);
+        }
+        assert_eq!(cache.len(), 1, "full, then started afresh");
+        let empty = cache.get_or_compile("x", || Err("never".into()));
+        assert!(matches!(empty, Err(e) if e == "never"));
     }
 }

@@ -4,7 +4,7 @@
 
 use lpe_engines::{Engine, EngineDialect};
 
-use super::answer::{Args, LineOutcome};
+use super::answer::{Args, BatchCache, LineOutcome};
 use crate::dialect::CliDialect;
 
 /// A dialect as `lpe-check match` reads its arguments and batch lines.
@@ -31,10 +31,12 @@ pub trait MatchDialect: EngineDialect + CliDialect {
         Ok(lpe)
     }
 
-    /// Answers one batch line (not blank, not a comment).
-    fn batch_line(
-        engines: &[&dyn Engine<Self>],
+    /// Answers one batch line (not blank, not a comment), compiling its expression only
+    /// if `cache` does not hold it yet.
+    fn batch_line<'e>(
+        engines: &[&'e dyn Engine<Self>],
         registration: &Self::Registration,
         line: &str,
+        cache: &mut BatchCache<'e, Self>,
     ) -> LineOutcome;
 }

@@ -13,7 +13,7 @@
 use lpe::osl::{self, Osl, Registered};
 use lpe_engines::Engine;
 
-use super::answer::{verdict, Args, LineOutcome, Verdict};
+use super::answer::{Args, BatchCache, Compiled, LineOutcome, Verdict};
 use super::dialect::MatchDialect;
 
 impl MatchDialect for Osl {
@@ -34,14 +34,23 @@ impl MatchDialect for Osl {
         Ok(registered)
     }
 
-    fn batch_line(engines: &[&dyn Engine<Osl>], _: &Registered, line: &str) -> LineOutcome {
-        batch_line(engines, line)
+    fn batch_line<'e>(
+        engines: &[&'e dyn Engine<Osl>],
+        _: &Registered,
+        line: &str,
+        cache: &mut BatchCache<'e, Osl>,
+    ) -> LineOutcome {
+        batch_line(engines, line, cache)
     }
 }
 
 /// Answers one `EXPR<TAB>REGISTERED<TAB>PATH[<TAB>MATCH|NOMATCH]` line, under the
-/// line's own registration.
-fn batch_line(engines: &[&dyn Engine<Osl>], line: &str) -> LineOutcome {
+/// line's own registration; the first two columns are the cache's key.
+fn batch_line<'e>(
+    engines: &[&'e dyn Engine<Osl>],
+    line: &str,
+    cache: &mut BatchCache<'e, Osl>,
+) -> LineOutcome {
     let cols: Vec<&str> = line.split('\t').collect();
     let (expr, reg, path, expected) = match cols[..] {
         [e, r, p] => (e, r, p, None),
@@ -61,19 +70,20 @@ fn batch_line(engines: &[&dyn Engine<Osl>], line: &str) -> LineOutcome {
             return LineOutcome::Error(format!("expected answer `{other}`: write MATCH or NOMATCH"))
         }
     };
-    let registered: Registered = match reg.parse() {
-        Ok(r) => r,
-        Err(e) => return LineOutcome::Error(format!("registered: {e}")),
-    };
-    let lpe = match osl::parse(expr, &registered) {
-        Ok(l) => l,
-        Err(e) => return LineOutcome::Error(format!("expression: {e}")),
+    let compiled = cache.get_or_compile(&format!("{expr}\t{reg}"), || {
+        let registered: Registered = reg.parse().map_err(|e| format!("registered: {e}"))?;
+        let lpe = osl::parse(expr, &registered).map_err(|e| format!("expression: {e}"))?;
+        Ok(Compiled::new(engines, &registered, &lpe))
+    });
+    let compiled = match compiled {
+        Ok(c) => c,
+        Err(e) => return LineOutcome::Error(e.clone()),
     };
     let path = match path.parse::<osl::Path>() {
         Ok(p) => p,
         Err(e) => return LineOutcome::Error(format!("path: {e}")),
     };
-    let v = verdict(engines, &registered, &lpe, &path);
+    let v = compiled.verdict(&path);
     LineOutcome::Ran(match (expected, &v) {
         (Some(want), Verdict::Match | Verdict::NoMatch) if want != (v == Verdict::Match) => {
             let shown = |b: bool| if b { "match" } else { "no-match" }.to_string();

@@ -4,23 +4,34 @@
 use lpe::renderman::{Parser, Path, RenderMan};
 use lpe_engines::Engine;
 
-use super::answer::{verdict, LineOutcome};
+use super::answer::{BatchCache, Compiled, LineOutcome};
 use super::dialect::MatchDialect;
 
 impl MatchDialect for RenderMan {
     const EXAMPLE_PATH: &'static str = "C RD L";
 
-    /// Answers one `EXPR<TAB>PATH` line.
-    fn batch_line(engines: &[&dyn Engine<RenderMan>], parser: &Parser, line: &str) -> LineOutcome {
+    /// Answers one `EXPR<TAB>PATH` line; the expression column is the cache's key.
+    fn batch_line<'e>(
+        engines: &[&'e dyn Engine<RenderMan>],
+        parser: &Parser,
+        line: &str,
+        cache: &mut BatchCache<'e, RenderMan>,
+    ) -> LineOutcome {
         let Some((expr, path)) = line.split_once('\t') else {
             return LineOutcome::Error("expected `EXPR<TAB>PATH`, found no tab".into());
         };
-        let lpe = match parser.parse(expr) {
-            Ok(l) => l,
-            Err(e) => return LineOutcome::Error(format!("expression: {}", e.one_line())),
+        let compiled = cache.get_or_compile(expr, || {
+            let lpe = parser
+                .parse(expr)
+                .map_err(|e| format!("expression: {}", e.one_line()))?;
+            Ok(Compiled::new(engines, parser, &lpe))
+        });
+        let compiled = match compiled {
+            Ok(c) => c,
+            Err(e) => return LineOutcome::Error(e.clone()),
         };
         match path.parse::<Path>() {
-            Ok(p) => LineOutcome::Ran(verdict(engines, parser, &lpe, &p)),
+            Ok(p) => LineOutcome::Ran(compiled.verdict(&p)),
             Err(e) => LineOutcome::Error(format!("path: {e}")),
         }
     }

@@ -24,7 +24,7 @@ pub trait FrontEnds: Generate {
     fn suite_registration(case: &lpe_testkit::suite::Loaded) -> Option<Self::Registration>;
 
     /// The fuzz targets whose corpora hold this dialect's expression text (a first line
-    /// may be a registration, [`crate::EngineDialect::registration_line`]).
+    /// may be a registration, [`crate::WireDialect::registration_line`]).
     const FUZZ_TARGETS: &'static [&'static str];
 
     /// The hand-written constructs: (registration, text) pairs exercising every

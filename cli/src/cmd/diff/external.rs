@@ -5,15 +5,18 @@
 //! Exit 0: agreement; 3: any finding; 2: bad input (the command cannot start, refuses
 //! the hello, e.g. for a dialect it does not speak; a bad argument). `--dialect osl`
 //! generates OSL cases, each with its own registration, sent with every `compile`.
-//! `--suite DIR` replays the conformance suite instead ([`super::external_suite`]).
+//! `--suite DIR` replays the conformance suite instead ([`super::external_suite`]). The
+//! replay command under each disagreement is written here, from the finding's set, path
+//! and registration ([`super::replay`]).
 
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
 use lpe_engines::differential::Generate;
-use lpe_engines::external::{self, Cases, Setup};
+use lpe_engines::external::{self, Cases, Finding, Setup};
 
-use super::diff::args::Args;
+use super::args::Args;
+use super::replay::replay;
 use crate::dialect::CliDialect;
 use crate::input::{bad_input, select_engines};
 
@@ -112,6 +115,9 @@ fn run_in<D: Generate + CliDialect>(
     }
     for f in &report.findings {
         println!("\n{f}");
+        if let Finding::Disagreement(d) = f {
+            println!("  replay: {}", replay(&setup.command, d));
+        }
     }
     if let Some(why) = &report.stopped {
         println!("\nstopped early: {why}");

@@ -23,7 +23,7 @@ use std::collections::HashMap;
 
 use lpe::renderman::{Event, Path, RenderMan, Vertex, VertexType};
 
-use super::translation::Encoder;
+use crate::dialect::Encoder;
 
 /// Bytes per encoded vertex.
 pub const WIDTH: usize = 3;

@@ -1,32 +1,22 @@
-//! Random expressions and paths for testing matchers (moved here from `lpe::generate`).
+//! Random RenderMan expressions, AOV sets and paths aimed at them.
 //!
-//! Differential testing needs cases where the answer is interesting: when the paths are
-//! uniform noise nearly every comparison is "no match" against "no match" and proves
-//! nothing. So besides random ASTs ([`expr`]) this module builds **paths from an
-//! expression**: [`matching_path`] walks the AST choosing a concrete vertex for every
-//! atom (and a count for every quantifier), [`near_miss`] changes one vertex of a path
-//! (mutate a field, drop it, duplicate it), and [`uniform_path`] draws noise.
+//! Besides random ASTs ([`expr`], [`path_shaped_expr`], [`lpe`]), this builds **paths
+//! from an expression**: [`matching_path`] walks the AST choosing a concrete vertex for
+//! every atom (and a count for every quantifier), [`near_miss`] changes one vertex of a
+//! path (mutate a field, drop it, duplicate it), and [`uniform_path`] draws noise.
 //! [`biased_path`] mixes the three.
-//!
-//! Every function draws its decisions from a [`Choices`] source: a seeded [`SplitMix64`]
-//! (deterministic runs, e.g. `lpe-check diff --seed`), or a
-//! fuzzer's `arbitrary::Unstructured` (so a fuzzer's mutations steer the structure and
-//! an exhausted input still yields a small, valid value).
-//!
-//! The generator only *aims* at the expression: it does not decide whether a path
-//! matches (that is the engines' job), so a bug here costs match rate, not correctness.
 //!
 //! # Testing your own matcher
 //!
 //! ```
-//! use lpe_testkit::generate::{self, Config};
+//! use lpe_testkit::generate::renderman::{self, Config};
 //! use lpe::rng::SplitMix64;
 //!
 //! let cfg = Config::default();
 //! let mut rng = SplitMix64::new(42);
 //! for _ in 0..100 {
-//!     let expr = generate::path_shaped_expr(&mut rng, &cfg);
-//!     let path = generate::biased_path(&expr, &mut rng, &cfg);
+//!     let expr = renderman::path_shaped_expr(&mut rng, &cfg);
+//!     let path = renderman::biased_path(&expr, &mut rng, &cfg);
 //!     // Compare your matcher with a reference on (expr, path) here, e.g. with
 //!     // `lpe-reference`'s `lpe_reference::is_expr_match(&expr, &path)`.
 //!     assert!(path.len() >= 2);
@@ -35,53 +25,17 @@
 //! }
 //! ```
 //!
-//! The OSL dialect's generators are in [`osl`].
-//!
 //! `strategy` (feature `proptest` of this crate) has proptest strategies for the same
-//! shapes. (`lpe::renderman::Expr`, `Lpe` and `Path` no longer implement `arbitrary::Arbitrary`:
-//! the orphan rule keeps such impls in `lpe`, and no target used them; the fuzz bodies
-//! draw from `arbitrary::Unstructured` through [`Choices`].)
+//! shapes.
 
+use super::choices::Choices;
+use super::set_algebra::algebra_over;
 use lpe::algebra::Algebra;
 use lpe::renderman::ast::{
     Atom, EventPattern, EventPos, Expr, Item, LabelPos, Lpe, Repetition, Triple, TypePos,
 };
 use lpe::renderman::path::{Event, EventKind, Path, Vertex, VertexType};
 use lpe::renderman::prefix::{Prefix, Prefixes};
-use lpe::rng::SplitMix64;
-
-pub mod osl;
-
-/// A source of decisions.
-pub trait Choices {
-    /// A number in `0..n`; `n >= 1`. Never fails: a source that runs dry answers 0.
-    fn below(&mut self, n: usize) -> usize;
-
-    /// True with probability `percent`/100.
-    fn chance(&mut self, percent: usize) -> bool {
-        self.below(100) < percent
-    }
-
-    /// One element of a non-empty slice.
-    fn pick<'s, T>(&mut self, xs: &'s [T]) -> &'s T {
-        &xs[self.below(xs.len())]
-    }
-}
-
-impl Choices for SplitMix64 {
-    fn below(&mut self, n: usize) -> usize {
-        SplitMix64::below(self, n)
-    }
-}
-
-impl Choices for arbitrary::Unstructured<'_> {
-    fn below(&mut self, n: usize) -> usize {
-        if n <= 1 {
-            return 0;
-        }
-        self.int_in_range(0..=n - 1).unwrap_or(0)
-    }
-}
 
 /// Shape and size bounds for generated values.
 #[derive(Clone, Debug)]
@@ -391,42 +345,6 @@ pub fn lpe(c: &mut impl Choices, cfg: &Config) -> Lpe {
 /// `A - (B & C)`, `^A & B`, `^(A - B)`.
 pub fn algebra(c: &mut impl Choices, cfg: &Config) -> Algebra<Expr> {
     algebra_over(c, &mut |c| path_shaped_expr(c, cfg))
-}
-
-/// The shapes of [`algebra`] over operands drawn by `operand`: every dialect's
-/// generator draws its set algebra here.
-pub(crate) fn algebra_over<C: Choices, E>(
-    c: &mut C,
-    operand: &mut impl FnMut(&mut C) -> E,
-) -> Algebra<E> {
-    fn binary<E>(c: &mut impl Choices, a: Algebra<E>, b: Algebra<E>) -> Algebra<E> {
-        if c.chance(50) {
-            Algebra::and(a, b)
-        } else {
-            Algebra::minus(a, b)
-        }
-    }
-    let mut leaf = |c: &mut C| {
-        let e = Algebra::Leaf(operand(c));
-        if c.chance(20) {
-            Algebra::complement(e)
-        } else {
-            e
-        }
-    };
-    let mut t = leaf(c);
-    for _ in 0..1 + c.below(2) {
-        let mut rhs = leaf(c);
-        if c.chance(15) {
-            let more = leaf(c);
-            rhs = binary(c, rhs, more);
-        }
-        t = binary(c, t, rhs);
-    }
-    if c.chance(10) {
-        t = Algebra::complement(t);
-    }
-    t
 }
 
 fn transport_event(c: &mut impl Choices) -> Event {
@@ -763,6 +681,7 @@ pub fn biased_path(expr: &Expr, c: &mut impl Choices, cfg: &Config) -> Path {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use lpe::rng::SplitMix64;
 
     #[test]
     fn generated_expressions_are_normalized_and_bounded() {

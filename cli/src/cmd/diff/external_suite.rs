@@ -18,10 +18,11 @@ use std::process::ExitCode;
 use std::time::Duration;
 
 use lpe::DialectName;
-use lpe_engines::external::{AovSource, Client, Registration, Reply, StartError};
+use lpe_engines::external::{AovSource, Client, Reply, StartError};
+use lpe_engines::WireRegistration;
 use lpe_testkit::suite::{load_dir, Loaded, Plan};
 
-use super::diff::args::Args;
+use super::args::Args;
 use crate::input::bad_input;
 
 /// What one replay found.
@@ -158,7 +159,7 @@ fn replay(client: &mut Client, loaded: &Loaded, tally: &mut Tally) {
         })
         .collect();
     let registered =
-        (loaded.dialect == DialectName::Osl).then(|| Registration::from(&loaded.registered));
+        (loaded.dialect == DialectName::Osl).then(|| WireRegistration::from(&loaded.registered));
     let compiled = client.compile(aovs, registered);
     if let Some(want) = &case.error {
         tally.checked += 1;

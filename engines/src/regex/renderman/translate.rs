@@ -20,12 +20,13 @@
 
 use lpe::renderman::ast::{Atom, EventPattern, EventPos, Expr, Item, LabelPos, Triple, TypePos};
 use lpe::renderman::{Event, EventKind, VertexType};
-use regex_syntax::hir::{Class, ClassBytes, ClassBytesRange, Hir, Repetition};
+use regex_syntax::hir::Hir;
 
 use super::encode::{
     all_labels, label_bit, type_byte, LabelMask, Labels, VertexSet, EVENTS, EVENT_NONE, LABEL_NONE,
     TYPES,
 };
+use crate::regex::hir::{byte_class, repeat};
 
 const RT: [VertexType; 2] = [VertexType::R, VertexType::T];
 const NO_EVENT: u32 = 1;
@@ -156,22 +157,6 @@ impl<'a> Translator<'a> {
             Expr::Repeat(body, r) => repeat(self.expr(body), *r),
         }
     }
-}
-
-/// `sub{min,max}` with the expression's raw bounds (either dialect).
-pub(crate) fn repeat(sub: Hir, r: lpe::renderman::ast::Repetition) -> Hir {
-    Hir::repetition(Repetition {
-        min: r.min,
-        max: r.max,
-        greedy: true,
-        sub: Box::new(sub),
-    })
-}
-
-/// The class of exactly these bytes (empty: never matches).
-pub(crate) fn byte_class(bytes: impl IntoIterator<Item = u8>) -> Hir {
-    let ranges = bytes.into_iter().map(|b| ClassBytesRange::new(b, b));
-    Hir::class(Class::Bytes(ClassBytes::new(ranges)))
 }
 
 /// A vertex set as an alternation of `type-class event-class label-class` triples: the
