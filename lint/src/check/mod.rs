@@ -126,7 +126,7 @@ mod undecided_tests {
         let universe = dialect
             .parse(<RenderMan as lpe::Dialect>::DEFAULT_UNIVERSE)
             .unwrap();
-        let out = lint(&[doc], &dialect, &both, &universe, &[]).unwrap();
+        let out = lint(&[doc], &dialect, Some(&both), &universe, &[]).unwrap();
         let kinds: Vec<(&str, &str)> = out
             .findings
             .iter()
