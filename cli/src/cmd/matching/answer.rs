@@ -383,7 +383,7 @@ mod tests {
     }
 
     #[test]
-    fn osl_lines_are_cached_by_expression_and_registration() {
+    fn a_line_is_cached_by_its_expression_and_its_registration() {
         let engine = Counting(AtomicUsize::new(0));
         // A registered `U` is a basic label, which the eater no longer skips: the same
         // expression text reads differently under the two registrations.
