@@ -18,23 +18,6 @@ fn lpe_check(args: &[&str]) -> (i32, String, String) {
     )
 }
 
-/// Panics unless `python3` runs: the tests that call this drive Python adapters, and
-/// returning early without it would report them as passing when nothing was checked.
-///
-/// Planted fault: with `PATH` emptied (`PATH= cargo test ...`, the test binary run
-/// directly) every such test fails with this message instead of passing.
-fn require_python3() {
-    let found = Command::new("python3")
-        .arg("--version")
-        .output()
-        .is_ok_and(|o| o.status.success());
-    assert!(
-        found,
-        "python3 is required for this test: install it (e.g. `apt-get install python3`) \
-         and put it on PATH"
-    );
-}
-
 #[test]
 fn bad_input_exits_2() {
     for args in [
@@ -89,7 +72,7 @@ fn bad_input_exits_2() {
 
 #[test]
 fn agreement_exits_0_and_the_planted_bug_3_with_a_replay_that_replays() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let clean = "python3 examples/python/naive_matcher.py";
     let (code, out, err) = lpe_check(&["diff", "--external", clean, "--cases", "60"]);
     assert_eq!(code, 0, "{out}{err}");
@@ -135,7 +118,7 @@ fn proxy_in_the_osl_dialect(flags: &str) -> String {
 
 #[test]
 fn runs_send_each_registration_and_replay_it_in_the_osl_dialect() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let clean = proxy_in_the_osl_dialect("");
     let (code, out, err) = lpe_check(&[
         "diff",
@@ -197,7 +180,7 @@ fn runs_send_each_registration_and_replay_it_in_the_osl_dialect() {
 
 #[test]
 fn a_renderman_only_matcher_refuses_an_osl_run_with_exit_2() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let (code, _, err) = lpe_check(&[
         "diff",
         "--external",
@@ -223,7 +206,7 @@ fn suite_dir(tag: &str, files: &[(&str, &str)]) -> std::path::PathBuf {
 
 #[test]
 fn the_osl_suite_replays_clean_through_the_osl_proxy() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let proxy = proxy_in_the_osl_dialect("");
     let (code, out, err) = lpe_check(&[
         "diff",
@@ -259,7 +242,7 @@ fn the_osl_suite_replays_clean_through_the_osl_proxy() {
 
 #[test]
 fn a_planted_wrong_verdict_is_reported_with_its_file_and_case() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let dir = suite_dir(
         "planted",
         &[
@@ -366,7 +349,7 @@ fn replays(out: &str) -> Vec<(i32, String)> {
 /// disagrees when replayed, and the header's case range ends at the last case asked.
 #[test]
 fn minimized_cases_still_disagree_when_replayed() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let mut findings = 0;
     for seed in ["3", "4", "5"] {
         let (code, out, err) = planted_adapter_run("--miss-counted", &["--seed", seed]);
@@ -398,7 +381,7 @@ fn minimized_cases_still_disagree_when_replayed() {
 /// crash on `{0}` counts, no two crash findings carry the same request.
 #[test]
 fn a_candidate_that_crashed_is_not_sent_again() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let (code, out, err) = planted_adapter_run(
         "--miss-counted --crash-on-zero",
         &["--seed", "4", "--max-restarts", "100"],
@@ -423,7 +406,7 @@ fn a_candidate_that_crashed_is_not_sent_again() {
 /// case instead of one that does not disagree.
 #[test]
 fn a_minimized_case_that_agrees_on_replay_falls_back_to_the_original() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let (code, out, err) = planted_adapter_run("--miss-counted --flaky", &["--seed", "3"]);
     assert_eq!(code, 3, "{out}{err}");
     assert!(
@@ -455,7 +438,7 @@ fn a_minimized_case_that_agrees_on_replay_falls_back_to_the_original() {
 /// process past the budget to ask about the minimized case again.
 #[test]
 fn the_restart_budget_holds_during_minimization() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let proxy = proxy_in_the_osl_dialect("--miss-counted --crash-after 1");
     for n in [0u64, 1, 5] {
         let budget = n.to_string();

@@ -6,29 +6,11 @@
 //! not installed (a skip would read as a pass).
 
 use std::path::PathBuf;
-use std::process::Command;
 use std::time::Duration;
 
 use lpe::renderman::RenderMan;
 use lpe_engines::differential::Run;
 use lpe_engines::external::{self, Answer, Cases, FaultKind, Finding, Report, Setup};
-
-/// Panics unless `python3` runs: the tests that call this drive Python adapters, and
-/// returning early without it would report them as passing when nothing was checked.
-///
-/// Planted fault: with `PATH` emptied (`PATH= cargo test ...`, the test binary run
-/// directly) every such test fails with this message instead of passing.
-fn require_python3() {
-    let found = Command::new("python3")
-        .arg("--version")
-        .output()
-        .is_ok_and(|o| o.status.success());
-    assert!(
-        found,
-        "python3 is required for this test: install it (e.g. `apt-get install python3`) \
-         and put it on PATH"
-    );
-}
 
 fn repo(rel: &str) -> String {
     let p: PathBuf = [env!("CARGO_MANIFEST_DIR"), "..", rel].iter().collect();
@@ -77,7 +59,7 @@ fn run(command: String, cases: &Cases, timeout_ms: u64) -> Report<RenderMan> {
 
 #[test]
 fn the_naive_python_matcher_agrees_with_every_engine() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let r = run(naive(""), &generated(300, 11), 5000);
     if let Some(f) = r.findings.first() {
         panic!("{f}");
@@ -93,7 +75,7 @@ fn the_naive_python_matcher_agrees_with_every_engine() {
 
 #[test]
 fn the_planted_bug_is_found_and_minimized_by_re_asking() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let r = run(naive("--plant-bug"), &generated(400, 11), 5000);
     let Some(Finding::Disagreement(d)) = r.findings.first() else {
         panic!("the planted `{{n,m}}` bug went unnoticed: {:?}", r.findings);
@@ -128,7 +110,7 @@ fn the_planted_bug_is_found_and_minimized_by_re_asking() {
 
 #[test]
 fn unsupported_constructs_are_counted_not_disagreements() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let r = run(
         naive(""),
         &Cases::Given {
@@ -143,7 +125,7 @@ fn unsupported_constructs_are_counted_not_disagreements() {
 
 #[test]
 fn rejections_are_compared_both_ways() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     // Both reject: agreement.
     let r = run(
         naive(""),
@@ -182,7 +164,7 @@ fn rejections_are_compared_both_ways() {
 
 #[test]
 fn broken_adapters_become_findings_and_the_run_finishes() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let script = shell_quote(&repo("engines/tests/adapters/broken_matcher.py"));
     let cases = generated(3, 5);
     for (mode, label) in [
@@ -250,7 +232,7 @@ fn a_command_that_cannot_start_is_bad_input() {
 /// stops with the count said; N = 0 never restarts.
 #[test]
 fn the_restart_budget_is_exact() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let script = shell_quote(&repo("engines/tests/adapters/broken_matcher.py"));
     for n in [0u64, 1, 5] {
         let setup = Setup {
@@ -275,7 +257,7 @@ fn the_restart_budget_is_exact() {
 /// on every case, the faults are reported in case order, each with its case number.
 #[test]
 fn findings_keep_case_order_across_crashes() {
-    require_python3();
+    lpe_testkit::host::require_python3();
     let script = shell_quote(&repo("engines/tests/adapters/broken_matcher.py"));
     let setup = Setup {
         max_restarts: 200,

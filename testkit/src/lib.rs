@@ -14,6 +14,7 @@
 //!   cases here.
 //! - [`grammar`]: expression *text* from each dialect's documented grammar, with a
 //!   count of the productions written (`lpe-check diff --coverage`).
+//! - [`host`]: what tests need of the host (`python3`), a failure naming it when missing.
 //! - [`labels`]: labels one byte apart at every position and length, UTF-8 included.
 //! - `strategy` (feature `proptest`): proptest strategies for the same shapes.
 
@@ -21,6 +22,7 @@
 
 pub mod generate;
 pub mod grammar;
+pub mod host;
 pub mod labels;
 #[cfg(feature = "proptest")]
 pub mod strategy;
