@@ -146,7 +146,9 @@ pub const MAX_FILM_BYTES: u128 = 8 << 30;
 impl Film {
     /// Bytes of the sums of a `width` x `height` film of `layers` layers (f64 RGB each).
     pub fn bytes(width: usize, height: usize, layers: usize) -> u128 {
-        (width * height) as u128 * layers as u128 * 24
+        // In u128 from the start: the product of the three can pass `usize` on the
+        // sizes this guard exists to refuse.
+        width as u128 * height as u128 * layers as u128 * 24
     }
 
     pub fn new(
@@ -652,6 +654,16 @@ mod tests {
     // Expected values below are worked out by hand from the integrator's "Prefixes"
     // docs: value = thru * local * weight, thru = beta = 0.5 (1 with `nothruput;`),
     // local = (1, 2, 4), so beta * local = (0.5, 1, 2).
+
+    /// A film's bytes worked out by hand (3 f64 per layer and pixel), and a film too
+    /// large for `usize` counted without wrapping: width * height alone is 2^64 here.
+    /// Fails when the product is taken in `usize` first (it wraps to 0 in release).
+    #[test]
+    fn film_bytes_are_counted_without_wrapping() {
+        assert_eq!(Film::bytes(2, 3, 4), 2 * 3 * 4 * 24);
+        assert_eq!(Film::bytes(1 << 32, 1 << 32, 2), (1u128 << 64) * 48);
+        assert!(Film::bytes(1 << 32, 1 << 32, 2) > MAX_FILM_BYTES);
+    }
 
     #[test]
     fn visible_light_sample() {

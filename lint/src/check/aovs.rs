@@ -45,31 +45,29 @@ pub fn check<D: LintDialect>(
             match dialect.equivalent(a, b) {
                 Decision::Decided(same) => same,
                 Decision::Undecided(u) => {
-                    let mut f = finding(
+                    findings.push(against(
                         &linted[j],
+                        &linted[i],
                         Kind::Undecided,
                         format!(
                             "whether it matches exactly the paths `{}` matches is {u}",
                             linted[i].decl.name
                         ),
-                    );
-                    f.other = Some(linted[i].decl.name.clone());
-                    findings.push(f);
+                    ));
                     false
                 }
             }
         });
         if let Some(i) = twin {
-            let mut f = finding(
+            findings.push(against(
                 &linted[j],
+                &linted[i],
                 Kind::Equivalent,
                 format!(
                     "matches exactly the paths `{}` matches: both render the same image",
                     linted[i].decl.name
                 ),
-            );
-            f.other = Some(linted[i].decl.name.clone());
-            findings.push(f);
+            ));
         }
     }
     for l in linted.iter() {
@@ -178,6 +176,13 @@ fn lobe_findings<E>(l: &Linted<E>, unfed: &[(LobeCategory, u8)], findings: &mut 
 
 fn finding<E>(l: &Linted<E>, kind: Kind, message: String) -> Finding {
     Finding::new(kind, &l.file, &l.decl.name, &l.decl.location, message)
+}
+
+/// A finding on `l` about how it compares with the earlier AOV `other`, which it names.
+fn against<E>(l: &Linted<E>, other: &Linted<E>, kind: Kind, message: String) -> Finding {
+    let mut f = finding(l, kind, message);
+    f.other = Some(other.decl.name.clone());
+    f
 }
 
 /// The known group within edit distance 2 of `label` (a typo), if exactly one is closest.
