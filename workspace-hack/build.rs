@@ -1,0 +1,2 @@
+//! Empty: a build script makes cargo build the build-dependencies this crate unifies.
+fn main() {}
