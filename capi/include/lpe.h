@@ -104,6 +104,12 @@ typedef struct lpe_options {
   // none). Registration changes how expressions parse and match. Read during
   // `lpe_set_compile` only. Must be NULL for `LPE_DIALECT_RENDERMAN`.
   const char *osl_registered;
+  // A renderer profile by name (`karma`, `arnold`, `hdprman`, ...; docs/profiles.md),
+  // as NUL-terminated text, or NULL for none: its letters, prefixes and built-in AOV
+  // names are registered on top of `osl_registered`, so expressions read as that
+  // renderer reads them. A profile of the other dialect, or an unknown name, is
+  // `LPE_ERR_UNSUPPORTED`. Read during `lpe_set_compile` only.
+  const char *renderer;
 } lpe_options;
 
 // Where one path is. Opaque, plain data: copy it freely (to branch a path), keep one
@@ -201,7 +207,7 @@ struct lpe_options lpe_options_default(void);
 // - `ini_text`: RenderMan only: the contents of a rendermn.ini (user macros, lobe
 //   mappings), or NULL. Must be NULL for OSL.
 // - `options`: NULL for the defaults. For OSL, `options->osl_registered` names the
-//   registered labels.
+//   registered labels; `options->renderer` names a renderer profile to read under.
 // - `out`: receives the set, or NULL on failure.
 // - `error`: if not NULL, receives an error object on failure (free it with
 //   `lpe_error_free`); NULL on success.

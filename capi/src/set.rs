@@ -35,6 +35,12 @@ pub struct lpe_options {
     /// none). Registration changes how expressions parse and match. Read during
     /// `lpe_set_compile` only. Must be NULL for `LPE_DIALECT_RENDERMAN`.
     pub osl_registered: *const c_char,
+    /// A renderer profile by name (`karma`, `arnold`, `hdprman`, ...; docs/profiles.md),
+    /// as NUL-terminated text, or NULL for none: its letters, prefixes and built-in AOV
+    /// names are registered on top of `osl_registered`, so expressions read as that
+    /// renderer reads them. A profile of the other dialect, or an unknown name, is
+    /// `LPE_ERR_UNSUPPORTED`. Read during `lpe_set_compile` only.
+    pub renderer: *const c_char,
 }
 
 /// A compiled AOV set: immutable, safe to share between threads. Release it with
@@ -57,6 +63,7 @@ pub extern "C" fn lpe_options_default() -> lpe_options {
         nfa_budget: o.nfa_budget,
         max_path_len: o.max_path_len.unwrap_or(0),
         osl_registered: std::ptr::null(),
+        renderer: std::ptr::null(),
     }
 }
 
@@ -68,7 +75,7 @@ pub extern "C" fn lpe_options_default() -> lpe_options {
 /// - `ini_text`: RenderMan only: the contents of a rendermn.ini (user macros, lobe
 ///   mappings), or NULL. Must be NULL for OSL.
 /// - `options`: NULL for the defaults. For OSL, `options->osl_registered` names the
-///   registered labels.
+///   registered labels; `options->renderer` names a renderer profile to read under.
 /// - `out`: receives the set, or NULL on failure.
 /// - `error`: if not NULL, receives an error object on failure (free it with
 ///   `lpe_error_free`); NULL on success.
@@ -149,8 +156,9 @@ fn compile(
         max_path_len: (o.max_path_len > 0).then_some(o.max_path_len),
     });
     let registered = given.map_or(std::ptr::null(), |o| o.osl_registered);
+    let profile = renderer_profile(given.map_or(std::ptr::null(), |o| o.renderer), dialect)?;
     let sources = read_sources(names, exprs, count)?;
-    let set = with_dialect!(dialect, D => compile_in::<D>(&sources, ini_text, registered, &opts)?);
+    let set = with_dialect!(dialect, D => compile_in::<D>(&sources, ini_text, registered, profile, &opts)?);
     let warnings = set
         .warnings()
         .iter()
@@ -214,15 +222,40 @@ fn compile_error(e: lpe::CompileError) -> lpe_error {
     lpe_error::new(lpe_status::LPE_ERR_COMPILE, e.to_string(), None, None)
 }
 
+/// The profile `options->renderer` names (NULL: none), which must read `dialect`.
+fn renderer_profile(
+    renderer: *const c_char,
+    dialect: lpe::DialectName,
+) -> Result<Option<&'static lpe_profile::Profile>, lpe_error> {
+    if renderer.is_null() {
+        return Ok(None);
+    }
+    let unsupported = |m: String| lpe_error::new(lpe_status::LPE_ERR_UNSUPPORTED, m, None, None);
+    let name = text(renderer)
+        .map_err(|s| lpe_error::plain(s, "the `renderer` text is not UTF-8", None))?;
+    let profile = lpe_profile::by_name(name).map_err(|e| unsupported(e.to_string()))?;
+    if profile.dialect() != dialect {
+        return Err(unsupported(format!(
+            "renderer `{name}` reads {}'s dialect, not {dialect}'s",
+            profile.dialect()
+        )));
+    }
+    Ok(Some(profile))
+}
+
 /// The set of `sources` in dialect `D`, under the registration of `ini_text` or
-/// `registered`.
+/// `registered`, with `profile`'s on top.
 fn compile_in<D: CDialect>(
     sources: &[Source],
     ini_text: *const c_char,
     registered: *const c_char,
+    profile: Option<&lpe_profile::Profile>,
     opts: &Options,
 ) -> Result<DialectSet, lpe_error> {
-    let registration = D::registration(ini_text, registered)?;
+    let mut registration = D::registration(ini_text, registered)?;
+    if let Some(p) = profile {
+        registration = D::with_profile(p, registration);
+    }
     let mut aovs: Vec<(String, D::Lpe)> = Vec::with_capacity(sources.len());
     for (i, s) in sources.iter().enumerate() {
         let lpe = D::parse(s.expr, &registration).map_err(|e| {

@@ -507,6 +507,71 @@ fn an_osl_set_of_several_rules_routes_each_path_to_its_rules() {
     }
 }
 
+/// `options->renderer`: Karma's `A`, prefix and refusals through the ABI; the other
+/// dialect's profile and an unknown name are refused with the reason.
+#[test]
+fn a_set_compiles_under_a_renderer_profile_named_in_the_options() {
+    let with = |name: &str| {
+        let mut o = lpe_options_default();
+        o.renderer = Box::leak(CString::new(name).unwrap().into_boxed_c_str()).as_ptr();
+        o
+    };
+    let karma = with("karma");
+    // `A` is Karma's albedo event: plain OSL refuses it, Karma reads it.
+    assert!(compile_in(LPE_DIALECT_OSL, &["albedo"], &["C<RD>A"], None, None).is_err());
+    let set = compile_in(
+        LPE_DIALECT_OSL,
+        &["albedo", "unshadowed"],
+        &["C<RD>A", "unoccluded;C<RD>L"],
+        None,
+        Some(&karma),
+    )
+    .unwrap();
+    drop(set);
+    let (st, msg, aov, pos) = compile_in(
+        LPE_DIALECT_OSL,
+        &["a"],
+        &["shadw;C<RD>L"],
+        None,
+        Some(&karma),
+    )
+    .err()
+    .unwrap();
+    assert_eq!((st, aov, pos), (lpe_status::LPE_ERR_PARSE, 0, 0), "{msg}");
+    assert!(msg.contains("`unoccluded;`"), "{msg}");
+    let (st, msg, _, _) = compile_in(
+        LPE_DIALECT_RENDERMAN,
+        &["a"],
+        &["C<RD>L"],
+        None,
+        Some(&karma),
+    )
+    .err()
+    .unwrap();
+    assert_eq!(st, lpe_status::LPE_ERR_UNSUPPORTED, "{msg}");
+    assert!(msg.contains("reads osl's dialect"), "{msg}");
+    let (st, msg, _, _) = compile_in(
+        LPE_DIALECT_OSL,
+        &["a"],
+        &["C<RD>L"],
+        None,
+        Some(&with("karm")),
+    )
+    .err()
+    .unwrap();
+    assert_eq!(st, lpe_status::LPE_ERR_UNSUPPORTED, "{msg}");
+    assert!(msg.contains("did you mean `karma`?"), "{msg}");
+    // hdPrman reads RenderMan's dialect unchanged.
+    assert!(compile_in(
+        LPE_DIALECT_RENDERMAN,
+        &["a"],
+        &["C<RD>L"],
+        None,
+        Some(&with("hdprman"))
+    )
+    .is_ok());
+}
+
 #[test]
 fn compile_errors_name_the_aov_the_byte_and_the_registration_in_the_osl_dialect() {
     let registered = CString::new("events=U;colors=Y").unwrap();
@@ -734,8 +799,9 @@ fn suite_case(l: &Loaded, dfa_budget: Option<usize>) -> (Vec<String>, usize) {
     let names: Vec<String> = (0..plan.sources.len()).map(|i| format!("e{i}")).collect();
     let names: Vec<&str> = names.iter().map(String::as_str).collect();
     let registered = CString::new(l.registered.to_string()).unwrap();
+    let renderer = l.profile.as_deref().map(|p| CString::new(p).unwrap());
     let cache = lpe_options_default().lazy_cache;
-    let (dialect, opts) = match l.dialect {
+    let (dialect, mut opts) = match l.dialect {
         lpe::DialectName::RenderMan => {
             let mut o = lpe_options_default();
             if let Some(b) = dfa_budget {
@@ -748,6 +814,12 @@ fn suite_case(l: &Loaded, dfa_budget: Option<usize>) -> (Vec<String>, usize) {
             options_with_registration(&registered, dfa_budget, cache),
         ),
     };
+    // Under a profile, the set is compiled with `renderer` naming it (its letters,
+    // prefixes and built-in names come through the ABI, not from the case's text).
+    if let Some(r) = &renderer {
+        opts.renderer = r.as_ptr();
+        opts.osl_registered = null();
+    }
     let at = format!("{} ({dfa_budget:?})", l.location());
     let compiled = compile_in(
         dialect,

@@ -44,6 +44,20 @@ pub enum InputError {
     /// `--register` does not parse (the error gives the byte position).
     #[error("--register: {0}")]
     Register(lpe::osl::RegisteredError),
+    /// `--renderer` or `--profile` did not give a profile (an unknown name, with the
+    /// known ones; a file that does not load, with its line and key).
+    #[error("{0}")]
+    Profile(lpe_profile::ProfileError),
+    /// `--dialect` names another dialect than the renderer's profile reads.
+    #[error("--dialect {given} contradicts --renderer {renderer}, which reads {base}'s dialect; drop --dialect")]
+    DialectOfProfile {
+        /// The dialect given.
+        given: lpe::DialectName,
+        /// The profile's name.
+        renderer: String,
+        /// The profile's base dialect.
+        base: lpe::DialectName,
+    },
 }
 
 impl From<lpe::renderman::Error> for InputError {

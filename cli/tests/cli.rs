@@ -507,7 +507,15 @@ fn translate_reports_verdicts_with_exit_codes() {
     for (args, needle) in [
         (
             &["translate", "--from", "osl", "--to", "osl", "C"][..],
-            "both `osl`",
+            "both read osl's dialect",
+        ),
+        (
+            &["translate", "--from", "karma", "--to", "arnold", "C"][..],
+            "both read osl's dialect",
+        ),
+        (
+            &["translate", "--from", "renderman", "--to", "karm", "C"][..],
+            "--to: unknown renderer `karm` (did you mean `karma`?)",
         ),
         (
             &["translate", "--from", "renderman", "--to", "osl", "C<L'k'>"],
@@ -666,5 +674,44 @@ fn translate_reads_rib_and_ini_sets_and_reports_what_does_not_parse() {
             0,
             "keyDiffuse: C<RD>.*<L.'key'>  ->  <C.><RD><[RT].>*<L.'key'>  (exact)\n"
         )
+    );
+}
+
+/// `--to` a renderer translates with its profile's correspondence: every RenderMan
+/// specular lobe is Karma's `G` and Arnold's `S` (docs/profiles.md), so `C<RS>L` is exact
+/// in both, with the letter each renderer writes; the default correspondence (plain OSL)
+/// splits the same lobes between `G` and `S`. `--from` a renderer reads its built-in names.
+#[test]
+fn translate_to_a_renderer_uses_its_profiles_correspondence() {
+    for (to, want) in [
+        ("karma", "C<RS>L  ->  <C.><RG><L.>  (exact)\n"),
+        ("arnold", "C<RS>L  ->  <C.><RS><L.>  (exact)\n"),
+    ] {
+        let (code, out, err) = lpe_check(
+            &["translate", "--from", "renderman", "--to", to, "C<RS>L"],
+            "",
+        );
+        assert_eq!((code, out.as_str()), (0, want), "{to}: {err}");
+    }
+    let (_, osl, _) = lpe_check(
+        &["translate", "--from", "renderman", "--to", "osl", "C<RS>L"],
+        "",
+    );
+    assert!(osl.contains("[GS]"), "{osl}");
+    let (code, out, err) = lpe_check(
+        &[
+            "translate",
+            "--from",
+            "arnold",
+            "--to",
+            "renderman",
+            "diffuse_direct",
+        ],
+        "",
+    );
+    assert_eq!(
+        (code, out.as_str()),
+        (0, "diffuse_direct  ->  C<RD>L  (exact)\n"),
+        "{err}"
     );
 }

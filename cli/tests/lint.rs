@@ -654,3 +654,100 @@ fn explain_from_a_stage() {
         "{out}"
     );
 }
+
+/// `--renderer karma`: the Solaris stage's `specular_key` (`C<RS>.*<L.'key'>`) asks for an
+/// `S` scattering, which Karma never produces (docs/profiles.md, Karma): `never_produced`,
+/// citing the rule and its page; the other findings are the stage's own, and no
+/// `ambiguous_dialect` (the renderer names the dialect). A typo'd renderer, or a
+/// `--dialect` the renderer does not read, is bad input.
+#[test]
+fn lint_under_karmas_profile_flags_what_karma_never_renders() {
+    let file = "tests/testdata/usd/solaris_karma.usda";
+    let (code, v) = json(&["--renderer", "karma", file]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        findings(&v),
+        triples(&[
+            (
+                "unknown_light_group",
+                "diffuse_fill",
+                "/Render/Products/Vars/diffuse_fill"
+            ),
+            (
+                "never_produced",
+                "specular_key",
+                "/Render/Products/Vars/specular_key"
+            ),
+        ])
+    );
+    let message = v["findings"][1]["message"].as_str().unwrap();
+    assert!(
+        message.contains("renders black in Karma") && message.contains("`<.[Ss]>`"),
+        "{message}"
+    );
+    assert!(
+        message.contains("sidefx.com/docs/houdini/solaris"),
+        "{message}"
+    );
+    let (code, _, err) = lpe_check(&["lint", "--renderer", "karm", file]);
+    assert_eq!(code, 2);
+    assert!(err.contains("did you mean `karma`?"), "{err}");
+    let (code, _, err) = lpe_check(&[
+        "lint",
+        "--renderer",
+        "karma",
+        "--dialect",
+        "renderman",
+        file,
+    ]);
+    assert_eq!(code, 2);
+    assert!(err.contains("contradicts --renderer karma"), "{err}");
+}
+
+/// `--renderer hdprman`: every `lpe:`-marked sourceName of sourceType lpe is a
+/// `doubled_lpe_mark` (hdPrman prepends the mark itself), with the unmarked source as
+/// help, and the raw `P` RenderVar is not; `--renderer renderman` reads the same stage
+/// with RenderMan's rules and no ambiguity finding.
+#[test]
+fn lint_under_hdprmans_profile_flags_the_doubled_lpe_mark() {
+    let file = "tests/testdata/usd/hdprman.usda";
+    let (code, v) = json(&["--renderer", "hdprman", file]);
+    assert_eq!(code, 1);
+    let doubled: Vec<(String, String)> = v["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|f| f["kind"] == "doubled_lpe_mark")
+        .map(|f| {
+            (
+                f["subject"].as_str().unwrap().to_string(),
+                f["help"].as_str().unwrap().to_string(),
+            )
+        })
+        .collect();
+    let subjects: Vec<&str> = doubled.iter().map(|(s, _)| s.as_str()).collect();
+    assert_eq!(
+        subjects,
+        [
+            "directDiffuse",
+            "indirectDiffuse",
+            "diffuseAgain",
+            "rimLight",
+            "albedo",
+            "wetness",
+            "lightBehindCamera"
+        ]
+    );
+    assert_eq!(
+        doubled[0].1,
+        "write the sourceName without its mark: `C<RD>[<L.>O]`"
+    );
+    let (_, rm) = json(&["--renderer", "renderman", file]);
+    let kinds: Vec<&str> = rm["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(kinds, ["parse_error", "empty", "equivalent", "unfed_lobe"]);
+}

@@ -27,7 +27,16 @@ impl ReferenceDialect for Osl {
         lpe: &Lpe,
         registered: &Registered,
     ) -> Result<lpe_reference::osl::Lpe, EngineError> {
-        let text = lpe.to_string();
+        // A renderer's prefix (`unoccluded;`) changes what accumulates, never what
+        // matches, and OSL's grammar has none: the reference reads the expression alone.
+        let text = match &lpe.prefix {
+            None => lpe.to_string(),
+            Some(_) => Lpe {
+                prefix: None,
+                ..lpe.clone()
+            }
+            .to_string(),
+        };
         lpe_reference::osl::parse(&text, &reference_registration(registered)).map_err(|e| {
             EngineError::Reference {
                 text,
@@ -141,6 +150,8 @@ pub fn reference_registration(registered: &Registered) -> lpe_reference::osl::Re
     lpe_reference::osl::Registration {
         events: registered.events.clone(),
         scatters: registered.scatters.clone(),
+        prefixes: registered.prefixes.clone().unwrap_or_default(),
+        builtins: registered.builtins.clone(),
         limits: lpe_reference::Limits::default(),
     }
 }

@@ -30,7 +30,7 @@
 //! - The formal side ([`analysis`]): emptiness warnings (on the NFA alone), equivalence
 //!   and inclusion, partition checks, each with a shortest witness path.
 //! - Utilities: [`rng`] (the workspace's one SplitMix64), [`fxhash`] (fast maps for small
-//!   keys), the crate-private `bits` (bitsets in `u64` words) and `print` (the printing
+//!   keys), [`suggest`] ("did you mean" by edit distance), the crate-private `bits` (bitsets in `u64` words) and `print` (the printing
 //!   both dialects' trees and paths share). The test generators (random expressions and
 //!   paths, proptest strategies) are in the `lpe-testkit` crate.
 //!
@@ -114,6 +114,7 @@ mod print;
 pub mod registry;
 pub mod renderman;
 pub mod rng;
+pub mod suggest;
 pub mod translate;
 
 pub use aov::{AovSet, Options};

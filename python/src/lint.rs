@@ -34,6 +34,7 @@ pub fn lint_json(
         partitions: &partitions,
         universe: universe.as_deref(),
         dialect_given: dialect.is_some(),
+        profile: None,
     };
     let json = py.allow_threads(
         || with_dialect!(name, D => lint_in::<D>(&req, register.as_deref(), rename.as_ref())),

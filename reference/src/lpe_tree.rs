@@ -96,6 +96,9 @@ impl ReferenceMatch for lpe::osl::Lpe {
         let reg = osl::Registration {
             events: registered.events,
             scatters: registered.scatters,
+            // The printed tree starts with the prefix it was written with, if any.
+            prefixes: self.prefix.iter().cloned().collect(),
+            builtins: Vec::new(),
             limits: generous(),
         };
         let text = self.to_string();
@@ -148,6 +151,7 @@ pub fn registered_in(lpe: &lpe::osl::Lpe) -> lpe::osl::Registered {
     lpe::osl::Registered {
         events,
         scatters: Vec::new(),
+        ..Default::default()
     }
 }
 

@@ -7,7 +7,8 @@
 //! A case is in the RenderMan dialect unless its file (a top-level `dialect = "osl"`) or
 //! the case itself says `dialect = "osl"`; OSL cases may give the user labels registered
 //! before their expressions are parsed (`registered = { events = ["U"], scatters = ["Y"] }`,
-//! also at the top of a file). Every load error names the file and, when it is about one,
+//! also at the top of a file). A file may instead name a renderer profile
+//! (`profile = "karma"`, docs/profiles.md), which gives both. Every load error names the file and, when it is about one,
 //! the case.
 
 use std::collections::BTreeSet;
@@ -27,6 +28,9 @@ struct CaseFile {
     dialect: Option<String>,
     /// OSL user labels of every case that does not give its own.
     registered: Option<Registration>,
+    /// The renderer profile every case is read under (docs/profiles.md): it gives the
+    /// dialect and the registration, so neither `dialect` nor `registered` goes with it.
+    profile: Option<String>,
     #[serde(rename = "case", default)]
     cases: Vec<Case>,
 }
@@ -49,6 +53,7 @@ impl From<Registration> for Registered {
         Registered {
             events: r.events,
             scatters: r.scatters,
+            ..Registered::default()
         }
     }
 }
@@ -164,8 +169,11 @@ pub struct Loaded {
     pub case: Case,
     /// The case's dialect (its own, else its file's, else RenderMan).
     pub dialect: DialectName,
-    /// OSL user labels (the case's own, else its file's, else none).
+    /// OSL user labels (the case's own, else its file's, else none); under a profile,
+    /// the profile's letters, prefixes and built-in names.
     pub registered: Registered,
+    /// The renderer profile of the case's file, if any.
+    pub profile: Option<String>,
 }
 
 impl Loaded {
@@ -291,12 +299,25 @@ pub fn load_str(file: &str, text: &str) -> Result<Vec<Loaded>, LoadError> {
         file: file.to_string(),
         source: Box::new(e),
     })?;
-    let file_dialect = match &parsed.dialect {
-        None => DialectName::RenderMan,
-        Some(d) => dialect_named(d).map_err(|problem| LoadError::File {
-            file: file.to_string(),
-            problem,
-        })?,
+    let file_error = |problem: String| LoadError::File {
+        file: file.to_string(),
+        problem,
+    };
+    let profile = match &parsed.profile {
+        None => None,
+        Some(name) => {
+            if parsed.dialect.is_some() || parsed.registered.is_some() {
+                return Err(file_error(
+                    "a `profile` gives the dialect and the registration: drop `dialect` and `registered`".into(),
+                ));
+            }
+            Some(lpe_profile::by_name(name).map_err(|e| file_error(e.to_string()))?)
+        }
+    };
+    let file_dialect = match (&parsed.dialect, profile) {
+        (_, Some(p)) => p.dialect(),
+        (None, None) => DialectName::RenderMan,
+        (Some(d), None) => dialect_named(d).map_err(file_error)?,
     };
     let mut names = BTreeSet::new();
     let mut out = Vec::new();
@@ -309,17 +330,29 @@ pub fn load_str(file: &str, text: &str) -> Result<Vec<Loaded>, LoadError> {
         if !names.insert(case.name.clone()) {
             return Err(bad("the name is used twice in this file"));
         }
+        if profile.is_some() && (case.dialect.is_some() || case.registered.is_some()) {
+            return Err(bad(
+                "the file's `profile` gives the dialect and the registration",
+            ));
+        }
         let dialect = match &case.dialect {
             None => file_dialect,
             Some(d) => dialect_named(d).map_err(|p| bad(&p))?,
         };
         let registration = case.registered.clone().or(parsed.registered.clone());
         validate(&case, dialect).map_err(|p| bad(&p))?;
+        let registered = registration.map(Registered::from).unwrap_or_default();
         out.push(Loaded {
             file: file.to_string(),
             case,
             dialect,
-            registered: registration.map(Registered::from).unwrap_or_default(),
+            registered: match profile {
+                Some(p) => {
+                    <lpe::osl::Osl as lpe_profile::ProfileDialect>::with_profile(p, registered)
+                }
+                None => registered,
+            },
+            profile: profile.map(|p| p.name.clone()),
         });
     }
     Ok(out)

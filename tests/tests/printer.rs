@@ -46,6 +46,7 @@ fn grammar_texts_print_and_reparse_to_the_same_tree() {
     let registered = Registered {
         events: vec!["U".into(), "1".into()],
         scatters: vec!["Y".into()],
+        ..Registered::default()
     };
     let mut cov = grammar::osl::coverage();
     for i in 0..5000 {

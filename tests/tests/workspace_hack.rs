@@ -25,7 +25,10 @@ fn workspace() -> PathBuf {
 const SELECTIONS: [(&[&str], &str); 5] = [
     (&["-p", "lpe-render"], "normal,build"),
     (&["--workspace"], "normal,build,dev"),
-    (&["-p", "lpe-render", "--features", "engines"], "normal,build,dev"),
+    (
+        &["-p", "lpe-render", "--features", "engines"],
+        "normal,build,dev",
+    ),
     (&["-p", "lpe-cli"], "normal,build"),
     (
         &["-p", "lpe-python", "--features", "extension-module"],
@@ -45,7 +48,9 @@ fn resolved(args: &[&str], edges: &str) -> BTreeMap<String, BTreeSet<String>> {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_string());
     let out = Command::new(cargo)
         .current_dir(workspace())
-        .args(["tree", "--locked", "--prefix", "none", "--format", "{p}|{f}"])
+        .args([
+            "tree", "--locked", "--prefix", "none", "--format", "{p}|{f}",
+        ])
         .args(["--target", "x86_64-unknown-linux-gnu", "-e", edges])
         .args(args)
         .output()

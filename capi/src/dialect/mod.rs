@@ -18,7 +18,7 @@ use lpe::{AovSet, Dialect, DialectName};
 use crate::error::lpe_error;
 
 /// A dialect as the C ABI compiles it.
-pub(crate) trait CDialect: Dialect {
+pub(crate) trait CDialect: Dialect + lpe_profile::ProfileDialect {
     /// The `LPE_DIALECT_*` number `lpe_set_compile` takes for the dialect.
     const ID: u32;
 

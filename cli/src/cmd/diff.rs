@@ -58,7 +58,7 @@ pub fn run(args: Args) -> ExitCode {
     if args.external.is_some() {
         return external::run(&args);
     }
-    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
+    with_dialect!(args.lang.dialect(), D => run_in::<D>(&args))
 }
 
 /// Runs the generated cases of dialect `D` on the selected engines.
@@ -143,7 +143,7 @@ fn report<D: Generate>(args: &Args, names: &[&str], t: Totals<D>, start: Instant
     let secs = start.elapsed().as_secs_f64().max(1e-9);
     println!(
         "{} dialect, engines: {}; seed {}, cases {}..{}, max size {}, {} paths per case",
-        args.lang.dialect,
+        args.lang.dialect(),
         names.join(", "),
         args.seed,
         args.first,
@@ -178,7 +178,7 @@ fn report<D: Generate>(args: &Args, names: &[&str], t: Totals<D>, start: Instant
         "grammar coverage: {} of {} productions ({} dialect){}",
         t.coverage.exercised(),
         t.coverage.total(),
-        args.lang.dialect,
+        args.lang.dialect(),
         match t.coverage.missing().as_slice() {
             [] => String::new(),
             missing => format!("; never written: {}", missing.join(", ")),
@@ -215,7 +215,7 @@ fn report<D: Generate>(args: &Args, names: &[&str], t: Totals<D>, start: Instant
     for (index, c) in &t.failures {
         println!(
             "\ncase {index} (regenerate: lpe-check diff --dialect {} --seed {} --first {index} --cases 1 --max-size {} --paths {}):\n{c}",
-            args.lang.dialect, args.seed, args.max_size, args.paths
+            args.lang.dialect(), args.seed, args.max_size, args.paths
         );
     }
     ExitCode::from(3)

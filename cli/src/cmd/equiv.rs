@@ -50,8 +50,8 @@ pub struct Args {
 
 /// Runs `lpe-check equiv`.
 pub fn run(args: Args) -> ExitCode {
-    let a = args.dialect_a.unwrap_or(args.lang.dialect);
-    let b = args.dialect_b.unwrap_or(args.lang.dialect);
+    let a = args.dialect_a.unwrap_or(args.lang.dialect());
+    let b = args.dialect_b.unwrap_or(args.lang.dialect());
     if a != b {
         return super::equiv_cross::run(&super::equiv_cross::Request {
             a: &args.a,
@@ -62,8 +62,10 @@ pub fn run(args: Args) -> ExitCode {
         });
     }
     let mut args = args;
-    args.lang.dialect = a;
-    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
+    if args.dialect_a.is_some() {
+        args.lang.dialect = Some(a);
+    }
+    with_dialect!(a, D => run_in::<D>(&args))
 }
 
 fn run_in<D: CliDialect>(args: &Args) -> ExitCode {

@@ -48,7 +48,7 @@ pub struct Args {
 
 /// Runs `lpe-check explain`.
 pub fn run(args: Args) -> ExitCode {
-    match with_dialect!(args.lang.dialect, D => run_in::<D>(&args)) {
+    match with_dialect!(args.lang.dialect(), D => run_in::<D>(&args)) {
         Ok(e) => {
             print!("{}", e.text);
             ExitCode::from(u8::from(e.landed.is_empty()))

@@ -57,41 +57,35 @@ pub struct Args {
     /// Output format.
     #[arg(long, value_enum, default_value_t = OutputFormat::Text)]
     pub format: OutputFormat,
-    /// The expression language every file's AOVs are read in: `renderman` or `osl`
-    /// (default `renderman`, with undeclared stages also checked for readings that
-    /// differ between the two).
-    #[arg(long)]
-    pub dialect: Option<lpe::DialectName>,
-    /// OSL only: user labels registered before parsing, `events=U;scatters=Y`.
-    #[arg(long)]
-    pub register: Option<String>,
-}
-
-impl Args {
-    /// `--dialect` (or RenderMan's, the default) with `--register`, as the other
-    /// subcommands read them.
-    fn lang(&self) -> DialectArgs {
-        DialectArgs {
-            dialect: self.dialect.unwrap_or(lpe::DialectName::RenderMan),
-            register: self.register.clone(),
-        }
-    }
+    /// The expression language every file's AOVs are read in: `--dialect renderman` or
+    /// `osl` (default `renderman`, with undeclared stages also checked for readings that
+    /// differ between the two), or a renderer's (`--renderer`, `--profile`), whose rules
+    /// lint then checks too.
+    #[command(flatten)]
+    pub lang: DialectArgs,
 }
 
 /// Runs `lpe-check lint`.
 pub fn run(args: Args) -> ExitCode {
-    with_dialect!(args.lang().dialect, D => run_in::<D>(&args))
+    with_dialect!(args.lang.dialect(), D => run_in::<D>(&args))
 }
 
 fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
+    let profile = match args.lang.renderer_profile() {
+        Ok(p) => p,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
     let req = Request {
         files: &args.files,
         ini: args.ini.as_deref(),
         partitions: &args.partition,
         universe: args.universe.as_deref(),
-        dialect_given: args.dialect.is_some(),
+        dialect_given: args.lang.dialect.is_some()
+            || args.lang.renderer.is_some()
+            || args.lang.profile.is_some(),
+        profile: profile.as_ref(),
     };
-    let out = match run::run::<D, _>(&req, |ini| args.lang().registration::<D>(ini)) {
+    let out = match run::run::<D, _>(&req, |ini| args.lang.registration::<D>(ini)) {
         Ok(out) => out,
         Err(RunError::Disagreement(e)) => {
             eprintln!("{e}");

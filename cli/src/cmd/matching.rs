@@ -41,7 +41,7 @@ pub fn run(args: Args) -> ExitCode {
     if let Err(e) = select_engines::<RenderMan>(&args.engine) {
         return bad_input(format!("error: {e}"));
     }
-    lpe::with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
+    lpe::with_dialect!(args.lang.dialect(), D => run_in::<D>(&args))
 }
 
 /// Runs `lpe-check match` in dialect `D`.

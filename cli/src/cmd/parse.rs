@@ -26,7 +26,7 @@ pub struct Args {
 
 /// Prints the canonical form of the expression.
 pub fn run(args: Args) -> ExitCode {
-    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
+    with_dialect!(args.lang.dialect(), D => run_in::<D>(&args))
 }
 
 fn run_in<D: CliDialect>(args: &Args) -> ExitCode {

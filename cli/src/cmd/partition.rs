@@ -46,7 +46,7 @@ pub struct Args {
 
 /// Runs `lpe-check partition`.
 pub fn run(args: Args) -> ExitCode {
-    with_dialect!(args.lang.dialect, D => run_in::<D>(&args))
+    with_dialect!(args.lang.dialect(), D => run_in::<D>(&args))
 }
 
 fn run_in<D: CliDialect>(args: &Args) -> ExitCode {

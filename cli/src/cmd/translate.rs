@@ -1,6 +1,10 @@
 //! `lpe-check translate --from renderman --to osl EXPR…` (and `--from osl --to
 //! renderman`): each expression in the other dialect, with a verdict proved on the
-//! automata ([`lpe::translate`], docs/language.md §19).
+//! automata ([`lpe::translate`], docs/language.md §19). `--from` and `--to` name renderer
+//! profiles (docs/profiles.md; `renderman` and `osl` are the base dialects' own): the
+//! OSL-based side's correspondence says which of its letters RenderMan's lobes become
+//! (`--from renderman --to karma`: every specular lobe is Karma's `G`), and its letters,
+//! prefixes and built-in names read the OSL source.
 //!
 //! Exit 0 when every translation is exact, 1 when one is not expressible, 2 on bad input
 //! (an expression that does not parse is reported on stderr and the others are still
@@ -22,6 +26,8 @@ use lpe::Dialect;
 use lpe::DialectName;
 use lpe_lint::read::{self, Limits};
 
+use lpe_profile::Profile;
+
 use crate::dialect::CliDialect;
 use crate::input::bad_input;
 use crate::witness::{recheck, Checked, Disagreement, Expect, DISAGREE};
@@ -40,14 +46,15 @@ pub enum Format {
 /// Arguments of `lpe-check translate`.
 #[derive(clap::Args, Debug)]
 pub struct Args {
-    /// The dialect the expressions are written in.
-    #[arg(long)]
-    pub from: DialectName,
-    /// The dialect to write them in.
-    #[arg(long)]
-    pub to: DialectName,
-    /// Changes to the default correspondence, e.g. `S4=S S5-S6=s 'key'='lg_key'`
-    /// (docs/language.md §19.1).
+    /// The renderer (or dialect) the expressions are written for: `renderman`, `osl`,
+    /// `hdprman`, `karma`, `arnold`, `vray`, `moonray`.
+    #[arg(long, value_name = "RENDERER")]
+    pub from: String,
+    /// The renderer (or dialect) to write them for, reading the other dialect.
+    #[arg(long, value_name = "RENDERER")]
+    pub to: String,
+    /// Changes to the correspondence (the OSL-based renderer's, else the default), e.g.
+    /// `S4=S S5-S6=s 'key'='lg_key'` (docs/language.md §19.1).
     #[arg(long, default_value = "")]
     pub correspondence: String,
     /// RenderMan source only: a rendermn.ini-style file with user macros.
@@ -83,19 +90,60 @@ struct Translated {
     notes: Vec<String>,
 }
 
+/// The two sides' profiles: `--from`, `--to`.
+struct Sides {
+    from: &'static Profile,
+    to: &'static Profile,
+}
+
+impl Sides {
+    fn read(args: &Args) -> Result<Sides, String> {
+        let side =
+            |flag: &str, name: &str| lpe_profile::by_name(name).map_err(|e| format!("{flag}: {e}"));
+        let sides = Sides {
+            from: side("--from", &args.from)?,
+            to: side("--to", &args.to)?,
+        };
+        if sides.from.dialect() == sides.to.dialect() {
+            return Err(format!(
+                "--from {} and --to {} both read {}'s dialect; translation is between the two \
+                 dialects (docs/profiles.md): compare two renderers' expressions with \
+                 `lpe-check equiv --renderer`",
+                args.from,
+                args.to,
+                sides.from.dialect()
+            ));
+        }
+        Ok(sides)
+    }
+
+    /// The OSL-based side, whose correspondence and registration apply.
+    fn osl(&self) -> &'static Profile {
+        if self.from.dialect() == DialectName::Osl {
+            self.from
+        } else {
+            self.to
+        }
+    }
+}
+
 /// Runs `lpe-check translate`.
 pub fn run(args: Args) -> ExitCode {
-    if args.from == args.to {
-        return bad_input(format!(
-            "error: --from and --to are both `{}`; translation is between the two dialects",
-            args.from
-        ));
-    }
-    let corr = match Correspondence::parse(&args.correspondence) {
+    let sides = match Sides::read(&args) {
+        Ok(s) => s,
+        Err(e) => return bad_input(format!("error: {e}")),
+    };
+    // The profile's correspondence first (checked when it loaded), then the user's
+    // changes to it.
+    let corr = match Correspondence::parse(sides.osl().correspondence())
+        .and_then(|c| c.apply(&args.correspondence))
+    {
         Ok(c) => c,
         Err(e) => return bad_input(format!("error: --correspondence: {e}")),
     };
-    let (sources, parser) = match sources(&args) {
+    let osl_registration =
+        <Osl as lpe_profile::ProfileDialect>::with_profile(sides.osl(), osl::Registered::none());
+    let (sources, parser) = match sources(&args, &sides) {
         Ok(s) => s,
         Err(e) => return bad_input(format!("error: {e}")),
     };
@@ -104,9 +152,9 @@ pub fn run(args: Args) -> ExitCode {
     // set is still translated, and the exit status says something was bad.
     let mut bad = false;
     for s in &sources {
-        let result = match args.from {
+        let result = match sides.from.dialect() {
             DialectName::RenderMan => translate_source::<RenderMan>(s, &parser, &corr),
-            DialectName::Osl => translate_source::<Osl>(s, &osl::Registered::none(), &corr),
+            DialectName::Osl => translate_source::<Osl>(s, &osl_registration, &corr),
         };
         match result {
             Ok(Ok(t)) => out.push(t),
@@ -124,7 +172,7 @@ pub fn run(args: Args) -> ExitCode {
     let text = match args.format {
         Format::Text => text(&out),
         Format::Json => json(&out, &args, &corr),
-        Format::Usda => usda(&out, &args),
+        Format::Usda => usda(&out, &args, sides.to.dialect()),
     };
     print!("{text}");
     if bad {
@@ -135,10 +183,10 @@ pub fn run(args: Args) -> ExitCode {
 
 /// The AOVs from the arguments or the file, and the RenderMan parser (`--ini`, or the
 /// ini file read).
-fn sources(args: &Args) -> Result<(Vec<Source>, renderman::Parser), String> {
+fn sources(args: &Args, sides: &Sides) -> Result<(Vec<Source>, renderman::Parser), String> {
     let mut parser = renderman::Parser::default();
     if let Some(ini) = &args.ini {
-        if args.from != DialectName::RenderMan {
+        if sides.from.dialect() != DialectName::RenderMan {
             return Err("--ini holds RenderMan macros; it needs --from renderman".into());
         }
         let text = std::fs::read_to_string(ini)
@@ -399,7 +447,7 @@ fn usd_string(s: &str) -> String {
     out
 }
 
-fn usda(out: &[Translated], args: &Args) -> String {
+fn usda(out: &[Translated], args: &Args, to: DialectName) -> String {
     let mut s = String::from("#usda 1.0\n(\n");
     let _ = writeln!(
         s,
@@ -413,7 +461,7 @@ fn usda(out: &[Translated], args: &Args) -> String {
     let _ = writeln!(
         s,
         "    custom string lpe:dialect = {}",
-        usd_string(&args.to.to_string())
+        usd_string(to.name())
     );
     let _ = writeln!(s, "    def Scope \"Vars\"\n    {{");
     let mut used = std::collections::BTreeSet::new();

@@ -14,7 +14,7 @@ use lpe_lint::check::dialect::LintDialect;
 use crate::error::InputError;
 
 /// An expression language as the command line reads and reports it.
-pub trait CliDialect: LintDialect {
+pub trait CliDialect: LintDialect + lpe_profile::ProfileDialect {
     /// The registration the arguments give (`--ini` or `--register`); the flag the
     /// dialect does not take is an error.
     fn registration(

@@ -31,6 +31,12 @@ pub enum Kind {
     /// An equivalence or partition question the analysis could not decide within its
     /// budget: neither a finding nor a clean bill, so it is reported, never silent.
     Undecided,
+    /// Every path the AOV matches passes a vertex the run's renderer never produces
+    /// (its profile's `never` rules): it renders black in that renderer.
+    NeverProduced,
+    /// A USD `sourceName` written with `lpe:` for a renderer that prepends the mark
+    /// itself (hdPrman), which then reads `lpe:lpe:…`.
+    DoubledLpeMark,
 }
 
 impl Kind {
@@ -49,6 +55,8 @@ impl Kind {
             Kind::Outside => "outside",
             Kind::AmbiguousDialect => "ambiguous_dialect",
             Kind::Undecided => "undecided",
+            Kind::NeverProduced => "never_produced",
+            Kind::DoubledLpeMark => "doubled_lpe_mark",
         }
     }
 }

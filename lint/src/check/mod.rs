@@ -21,6 +21,7 @@ pub mod json;
 pub mod labels;
 pub mod outcome;
 pub mod partition;
+pub mod renderer;
 pub mod run;
 pub mod text;
 
@@ -35,13 +36,15 @@ use crate::{Document, PartitionDecl};
 
 /// Lints the documents read (ini documents contribute only partitions) in `dialect`, and
 /// the AOVs of those that declare no dialect in `both` too (`None`: the user named the
-/// dialect, nothing is ambiguous); then the `extra` partitions
+/// dialect, nothing is ambiguous), with the rules of the renderer's `profile` when there
+/// is one ([`renderer`]); then the `extra` partitions
 /// over the AOVs of every file. Witnesses are re-checked with the reference matcher; a
 /// failed re-check is an engine bug, returned as the error.
 pub fn lint<D: LintDialect>(
     docs: &[Document],
     dialect: &Lint<'_, D>,
     both: Option<&BothDialects>,
+    profile: Option<&lpe_profile::Profile>,
     universe: &D::Lpe,
     extra: &[PartitionDecl],
 ) -> Result<Outcome<D::Lpe>, Disagreement> {
@@ -59,6 +62,15 @@ pub fn lint<D: LintDialect>(
             lpe: None,
         }));
         aovs::check(doc, &mut out.aovs[first..], dialect, &mut out.findings);
+        if let Some(profile) = profile {
+            renderer::check(
+                profile,
+                doc.format,
+                &out.aovs[first..],
+                dialect,
+                &mut out.findings,
+            );
+        }
         if let Some(both) = both {
             ambiguity::check(doc, &out.aovs[first..], both, &mut out.findings)?;
         }
@@ -126,7 +138,7 @@ mod undecided_tests {
         let universe = dialect
             .parse(<RenderMan as lpe::Dialect>::DEFAULT_UNIVERSE)
             .unwrap();
-        let out = lint(&[doc], &dialect, Some(&both), &universe, &[]).unwrap();
+        let out = lint(&[doc], &dialect, Some(&both), None, &universe, &[]).unwrap();
         let kinds: Vec<(&str, &str)> = out
             .findings
             .iter()

@@ -30,6 +30,9 @@ pub struct Request<'a> {
     /// read in it and none is ambiguous, so `ambiguous_dialect` is not checked. When the
     /// dialect is only the default, a stage that declares none is read both ways.
     pub dialect_given: bool,
+    /// The renderer's profile (`--renderer`, `--profile`): its rules are checked too
+    /// (module `renderer`).
+    pub profile: Option<&'a lpe_profile::Profile>,
 }
 
 /// Why a run could not check anything.
@@ -155,8 +158,15 @@ where
         .parse(universe)
         .map_err(|e| RunError::Universe(e.message))?;
     let extra = inputs::command_line_partitions(req.partitions);
-    let outcome = super::lint(&read.docs, &dialect, both.as_ref(), &universe, &extra)
-        .map_err(RunError::Disagreement)?;
+    let outcome = super::lint(
+        &read.docs,
+        &dialect,
+        both.as_ref(),
+        req.profile,
+        &universe,
+        &extra,
+    )
+    .map_err(RunError::Disagreement)?;
     Ok(Run {
         outcome,
         statuses: read.statuses,

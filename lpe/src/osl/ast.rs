@@ -193,6 +193,11 @@ pub struct Lpe {
     pub warnings: Vec<Warning>,
     /// Set algebra over the operands, or `None` for a plain expression.
     pub algebra: Option<Algebra<Expr>>,
+    /// The renderer's prefix the source was written with (`unoccluded` for
+    /// `unoccluded;C.*L`), when its registration accepts prefixes
+    /// ([`crate::osl::Registered::prefixes`]): it changes what is accumulated, never
+    /// which paths match.
+    pub prefix: Option<String>,
 }
 
 impl Lpe {
@@ -211,6 +216,7 @@ impl Lpe {
             expr,
             warnings: Vec::new(),
             algebra: None,
+            prefix: None,
         }
     }
 
@@ -222,6 +228,7 @@ impl Lpe {
                 expr: tree.leaves()[0].clone(),
                 warnings: Vec::new(),
                 algebra: Some(tree),
+                prefix: None,
             },
         }
     }
@@ -363,6 +370,9 @@ impl fmt::Display for Expr {
 
 impl fmt::Display for Lpe {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(p) = &self.prefix {
+            write!(f, "{p};")?;
+        }
         match &self.algebra {
             Some(t) => write_operands(f, t, |e| matches!(e, Expr::Alt(_))),
             None => write!(f, "{}", self.expr),

@@ -64,6 +64,22 @@ pub enum ErrorKind {
     /// unbalanced algebra group, an operator inside an operand, too deep or too many
     /// operands.
     Algebra(crate::algebra::AlgebraError),
+    /// A `name;` prefix the registration's renderer does not accept
+    /// ([`crate::osl::Registered::prefixes`]).
+    UnacceptedPrefix {
+        /// The prefix as written, without its `;`.
+        prefix: String,
+        /// The prefixes the renderer accepts.
+        accepted: Vec<String>,
+    },
+    /// A whole source that is a name, not an expression, and none of the renderer's
+    /// built-in AOVs ([`crate::osl::Registered::builtins`]).
+    UnknownBuiltin {
+        /// The name as written.
+        name: String,
+        /// The nearest built-in names, best first.
+        nearest: Vec<String>,
+    },
     /// More vertex positions after unrolling than [`crate::limits::Limits::max_positions`].
     TooManyPositions {
         /// The expression's positions.
@@ -122,6 +138,22 @@ impl Error {
                 let mut m = e.to_string();
                 m[..1].make_ascii_uppercase();
                 format!("{m} ({})", e.help())
+            }
+            ErrorKind::UnacceptedPrefix { prefix, accepted } => {
+                let list: Vec<String> = accepted.iter().map(|p| format!("`{p};`")).collect();
+                let accepted = if list.is_empty() {
+                    "none".to_string()
+                } else {
+                    list.join(", ")
+                };
+                format!("`{prefix};` is not a prefix this renderer reads (it reads: {accepted})")
+            }
+            ErrorKind::UnknownBuiltin { name, nearest } => {
+                let hint = match nearest.first() {
+                    Some(n) => format!("; did you mean `{n}`?"),
+                    None => String::new(),
+                };
+                format!("`{name}` is no expression and none of this renderer's built-in AOVs{hint}")
             }
             ErrorKind::TooManyPositions { positions, max } => format!(
                 "The expression unrolls to {positions} vertex positions, over the limit of {max}"

@@ -44,7 +44,7 @@ pub const BASIC: [(&str, &str); 7] = [
 pub use error::{Error, ErrorKind};
 pub use parse::{parse, parse_source, parse_with, SOURCE_MARK};
 pub use path::{Path, PathError, PathErrorKind, Vertex};
-pub use symbol::{LabelKind, Registered, RegisteredError, Symbol};
+pub use symbol::{LabelKind, Registered, RegisteredError, Symbol, EVENT_LABELS, SCATTERING_LABELS};
 
 use crate::algebra::Algebra;
 use crate::automata::error::CompileError;

@@ -47,8 +47,9 @@ pub fn parse(src: &str, registered: &Registered) -> std::result::Result<Lpe, Err
 /// the pipeline's, not OSL's: OSL's parser would read `l`, `p`, `e` as custom labels.
 pub const SOURCE_MARK: &str = "lpe:";
 
-/// Parses an AOV source as pipelines write it: a leading [`SOURCE_MARK`] is skipped, and
-/// error and warning positions count from `src` as written.
+/// Parses an AOV source as pipelines write it: a leading [`SOURCE_MARK`] is skipped, then
+/// it parses as [`parse`] does, error and warning positions counting from `src` as
+/// written.
 ///
 /// ```
 /// use lpe::osl::{parse, parse_source, Registered};
@@ -74,11 +75,137 @@ pub fn parse_source(src: &str, registered: &Registered) -> std::result::Result<L
     }
 }
 
-/// Parses with explicit limits (`max_repeat`, `max_depth`, `max_positions` apply).
+/// What a renderer's registration reads before an expression: a prefix it accepts
+/// (`unoccluded;`, [`Registered::prefixes`]), taken off and kept in [`Lpe::prefix`], then
+/// one of its built-in AOV names ([`Registered::builtins`]), read as that AOV's
+/// expression; a `name;` prefix it does not read, or a name that is none of its
+/// built-ins, is an error naming what it reads. Plain OSL (no prefixes, no built-ins)
+/// reads neither.
+///
+/// ```
+/// use lpe::osl::{parse, Registered};
+///
+/// let karma = Registered {
+///     prefixes: Some(vec!["unoccluded".into()]),
+///     builtins: vec![("diffuse_direct".into(), "C<RD>L".into())],
+///     ..Registered::none()
+/// };
+/// assert_eq!(parse("unoccluded;C<RD>L", &karma).unwrap().prefix.as_deref(), Some("unoccluded"));
+/// assert_eq!(parse("shadow;C<RD>L", &karma).unwrap_err().pos, 0);
+/// assert_eq!(parse("diffuse_direct", &karma).unwrap().expr, parse("C<RD>L", &karma).unwrap().expr);
+/// ```
+fn parse_renderer(
+    src: &str,
+    registered: &Registered,
+    limits: &Limits,
+) -> std::result::Result<Lpe, Error> {
+    let mut start = 0;
+    let mut prefix = None;
+    if let Some(accepted) = &registered.prefixes {
+        if let Some(name) = written_prefix(src) {
+            if !accepted.iter().any(|a| a == name) {
+                return Err(Error {
+                    kind: ErrorKind::UnacceptedPrefix {
+                        prefix: name.to_string(),
+                        accepted: accepted.clone(),
+                    },
+                    pos: 0,
+                });
+            }
+            prefix = Some(name.to_string());
+            start = name.len() + 1;
+        }
+    }
+    let body = &src[start..];
+    let mut lpe = match builtin(body, registered) {
+        // A built-in's expression is the renderer's: its errors point at the name.
+        Builtin::Expression(expr) => {
+            parse_expression(expr, registered, limits).map_err(|e| Error { pos: start, ..e })?
+        }
+        Builtin::Unknown(nearest) => {
+            return Err(Error {
+                kind: ErrorKind::UnknownBuiltin {
+                    name: body.to_string(),
+                    nearest,
+                },
+                pos: start,
+            })
+        }
+        Builtin::NotAName => match parse_expression(body, registered, limits) {
+            Ok(mut lpe) => {
+                lpe.shift_warnings(start);
+                lpe
+            }
+            Err(e) => {
+                return Err(Error {
+                    pos: e.pos + start,
+                    ..e
+                })
+            }
+        },
+    };
+    lpe.prefix = prefix;
+    Ok(lpe)
+}
+
+/// The name of a leading `name;` (letters and `_`, then `;`).
+fn written_prefix(s: &str) -> Option<&str> {
+    let (name, _) = s.split_once(';')?;
+    let word = !name.is_empty() && name.bytes().all(|b| b.is_ascii_alphabetic() || b == b'_');
+    word.then_some(name)
+}
+
+/// What a whole source is with respect to the registration's built-in AOVs.
+enum Builtin<'a> {
+    /// One of them: its expression.
+    Expression(&'a str),
+    /// A name that is none of them (the nearest ones given).
+    Unknown(Vec<String>),
+    /// Not a name: an expression to parse.
+    NotAName,
+}
+
+/// A source is a name when it is a lowercase word (`a`–`z`, digits, `_`) that OSL could
+/// not read: it holds a character other than the lowercase items `s` (straight) and `x`
+/// (NONE), so `ss` stays an expression. Only a registration with built-ins reads names.
+fn builtin<'a>(body: &str, registered: &'a Registered) -> Builtin<'a> {
+    if let Some((_, expr)) = registered.builtins.iter().find(|(n, _)| n == body) {
+        return Builtin::Expression(expr);
+    }
+    let word = body.starts_with(|c: char| c.is_ascii_lowercase())
+        && body
+            .bytes()
+            .all(|b| b.is_ascii_lowercase() || b.is_ascii_digit() || b == b'_');
+    let osl_could_read = body.bytes().all(|b| b == b's' || b == b'x');
+    if registered.builtins.is_empty() || !word || osl_could_read {
+        return Builtin::NotAName;
+    }
+    let names = registered.builtins.iter().map(|(n, _)| n.as_str());
+    // Three edits: a typo of a built-in (`diffuse_dirct`), not an unrelated word.
+    Builtin::Unknown(
+        crate::suggest::close(body, names, 3)
+            .map(str::to_string)
+            .into_iter()
+            .collect(),
+    )
+}
+
+/// Parses with explicit limits (`max_repeat`, `max_depth`, `max_positions` apply),
+/// after what the registration's renderer reads before an expression (a prefix, a
+/// built-in AOV name: [`Registered::prefixes`], [`Registered::builtins`]).
 /// Set algebra over whole expressions (`A - B`, `A & B`, `^A`) is found first by the
 /// dialect-independent [`crate::algebra`] layer; each operand is then an OSL expression,
 /// its errors and warnings at their bytes in the whole text.
 pub fn parse_with(
+    src: &str,
+    registered: &Registered,
+    limits: &Limits,
+) -> std::result::Result<Lpe, Error> {
+    parse_renderer(src, registered, limits)
+}
+
+/// An expression (set algebra included), after any prefix or built-in name.
+fn parse_expression(
     src: &str,
     registered: &Registered,
     limits: &Limits,

@@ -39,15 +39,25 @@ pub enum LabelKind {
     Scattering,
 }
 
-/// User-registered labels (OSL's `AccumAutomata::addEventType` / `addScatteringType`),
-/// in registration order. Registration changes how other expressions match: registered
-/// labels join the basic set the eater excludes.
+/// What a renderer registers before it reads its rules: user labels (OSL's
+/// `AccumAutomata::addEventType` / `addScatteringType`), in registration order, and what
+/// a renderer built on OSL reads around an expression (its prefixes and named AOVs, from
+/// its profile). Registered labels change how other expressions match: they join the
+/// basic set the eater excludes. Prefixes and built-in names only change how an AOV
+/// source reads ([`crate::osl::parse_source`]); the text form (`events=…;scatters=…`)
+/// carries the labels alone.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash)]
 pub struct Registered {
     /// Extra event types (slot 0).
     pub events: Vec<String>,
     /// Extra scattering types (slot 1).
     pub scatters: Vec<String>,
+    /// The prefixes a renderer reads before an AOV source (`unoccluded` for
+    /// `unoccluded;C.*L`), without their `;`. `None`: plain OSL, which reads no prefix.
+    pub prefixes: Option<Vec<String>>,
+    /// The AOVs a renderer defines by name, usable as a whole source (Arnold's
+    /// `diffuse_direct`): name and expression, in this dialect.
+    pub builtins: Vec<(String, String)>,
 }
 
 impl Registered {

@@ -104,7 +104,14 @@ impl Correspondence {
     /// scatterings `D G S s`) or `'rm'='osl'` (the RenderMan label `rm` is the OSL custom
     /// label `osl`).
     pub fn parse(declaration: &str) -> Result<Correspondence, DeclarationError> {
-        let mut c = Correspondence::default();
+        Correspondence::default().apply(declaration)
+    }
+
+    /// This correspondence with `declaration` applied on top (a renderer profile's, then
+    /// the user's changes), in [`Correspondence::parse`]'s syntax; error positions count
+    /// in `declaration`.
+    pub fn apply(self, declaration: &str) -> Result<Correspondence, DeclarationError> {
+        let mut c = self;
         let mut pos = 0;
         for part in declaration.split(|ch: char| ch == ',' || ch.is_whitespace()) {
             let at = pos;

@@ -80,13 +80,18 @@ pub struct Lpe {
 
 /// What an OSL parse is registered with: the user event and scattering labels
 /// (`events=…;scatters=…`, OSL's `addEventType` / `addScatteringType`) as plain
-/// strings, and the limits.
+/// strings, a renderer's prefixes and built-in AOV names, and the limits.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Registration {
     /// Extra event labels.
     pub events: Vec<String>,
     /// Extra scattering labels.
     pub scatters: Vec<String>,
+    /// A renderer's prefixes (`unoccluded` for `unoccluded;C<RD>L`), read and dropped.
+    pub prefixes: Vec<String>,
+    /// A renderer's built-in AOVs: a source that is one of the names reads as its
+    /// expression.
+    pub builtins: Vec<(String, String)>,
     /// The parse limits.
     pub limits: Limits,
 }

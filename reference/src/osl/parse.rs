@@ -16,8 +16,34 @@ use super::ast::{Expr, Lpe, Pattern, Registration, Slot, Sym, Vertex, STOP};
 /// The most vertex patterns one `<…>` may stand for (§18.4).
 pub const MAX_GROUP_ALTERNATIVES: u64 = 256;
 
-/// Parses a whole OSL source under `registration`.
+/// Parses a whole OSL source under `registration`, after what a renderer's registration
+/// reads before an expression (docs/profiles.md, "What a profile changes"): a leading
+/// `name;` whose name the renderer lists is dropped (a prefix changes what accumulates,
+/// not what matches); then a source that is exactly one of its built-in AOV names is
+/// that AOV's expression. Anything else is an expression.
 pub fn parse(src: &str, registration: &Registration) -> Result<Lpe, FrontError> {
+    let rest = match src.find(';') {
+        Some(i) if registration.prefixes.iter().any(|p| *p == src[..i]) => &src[i + 1..],
+        _ => src,
+    };
+    for (name, expr) in &registration.builtins {
+        if name == rest {
+            return expression(expr, registration);
+        }
+    }
+    if rest.len() == src.len() {
+        return expression(src, registration);
+    }
+    // Positions count from the source as written.
+    let offset = src.len() - rest.len();
+    expression(rest, registration).map_err(|mut e| {
+        e.pos += offset;
+        e
+    })
+}
+
+/// Parses one OSL expression (set algebra included) under `registration`.
+fn expression(src: &str, registration: &Registration) -> Result<Lpe, FrontError> {
     if src.is_empty() {
         return Err(FrontError::new(ErrorKind::Syntax, 0, "Empty expression"));
     }

@@ -535,6 +535,7 @@ mod tests {
         let registered = Registered {
             events: vec!["U".into()],
             scatters: vec!["Y".into()],
+            ..Registered::default()
         };
         let reg = |i: usize| {
             if i.is_multiple_of(2) {

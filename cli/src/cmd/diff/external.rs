@@ -30,7 +30,7 @@ pub fn run(args: &Args) -> ExitCode {
     }
     // No `--ini` here: given RenderMan cases read with the default parser, as generated
     // ones are.
-    lpe::with_dialect!(args.lang.dialect, D => match args.lang.registration::<D>(None) {
+    lpe::with_dialect!(args.lang.dialect(), D => match args.lang.registration::<D>(None) {
         Ok(registration) => run_in::<D>(args, command, registration),
         Err(e) => bad_input(format!("error: {e}")),
     })
@@ -79,7 +79,7 @@ fn run_in<D: Generate + CliDialect>(
         "external: {} ({}, {} dialect); engines: {}",
         setup.command,
         report.name.as_deref().unwrap_or("unnamed"),
-        args.lang.dialect,
+        args.lang.dialect(),
         names.join(", ")
     );
     if let Cases::Generated(run) = &cases {

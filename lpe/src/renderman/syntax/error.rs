@@ -133,48 +133,9 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
-/// Levenshtein distance, ignoring ASCII case: for "did you mean" suggestions.
-pub fn edit_distance(a: &str, b: &str) -> usize {
-    let a: Vec<char> = a.chars().map(|c| c.to_ascii_lowercase()).collect();
-    let b: Vec<char> = b.chars().map(|c| c.to_ascii_lowercase()).collect();
-    let mut prev: Vec<usize> = (0..=b.len()).collect();
-    for (i, ca) in a.iter().enumerate() {
-        let mut cur = vec![i + 1];
-        for (j, cb) in b.iter().enumerate() {
-            let sub = prev[j] + usize::from(ca != cb);
-            cur.push(sub.min(prev[j + 1] + 1).min(cur[j] + 1));
-        }
-        prev = cur;
-    }
-    prev[b.len()]
-}
-
-/// The candidates nearest to `name`, best first, at most `n`.
-pub(crate) fn nearest<'a>(
-    name: &str,
-    candidates: impl IntoIterator<Item = &'a str>,
-    n: usize,
-) -> Vec<&'a str> {
-    let mut scored: Vec<(usize, &str)> = candidates
-        .into_iter()
-        .map(|c| (edit_distance(name, c), c))
-        .collect();
-    scored.sort();
-    scored.dedup_by(|a, b| a.1.eq_ignore_ascii_case(b.1));
-    scored.into_iter().take(n).map(|(_, c)| c).collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn distance_is_levenshtein() {
-        assert_eq!(edit_distance("holdout", "holdouts"), 1);
-        assert_eq!(edit_distance("kitten", "sitting"), 3);
-        assert_eq!(edit_distance("ABC", "abc"), 0);
-        assert_eq!(edit_distance("", "abc"), 3);
-    }
 
     #[test]
     fn caret_sits_under_the_span() {

@@ -27,8 +27,9 @@ mod parser;
 
 pub use crate::limits::Limits;
 
-pub(crate) use error::nearest;
-pub use error::{edit_distance, Error, ErrorKind};
+pub use crate::suggest::edit_distance;
+use crate::suggest::nearest;
+pub use error::{Error, ErrorKind};
 
 use crate::algebra::{self, AlgebraError, ParseError};
 use crate::renderman::ast::{Atom, EventPos, Item, LabelPos, Lpe, Triple, TypePos};
