@@ -58,8 +58,18 @@ impl DialectArgs {
         &self,
         ini: Option<&std::path::Path>,
     ) -> Result<D::Registration, InputError> {
+        self.registration_under::<D>(ini, self.renderer_profile()?.as_ref())
+    }
+
+    /// [`DialectArgs::registration`] under `profile` (the one the arguments name, or one
+    /// a stage names).
+    pub fn registration_under<D: CliDialect>(
+        &self,
+        ini: Option<&std::path::Path>,
+        profile: Option<&Profile>,
+    ) -> Result<D::Registration, InputError> {
         let base = D::registration(ini, self.register.as_deref())?;
-        let Some(profile) = self.renderer_profile()? else {
+        let Some(profile) = profile else {
             return Ok(base);
         };
         if let Some(given) = self.dialect.filter(|d| *d != profile.dialect()) {
@@ -69,7 +79,7 @@ impl DialectArgs {
                 base: profile.dialect(),
             });
         }
-        Ok(D::with_profile(&profile, base))
+        Ok(D::with_profile(profile, base))
     }
 
     /// The arguments that select the profile again, as a replay command writes them.

@@ -751,3 +751,59 @@ fn lint_under_hdprmans_profile_flags_the_doubled_lpe_mark() {
         .collect();
     assert_eq!(kinds, ["parse_error", "empty", "equivalent", "unfed_lobe"]);
 }
+
+/// Without `--renderer`, a stage names its renderer: `karma_settings.usda` by its
+/// `karma:` RenderSettings attributes (Karma's `A` and `unoccluded;` parse, its `S` is
+/// never produced), `renderer_declared.usda` by `lpe:renderer = "hdprman"` (the marked
+/// sourceName is doubled). Two stages naming different renderers, and an `lpe:renderer`
+/// that names no profile, are bad input (exit 2) with the names.
+#[test]
+fn a_stage_names_its_renderer_by_attribute_or_by_its_settings_namespace() {
+    let (code, v) = json(&["tests/testdata/usd/karma_settings.usda"]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        findings(&v),
+        triples(&[("never_produced", "specular", "/vars/specular")])
+    );
+    let (code, v) = json(&["tests/testdata/usd/renderer_declared.usda"]);
+    assert_eq!(code, 1);
+    assert_eq!(
+        findings(&v),
+        triples(&[("doubled_lpe_mark", "marked", "/vars/marked")])
+    );
+    let (code, _, err) = lpe_check(&[
+        "lint",
+        "tests/testdata/usd/karma_settings.usda",
+        "tests/testdata/usd/renderer_declared.usda",
+    ]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("names renderer `hdprman`, but tests/testdata/usd/karma_settings.usda"),
+        "{err}"
+    );
+    // Naming the dialect reads as told, with no renderer: plain OSL refuses Karma's `A`
+    // and `unoccluded;`, and nothing is never_produced.
+    let (_, v) = json(&["--dialect", "osl", "tests/testdata/usd/karma_settings.usda"]);
+    let kinds: Vec<&str> = v["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| f["kind"].as_str().unwrap())
+        .collect();
+    assert_eq!(kinds, ["parse_error", "parse_error"], "{v}");
+    let dir = std::env::temp_dir().join(format!("lpe-renderer-attr-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let bad = dir.join("bad.usda");
+    std::fs::write(
+        &bad,
+        "#usda 1.0\ndef RenderSettings \"s\"\n{\n    custom string lpe:renderer = \"karm\"\n}\n",
+    )
+    .unwrap();
+    let (code, _, err) = lpe_check(&["lint", bad.to_str().unwrap()]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("</s>.lpe:renderer") && err.contains("did you mean `karma`?"),
+        "{err}"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

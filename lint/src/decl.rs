@@ -117,6 +117,12 @@ pub struct Document {
     /// The dialect of the file's expressions, when the file says (`None`: a USD stage
     /// without `lpe:dialect`, whose expressions every delegate reads in its own dialect).
     pub dialect: Option<DialectDecl>,
+    /// The renderer profile the stage names in an `lpe:renderer` attribute, with where.
+    pub renderer: Option<(String, Location)>,
+    /// The namespaces of the attributes authored on the stage's `RenderSettings` prims
+    /// (`karma` for `karma:global:...`), with the first prim holding each: a stage set up
+    /// for one renderer holds that renderer's settings.
+    pub settings_namespaces: std::collections::BTreeMap<String, String>,
     /// Light-group labels the stage's lights carry; `None` when the file holds no light
     /// at all (a settings-only layer, a RIB display file): then nothing can be checked.
     pub light_groups: Option<BTreeSet<String>>,
@@ -140,6 +146,8 @@ impl Document {
                 dialect,
                 location: None,
             }),
+            renderer: None,
+            settings_namespaces: Default::default(),
             light_groups: None,
             object_groups: None,
             ordered_vars: None,

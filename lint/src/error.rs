@@ -75,6 +75,17 @@ pub enum ReadError {
         /// What is wrong.
         problem: Box<DialectProblem>,
     },
+    /// An `lpe:renderer` declaration that names no renderer profile, or two that name
+    /// different ones.
+    #[error("{}: {at}: {message}", path.display())]
+    Renderer {
+        /// The file.
+        path: PathBuf,
+        /// The attribute.
+        at: Box<Location>,
+        /// What is wrong (the known renderers, with a did-you-mean).
+        message: String,
+    },
     /// A bad `rendermn.ini` line (the line number is in `error`).
     #[error("{}: {error}", path.display())]
     Ini {

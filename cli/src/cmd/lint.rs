@@ -23,6 +23,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use lpe::with_dialect;
+use lpe_lint::check::renderer;
 use lpe_lint::check::run::{self, Request, RunError};
 
 use crate::dialect::CliDialect;
@@ -65,27 +66,48 @@ pub struct Args {
     pub lang: DialectArgs,
 }
 
-/// Runs `lpe-check lint`.
+/// Runs `lpe-check lint`: the files are read first, so that without `--renderer`,
+/// `--profile` or `--dialect` the renderer the stages name (`lpe:renderer`, or one
+/// renderer's RenderSettings attributes) chooses the dialect and adds its rules.
 pub fn run(args: Args) -> ExitCode {
-    with_dialect!(args.lang.dialect(), D => run_in::<D>(&args))
-}
-
-fn run_in<D: CliDialect>(args: &Args) -> ExitCode {
-    let profile = match args.lang.renderer_profile() {
+    let given = match args.lang.renderer_profile() {
         Ok(p) => p,
         Err(e) => return bad_input(format!("error: {e}")),
     };
-    let req = Request {
+    let mut req = Request {
         files: &args.files,
         ini: args.ini.as_deref(),
         partitions: &args.partition,
         universe: args.universe.as_deref(),
-        dialect_given: args.lang.dialect.is_some()
-            || args.lang.renderer.is_some()
-            || args.lang.profile.is_some(),
-        profile: profile.as_ref(),
+        dialect_given: args.lang.dialect.is_some() || given.is_some(),
+        profile: None,
     };
-    let out = match run::run::<D, _>(&req, |ini| args.lang.registration::<D>(ini)) {
+    let read = run::read(&req);
+    let profile = match given {
+        Some(p) => Some(p),
+        None if args.lang.dialect.is_none() => match renderer::named_by(&read.docs) {
+            Ok(Some((p, how))) => {
+                if args.format == OutputFormat::Text {
+                    eprintln!("note: reading as {} ({}), named by {how}", p.title, p.name);
+                }
+                req.dialect_given = true;
+                Some(p.clone())
+            }
+            Ok(None) => None,
+            Err(e) => return bad_input(format!("error: {e}")),
+        },
+        None => None,
+    };
+    req.profile = profile.as_ref();
+    let dialect = profile
+        .as_ref()
+        .map_or(args.lang.dialect(), lpe_profile::Profile::dialect);
+    with_dialect!(dialect, D => run_in::<D>(&args, &req, read))
+}
+
+fn run_in<D: CliDialect>(args: &Args, req: &Request<'_>, read: run::Inputs) -> ExitCode {
+    let registration = |ini: Option<&std::path::Path>| args.lang.registration_under::<D>(ini, req.profile);
+    let out = match run::check::<D, _>(req, read, registration) {
         Ok(out) => out,
         Err(RunError::Disagreement(e)) => {
             eprintln!("{e}");

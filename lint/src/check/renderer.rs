@@ -9,6 +9,10 @@
 //! A prefix the renderer does not read and a name that is none of its built-in AOVs are
 //! parse errors under the profile's registration (`parse_error`, with the accepted
 //! prefixes or the nearest built-in name in the message).
+//!
+//! Without `--renderer`, a stage names its renderer ([`named_by`]): an `lpe:renderer`
+//! attribute, else the one profile whose settings namespace (`karma:`) its
+//! `RenderSettings` attributes use.
 
 use lpe::analysis::{self, Decision};
 use lpe_profile::{Never, Profile};
@@ -16,7 +20,48 @@ use lpe_profile::{Never, Profile};
 use super::dialect::{Lint, LintDialect};
 use super::finding::{Finding, Kind};
 use super::outcome::Linted;
-use crate::Format;
+use crate::{Document, Format};
+
+/// The renderer `doc` names, with how it names it: its `lpe:renderer`, else the one
+/// shipped profile whose settings namespace its `RenderSettings` attributes use (`None`
+/// when none does, or several do: a stage set up for two renderers names neither).
+pub fn of_document(doc: &Document) -> Option<(&'static Profile, String)> {
+    if let Some((name, at)) = &doc.renderer {
+        let profile = lpe_profile::by_name(name).ok()?;
+        return Some((profile, format!("`lpe:renderer` at {at}")));
+    }
+    let mut found = lpe_profile::shipped().iter().filter_map(|p| {
+        let ns = p.settings_namespace()?;
+        let prim = doc.settings_namespaces.get(ns)?;
+        Some((p, format!("the `{ns}:` attributes of <{prim}>")))
+    });
+    let first = found.next()?;
+    found.next().is_none().then_some(first)
+}
+
+/// The renderer the documents name ([`of_document`]): the one they agree on, `None` when
+/// none names one, an error naming two that differ.
+pub fn named_by(docs: &[Document]) -> Result<Option<(&'static Profile, String)>, String> {
+    let mut named: Option<(&'static Profile, String)> = None;
+    for doc in docs {
+        let Some((p, how)) = of_document(doc) else {
+            continue;
+        };
+        let how = format!("{} ({how})", doc.file.display());
+        match &named {
+            Some((q, first)) if q.name != p.name => {
+                return Err(format!(
+                    "{how} names renderer `{}`, but {first} names `{}`: lint them apart, or \
+                     name one with --renderer",
+                    p.name, q.name
+                ))
+            }
+            Some(_) => {}
+            None => named = Some((p, how)),
+        }
+    }
+    Ok(named)
+}
 
 /// Appends the profile's findings on the AOVs of one file (`linted`, read as `format`)
 /// to `findings`, after the per-AOV checks (an AOV already reported empty is skipped).

@@ -12,6 +12,7 @@ use serde_json::Value;
 use super::ambiguity::BothDialects;
 use super::dialect::{Lint, LintDialect};
 use super::json::{self, FileStatus};
+pub use super::inputs::Inputs;
 use super::{inputs, text, Outcome};
 use crate::read::Limits;
 use crate::witness::Disagreement;
@@ -120,10 +121,11 @@ impl<E: fmt::Display> Run<E> {
     }
 }
 
-/// Reads and lints `req`'s files in dialect `D`. `registration` builds the dialect's
-/// registration from the ini file it is given (`None` for a dialect that reads ini
-/// files with the others, or when there is none); a dialect that does not read ini
-/// files gets the first one there is, and decides whether that is an error.
+/// Reads and lints `req`'s files in dialect `D` ([`read`], then [`check`]).
+/// `registration` builds the dialect's registration from the ini file it is given
+/// (`None` for a dialect that reads ini files with the others, or when there is none); a
+/// dialect that does not read ini files gets the first one there is, and decides
+/// whether that is an error.
 pub fn run<D, X>(
     req: &Request<'_>,
     registration: impl FnOnce(Option<&Path>) -> Result<D::Registration, X>,
@@ -132,8 +134,27 @@ where
     D: LintDialect,
     X: fmt::Display,
 {
-    let limits = Limits::default();
+    check::<D, X>(req, read(req), registration)
+}
+
+/// Reads `req`'s files (ini files first), before any dialect is chosen: the renderer the
+/// stages name ([`super::renderer::named_by`]) can then choose it.
+pub fn read(req: &Request<'_>) -> Inputs {
     let (inis, others) = inputs::split(req.ini, req.files);
+    inputs::read_all(&inis, &others, &Limits::default())
+}
+
+/// Lints what [`read`] read, in dialect `D`; `registration` as for [`run`].
+pub fn check<D, X>(
+    req: &Request<'_>,
+    read: Inputs,
+    registration: impl FnOnce(Option<&Path>) -> Result<D::Registration, X>,
+) -> Result<Run<D::Lpe>, RunError>
+where
+    D: LintDialect,
+    X: fmt::Display,
+{
+    let (inis, _) = inputs::split(req.ini, req.files);
     let ini = if D::READS_INI {
         None
     } else {
@@ -143,7 +164,6 @@ where
         file: ini.map(Path::to_path_buf),
         message: e.to_string(),
     })?;
-    let read = inputs::read_all(&inis, &others, &limits);
     // Unless the user named the dialect, undeclared stages are read in both, RenderMan
     // with the ini files' macros.
     let both = (!req.dialect_given).then(|| BothDialects::new(read.config.parser()));

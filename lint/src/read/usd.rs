@@ -28,6 +28,12 @@
 //! that is no string, or two prims naming different dialects is a [`ReadError::Dialect`]
 //! at the attribute: reading on would check the expressions in a dialect the stage does
 //! not mean.
+//!
+//! The renderer is named by `custom string lpe:renderer = "karma"` (a shipped profile's
+//! name, docs/profiles.md); a name that is no profile, or two prims naming different
+//! ones, is a [`ReadError::Renderer`]. The namespaces of the attributes authored on
+//! `RenderSettings` prims (`karma:`, `arnold:`, `ri:`) are recorded too: lint takes the
+//! renderer from them when exactly one renderer's are there.
 
 use std::collections::BTreeSet;
 use std::path::Path;
@@ -56,6 +62,10 @@ pub const OBJECT_GROUP_ATTRIBUTES: [&str; 2] = [
 
 /// The attribute declaring the dialect of the stage's expressions.
 pub const DIALECT_ATTRIBUTE: &str = "lpe:dialect";
+
+/// The attribute naming the renderer profile the stage is rendered with
+/// (docs/profiles.md): its dialect and its rules.
+pub const RENDERER_ATTRIBUTE: &str = "lpe:renderer";
 
 /// Prim types that are geometry: a stage holding one can be checked for object groups.
 const GEOMETRY_TYPES: [&str; 13] = [
@@ -163,6 +173,21 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
             .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?;
         for prop in names {
             let prop = prop.as_str();
+            if ty == "RenderSettings" {
+                if let Some((namespace, _)) = prop.split_once(':') {
+                    doc.settings_namespaces
+                        .entry(namespace.to_string())
+                        .or_insert_with(|| p.to_string());
+                }
+            }
+            if prop == RENDERER_ATTRIBUTE {
+                let location = Location::Prim {
+                    prim: p.to_string(),
+                    attribute: prop.to_string(),
+                };
+                declare_renderer(&mut doc.renderer, path, text(prop)?, location)?;
+                continue;
+            }
             if prop == DIALECT_ATTRIBUTE {
                 let value = prim
                     .attribute(prop)
@@ -202,6 +227,35 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
     doc.light_groups = has_lights.then_some(lights);
     doc.object_groups = has_objects.then_some(objects);
     Ok(doc)
+}
+
+/// Records in `declared` the renderer an `lpe:renderer` attribute at `at` names.
+fn declare_renderer(
+    declared: &mut Option<(String, Location)>,
+    path: &Path,
+    named: Option<String>,
+    at: Location,
+) -> Result<(), ReadError> {
+    let error = |at: Location, message: String| ReadError::Renderer {
+        path: path.to_path_buf(),
+        at: Box::new(at),
+        message,
+    };
+    let Some(name) = named else {
+        return Err(error(at, "expected a string or token naming a renderer profile".into()));
+    };
+    lpe_profile::by_name(&name).map_err(|e| error(at.clone(), e.to_string()))?;
+    match declared {
+        Some((earlier, first)) if *earlier != name => Err(error(
+            at,
+            format!("names `{name}`, but {first} names `{earlier}`"),
+        )),
+        Some(_) => Ok(()),
+        None => {
+            *declared = Some((name, at));
+            Ok(())
+        }
+    }
 }
 
 /// Records in `declared` the dialect an `lpe:dialect` attribute at `at` names (`named`
