@@ -715,3 +715,64 @@ fn translate_to_a_renderer_uses_its_profiles_correspondence() {
         "{err}"
     );
 }
+
+/// `--renderer` reaches every subcommand that reads expressions: Arnold's built-in name
+/// in `match` (arguments and `--batch` lines, whose own labels add to the profile's) and
+/// `equiv`, Karma's `A` in `explain`; without the profile each is an error.
+#[test]
+fn every_subcommand_reads_expressions_under_the_renderers_profile() {
+    let (code, out, err) = lpe_check(
+        &[
+            "match",
+            "--renderer",
+            "arnold",
+            "diffuse_direct",
+            "C,~ R,D L,~",
+            "C,~ R,G L,~",
+        ],
+        "",
+    );
+    assert_eq!((code, out.as_str()), (0, "match\nno-match\n"), "{err}");
+    let (code, out, err) = lpe_check(
+        &["match", "--batch", "--renderer", "arnold"],
+        "diffuse_direct\t-\tC,~ R,D L,~\nC<RD>AU\tevents=U\tC,~ R,D A,~ U,~\n",
+    );
+    assert_eq!((code, out.as_str()), (0, "match\nmatch\n"), "{err}");
+    let (code, out, _) = lpe_check(
+        &["match", "--batch", "--dialect", "osl"],
+        "diffuse_direct\t-\tC,~ R,D L,~\n",
+    );
+    // A batch line in error makes the run's exit status 2.
+    assert_eq!(code, 2);
+    assert!(out.starts_with("error: expression:"), "{out}");
+    let (code, out, err) = lpe_check(
+        &["equiv", "--renderer", "arnold", "diffuse_direct", "C<RD>L"],
+        "",
+    );
+    assert_eq!((code, out.trim()), (0, "equivalent"), "{err}");
+    let (code, out, err) = lpe_check(
+        &[
+            "explain",
+            "--renderer",
+            "karma",
+            "--aov",
+            "alb=C<RD>A",
+            "C,~ R,D A,~",
+        ],
+        "",
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(out.contains("lands in: alb"), "{out}");
+    let (code, _, err) = lpe_check(
+        &[
+            "explain",
+            "--dialect",
+            "osl",
+            "--aov",
+            "alb=C<RD>A",
+            "C,~ R,D A,~",
+        ],
+        "",
+    );
+    assert_eq!(code, 2, "{err}");
+}

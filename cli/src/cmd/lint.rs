@@ -106,7 +106,8 @@ pub fn run(args: Args) -> ExitCode {
 }
 
 fn run_in<D: CliDialect>(args: &Args, req: &Request<'_>, read: run::Inputs) -> ExitCode {
-    let registration = |ini: Option<&std::path::Path>| args.lang.registration_under::<D>(ini, req.profile);
+    let registration =
+        |ini: Option<&std::path::Path>| args.lang.registration_under::<D>(ini, req.profile);
     let out = match run::check::<D, _>(req, read, registration) {
         Ok(out) => out,
         Err(RunError::Disagreement(e)) => {

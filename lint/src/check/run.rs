@@ -11,8 +11,8 @@ use serde_json::Value;
 
 use super::ambiguity::BothDialects;
 use super::dialect::{Lint, LintDialect};
-use super::json::{self, FileStatus};
 pub use super::inputs::Inputs;
+use super::json::{self, FileStatus};
 use super::{inputs, text, Outcome};
 use crate::read::Limits;
 use crate::witness::Disagreement;

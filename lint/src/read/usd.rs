@@ -242,7 +242,10 @@ fn declare_renderer(
         message,
     };
     let Some(name) = named else {
-        return Err(error(at, "expected a string or token naming a renderer profile".into()));
+        return Err(error(
+            at,
+            "expected a string or token naming a renderer profile".into(),
+        ));
     };
     lpe_profile::by_name(&name).map_err(|e| error(at.clone(), e.to_string()))?;
     match declared {

@@ -34,20 +34,23 @@ impl MatchDialect for Osl {
         Ok(registered)
     }
 
+    /// Each line's labels are registered on top of the renderer's profile, if one is
+    /// named (`--renderer`): its letters, prefixes and built-in names.
     fn batch_line<'e>(
         engines: &[&'e dyn Engine<Osl>],
-        _: &Registered,
+        base: &Registered,
         line: &str,
         cache: &mut BatchCache<'e, Osl>,
     ) -> LineOutcome {
-        batch_line(engines, line, cache)
+        batch_line(engines, base, line, cache)
     }
 }
 
 /// Answers one `EXPR<TAB>REGISTERED<TAB>PATH[<TAB>MATCH|NOMATCH]` line, under the
-/// line's own registration; the first two columns are the cache's key.
+/// line's own registration on top of `base`; the first two columns are the cache's key.
 fn batch_line<'e>(
     engines: &[&'e dyn Engine<Osl>],
+    base: &Registered,
     line: &str,
     cache: &mut BatchCache<'e, Osl>,
 ) -> LineOutcome {
@@ -71,7 +74,10 @@ fn batch_line<'e>(
         }
     };
     let compiled = cache.get_or_compile(&format!("{expr}\t{reg}"), || {
-        let registered: Registered = reg.parse().map_err(|e| format!("registered: {e}"))?;
+        let own: Registered = reg.parse().map_err(|e| format!("registered: {e}"))?;
+        let mut registered = base.clone();
+        registered.events.extend(own.events);
+        registered.scatters.extend(own.scatters);
         let lpe = osl::parse(expr, &registered).map_err(|e| format!("expression: {e}"))?;
         Ok(Compiled::new(engines, &registered, &lpe))
     });
