@@ -208,8 +208,11 @@ pub fn run(cfg: &Config, paths: &[Path]) -> Result<(Vec<Row>, Vec<Disagreement>)
     Ok((rows, bad))
 }
 
+/// Named OSL AOVs, as a set compiles them.
+type OslAovs = Vec<(String, osl::Lpe)>;
+
 /// Arnold's built-in lobe AOVs: by name, and as the expressions its profile defines.
-fn arnold_lobes() -> (Vec<(String, osl::Lpe)>, Vec<(String, osl::Lpe)>) {
+fn arnold_lobes() -> (OslAovs, OslAovs) {
     const NAMES: [&str; 8] = [
         "diffuse",
         "specular",
