@@ -776,3 +776,54 @@ fn every_subcommand_reads_expressions_under_the_renderers_profile() {
     );
     assert_eq!(code, 2, "{err}");
 }
+
+/// `translate --to karma --format usda` names the renderer in the layer
+/// (`lpe:renderer`), so lint reads it back with Karma's rules: Karma's `G` for
+/// RenderMan's specular lobes passes, where a Karma-read `S` would be `never_produced`.
+#[test]
+fn a_layer_translated_for_a_renderer_names_it_and_lints_under_its_rules() {
+    let dir = std::env::temp_dir().join(format!("lpe-translate-karma-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let (code, usda, err) = lpe_check(
+        &[
+            "translate",
+            "--from",
+            "renderman",
+            "--to",
+            "karma",
+            "--format",
+            "usda",
+            "C<RS>L",
+        ],
+        "",
+    );
+    assert_eq!(code, 0, "{err}");
+    assert!(
+        usda.contains("custom string lpe:dialect = \"osl\"\n"),
+        "{usda}"
+    );
+    assert!(
+        usda.contains("custom string lpe:renderer = \"karma\"\n"),
+        "{usda}"
+    );
+    let file = dir.join("karma.usda");
+    std::fs::write(&file, &usda).unwrap();
+    let (code, out, err) = lpe_check(&["lint", file.to_str().unwrap()], "");
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(err.contains("reading as Karma"), "{err}");
+    let (_, osl, _) = lpe_check(
+        &[
+            "translate",
+            "--from",
+            "renderman",
+            "--to",
+            "osl",
+            "--format",
+            "usda",
+            "C<RS>L",
+        ],
+        "",
+    );
+    assert!(!osl.contains("lpe:renderer"), "{osl}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -172,7 +172,7 @@ pub fn run(args: Args) -> ExitCode {
     let text = match args.format {
         Format::Text => text(&out),
         Format::Json => json(&out, &args, &corr),
-        Format::Usda => usda(&out, &args, sides.to.dialect()),
+        Format::Usda => usda(&out, &args, sides.to),
     };
     print!("{text}");
     if bad {
@@ -447,7 +447,10 @@ fn usd_string(s: &str) -> String {
     out
 }
 
-fn usda(out: &[Translated], args: &Args, to: DialectName) -> String {
+/// The layer of RenderVars: `lpe:dialect` says the target's dialect and, for a renderer
+/// other than a base dialect, `lpe:renderer` names it, so `lpe-check lint` reads the
+/// layer with that renderer's rules.
+fn usda(out: &[Translated], args: &Args, to: &Profile) -> String {
     let mut s = String::from("#usda 1.0\n(\n");
     let _ = writeln!(
         s,
@@ -461,8 +464,15 @@ fn usda(out: &[Translated], args: &Args, to: DialectName) -> String {
     let _ = writeln!(
         s,
         "    custom string lpe:dialect = {}",
-        usd_string(to.name())
+        usd_string(to.dialect().name())
     );
+    if to.name != to.dialect().name() {
+        let _ = writeln!(
+            s,
+            "    custom string lpe:renderer = {}",
+            usd_string(&to.name)
+        );
+    }
     let _ = writeln!(s, "    def Scope \"Vars\"\n    {{");
     let mut used = std::collections::BTreeSet::new();
     for (i, t) in out.iter().enumerate() {
