@@ -281,6 +281,9 @@ def test_a_renderer_registers_its_letters_on_its_base_dialect():
     assert info.value.position == 5 and "A" in info.value.message
     # Naming the renderer's own base dialect as well is no contradiction.
     assert lpe.parse("C<RD>A", renderer="arnold", dialect="osl").text == "<C.><RD><A.>"
+    # equiv and partition read the letters too: one member that is the universe.
+    assert lpe.equiv("C<RD>A", "C<RD>A", renderer="karma") is None
+    assert lpe.partition({"albedo": "C<RD>A"}, universe="C<RD>A", renderer="karma").clean
     # hdPrman reads RenderMan's dialect: its macros, printed in RenderMan's syntax.
     e = lpe.parse("directDiffuse", renderer="hdprman")
     assert (e.text, e.dialect) == ("C<RD>[<L.>O]", "renderman")
@@ -399,6 +402,9 @@ def test_lint_under_karma_flags_the_specular_aov_it_never_renders():
     f = next(f for f in report.findings if f.kind == "never_produced")
     assert f.location["prim"] == "/Render/Products/Vars/specular_key"
     assert "`<.[Ss]>`" in f.message
+    # The shipped file given as profile= is the same renderer.
+    by_file = lpe.lint(USD / "solaris_karma.usda", profile=ROOT / "profile" / "data" / "karma.toml")
+    assert [f.to_dict() for f in by_file.findings] == [f.to_dict() for f in report.findings]
     # Without the renderer the same AOV is only ambiguous between the dialects.
     plain = lpe.lint(USD / "solaris_karma.usda")
     assert sorted((f.kind, f.subject) for f in plain.findings) == [
