@@ -77,9 +77,8 @@ fn match_all<D: PyDialect>(
 /// A trait object, because a Python class cannot be generic: `AovSet` holds a
 /// `Compiled<D>` whose `D` is a run-time choice. That choice is made once, in
 /// `AovSet.__new__`, by `lpe::registry` (`DialectName` from the `dialect=` name or the
-/// renderer's base,
-/// `with_dialect!` to the type), the one place names map to types; nothing here names a
-/// dialect, so a new one needs no change to this file.
+/// renderer's base dialect, `with_dialect!` to the type), the one place names map to
+/// types; nothing here names a dialect, so a new one needs no change to this file.
 trait AnySet: Send + Sync {
     /// The AOV names, in order.
     fn names(&self) -> &[String];
