@@ -2,7 +2,8 @@
 //! shortest path telling two expressions apart, a set of AOVs checked as a partition
 //! of the universe. Witnesses are re-checked with the reference matcher
 //! (`lpe_lint::witness`, the partition report of `lpe-check partition`) before they are
-//! returned. Each is written once over [`PyDialect`] and dispatched on `dialect=`.
+//! returned. Each is written once over [`PyDialect`] and dispatched on the dialect
+//! `dialect=` or the renderer's profile (`renderer=`, `profile=`) names.
 
 use std::path::PathBuf;
 
@@ -15,7 +16,7 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyString;
 
-use crate::dialect::{self, PyDialect};
+use crate::dialect::{self, Language, PyDialect};
 use crate::error::{disagreement, value_error};
 
 /// A parsed expression: its canonical text.
@@ -25,7 +26,7 @@ pub struct Lpe {
     pub text: String,
     /// The source as given.
     pub source: String,
-    /// The dialect name.
+    /// The name of the dialect it was read in (a renderer's base dialect).
     pub dialect: &'static str,
 }
 
@@ -53,29 +54,34 @@ impl Lpe {
     }
 }
 
-/// Parses `expr` in `dialect` ("renderman" or "osl") and returns it with its canonical
-/// text (`.text`, macros expanded). `ini` is a rendermn.ini file (RenderMan macros and
-/// lobe mappings), `register` OSL's user labels (`events=U;scatters=Y`). Raises
-/// `LpeSyntaxError` (`message`, `position`, `hint`; `str()` shows a caret) when it
-/// does not parse, `ValueError` for a bad dialect, ini or registration.
+/// Parses `expr` and returns it with its canonical text (`.text`, macros expanded).
+/// `dialect` is "renderman" (the default) or "osl"; `renderer` a shipped profile's name
+/// (`"karma"`, `"arnold"`, ...) or `profile` a profile TOML file: its base dialect, and
+/// its letters, prefixes and built-in names registered. `ini` is a rendermn.ini file
+/// (RenderMan macros and lobe mappings), `register` OSL's user labels
+/// (`events=U;scatters=Y`). Raises `LpeSyntaxError` (`message`, `position`, `hint`;
+/// `str()` shows a caret) when it does not parse, `ValueError` for a bad dialect,
+/// renderer, profile, ini or registration, or a dialect other than the renderer's.
 #[pyfunction]
-#[pyo3(signature = (expr, dialect = "renderman", ini = None, register = None))]
+#[pyo3(signature = (expr, dialect = None, ini = None, register = None, renderer = None, profile = None))]
 pub fn parse(
     py: Python<'_>,
     expr: &str,
-    dialect: &str,
+    dialect: Option<&str>,
     ini: Option<PathBuf>,
     register: Option<&str>,
+    renderer: Option<&str>,
+    profile: Option<PathBuf>,
 ) -> PyResult<Lpe> {
-    let name = dialect::dialect_name(dialect)?;
-    let text = with_dialect!(name, D => {
-        let reg = dialect::registration::<D>(ini.as_ref(), register)?;
+    let lang = Language::of(dialect, renderer, profile.as_deref())?;
+    let text = with_dialect!(lang.dialect, D => {
+        let reg = lang.registration::<D>(ini.as_ref(), register)?;
         dialect::parse::<D>(py, expr, &reg, None)?.to_string()
     });
     Ok(Lpe {
         text,
         source: expr.to_string(),
-        dialect: name.name(),
+        dialect: lang.dialect.name(),
     })
 }
 
@@ -142,24 +148,27 @@ pub enum EquivAnswer {
 /// `None` when expressions `a` and `b` match exactly the same paths, else the shortest
 /// path (as text) one matches and the other does not, re-checked with the reference
 /// matcher; an `Undecided` when the analysis did not decide within `max_steps` search
-/// steps (default 4 000 000) or `max_seconds`. Raises `LpeSyntaxError` when either does
-/// not parse.
+/// steps (default 4 000 000) or `max_seconds`. `dialect`, `renderer`, `profile`, `ini`
+/// and `register` are `parse`'s. Raises `LpeSyntaxError` when either does not parse.
 #[pyfunction]
-#[pyo3(signature = (a, b, dialect = "renderman", ini = None, register = None, max_steps = None, max_seconds = None))]
+#[pyo3(signature = (a, b, dialect = None, ini = None, register = None, max_steps = None, max_seconds = None, renderer = None, profile = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn equiv(
     py: Python<'_>,
     a: &str,
     b: &str,
-    dialect: &str,
+    dialect: Option<&str>,
     ini: Option<PathBuf>,
     register: Option<&str>,
     max_steps: Option<usize>,
     max_seconds: Option<f64>,
+    renderer: Option<&str>,
+    profile: Option<PathBuf>,
 ) -> PyResult<EquivAnswer> {
     let budget = budget(max_steps, max_seconds)?;
-    with_dialect!(dialect::dialect_name(dialect)?, D => {
-        let reg = dialect::registration::<D>(ini.as_ref(), register)?;
+    let lang = Language::of(dialect, renderer, profile.as_deref())?;
+    with_dialect!(lang.dialect, D => {
+        let reg = lang.registration::<D>(ini.as_ref(), register)?;
         equiv_in::<D>(py, a, b, &reg, &budget)
     })
 }
@@ -284,27 +293,31 @@ fn members(obj: &Bound<'_, PyAny>) -> PyResult<Vec<(String, String)>> {
 /// and `text` (`lpe-check partition`'s report).
 ///
 /// Returns an `Undecided` instead when the analysis did not decide within `max_steps`
-/// search steps (default 4 000 000) or `max_seconds`.
+/// search steps (default 4 000 000) or `max_seconds`. `dialect`, `renderer`, `profile`,
+/// `ini` and `register` are `parse`'s.
 #[pyfunction]
-#[pyo3(signature = (members, universe = None, dialect = "renderman", ini = None, register = None, max_steps = None, max_seconds = None))]
+#[pyo3(signature = (members, universe = None, dialect = None, ini = None, register = None, max_steps = None, max_seconds = None, renderer = None, profile = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn partition(
     py: Python<'_>,
     members: &Bound<'_, PyAny>,
     universe: Option<&str>,
-    dialect: &str,
+    dialect: Option<&str>,
     ini: Option<PathBuf>,
     register: Option<&str>,
     max_steps: Option<usize>,
     max_seconds: Option<f64>,
+    renderer: Option<&str>,
+    profile: Option<PathBuf>,
 ) -> PyResult<PartitionAnswer> {
     let budget = budget(max_steps, max_seconds)?;
     let named = self::members(members)?;
     if named.is_empty() {
         return Err(value_error("partition needs at least one member"));
     }
-    with_dialect!(dialect::dialect_name(dialect)?, D => {
-        let reg = dialect::registration::<D>(ini.as_ref(), register)?;
+    let lang = Language::of(dialect, renderer, profile.as_deref())?;
+    with_dialect!(lang.dialect, D => {
+        let reg = lang.registration::<D>(ini.as_ref(), register)?;
         partition_in::<D>(py, &named, universe, &reg, &budget)
     })
 }

@@ -8,7 +8,8 @@
 //! plugin, declared in `plugInfo.json`). docs/python.md documents both.
 //!
 //! Modules: [`dialect`] (what a dialect must say to Python: [`dialect::PyDialect`],
-//! implemented once per dialect; the argument conversions written once over it),
+//! implemented once per dialect; the argument conversions written once over it, the
+//! dialect and renderer's profile of `dialect=`, `renderer=` and `profile=` among them),
 //! [`error`] (`LpeSyntaxError` and the conversion of every Rust error into a Python
 //! exception), [`set`] (`AovSet`: match, match_many, explain), [`analysis`] (`parse`,
 //! `equiv`, `partition`), [`lint`] (`lpe-check lint`'s run, as JSON).

@@ -1,7 +1,8 @@
 //! `lpe.lint`'s native half: `lpe-check lint`'s run ([`lpe_lint::check::run`]) over
 //! files, returned as its JSON report (schema `lpe-lint/1`, docs/lint.md) for
 //! `lpe/__init__.py` to wrap. A stage exported to a temporary file is reported under
-//! the name `rename` gives.
+//! the name `rename` gives. A renderer's profile (`renderer=`, `profile=`) gives the
+//! dialect and registration, and lint checks its rules too.
 
 use std::path::PathBuf;
 
@@ -9,12 +10,12 @@ use lpe::with_dialect;
 use lpe_lint::check::run::{run, Request, RunError};
 use pyo3::prelude::*;
 
-use crate::dialect::{self, PyDialect};
+use crate::dialect::{Language, PyDialect};
 use crate::error::{disagreement, value_error};
 
 /// Lints `files` as `lpe-check lint --format json` does; returns the report's JSON text.
 #[pyfunction]
-#[pyo3(signature = (files, partitions = Vec::new(), universe = None, dialect = None, ini = None, register = None, rename = None))]
+#[pyo3(signature = (files, partitions = Vec::new(), universe = None, dialect = None, ini = None, register = None, rename = None, renderer = None, profile = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn lint_json(
     py: Python<'_>,
@@ -25,20 +26,24 @@ pub fn lint_json(
     ini: Option<PathBuf>,
     register: Option<String>,
     rename: Option<(String, String)>,
+    renderer: Option<&str>,
+    profile: Option<PathBuf>,
 ) -> PyResult<String> {
-    // No dialect named: RenderMan's, with undeclared stages read both ways.
-    let name = dialect::dialect_name(dialect.unwrap_or("renderman"))?;
+    // No dialect and no renderer named: RenderMan's, with undeclared stages read both
+    // ways.
+    let lang = Language::of(dialect, renderer, profile.as_deref())?;
     let req = Request {
         files: &files,
         ini: ini.as_deref(),
         partitions: &partitions,
         universe: universe.as_deref(),
-        dialect_given: dialect.is_some(),
-        profile: None,
+        // A renderer names its dialect: no stage is read both ways.
+        dialect_given: dialect.is_some() || lang.profile.is_some(),
+        profile: lang.profile.as_deref(),
     };
-    let json = py.allow_threads(
-        || with_dialect!(name, D => lint_in::<D>(&req, register.as_deref(), rename.as_ref())),
-    );
+    let json = py.allow_threads(|| {
+        with_dialect!(lang.dialect, D => lint_in::<D>(&req, &lang, register.as_deref(), rename.as_ref()))
+    });
     match json {
         Ok(v) => Ok(v),
         Err(RunError::Disagreement(d)) => Err(disagreement(&d)),
@@ -48,10 +53,11 @@ pub fn lint_json(
 
 fn lint_in<D: PyDialect>(
     req: &Request<'_>,
+    lang: &Language,
     register: Option<&str>,
     rename: Option<&(String, String)>,
 ) -> Result<String, RunError> {
-    let mut out = run::<D, _>(req, |ini| D::registration(ini, register))?;
+    let mut out = run::<D, _>(req, |ini| lang.registration_of::<D>(ini, register))?;
     if let Some((from, to)) = rename {
         out.rename_file(from, to);
     }

@@ -13,7 +13,7 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyString, PyTuple};
 
-use crate::dialect::{self, PyDialect};
+use crate::dialect::{self, Language, PyDialect};
 use crate::error::value_error;
 
 /// A compiled set of dialect `D`, with its AOVs and registration (for `explain`).
@@ -76,9 +76,9 @@ fn match_all<D: PyDialect>(
 ///
 /// A trait object, because a Python class cannot be generic: `AovSet` holds a
 /// `Compiled<D>` whose `D` is a run-time choice. That choice is made once, in
-/// `AovSet.__new__`, by `lpe::registry` (`DialectName` from the `dialect=` name,
-/// `with_dialect!` to the type), the one place names map to types; nothing here names a
-/// dialect, so a new one needs no change to this file.
+/// `AovSet.__new__`, by `lpe::registry` (`DialectName` from the `dialect=` name or the
+/// renderer's base dialect, `with_dialect!` to the type), the one place names map to
+/// types; nothing here names a dialect, so a new one needs no change to this file.
 trait AnySet: Send + Sync {
     /// The AOV names, in order.
     fn names(&self) -> &[String];
@@ -172,7 +172,9 @@ fn names_in(names: &[String], mask: AovMask) -> Vec<String> {
 /// Named AOVs (a dict `{name: expr}` or a list of `(name, expr)` pairs) of one dialect
 /// compiled into one automaton. A path is text (`"C RD2'floor' L'key'"`, OSL:
 /// `"C,_ R,D L,_"`) or a list of `(type, event, label)` tuples (event and label may be
-/// None). Raises `LpeSyntaxError` (with `.aov`) for an AOV that does not parse.
+/// None). `dialect`, `renderer`, `profile`, `ini` and `register` are `parse`'s: a
+/// renderer's set reads its letters and built-in names (`renderer="karma"`: `A`).
+/// Raises `LpeSyntaxError` (with `.aov`) for an AOV that does not parse.
 #[pyclass(module = "lpe", frozen)]
 pub struct AovSet {
     inner: Box<dyn AnySet>,
@@ -204,23 +206,25 @@ fn named_pairs(aovs: &Bound<'_, PyAny>) -> PyResult<Vec<(String, String)>> {
 #[pymethods]
 impl AovSet {
     #[new]
-    #[pyo3(signature = (aovs, dialect = "renderman", ini = None, register = None))]
+    #[pyo3(signature = (aovs, dialect = None, ini = None, register = None, renderer = None, profile = None))]
     fn new(
         py: Python<'_>,
         aovs: &Bound<'_, PyAny>,
-        dialect: &str,
+        dialect: Option<&str>,
         ini: Option<PathBuf>,
         register: Option<&str>,
+        renderer: Option<&str>,
+        profile: Option<PathBuf>,
     ) -> PyResult<AovSet> {
         let named = named_pairs(aovs)?;
-        let name = dialect::dialect_name(dialect)?;
-        let inner = with_dialect!(name, D => {
-            let reg = dialect::registration::<D>(ini.as_ref(), register)?;
+        let lang = Language::of(dialect, renderer, profile.as_deref())?;
+        let inner = with_dialect!(lang.dialect, D => {
+            let reg = lang.registration::<D>(ini.as_ref(), register)?;
             Box::new(Compiled::<D>::new(py, &named, reg)?) as Box<dyn AnySet>
         });
         Ok(AovSet {
             inner,
-            dialect: name.name(),
+            dialect: lang.dialect.name(),
         })
     }
 
@@ -230,7 +234,7 @@ impl AovSet {
         self.inner.names().to_vec()
     }
 
-    /// The dialect name.
+    /// The name of the dialect the AOVs were read in (a renderer's base dialect).
     #[getter]
     fn dialect(&self) -> &'static str {
         self.dialect

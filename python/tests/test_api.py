@@ -264,6 +264,173 @@ def test_lint_an_unreadable_file_is_in_the_report():
     assert report.files[0]["error"] and not report.clean
 
 
+# --- renderer profiles ---------------------------------------------------------------
+# The expected values come from docs/profiles.md and the profiles' pages: Arnold and
+# Karma read OSL's dialect plus the albedo event `A`; Arnold's `diffuse_direct` is
+# `C<RD>L`; Karma reads the prefix `unoccluded;` and no other; hdPrman reads RenderMan's
+# dialect and prepends `lpe:` to a sourceName itself. OSL prints an item outside `<...>`
+# as its vertex pattern (docs/language.md §18.3), so `C<RD>A` is `<C.><RD><A.>`.
+
+
+def test_a_renderer_registers_its_letters_on_its_base_dialect():
+    e = lpe.parse("C<RD>A", renderer="arnold")
+    assert (e.text, e.source, e.dialect) == ("<C.><RD><A.>", "C<RD>A", "osl")
+    # Plain OSL does not know `A`: the error is at the `A`, character 5.
+    with pytest.raises(lpe.LpeSyntaxError) as info:
+        lpe.parse("C<RD>A", dialect="osl")
+    assert info.value.position == 5 and "A" in info.value.message
+    # Naming the renderer's own base dialect as well is no contradiction.
+    assert lpe.parse("C<RD>A", renderer="arnold", dialect="osl").text == "<C.><RD><A.>"
+    # equiv and partition read the letters too: one member that is the universe.
+    assert lpe.equiv("C<RD>A", "C<RD>A", renderer="karma") is None
+    assert lpe.partition({"albedo": "C<RD>A"}, universe="C<RD>A", renderer="karma").clean
+    # hdPrman reads RenderMan's dialect: its macros, printed in RenderMan's syntax.
+    e = lpe.parse("directDiffuse", renderer="hdprman")
+    assert (e.text, e.dialect) == ("C<RD>[<L.>O]", "renderman")
+
+
+def test_a_renderers_builtin_name_reads_as_its_expression():
+    named = lpe.parse("diffuse_direct", renderer="arnold")
+    assert named.text == lpe.parse("C<RD>L", renderer="arnold").text == "<C.><RD><L.>"
+    assert named.source == "diffuse_direct"
+    assert named == lpe.parse("C<RD>L", renderer="arnold")
+    assert lpe.equiv("diffuse_direct", "C<RD>L", renderer="arnold") is None
+    # Without the renderer the name is no expression.
+    with pytest.raises(lpe.LpeSyntaxError):
+        lpe.parse("diffuse_direct", dialect="osl")
+
+
+def test_a_prefix_the_renderer_does_not_read_is_an_error_naming_those_it_reads():
+    assert lpe.parse("unoccluded;C<RD>L", renderer="karma").text == "unoccluded;<C.><RD><L.>"
+    with pytest.raises(lpe.LpeSyntaxError) as info:
+        lpe.parse("shadw;C<RD>L", renderer="karma")
+    assert info.value.position == 0
+    assert "`unoccluded;`" in info.value.message
+
+
+def test_an_unknown_renderer_lists_the_known_ones_with_the_nearest():
+    with pytest.raises(ValueError) as info:
+        lpe.parse("C<RD>L", renderer="karm")
+    message = str(info.value)
+    assert not isinstance(info.value, lpe.LpeSyntaxError)
+    assert "unknown renderer `karm`" in message
+    assert "(did you mean `karma`?)" in message
+    assert "renderman, osl, karma, arnold, hdprman, vray, moonray" in message
+    # A name two edits or more from every shipped one gets no suggestion.
+    with pytest.raises(ValueError) as info:
+        lpe.AovSet({"a": "CL"}, renderer="cycles")
+    assert "did you mean" not in str(info.value)
+    for call in (
+        lambda: lpe.equiv("CL", "CL", renderer="karm"),
+        lambda: lpe.partition(["CL"], renderer="karm"),
+        lambda: lpe.lint(USD / "solaris_karma.usda", renderer="karm"),
+    ):
+        with pytest.raises(ValueError, match="did you mean `karma`"):
+            call()
+
+
+def test_a_dialect_other_than_the_renderers_base_is_an_error():
+    with pytest.raises(ValueError, match='dialect="renderman" contradicts renderer "arnold"'):
+        lpe.parse("C<RD>L", renderer="arnold", dialect="renderman")
+    with pytest.raises(ValueError, match='dialect="osl" contradicts renderer "hdprman"'):
+        lpe.AovSet({"d": "C<RD>L"}, renderer="hdprman", dialect="osl")
+    with pytest.raises(ValueError, match="contradicts"):
+        lpe.equiv("CL", "CL", renderer="karma", dialect="renderman")
+    with pytest.raises(ValueError, match="contradicts"):
+        lpe.partition(["CL"], renderer="karma", dialect="renderman")
+    with pytest.raises(ValueError, match="contradicts"):
+        lpe.lint(USD / "solaris_karma.usda", renderer="karma", dialect="renderman")
+    with pytest.raises(ValueError, match="give one of them"):
+        lpe.parse("CL", renderer="karma", profile=ROOT / "profile" / "data" / "karma.toml")
+
+
+def test_a_renderers_aov_set_reads_its_letters():
+    s = lpe.AovSet({"albedo": "C<RD>A", "direct": "C<RD>L"}, renderer="karma")
+    assert s.dialect == "osl"
+    assert repr(s) == "<lpe.AovSet 2 AOVs (osl)>"
+    assert s.match("C,~ R,D A,~") == ["albedo"]
+    assert s.match([("C", None, None), ("R", "D", None), ("A", None, None)]) == ["albedo"]
+    assert s.match("C,~ R,D L,~") == ["direct"]
+    with pytest.raises(lpe.LpeSyntaxError) as info:
+        lpe.AovSet({"albedo": "C<RD>A"}, dialect="osl")
+    assert info.value.aov == "albedo"
+
+
+def test_a_profile_file_describes_an_in_house_renderer(tmp_path):
+    # An OSL-based renderer adding the event `U` and the prefix `direct;`.
+    toml = tmp_path / "ourray.toml"
+    toml.write_text(
+        'name = "ourray"\n'
+        'title = "Our ray tracer"\n'
+        'base = "osl"\n'
+        "[[sources]]\n"
+        'id = "manual"\n'
+        'title = "Our manual"\n'
+        'where = "https://example.com/ourray/lpe"\n'
+        "[[events]]\n"
+        'letter = "U"\n'
+        'meaning = "a user event"\n'
+        'source = "manual"\n'
+        "[[prefixes]]\n"
+        'name = "direct"\n'
+        'meaning = "direct light only"\n'
+        'source = "manual"\n'
+    )
+    e = lpe.parse("C<RD>U", profile=toml)
+    assert (e.text, e.dialect) == ("<C.><RD><U.>", "osl")
+    assert lpe.parse("direct;C<RD>L", profile=str(toml)).text == "direct;<C.><RD><L.>"
+    assert lpe.AovSet({"u": "C.*U"}, profile=toml).match("C,~ R,D U,~") == ["u"]
+    # A file that does not load names itself.
+    with pytest.raises(ValueError, match="nowhere.toml"):
+        lpe.parse("CL", profile=tmp_path / "nowhere.toml")
+    bad = tmp_path / "bad.toml"
+    bad.write_text('name = "bad"\ntitle = "Bad"\nbase = "osl"\ncolour = "red"\n')
+    with pytest.raises(ValueError, match="bad.toml"):
+        lpe.parse("CL", profile=bad)
+
+
+def test_lint_under_karma_flags_the_specular_aov_it_never_renders():
+    # solaris_karma.usda: specular_key is C<RS>.*<L.'key'>, and Karma labels every
+    # specular scatter G, so no path it matches is ever produced; diffuse_fill names
+    # the light group 'fil' where the lights carry 'key' and 'fill'. Naming the
+    # renderer names the dialect: no ambiguous_dialect.
+    report = lpe.lint(USD / "solaris_karma.usda", renderer="karma")
+    assert sorted((f.kind, f.subject) for f in report.findings) == [
+        ("never_produced", "specular_key"),
+        ("unknown_light_group", "diffuse_fill"),
+    ]
+    f = next(f for f in report.findings if f.kind == "never_produced")
+    assert f.location["prim"] == "/Render/Products/Vars/specular_key"
+    assert "`<.[Ss]>`" in f.message
+    # The shipped file given as profile= is the same renderer.
+    by_file = lpe.lint(USD / "solaris_karma.usda", profile=ROOT / "profile" / "data" / "karma.toml")
+    assert [f.to_dict() for f in by_file.findings] == [f.to_dict() for f in report.findings]
+    # Without the renderer the same AOV is only ambiguous between the dialects.
+    plain = lpe.lint(USD / "solaris_karma.usda")
+    assert sorted((f.kind, f.subject) for f in plain.findings) == [
+        ("ambiguous_dialect", "specular_key"),
+        ("unknown_light_group", "diffuse_fill"),
+    ]
+
+
+def test_lint_under_hdprman_flags_every_lpe_mark_it_would_double():
+    # hdprman.usda writes all seven of its LPE sourceNames with `lpe:`; the eighth
+    # RenderVar (P) is not an LPE.
+    report = lpe.lint(str(USD / "hdprman.usda"), renderer="hdprman")
+    doubled = [f for f in report.findings if f.kind == "doubled_lpe_mark"]
+    assert sorted(f.subject for f in doubled) == [
+        "albedo", "diffuseAgain", "directDiffuse", "indirectDiffuse",
+        "lightBehindCamera", "rimLight", "wetness",
+    ]
+    d = next(f for f in doubled if f.subject == "directDiffuse")
+    assert (d.source, d.span) == ("lpe:C<RD>[<L.>O]", [0, 4])
+    assert d.help == "write the sourceName without its mark: `C<RD>[<L.>O]`"
+    assert "`lpe:lpe:C<RD>[<L.>O]`" in d.message
+    assert not any(f.kind == "ambiguous_dialect" for f in report.findings)
+    # Under no renderer the mark is RenderMan's own, not doubled.
+    assert not any(f.kind == "doubled_lpe_mark" for f in lpe.lint(USD / "hdprman.usda"))
+
+
 # --- bad arguments -------------------------------------------------------------------
 
 

@@ -2,7 +2,9 @@
 (session layer, variants), and the UsdValidation plugin: found by the registry through
 PXR_PLUGINPATH_NAME (conftest.py), flags a bad RenderVar in a stage built here, and on
 every fixture of tests/testdata/usd reports exactly what `lpe-check lint --format json`
-reports (LPE_CHECK names the binary; default target/release/lpe-check)."""
+reports (LPE_CHECK names the binary; default target/release/lpe-check), with no option,
+a dialect or a renderer's profile; and the plugin's options (`configure()`, the
+environment) followed on the same stage."""
 
 import json
 import os
@@ -33,6 +35,8 @@ NAMES = [
     "lpe:UnknownObjectGroup",
     "lpe:UnfedLobe",
     "lpe:AmbiguousDialect",
+    "lpe:NeverProduced",
+    "lpe:DoubledLpeMark",
     "lpe:PartitionOverlap",
     "lpe:PartitionGap",
     "lpe:PartitionOutside",
@@ -173,12 +177,13 @@ def test_lint_reads_the_composed_stage_session_layer_and_variants():
     assert [f.kind for f in lpe.lint(stage).findings] == ["parse_error"]
 
 
-def lpe_check_json(fixture, dialect):
+def lpe_check_json(fixture, dialect=None, renderer=None):
     if not os.path.exists(LPE_CHECK):
         if os.environ.get("LPE_CHECK"):
             pytest.fail(f"LPE_CHECK={LPE_CHECK} does not exist")
         pytest.skip(f"no lpe-check at {LPE_CHECK} (set LPE_CHECK)")
     named = ["--dialect", dialect] if dialect else []
+    named += ["--renderer", renderer] if renderer else []
     run = subprocess.run(
         [LPE_CHECK, "lint", "--format", "json", *named, str(fixture)],
         capture_output=True, text=True, check=False,
@@ -187,14 +192,12 @@ def lpe_check_json(fixture, dialect):
     return json.loads(run.stdout)
 
 
-@pytest.mark.parametrize("fixture", FIXTURES, ids=[f.name for f in FIXTURES])
-def test_validation_and_lint_equal_lpe_check_lint_json(fixture):
-    dialect = dialect_of(fixture)
-    want = lpe_check_json(fixture, dialect)
+def assert_equal_to_lpe_check(fixture, dialect=None, renderer=None):
+    want = lpe_check_json(fixture, dialect, renderer)
     stage = Usd.Stage.Open(str(fixture))
 
     # lpe.lint on the stage: the same findings, field for field.
-    got = lpe.lint(stage, dialect=dialect)
+    got = lpe.lint(stage, dialect=dialect, renderer=renderer)
     assert [f.to_dict() for f in got.findings] == want["findings"]
     assert [(a["name"], a["source"], a["location"]) for a in got.aovs] == [
         (a["name"], a["source"], a["location"]) for a in want["aovs"]
@@ -202,7 +205,7 @@ def test_validation_and_lint_equal_lpe_check_lint_json(fixture):
 
     # The validators with keyword `lpe`: one error per finding, at its prim and
     # attribute, its message the finding's with the witness.
-    uv.configure(dialect=dialect)
+    uv.configure(dialect=dialect, renderer=renderer)
     errors = UsdValidation.ValidationContext(keywords=["lpe"]).Validate(stage)
     kinds = {n: k for n, k in {**uv.AOV_VALIDATORS, **uv.STAGE_VALIDATORS}.items()}
     seen = []
@@ -222,3 +225,86 @@ def test_validation_and_lint_equal_lpe_check_lint_json(fixture):
             assert f"witness: {f['witness']}" in msg
         expected.append((f["kind"], loc["prim"], loc["attribute"], msg))
     assert sorted(seen) == sorted(expected)
+    return want
+
+
+@pytest.mark.parametrize("fixture", FIXTURES, ids=[f.name for f in FIXTURES])
+def test_validation_and_lint_equal_lpe_check_lint_json(fixture):
+    assert_equal_to_lpe_check(fixture, dialect=dialect_of(fixture))
+
+
+# The fixtures written for one renderer, linted under its profile.
+RENDERER_FIXTURES = [("solaris_karma.usda", "karma"), ("hdprman.usda", "hdprman")]
+
+
+@pytest.mark.parametrize("name,renderer", RENDERER_FIXTURES, ids=[r for _, r in RENDERER_FIXTURES])
+def test_under_a_renderer_validation_and_lint_equal_lpe_check_lint_json(name, renderer):
+    fixture = ROOT / "tests" / "testdata" / "usd" / name
+    want = assert_equal_to_lpe_check(fixture, renderer=renderer)
+    # The renderer's own checks are among the findings compared (worked by hand in
+    # test_api.py), and no ambiguous_dialect: the renderer names the dialect.
+    kinds = [f["kind"] for f in want["findings"]]
+    new = {"karma": "never_produced", "hdprman": "doubled_lpe_mark"}[renderer]
+    assert kinds.count(new) == {"karma": 1, "hdprman": 7}[renderer]
+    assert "ambiguous_dialect" not in kinds
+    # lpe.lint of the file, as lpe-check is given it: the whole JSON document.
+    assert lpe.lint(str(fixture), renderer=renderer).json == want
+
+
+def errors_by_validator(stage):
+    return sorted((e.GetValidator().GetMetadata().name, str(e.GetSites()[0].GetPrim().GetPath()))
+                  for e in uv.validate(stage))
+
+
+def test_the_validators_follow_the_renderer_option_on_the_same_stage(monkeypatch):
+    # solaris_karma.usda: diffuse_fill names the unknown group 'fil' whatever the
+    # options; specular_key (C<RS>.*<L.'key'>) is never produced by Karma, and without
+    # a renderer it is only ambiguous between RenderMan's and OSL's readings (the stage
+    # declares no dialect).
+    monkeypatch.delenv("LPE_RENDERER", raising=False)
+    monkeypatch.delenv("LPE_DIALECT", raising=False)
+    stage = Usd.Stage.Open(str(ROOT / "tests" / "testdata" / "usd" / "solaris_karma.usda"))
+    vars_ = "/Render/Products/Vars"
+    under_karma = [
+        ("lpe:NeverProduced", f"{vars_}/specular_key"),
+        ("lpe:UnknownLightGroup", f"{vars_}/diffuse_fill"),
+    ]
+    plain = [
+        ("lpe:AmbiguousDialect", f"{vars_}/specular_key"),
+        ("lpe:UnknownLightGroup", f"{vars_}/diffuse_fill"),
+    ]
+    uv.configure(renderer="karma")
+    assert uv.options()["renderer"] == "karma"
+    assert errors_by_validator(stage) == under_karma
+    # configure() goes back to the environment, which names no renderer.
+    uv.configure()
+    assert uv.options()["renderer"] is None
+    assert errors_by_validator(stage) == plain
+    # The environment names one: the same stage is linted again under it.
+    monkeypatch.setenv("LPE_RENDERER", "karma")
+    assert errors_by_validator(stage) == under_karma
+    monkeypatch.setenv("LPE_RENDERER", "hdprman")
+    # hdPrman reads RenderMan's dialect; Karma's bare sourceNames carry no `lpe:` mark
+    # to double, and its `S` is RenderMan's, which hdPrman does produce.
+    assert errors_by_validator(stage) == [("lpe:UnknownLightGroup", f"{vars_}/diffuse_fill")]
+    # An unknown renderer in the environment is reported by lpe:Readable, not raised
+    # out of USD's validation.
+    monkeypatch.setenv("LPE_RENDERER", "karm")
+    errors = uv.validate(stage)
+    assert [e.GetValidator().GetMetadata().name for e in errors] == ["lpe:Readable"]
+    assert "did you mean `karma`" in errors[0].GetMessage()
+
+
+def test_the_doubled_mark_validator_under_hdprman():
+    stage = Usd.Stage.Open(str(ROOT / "tests" / "testdata" / "usd" / "hdprman.usda"))
+    uv.configure(renderer="hdprman")
+    doubled = [e for e in uv.validate(stage)
+               if e.GetValidator().GetMetadata().name == "lpe:DoubledLpeMark"]
+    assert sorted(str(e.GetSites()[0].GetPrim().GetPath()).rsplit("/", 1)[1] for e in doubled) == [
+        "albedo", "diffuseAgain", "directDiffuse", "indirectDiffuse",
+        "lightBehindCamera", "rimLight", "wetness",
+    ]
+    e = next(e for e in doubled if e.GetSites()[0].GetPrim().GetName() == "directDiffuse")
+    assert e.GetName() == "doubled_lpe_mark"
+    assert e.GetMessage().startswith("doubled_lpe_mark: `directDiffuse`: ")
+    assert e.GetMessage().endswith("; help: write the sourceName without its mark: `C<RD>[<L.>O]`")

@@ -2,9 +2,12 @@
 
 Thin over the Rust library of the same name:
 
-- ``parse(expr, dialect="renderman", ini=None, register=None)``: the expression's
-  canonical text (an ``Lpe``); a syntax error raises ``LpeSyntaxError`` with
-  ``message``, ``position``, ``hint`` and the caret rendering as ``str()``.
+- ``parse(expr, dialect=None, ini=None, register=None, renderer=None, profile=None)``:
+  the expression's canonical text (an ``Lpe``); a syntax error raises
+  ``LpeSyntaxError`` with ``message``, ``position``, ``hint`` and the caret rendering
+  as ``str()``. ``dialect`` is ``"renderman"`` (``None``: the default) or ``"osl"``;
+  ``renderer="karma"`` (a shipped profile) or ``profile="ourray.toml"`` reads
+  expressions as that renderer does (docs/profiles.md), in its base dialect.
 - ``AovSet({"name": expr, ...}, dialect=...)``: ``match(path)`` (the AOV names a path
   lands in), ``match_many(paths)`` (the batch form), ``explain(path)``, ``names``.
   A path is text (``"C RD2'floor' L'key'"``, OSL: ``"C,_ R,D L,_"``) or a list of
@@ -12,8 +15,9 @@ Thin over the Rust library of the same name:
 - ``equiv(a, b)``: ``None``, or the shortest path one matches and the other does not.
 - ``partition(members, universe=None)``: overlaps, gaps and paths outside the
   universe with shortest witnesses, and the remainder expression.
-- ``lint(files_or_stage, partitions=..., dialect=...)``: ``lpe-check lint --format
-  json``'s findings, for files or a ``pxr.Usd.Stage`` (read as composed).
+- ``lint(files_or_stage, partitions=..., dialect=..., renderer=...)``: ``lpe-check
+  lint --format json``'s findings, for files or a ``pxr.Usd.Stage`` (read as
+  composed).
 
 The UsdValidation plugin (validators ``lpe:...``, keyword ``lpe``) is in
 ``lpe.usd_validation``; docs/python.md says how USD finds it.
@@ -81,7 +85,8 @@ class Finding:
     """One lint finding, with the fields of ``lpe-check lint --format json``:
     ``kind`` (``parse_error``, ``empty``, ``equivalent``, ``unknown_light_group``,
     ``unknown_object_group``, ``unfed_lobe``, ``unknown_member``, ``overlap``,
-    ``gap``, ``outside``, ``ambiguous_dialect``), ``file``, ``subject`` (the AOV or partition),
+    ``gap``, ``outside``, ``ambiguous_dialect``, and under a renderer
+    ``never_produced`` and ``doubled_lpe_mark``), ``file``, ``subject`` (the AOV or partition),
     ``location`` (a dict: ``line``, ``column``, ``prim``, ``attribute``), ``message``,
     ``source`` and ``span`` (the caret), ``help``, ``other``, ``witness``,
     ``remainder``. ``to_dict()`` gives the JSON object back."""
@@ -157,6 +162,8 @@ def lint(
     dialect=None,
     ini=None,
     register=None,
+    renderer=None,
+    profile=None,
 ) -> LintReport:
     """Lints LPE AOVs as ``lpe-check lint --format json`` does.
 
@@ -169,9 +176,13 @@ def lint(
     that must partition ``universe``. ``dialect`` (``"renderman"`` or ``"osl"``) reads
     every AOV in that dialect; left ``None``, AOVs are read as RenderMan's and a stage
     that declares no dialect is also checked for AOVs whose RenderMan and OSL readings
-    differ (``ambiguous_dialect``). Returns a ``LintReport``; a bad argument raises
-    ``TypeError`` or ``ValueError`` (an unreadable file is in ``report.files``, as in
-    the JSON report).
+    differ (``ambiguous_dialect``). ``renderer`` (a shipped profile: ``"karma"``,
+    ``"hdprman"``, ...) or ``profile`` (a profile TOML file) reads every AOV as that
+    renderer does and checks its rules too (``never_produced``, ``doubled_lpe_mark``);
+    it names the dialect, so ``ambiguous_dialect`` is not checked, and a ``dialect``
+    other than its base is a ``ValueError``. Returns a ``LintReport``; a bad argument
+    raises ``TypeError`` or ``ValueError`` (an unreadable file is in ``report.files``,
+    as in the JSON report).
     """
     parts = []
     for p in partitions if not isinstance(partitions, str) else [partitions]:
@@ -189,7 +200,7 @@ def lint(
                 f.write(text)
             out = _lint_json(
                 [tmp], parts, universe, dialect, ini, register,
-                (tmp, stage_name(files_or_stage)),
+                (tmp, stage_name(files_or_stage)), renderer, profile,
             )
         finally:
             _os.unlink(tmp)
@@ -209,7 +220,10 @@ def lint(
                 raise TypeError(f"a file is a str or os.PathLike, not {type(f).__name__}")
         if not files:
             raise ValueError("lint needs at least one file")
-        out = _lint_json([_os.fspath(f) for f in files], parts, universe, dialect, ini, register)
+        out = _lint_json(
+            [_os.fspath(f) for f in files], parts, universe, dialect, ini, register,
+            None, renderer, profile,
+        )
     return LintReport(_json.loads(out))
 
 

@@ -5,6 +5,10 @@ from collections.abc import Iterable, Mapping, Sequence
 from typing import Any, Literal, Optional, Union
 
 Dialect = Literal["renderman", "osl"]
+#: A shipped renderer profile's name (docs/profiles.md): "renderman", "osl", "karma",
+#: "arnold", "hdprman", "vray", "moonray". A str, not a Literal: the name often comes
+#: from a setting, and an unknown one is a ValueError naming the known ones.
+Renderer = str
 StrPath = Union[str, os.PathLike[str]]
 Vertex = tuple[str, Optional[str], Optional[str]]
 PathLike = Union[str, Sequence[Vertex]]
@@ -47,9 +51,11 @@ class AovSet:
     def __init__(
         self,
         aovs: Named,
-        dialect: Dialect = "renderman",
+        dialect: Optional[Dialect] = None,
         ini: Optional[StrPath] = None,
         register: Optional[str] = None,
+        renderer: Optional[Renderer] = None,
+        profile: Optional[StrPath] = None,
     ) -> None: ...
     @property
     def names(self) -> list[str]: ...
@@ -88,27 +94,33 @@ class Undecided:
 
 def parse(
     expr: str,
-    dialect: Dialect = "renderman",
+    dialect: Optional[Dialect] = None,
     ini: Optional[StrPath] = None,
     register: Optional[str] = None,
+    renderer: Optional[Renderer] = None,
+    profile: Optional[StrPath] = None,
 ) -> Lpe: ...
 def equiv(
     a: str,
     b: str,
-    dialect: Dialect = "renderman",
+    dialect: Optional[Dialect] = None,
     ini: Optional[StrPath] = None,
     register: Optional[str] = None,
     max_steps: Optional[int] = None,
     max_seconds: Optional[float] = None,
+    renderer: Optional[Renderer] = None,
+    profile: Optional[StrPath] = None,
 ) -> Union[None, str, Undecided]: ...
 def partition(
     members: Union[Mapping[str, str], Iterable[Union[str, tuple[str, str]]]],
     universe: Optional[str] = None,
-    dialect: Dialect = "renderman",
+    dialect: Optional[Dialect] = None,
     ini: Optional[StrPath] = None,
     register: Optional[str] = None,
     max_steps: Optional[int] = None,
     max_seconds: Optional[float] = None,
+    renderer: Optional[Renderer] = None,
+    profile: Optional[StrPath] = None,
 ) -> Union[Partition, Undecided]: ...
 
 class Finding:
@@ -150,4 +162,6 @@ def lint(
     dialect: Optional[Dialect] = None,
     ini: Optional[StrPath] = None,
     register: Optional[str] = None,
+    renderer: Optional[Renderer] = None,
+    profile: Optional[StrPath] = None,
 ) -> LintReport: ...

@@ -23,6 +23,8 @@ validator                  lint kinds                  runs on
 ``lpe:UnknownObjectGroup`` ``unknown_object_group``    each ``UsdRenderVar``
 ``lpe:UnfedLobe``          ``unfed_lobe``              each ``UsdRenderVar``
 ``lpe:AmbiguousDialect``   ``ambiguous_dialect``       each ``UsdRenderVar``
+``lpe:NeverProduced``      ``never_produced``          each ``UsdRenderVar``
+``lpe:DoubledLpeMark``     ``doubled_lpe_mark``        each ``UsdRenderVar``
 ``lpe:PartitionOverlap``   ``overlap``                 the stage
 ``lpe:PartitionGap``       ``gap``                     the stage
 ``lpe:PartitionOutside``   ``outside``                 the stage
@@ -37,7 +39,10 @@ its ``lpe:partition...`` attribute. Each error's sites are the prim and the attr
 
 The dialect and the rest of lint's options come from ``configure()`` or, when it was
 not called, from the environment: ``LPE_DIALECT`` (``renderman`` or ``osl``),
-``LPE_INI``, ``LPE_REGISTER``, ``LPE_UNIVERSE``.
+``LPE_RENDERER`` (a shipped renderer profile: ``karma``, ``hdprman``, ...),
+``LPE_INI``, ``LPE_REGISTER``, ``LPE_UNIVERSE``. ``lpe:NeverProduced`` and
+``lpe:DoubledLpeMark`` report only under a renderer (its profile's rules), and a
+renderer names the dialect, so ``lpe:AmbiguousDialect`` then reports nothing.
 """
 
 from __future__ import annotations
@@ -58,6 +63,8 @@ AOV_VALIDATORS = {
     "UnknownObjectGroup": ("unknown_object_group",),
     "UnfedLobe": ("unfed_lobe",),
     "AmbiguousDialect": ("ambiguous_dialect",),
+    "NeverProduced": ("never_produced",),
+    "DoubledLpeMark": ("doubled_lpe_mark",),
 }
 STAGE_VALIDATORS = {
     "PartitionOverlap": ("overlap",),
@@ -83,17 +90,20 @@ def plugin_path() -> str:
     return lpe.plugin_path()
 
 
-def configure(dialect=None, ini=None, register=None, universe=None, partitions=()):
-    """Sets the options every validator lints with (``lpe.lint``'s); ``configure()``
-    with no argument goes back to the environment (``LPE_DIALECT``, ...)."""
+def configure(dialect=None, ini=None, register=None, universe=None, partitions=(),
+              renderer=None):
+    """Sets the options every validator lints with (``lpe.lint``'s; ``renderer`` is a
+    shipped profile's name); ``configure()`` with no argument goes back to the
+    environment (``LPE_DIALECT``, ``LPE_RENDERER``, ...)."""
     global _options
-    given = (dialect, ini, register, universe, tuple(partitions))
-    _options = None if given == (None, None, None, None, ()) else {
+    given = (dialect, ini, register, universe, tuple(partitions), renderer)
+    _options = None if given == (None, None, None, None, (), None) else {
         "dialect": dialect,
         "ini": ini,
         "register": register,
         "universe": universe,
         "partitions": tuple(partitions),
+        "renderer": renderer,
     }
     with _lock:
         _cache.clear()
@@ -110,6 +120,7 @@ def options() -> dict:
         "register": env("LPE_REGISTER") or None,
         "universe": env("LPE_UNIVERSE") or None,
         "partitions": (),
+        "renderer": env("LPE_RENDERER") or None,
     }
 
 

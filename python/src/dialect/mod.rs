@@ -1,24 +1,28 @@
 //! What a dialect says to Python: [`PyDialect`] (its registration from `ini=` or
 //! `register=`, the text of a `(type, event, label)` vertex tuple), implemented on
 //! `lpe`'s markers in [`renderman`] and [`osl`]; and the argument conversions written
-//! once over it: the dialect name ([`dialect_name`]), the registration
-//! ([`registration`]), an expression ([`parse`]), a path as text or tuples ([`path`]).
+//! once over it: the dialect and renderer's profile ([`Language::of`], from `dialect=`,
+//! `renderer=` and `profile=`), the registration ([`Language::registration`]), an
+//! expression ([`parse`]), a path as text or tuples ([`path`]).
 
 pub mod osl;
 pub mod renderman;
 
-use std::path::PathBuf;
+use std::borrow::Cow;
+use std::path::{Path, PathBuf};
 
 use lpe::{Dialect, DialectName};
 use lpe_lint::check::dialect::LintDialect;
+use lpe_profile::{Profile, ProfileDialect};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyString, PyTuple};
 
 use crate::error::{syntax_error, value_error};
 
-/// An expression language as the Python package reads it.
-pub trait PyDialect: LintDialect {
+/// An expression language as the Python package reads it; a renderer's profile adds
+/// its letters, prefixes and built-in names to the registration ([`ProfileDialect`]).
+pub trait PyDialect: LintDialect + ProfileDialect {
     /// The registration `ini` (a `rendermn.ini` file) or `register` (OSL's user
     /// labels, `events=U;scatters=Y`) give; the one the dialect does not take is an
     /// error.
@@ -32,17 +36,90 @@ pub trait PyDialect: LintDialect {
     fn vertex_text(ty: &str, event: Option<&str>, label: Option<&str>) -> String;
 }
 
+/// The language the arguments `dialect=`, `renderer=` and `profile=` name: the dialect
+/// and, when a renderer is named, its profile.
+pub struct Language {
+    /// The dialect expressions are read in: the profile's base, else `dialect=`, else
+    /// RenderMan's.
+    pub dialect: DialectName,
+    /// The renderer's profile: a shipped one (`renderer=`) or a user's file (`profile=`).
+    pub profile: Option<Cow<'static, Profile>>,
+}
+
+impl Language {
+    /// Resolves the arguments once. `ValueError` for an unknown dialect, an unknown
+    /// renderer (the message lists the shipped ones and the nearest), a profile file
+    /// that does not load, both `renderer=` and `profile=`, or a `dialect=` other than
+    /// the profile's base.
+    pub fn of(
+        dialect: Option<&str>,
+        renderer: Option<&str>,
+        profile: Option<&Path>,
+    ) -> PyResult<Language> {
+        let given = dialect.map(dialect_name).transpose()?;
+        let profile: Option<Cow<'static, Profile>> = match (renderer, profile) {
+            (Some(_), Some(_)) => {
+                return Err(value_error(
+                    "renderer= and profile= each name a profile; give one of them",
+                ))
+            }
+            (Some(name), None) => Some(Cow::Borrowed(
+                lpe_profile::by_name(name).map_err(value_error)?,
+            )),
+            (None, Some(file)) => Some(Cow::Owned(Profile::from_file(file).map_err(value_error)?)),
+            (None, None) => None,
+        };
+        let Some(p) = profile else {
+            return Ok(Language {
+                dialect: given.unwrap_or_default(),
+                profile: None,
+            });
+        };
+        let base = p.dialect();
+        if let Some(given) = given.filter(|d| *d != base) {
+            // Reading a renderer's expressions in the other dialect would check
+            // something the renderer never reads: refused, as `lpe-check` refuses it.
+            return Err(value_error(format!(
+                "dialect=\"{given}\" contradicts renderer \"{}\", which reads {base}'s \
+                 dialect; drop dialect=",
+                p.name
+            )));
+        }
+        Ok(Language {
+            dialect: base,
+            profile: Some(p),
+        })
+    }
+
+    /// The registration of `D` from `ini=` and `register=` (`ValueError` when they are
+    /// bad), with the profile's letters, prefixes and built-in names on top.
+    pub fn registration<D: PyDialect>(
+        &self,
+        ini: Option<&PathBuf>,
+        register: Option<&str>,
+    ) -> PyResult<D::Registration> {
+        self.registration_of::<D>(ini.map(PathBuf::as_path), register)
+            .map_err(value_error)
+    }
+
+    /// [`Language::registration`] with the error as text, for lint's run (which names
+    /// the ini file itself).
+    pub fn registration_of<D: PyDialect>(
+        &self,
+        ini: Option<&Path>,
+        register: Option<&str>,
+    ) -> Result<D::Registration, String> {
+        let base = D::registration(ini, register)?;
+        Ok(match &self.profile {
+            Some(p) => D::with_profile(p, base),
+            None => base,
+        })
+    }
+}
+
 /// The dialect a `dialect=` argument names (`ValueError` for any other name).
 pub fn dialect_name(name: &str) -> PyResult<DialectName> {
     name.parse().map_err(value_error)
-}
-
-/// The registration of `D` from `ini=` and `register=` (`ValueError` when they are bad).
-pub fn registration<D: PyDialect>(
-    ini: Option<&PathBuf>,
-    register: Option<&str>,
-) -> PyResult<D::Registration> {
-    D::registration(ini.map(PathBuf::as_path), register).map_err(value_error)
 }
 
 /// Parses `src` as an AOV's source (a leading `lpe:` included); `LpeSyntaxError` if it
