@@ -57,6 +57,9 @@ pub struct Sources<'a> {
     pub usd: Option<&'a Path>,
     /// `NAME=LPE` arguments.
     pub aovs: &'a [String],
+    /// The renderer whose letters, prefixes and built-in names every AOV reads with
+    /// (`--renderer`), on top of the ini's registration.
+    pub profile: Option<&'a lpe_profile::Profile>,
 }
 
 /// A render's inputs in dialect `D`.
@@ -84,6 +87,10 @@ pub fn gather<D: SceneDialect>(sources: &Sources) -> Result<Inputs<D>, SourceErr
             },
             IniRefusal::NotTaken(why) => SourceError::IniNotTaken(why),
         })?,
+    };
+    let registration = match sources.profile {
+        Some(p) => D::with_profile(p, registration),
+        None => registration,
     };
     let scene = Scene::load(sources.scene, &lobes)?;
 

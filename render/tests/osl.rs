@@ -169,6 +169,102 @@ fn glossy_and_delta_split_what_renderman_calls_specular() {
     }
 }
 
+/// A renderer's correspondence decides the scattering a vertex shows: in Karma every
+/// specular lobe is `G` (docs/profiles.md), in Arnold every one is `S`. So Karma's
+/// `C<RG>.*[LO]` and Arnold's `C<RS>.*[LO]` are RenderMan's specular AOV bit for bit,
+/// from the same samples, and the other letter is black. Planted fault, checked by
+/// hand: showing the lobe's model instead of the correspondence (the plain-OSL mapping,
+/// glass `S` and GGX `G`) fails it on Karma.
+#[test]
+fn a_renderers_correspondence_decides_the_scattering_its_vertices_show() {
+    let s = scene("still-life");
+    let mut renderman = AovList::<RenderMan>::new();
+    renderman
+        .push("specular", "C<RS>.*[<L.>O]", &parser())
+        .unwrap();
+    let a = render(&s, &renderman, &small(24, 4));
+    for (renderer, all, none) in [
+        ("karma", "C<RG>.*[LO]", "C<RS>.*[LO]"),
+        ("arnold", "C<RS>.*[LO]", "C<RG>.*[LO]"),
+    ] {
+        let profile = lpe_profile::by_name(renderer).unwrap();
+        let settings = Settings {
+            scattering: Some(
+                lpe::translate::Correspondence::parse(profile.correspondence()).unwrap(),
+            ),
+            ..small(24, 4)
+        };
+        let mut osl = AovList::<Osl>::new();
+        osl.push("all", all, &Registered::none()).unwrap();
+        osl.push("none", none, &Registered::none()).unwrap();
+        let b = render(&s, &osl, &settings);
+        assert!(
+            a.film.layer_bits_equal(1, &b.film, 1),
+            "{renderer}: `{all}` is not RenderMan's specular"
+        );
+        assert!(
+            b.film.layer(2).iter().all(|v| v.element_sum() == 0.0),
+            "{renderer}: `{none}` is lit"
+        );
+    }
+}
+
+/// `lpe-render --renderer karma` renders the OSL basic set read with Karma's letters,
+/// and every invariant holds; an unknown renderer, or one that contradicts `--dialect`,
+/// is bad input. Planted fault, checked by hand: the formal check reading its universe
+/// under the default registration instead of the AOVs' fails it (with Karma's `A`
+/// registered, `C,~ L,~,A` is a universe path the basic set misses).
+#[test]
+fn the_cli_renders_as_a_renderer_with_every_invariant_holding() {
+    let dir = std::env::temp_dir().join(format!("lpe-render-renderer-{}", std::process::id()));
+    let out = dir.join("out");
+    for renderer in ["karma", "arnold"] {
+        let (code, err) = run(&[
+            "--renderer",
+            renderer,
+            "--scene",
+            "still-life",
+            "--res",
+            "8x8",
+            "--spp",
+            "2",
+            "--out",
+            out.to_str().unwrap(),
+            "--aov",
+            "albedo_free=C<RD>.+[LO]",
+        ]);
+        assert_eq!(code, 0, "{err}");
+        assert!(err.contains("(osl dialect, as "), "{err}");
+        assert!(!err.contains("[FAIL]"), "{err}");
+        assert!(err.contains("[pass] no NaN/Inf in any layer"), "{err}");
+    }
+    let (code, err) = run(&[
+        "--renderer",
+        "karma",
+        "--scene",
+        "still-life",
+        "--res",
+        "8x8",
+        "--spp",
+        "2",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("[pass] OSL basic AOVs sum to beauty"), "{err}");
+    assert!(
+        err.contains("[pass] formal partition check: OSL basic AOVs"),
+        "{err}"
+    );
+    let (code, err) = run(&["--renderer", "karm"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("did you mean `karma`?"), "{err}");
+    let (code, err) = run(&["--renderer", "karma", "--dialect", "renderman"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("contradicts --renderer karma"), "{err}");
+    std::fs::remove_dir_all(&dir).ok();
+}
+
 #[test]
 fn bad_osl_input_is_an_error_with_its_position() {
     let dir = std::env::temp_dir().join(format!("lpe-render-osl-{}", std::process::id()));

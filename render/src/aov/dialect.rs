@@ -36,7 +36,9 @@ pub enum IniRefusal {
 
 /// What the renderer needs per dialect. The reference matcher (the renderer's fallback
 /// when the fast matcher refuses a set) must read the dialect's trees.
-pub trait SceneDialect: Dialect<Lpe: ReferenceMatch<Path = Self::Path>> {
+pub trait SceneDialect:
+    Dialect<Lpe: ReferenceMatch<Path = Self::Path>> + lpe_profile::ProfileDialect
+{
     /// What the renderer's report calls the basic set's partition.
     const BASIC_PARTITION: &'static str;
     /// How error messages name the dialect after an AOV's name (`AOV `x` (OSL

@@ -27,6 +27,10 @@ pub struct AovList<D: Dialect> {
     pub partitions: Vec<Partition>,
     /// Why a default partition was not checked, and the expressions' warnings.
     pub notes: Vec<String>,
+    /// The registration the AOVs were read under (the latest [`AovList::push`]'s): the
+    /// formal checks read the universe under it too, so that a label a renderer
+    /// registers (Karma's `A`) means the same on both sides.
+    pub registration: D::Registration,
 }
 
 impl<D: Dialect> Default for AovList<D> {
@@ -35,6 +39,7 @@ impl<D: Dialect> Default for AovList<D> {
             aovs: Vec::new(),
             partitions: Vec::new(),
             notes: Vec::new(),
+            registration: D::Registration::default(),
         }
     }
 }
@@ -106,6 +111,7 @@ impl<D: SceneDialect> AovList<D> {
             expr: parsed.lpe,
             flags: parsed.flags,
         });
+        self.registration = registration.clone();
         Ok(self.aovs.len() - 1)
     }
 

@@ -31,6 +31,10 @@ pub enum InputError {
     Verify(#[from] VerifyError),
     #[error(transparent)]
     Bench(#[from] BenchError),
+    /// `--renderer`: an unknown name (with the known ones), or one the render cannot
+    /// show or that contradicts `--dialect`.
+    #[error("{0}")]
+    Renderer(String),
 }
 
 pub fn parse_res(s: &str) -> Result<(usize, usize), ArgError> {

@@ -87,7 +87,7 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => with_dialect!(cli.render.dialect, D => render::run::<D>(&cli.render)),
+        None => with_dialect!(cli.render.dialect(), D => render::run::<D>(&cli.render)),
         Some(Command::Check { threads, dialect }) => {
             with_dialect!(dialect, D => check::run::<D>(threads))
         }

@@ -3,6 +3,8 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
+use lpe::translate::Correspondence;
+use lpe_profile::Profile;
 use lpe_render::aov::SceneDialect;
 use lpe_render::inputs::{self, Inputs, Sources};
 use lpe_render::integrator::{self, Settings};
@@ -47,8 +49,13 @@ pub struct RenderArgs {
     /// OSL: no prefixes, macros, lobe numbers or user lobes; vertices are `C`, `R`/`T`
     /// with `D` (diffuse), `G` (glossy) or `S` (delta), `L`, `O`, labelled with the
     /// object's lpegroup or the light's group; the defaults are the OSL basic set.
-    #[arg(long, default_value_t = lpe::DialectName::RenderMan)]
-    pub dialect: lpe::DialectName,
+    #[arg(long)]
+    pub dialect: Option<lpe::DialectName>,
+    /// Render as this renderer shows its vertices and reads its AOVs (docs/profiles.md):
+    /// `karma` (every specular lobe is `G`), `arnold` (every specular lobe is `S`), ...;
+    /// its dialect, letters, prefixes and built-in names apply to every AOV.
+    #[arg(long, value_name = "NAME")]
+    pub renderer: Option<String>,
     /// Output directory.
     #[arg(long, default_value = "out")]
     pub out: PathBuf,
@@ -67,10 +74,43 @@ pub fn print_invariants(list: &[Invariant]) -> bool {
     !list.iter().any(Invariant::failed)
 }
 
+impl RenderArgs {
+    /// The renderer's profile `--renderer` names, checked against `--dialect` and against
+    /// what the renderer's vertices can show.
+    pub fn profile(&self) -> Result<Option<&'static Profile>, InputError> {
+        let Some(name) = &self.renderer else {
+            return Ok(None);
+        };
+        let p = lpe_profile::by_name(name).map_err(|e| InputError::Renderer(e.to_string()))?;
+        if let Some(d) = self.dialect.filter(|d| *d != p.dialect()) {
+            return Err(InputError::Renderer(format!(
+                "--dialect {d} contradicts --renderer {name}, which reads {}'s dialect; drop --dialect",
+                p.dialect()
+            )));
+        }
+        if p.correspondence().contains("=s") {
+            return Err(InputError::Renderer(format!(
+                "--renderer {name} shows some lobes as `s` (straight), which no lobe of \
+                 lpe-render's materials is"
+            )));
+        }
+        Ok(Some(p))
+    }
+
+    /// The dialect of every AOV: the renderer's, else `--dialect`, else RenderMan's.
+    pub fn dialect(&self) -> lpe::DialectName {
+        match self.profile() {
+            Ok(Some(p)) => p.dialect(),
+            _ => self.dialect.unwrap_or_default(),
+        }
+    }
+}
+
 /// Renders in dialect `D`: reads the inputs, renders, checks the invariants and writes
 /// the outputs, printing as it goes.
 pub fn run<D: SceneDialect>(args: &RenderArgs) -> Result<bool, InputError> {
     let t0 = Instant::now();
+    let profile = args.profile()?;
     let Inputs {
         scene,
         lobes,
@@ -82,6 +122,7 @@ pub fn run<D: SceneDialect>(args: &RenderArgs) -> Result<bool, InputError> {
         display: args.display.as_deref(),
         usd: args.usd.as_deref(),
         aovs: &args.aovs,
+        profile,
     })?;
     for w in warnings {
         eprintln!("warning: {w}");
@@ -94,17 +135,26 @@ pub fn run<D: SceneDialect>(args: &RenderArgs) -> Result<bool, InputError> {
         threads: args.threads,
         all_effects: args.all_effects,
         progress: true,
+        scattering: profile
+            .filter(|p| p.dialect() == lpe::DialectName::Osl)
+            .map(|p| {
+                Correspondence::parse(p.correspondence())
+                    .expect("a profile's correspondence is checked when it loads")
+            }),
         ..Settings::default()
     };
     let threads = args.threads.unwrap_or_else(rayon::current_num_threads);
     eprintln!(
-        "lpe-render: scene `{}`, {}x{}, {} spp, {} AOVs ({} dialect), {} threads, matcher: {}",
+        "lpe-render: scene `{}`, {}x{}, {} spp, {} AOVs ({}), {} threads, matcher: {}",
         scene.name,
         settings.width,
         settings.height,
         settings.spp,
         aovs.aovs.len(),
-        D::NAME,
+        match profile {
+            Some(p) => format!("{} dialect, as {}", D::NAME, p.title),
+            None => format!("{} dialect", D::NAME),
+        },
         threads,
         integrator::ENGINE
     );

@@ -62,6 +62,11 @@ pub struct Settings {
     /// Whether beauty is wanted (if not, paths dead for every AOV stop early).
     pub beauty: bool,
     pub progress: bool,
+    /// The scattering a scattering vertex shows an OSL-based matcher, by the RenderMan
+    /// lobe it scatters off: a renderer's correspondence (`lpe-render --renderer karma`:
+    /// every specular lobe is `G`). `None`: by the lobe's model (`G` for GGX, `S` for the
+    /// dielectric), as plain OSL.
+    pub scattering: Option<lpe::translate::Correspondence>,
 }
 
 impl Default for Settings {
@@ -77,6 +82,7 @@ impl Default for Settings {
             accumulation: Accumulation::F64,
             all_effects: false,
             beauty: true,
+            scattering: None,
             progress: false,
         }
     }

@@ -4,6 +4,7 @@
 //! methods on it in files of their own.
 
 use lpe::renderman::{LobeCategory, LobeMap, VertexType};
+use lpe::translate::{Correspondence, Scattering as OslScattering};
 
 use super::settings::{Settings, USER_SIGNALS};
 use crate::aov::matcher::{AovMask, PathMatcher, RenderMatcher};
@@ -30,6 +31,24 @@ impl UserSignal {
     }
 }
 
+/// The scattering a vertex off a lobe of `event` and `model` scattering shows: the
+/// renderer's correspondence's, when one is set, else the model's. A user lobe has no
+/// scattering in a correspondence and keeps its model's; a correspondence's `s`
+/// (straight) has no lobe model here, and `lpe-render --renderer` refuses a renderer
+/// whose correspondence uses it, so it keeps its model's too.
+fn shown_scattering(
+    event: lpe::renderman::Event,
+    model: Scattering,
+    shown: Option<&Correspondence>,
+) -> Scattering {
+    match shown.and_then(|c| c.scattering(event)) {
+        Some(OslScattering::Diffuse) => Scattering::Diffuse,
+        Some(OslScattering::Glossy) => Scattering::Glossy,
+        Some(OslScattering::Singular) => Scattering::Delta,
+        Some(OslScattering::Straight) | None => model,
+    }
+}
+
 /// Every vertex the scene can produce, classified once for the matcher.
 pub(super) struct Vertices<C> {
     /// `[object][lobe]` -> classes of the lobe's `R` and `T` vertices.
@@ -52,6 +71,7 @@ impl<C: Copy> Vertices<C> {
         m: &M,
         lobes: &LobeMap,
         labels: bool,
+        shown: Option<&Correspondence>,
     ) -> Self {
         let label = |l: &Option<String>| if labels { l.clone() } else { None };
         let camera = m.classify_scene(&SceneVertex::Camera);
@@ -73,7 +93,7 @@ impl<C: Copy> Vertices<C> {
                                 m.classify_scene(&SceneVertex::Scatter {
                                     side,
                                     event: l.event,
-                                    scattering: l.scattering(),
+                                    scattering: shown_scattering(l.event, l.scattering(), shown),
                                     group: group.as_deref(),
                                 })
                             })
@@ -160,7 +180,13 @@ impl<'a, M: RenderMatcher> Integrator<'a, M> {
         } else {
             Plan::derive(scene, aovs, settings.beauty)
         };
-        let vertices = Vertices::new(scene, matcher, lobes, plan.labels);
+        let vertices = Vertices::new(
+            scene,
+            matcher,
+            lobes,
+            plan.labels,
+            settings.scattering.as_ref(),
+        );
         if !settings.all_effects {
             plan.user_lobes = vertices.user.iter().flatten().any(|(_, m)| !m.is_empty());
         }

@@ -101,8 +101,8 @@ pub fn formal_partition<D: SceneDialect>(aovs: &AovList<D>) -> Vec<Invariant> {
             .map(|p| (p.name.clone(), p.members.clone(), p.universal))
             .collect()
     };
-    let registration = D::Registration::default();
-    let universe = lpe::analysis::default_universe::<D>(&registration);
+    let registration = &aovs.registration;
+    let universe = lpe::analysis::default_universe::<D>(registration);
     let named = aovs.named();
     sets.into_iter()
         .map(|(name, members, universal)| {
@@ -111,7 +111,7 @@ pub fn formal_partition<D: SceneDialect>(aovs: &AovList<D>) -> Vec<Invariant> {
                 .map(|&i| aovs.aovs[i].name.as_str())
                 .collect();
             let picked: Vec<_> = members.iter().map(|&i| named[i].clone()).collect();
-            let checked = lpe::analysis::partition(&picked, &universe, &registration)
+            let checked = lpe::analysis::partition(&picked, &universe, registration)
                 .map(|r| failures(&r, &names));
             let (passed, detail) = match checked {
                 Ok(why) if why.is_empty() => (
