@@ -240,6 +240,37 @@ fn the_osl_suite_replays_clean_through_the_osl_proxy() {
     );
 }
 
+/// The renderer profiles' cases replay through the external protocol: each `compile`
+/// names the case's renderer (`renderer`), and the proxy reads the set under it. The
+/// proxy that drops the field rejects Arnold's built-in names (`RGBA`, `direct`, …),
+/// each failure named with its file and case.
+#[test]
+fn renderer_profile_cases_replay_with_the_renderer_named_in_each_compile() {
+    lpe_testkit::host::require_python3();
+    let (code, out, err) = lpe_check(&[
+        "diff",
+        "--external",
+        &proxy_in_the_osl_dialect(""),
+        "--suite",
+        "tests/testdata/profiles",
+    ]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains(" 0 failed"), "{out}");
+    let (code, out, _) = lpe_check(&[
+        "diff",
+        "--external",
+        &proxy_in_the_osl_dialect("--forget-renderer"),
+        "--suite",
+        "tests/testdata/profiles",
+    ]);
+    assert_eq!(code, 3, "{out}");
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with("arnold.toml: case `direct`")),
+        "{out}"
+    );
+}
+
 #[test]
 fn a_planted_wrong_verdict_is_reported_with_its_file_and_case() {
     lpe_testkit::host::require_python3();

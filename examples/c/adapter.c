@@ -1,7 +1,8 @@
 /* The external-matcher protocol (docs/protocol.md) over lpe's C ABI: what a renderer
  * team writes to put its own matcher under `lpe-check diff --external`. Here the matcher
  * is lpe itself, reached only through lpe.h, so the run tests the whole C path in both
- * dialects: compile (OSL: under the registered labels), classify (RenderMan: from
+ * dialects: compile (OSL: under the registered labels; under the renderer profile a
+ * request names, through lpe_options.renderer), classify (RenderMan: from
  * vertex text; OSL: from each vertex's symbols, as an OSL renderer would), start,
  * step through a cache of the adapter's own, matches.
  *
@@ -179,7 +180,7 @@ static void clear(strings *s) {
 }
 
 typedef struct {
-    char *id, *op, *dialect;
+    char *id, *op, *dialect, *renderer;
     strings names, exprs, paths, events, scatters;
 } request;
 
@@ -214,6 +215,7 @@ static void request_member(reader *r, const char *key, void *ctx) {
         q->id[r->p - start] = 0;
     } else if (!strcmp(key, "op")) { free(q->op); q->op = read_string(r); }
     else if (!strcmp(key, "dialect")) { free(q->dialect); q->dialect = read_string(r); }
+    else if (!strcmp(key, "renderer")) { free(q->renderer); q->renderer = read_string(r); }
     else if (!strcmp(key, "aovs")) read_array(r, aov_item, q);
     else if (!strcmp(key, "paths")) read_array(r, path_item, q);
     else if (!strcmp(key, "registered")) read_object(r, registered_member, q);
@@ -348,6 +350,7 @@ static void answer(request *q) {
         lpe_options opts = options;
         char *registered = osl ? registration(q) : NULL;
         opts.osl_registered = registered;
+        opts.renderer = q->renderer; /* NULL: none named */
         lpe_status st = lpe_set_compile((const char *const *)q->names.items,
                                         (const char *const *)q->exprs.items, n,
                                         osl ? LPE_DIALECT_OSL : LPE_DIALECT_RENDERMAN, NULL,
@@ -412,6 +415,9 @@ int main(int argc, char **argv) {
         clear(&q.paths);
         clear(&q.events);
         clear(&q.scatters);
+        /* A renderer holds for the compile request that names it only. */
+        free(q.renderer);
+        q.renderer = NULL;
         reader r = {line, 1};
         read_object(&r, request_member, &q);
         if (!r.ok) {

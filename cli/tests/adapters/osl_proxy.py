@@ -3,11 +3,13 @@
 It answers through `LPE_CHECK match --dialect osl --engine reference --batch` (one
 process per request), so it agrees with lpe unless a bug is planted:
 
-    python3 osl_proxy.py LPE_CHECK [--forget-registration] [--miss-counted] [--crash-on-zero]
+    python3 osl_proxy.py LPE_CHECK [--forget-registration] [--forget-renderer] [--miss-counted] [--crash-on-zero]
 
 `--forget-registration` parses every set as if nothing were registered, the mistake of
 an adapter that drops the `registered` field of `compile`: expressions using a
-registered label are rejected where lpe accepts them.
+registered label are rejected where lpe accepts them. `--forget-renderer` drops the
+`renderer` field of `compile` the same way: a renderer's built-in names and prefixes are
+then rejected.
 
 `--miss-counted` answers "no AOV" for every path of a set whose expressions hold a
 counted repetition `{…}`: a bug that shows only under counts, so that minimizing one
@@ -25,6 +27,7 @@ import sys
 
 LPE_CHECK = sys.argv[1]
 FORGET = "--forget-registration" in sys.argv[2:]
+FORGET_RENDERER = "--forget-renderer" in sys.argv[2:]
 MISS_COUNTED = "--miss-counted" in sys.argv[2:]
 CRASH_ON_ZERO = "--crash-on-zero" in sys.argv[2:]
 FLAKY = "--flaky" in sys.argv[2:]
@@ -45,9 +48,11 @@ def registration(reg):
 
 
 def batch(lines):
-    """lpe-check's answer line per `EXPR<TAB>REGISTERED<TAB>PATH` line."""
+    """lpe-check's answer line per `EXPR<TAB>REGISTERED<TAB>PATH` line, under the
+    renderer the last `compile` named."""
+    named = ["--renderer", renderer] if renderer else ["--dialect", "osl"]
     out = subprocess.run(
-        [LPE_CHECK, "match", "--dialect", "osl", "--engine", "reference", "--batch"],
+        [LPE_CHECK, "match", *named, "--engine", "reference", "--batch"],
         input="".join(l + "\n" for l in lines),
         capture_output=True,
         text=True,
@@ -58,7 +63,7 @@ def batch(lines):
     return answers
 
 
-aovs, reg = [], "-"
+aovs, reg, renderer = [], "-", None
 for line in sys.stdin:
     req = json.loads(line)
     rid, op = req["id"], req["op"]
@@ -79,6 +84,7 @@ for line in sys.stdin:
         if CRASH_ON_ZERO and any("{0}" in e or "{0,0}" in e for _, e in aovs):
             sys.exit("planted crash on a {0} count")
         reg = registration(req.get("registered"))
+        renderer = None if FORGET_RENDERER else req.get("renderer")
         # Any path will do: the answer line says whether the expression parses.
         answers = batch([f"{e}\t{reg}\tC,_ L,_" for _, e in aovs]) if aovs else []
         for i, a in enumerate(answers):

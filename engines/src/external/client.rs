@@ -164,6 +164,9 @@ pub struct Client {
     pub name: Option<String>,
     /// Processes started after the first.
     pub restarts: u64,
+    /// The renderer profile every `compile` request names (`lpe-check diff --external
+    /// --renderer`, a suite case under a profile), if any.
+    pub renderer: Option<String>,
 }
 
 impl Client {
@@ -187,6 +190,7 @@ impl Client {
             next_id: 0,
             name: None,
             restarts: 0,
+            renderer: None,
         };
         let process = Process::spawn(&c.argv).map_err(|error| StartError::Spawn {
             program: c.argv[0].clone(),
@@ -225,7 +229,11 @@ impl Client {
         registered: Option<WireRegistration>,
     ) -> Result<Reply, Fault> {
         self.ensure()?;
-        self.request(Body::Compile { aovs, registered })
+        self.request(Body::Compile {
+            aovs,
+            registered,
+            renderer: None,
+        })
     }
 
     /// Matches paths against the last compiled set: [`Reply::Matches`] or
@@ -301,7 +309,10 @@ impl Client {
     fn exchange(&mut self, bodies: Vec<Body>) -> (Vec<Reply>, Option<Fault>) {
         let requests: Vec<Request> = bodies
             .into_iter()
-            .map(|body| {
+            .map(|mut body| {
+                if let Body::Compile { renderer, .. } = &mut body {
+                    renderer.clone_from(&self.renderer);
+                }
                 self.next_id += 1;
                 Request {
                     id: self.next_id - 1,

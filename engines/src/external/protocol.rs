@@ -15,8 +15,8 @@ pub const PROTOCOL_VERSION: u32 = 1;
 
 /// The minor version, sent in `hello` as `minor`: it grows when requests gain fields a
 /// matcher of an older minor version may ignore. 1: OSL `compile` requests carry the
-/// registered labels.
-pub const PROTOCOL_MINOR: u32 = 1;
+/// registered labels. 2: `compile` requests may name a renderer profile (`renderer`).
+pub const PROTOCOL_MINOR: u32 = 2;
 
 /// One request line.
 #[derive(Clone, Debug, Serialize)]
@@ -49,6 +49,11 @@ pub enum Body {
         /// OSL only (absent for RenderMan): the labels to register before parsing.
         #[serde(skip_serializing_if = "Option::is_none")]
         registered: Option<WireRegistration>,
+        /// The renderer profile the set reads under (docs/profiles.md: its letters,
+        /// prefixes and built-in names), absent for none; the client fills it in
+        /// ([`crate::external::client::Client::renderer`]).
+        #[serde(skip_serializing_if = "Option::is_none")]
+        renderer: Option<String>,
     },
     /// Which AOVs of the compiled set each path lands in.
     Match {
@@ -233,6 +238,7 @@ mod tests {
                     expr: "C'a b'L".into(),
                 }],
                 registered: None,
+                renderer: None,
             },
         };
         assert_eq!(
@@ -250,11 +256,12 @@ mod tests {
                     events: vec!["U".into()],
                     scatters: vec!["Y".into()],
                 }),
+                renderer: Some("karma".into()),
             },
         };
         assert_eq!(
             osl.to_line(),
-            r#"{"id":9,"op":"compile","aovs":[{"name":"a0","expr":"CDY+U"}],"registered":{"events":["U"],"scatters":["Y"]}}"#
+            r#"{"id":9,"op":"compile","aovs":[{"name":"a0","expr":"CDY+U"}],"registered":{"events":["U"],"scatters":["Y"]},"renderer":"karma"}"#
         );
         let hello = Request {
             id: 0,
@@ -266,7 +273,7 @@ mod tests {
         };
         assert_eq!(
             hello.to_line(),
-            r#"{"id":0,"op":"hello","protocol":1,"minor":1,"dialect":"osl"}"#
+            r#"{"id":0,"op":"hello","protocol":1,"minor":2,"dialect":"osl"}"#
         );
         let q = Request {
             id: 8,
@@ -321,6 +328,7 @@ mod tests {
                     expr: "C(".into(),
                 }],
                 registered: None,
+                renderer: None,
             },
         };
         assert_eq!(

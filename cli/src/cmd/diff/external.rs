@@ -67,6 +67,8 @@ fn run_in<D: Generate + CliDialect>(
         registration,
         timeout: Duration::from_millis(args.timeout_ms),
         max_restarts: args.max_restarts,
+        // The profile's name: a matcher that does not know it says `unsupported`.
+        renderer: args.lang.renderer_profile().ok().flatten().map(|p| p.name),
     };
     let start = Instant::now();
     let report = match external::run(&setup, &cases, &engines) {

@@ -160,6 +160,7 @@ fn replay(client: &mut Client, loaded: &Loaded, tally: &mut Tally) {
         .collect();
     let registered =
         (loaded.dialect == DialectName::Osl).then(|| WireRegistration::from(&loaded.registered));
+    client.renderer.clone_from(&loaded.profile);
     let compiled = client.compile(aovs, registered);
     if let Some(want) = &case.error {
         tally.checked += 1;

@@ -38,6 +38,8 @@ pub fn requests<D: WireDialect>(
         Body::Compile {
             aovs: aovs.to_vec(),
             registered: D::wire_registration(registration),
+            // The client names its renderer, if it has one.
+            renderer: None,
         },
         Body::Match {
             paths: paths.to_vec(),

@@ -29,6 +29,8 @@ pub struct Setup<D: Dialect> {
     pub timeout: Duration,
     /// Stop after this many processes restarted after faults.
     pub max_restarts: u64,
+    /// The renderer profile every compile request names (`--renderer`), if any.
+    pub renderer: Option<String>,
 }
 
 /// Cases to ask.
@@ -54,7 +56,8 @@ pub fn run<D: Generate>(
     cases: &Cases,
     engines: &[&dyn Engine<D>],
 ) -> Result<Report<D>, StartError> {
-    let client = Client::start(&setup.command, D::NAME, setup.timeout)?;
+    let mut client = Client::start(&setup.command, D::NAME, setup.timeout)?;
+    client.renderer.clone_from(&setup.renderer);
     Ok(run_items(setup, client, engines, items(setup, cases)))
 }
 
