@@ -174,6 +174,7 @@ mod tests {
             registration: D::Registration::default(),
             timeout: Duration::from_secs(1),
             max_restarts: 0,
+            renderer: None,
         }
     }
 
