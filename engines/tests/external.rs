@@ -23,6 +23,7 @@ fn setup(command: String, timeout_ms: u64) -> Setup<RenderMan> {
         registration: lpe::renderman::Parser::default(),
         timeout: Duration::from_millis(timeout_ms),
         max_restarts: 20,
+        renderer: None,
     }
 }
 
