@@ -306,3 +306,37 @@ fn likely_dialect(unknown: &UnknownDialect) -> Option<DialectName> {
         _ => None,
     }
 }
+
+#[cfg(test)]
+mod profile_tests {
+    use super::{LIGHT_GROUP_ATTRIBUTES, OBJECT_GROUP_ATTRIBUTES};
+
+    /// Every group attribute a shipped renderer profile cites is one this reader reads,
+    /// on the carrier the profile names: a profile citing an attribute lint never reads
+    /// would promise group checks that do not happen. Checked by hand: dropping
+    /// `primvars:arnold:aov` from `LIGHT_GROUP_ATTRIBUTES` fails it, naming Arnold.
+    #[test]
+    fn every_group_attribute_a_profile_cites_is_read() {
+        let mut cited = 0;
+        for p in lpe_profile::shipped() {
+            let Some(g) = &p.groups else { continue };
+            for a in &g.light {
+                assert!(
+                    LIGHT_GROUP_ATTRIBUTES.contains(&a.as_str()),
+                    "{}: light `{a}`",
+                    p.name
+                );
+                cited += 1;
+            }
+            for a in &g.object {
+                assert!(
+                    OBJECT_GROUP_ATTRIBUTES.contains(&a.as_str()),
+                    "{}: object `{a}`",
+                    p.name
+                );
+                cited += 1;
+            }
+        }
+        assert!(cited >= 5, "{cited}");
+    }
+}
