@@ -80,12 +80,25 @@ pub const RENDERER_ATTRIBUTE: &str = "lpe:renderer";
 /// attributes, the group attributes and every `lpe:` attribute. The `.usda` skim drops
 /// every other value, and `lpe.lint(stage)` queries only these.
 pub fn lint_reads(name: &str) -> bool {
-    name.starts_with("lpe:")
-        || name == "sourceType"
-        || name == "sourceName"
-        || LIGHT_GROUP_ATTRIBUTES.contains(&name)
-        || OBJECT_GROUP_ATTRIBUTES.contains(&name)
+    name.starts_with(READ_PREFIX) || READ_ATTRIBUTES.contains(&name)
 }
+
+/// Every attribute lint reads by its whole name: the RenderVar attributes and the group
+/// attributes ([`lint_reads`]).
+pub const READ_ATTRIBUTES: [&str; 8] = [
+    "sourceType",
+    "sourceName",
+    LIGHT_GROUP_ATTRIBUTES[0],
+    LIGHT_GROUP_ATTRIBUTES[1],
+    LIGHT_GROUP_ATTRIBUTES[2],
+    LIGHT_GROUP_ATTRIBUTES[3],
+    OBJECT_GROUP_ATTRIBUTES[0],
+    OBJECT_GROUP_ATTRIBUTES[1],
+];
+
+/// The namespace of the attributes lint reads on any prim (`lpe:dialect`,
+/// `lpe:renderer`, `lpe:partition...`).
+pub const READ_PREFIX: &str = "lpe:";
 
 /// Prim types that are geometry: a stage holding one can be checked for object groups.
 const GEOMETRY_TYPES: [&str; 13] = [
@@ -161,106 +174,164 @@ fn read_as(path: &Path, limits: &Limits, skimming: bool) -> Result<Document, Rea
         usd::Stage::open(name)
     }
     .map_err(|e| usd_err(format!("{e:#}")))?;
-    let mut prims = Vec::new();
+    let mut paths = Vec::new();
     stage
-        .traverse(usd::PrimPredicate::DEFAULT, |p| prims.push(p.clone()))
+        .traverse(usd::PrimPredicate::DEFAULT, |p| paths.push(p.clone()))
         .map_err(|e| usd_err(format!("{e:#}")))?;
-
-    let mut doc = Document::new(path, Format::Usd);
-    let mut lights = BTreeSet::new();
-    let mut objects = BTreeSet::new();
-    let (mut has_lights, mut has_objects) = (false, false);
-    let mut declared = None;
-    for p in &prims {
+    let mut facts = StageFacts::default();
+    for p in &paths {
         let prim = stage.prim(p.clone());
-        let ty = prim
+        let type_name = prim
             .type_name()
             .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?
             .map(|t| t.as_str().to_string())
             .unwrap_or_default();
-        let text = |attr: &str| -> Result<Option<String>, ReadError> {
+        let properties: Vec<String> = prim
+            .property_names()
+            .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?
+            .iter()
+            .map(|t| t.as_str().to_string())
+            .collect();
+        let mut values = Vec::new();
+        for attr in properties.iter().filter(|a| lint_reads(a)) {
             let value = prim
                 .attribute(attr)
                 .get::<sdf::Value>()
                 .map_err(|e| usd_err(format!("<{p}>.{attr}: {e:#}")))?;
-            Ok(value.and_then(|v| v.as_str().map(str::to_string)))
+            values.push((
+                attr.clone(),
+                value.and_then(|v| v.as_str().map(str::to_string)),
+            ));
+        }
+        let ordered_vars = if type_name == "RenderProduct" {
+            prim.relationship(ORDERED_VARS)
+                .targets()
+                .map_err(|e| usd_err(format!("<{p}>.orderedVars: {e:#}")))?
+                .iter()
+                .map(|t| t.name().unwrap_or_default().to_string())
+                .collect()
+        } else {
+            Vec::new()
         };
-        match ty.as_str() {
+        facts.types.insert(type_name.clone());
+        facts.prims.push(PrimFacts {
+            path: p.to_string(),
+            name: p.name().unwrap_or_default().to_string(),
+            type_name,
+            properties,
+            values,
+            ordered_vars,
+        });
+    }
+    document(path, &facts)
+}
+
+/// The relationship of a RenderProduct listing its RenderVars in order.
+pub const ORDERED_VARS: &str = "orderedVars";
+
+/// The prim types whose prims lint reads whatever attributes they hold: RenderVars (the
+/// AOVs), RenderProducts (`orderedVars`), RenderSettings (their namespaces).
+pub const READ_PRIM_TYPES: [&str; 3] = ["RenderVar", "RenderProduct", "RenderSettings"];
+
+/// What lint reads of a composed stage, however it was traversed: by [`read`] through
+/// `openusd`, or by `lpe.lint(stage)` through Pixar's USD. [`document`] makes the
+/// [`Document`] from it, so both readers follow one definition of the conventions.
+#[derive(Clone, Debug, Default)]
+pub struct StageFacts {
+    /// The prims to read, in traversal order: at least every prim of a
+    /// [`READ_PRIM_TYPES`] type and every prim with an attribute [`lint_reads`] (others
+    /// change nothing).
+    pub prims: Vec<PrimFacts>,
+    /// The type names of every prim traversed (`""` for a typeless one): lights and
+    /// geometry make groups checkable.
+    pub types: BTreeSet<String>,
+}
+
+/// One prim of [`StageFacts`].
+#[derive(Clone, Debug, Default)]
+pub struct PrimFacts {
+    /// Its path, `/Render/Vars/diffuse`.
+    pub path: String,
+    /// Its name, `diffuse`.
+    pub name: String,
+    /// Its type name (`""` for none).
+    pub type_name: String,
+    /// Its property names (at least the authored ones), in the library's order.
+    pub properties: Vec<String>,
+    /// Each attribute [`lint_reads`] it holds, with its value as text (a string, token
+    /// or asset path; `None` for any other value or none).
+    pub values: Vec<(String, Option<String>)>,
+    /// A RenderProduct's `orderedVars`: the targets' prim names, in order.
+    pub ordered_vars: Vec<String>,
+}
+
+/// The declarations of a stage `file` whose prims are `facts` (module docs).
+pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> {
+    let mut doc = Document::new(file, Format::Usd);
+    let mut lights = BTreeSet::new();
+    let mut objects = BTreeSet::new();
+    let mut has_lights = facts.types.iter().any(|t| t.ends_with("Light"));
+    let mut has_objects = facts
+        .types
+        .iter()
+        .any(|t| GEOMETRY_TYPES.contains(&t.as_str()));
+    let mut declared = None;
+    for prim in &facts.prims {
+        let p = &prim.path;
+        let text = |attr: &str| -> Option<String> {
+            prim.values
+                .iter()
+                .find(|(name, _)| name == attr)
+                .and_then(|(_, v)| v.clone())
+        };
+        let at = |attribute: &str| Location::Prim {
+            prim: p.clone(),
+            attribute: attribute.to_string(),
+        };
+        match prim.type_name.as_str() {
             "RenderVar" => {
-                let source_type = text("sourceType")?.unwrap_or_else(|| "raw".into());
+                let source_type = text("sourceType").unwrap_or_else(|| "raw".into());
                 if source_type == "lpe" {
                     doc.aovs.push(AovDecl {
-                        name: p.name().unwrap_or_default().to_string(),
-                        source: text("sourceName")?.unwrap_or_default(),
-                        location: Location::Prim {
-                            prim: p.to_string(),
-                            attribute: "sourceName".into(),
-                        },
+                        name: prim.name.clone(),
+                        source: text("sourceName").unwrap_or_default(),
+                        location: at("sourceName"),
                         source_type: Some(source_type),
                     });
                 }
             }
-            "RenderProduct" if doc.ordered_vars.is_none() => {
-                let targets = prim
-                    .relationship("orderedVars")
-                    .targets()
-                    .map_err(|e| usd_err(format!("<{p}>.orderedVars: {e:#}")))?;
-                if !targets.is_empty() {
-                    doc.ordered_vars = Some(
-                        targets
-                            .iter()
-                            .map(|t| t.name().unwrap_or_default().to_string())
-                            .collect(),
-                    );
-                }
+            "RenderProduct" if doc.ordered_vars.is_none() && !prim.ordered_vars.is_empty() => {
+                doc.ordered_vars = Some(prim.ordered_vars.clone());
             }
             _ => {}
         }
-        has_lights |= ty.ends_with("Light");
-        has_objects |= GEOMETRY_TYPES.contains(&ty.as_str());
         for attr in LIGHT_GROUP_ATTRIBUTES {
-            if let Some(g) = text(attr)? {
+            if let Some(g) = text(attr) {
                 has_lights = true;
                 lights.insert(g);
             }
         }
         for attr in OBJECT_GROUP_ATTRIBUTES {
-            if let Some(g) = text(attr)? {
+            if let Some(g) = text(attr) {
                 has_objects = true;
                 objects.insert(g);
             }
         }
-        let names = prim
-            .property_names()
-            .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?;
-        for prop in names {
+        for prop in &prim.properties {
             let prop = prop.as_str();
-            if ty == "RenderSettings" {
+            if prim.type_name == "RenderSettings" {
                 if let Some((namespace, _)) = prop.split_once(':') {
                     doc.settings_namespaces
                         .entry(namespace.to_string())
-                        .or_insert_with(|| p.to_string());
+                        .or_insert_with(|| p.clone());
                 }
             }
             if prop == RENDERER_ATTRIBUTE {
-                let location = Location::Prim {
-                    prim: p.to_string(),
-                    attribute: prop.to_string(),
-                };
-                declare_renderer(&mut doc.renderer, path, text(prop)?, location)?;
+                declare_renderer(&mut doc.renderer, file, text(prop), at(prop))?;
                 continue;
             }
             if prop == DIALECT_ATTRIBUTE {
-                let value = prim
-                    .attribute(prop)
-                    .get::<sdf::Value>()
-                    .map_err(|e| usd_err(format!("<{p}>.{prop}: {e:#}")))?;
-                let location = Location::Prim {
-                    prim: p.to_string(),
-                    attribute: prop.to_string(),
-                };
-                let named = value.as_ref().and_then(sdf::Value::as_str);
-                declare_dialect(&mut declared, path, named, location)?;
+                declare_dialect(&mut declared, file, text(prop).as_deref(), at(prop))?;
                 continue;
             }
             let name = match prop.strip_prefix("lpe:partition") {
@@ -271,14 +342,10 @@ fn read_as(path: &Path, limits: &Limits, skimming: bool) -> Result<Document, Rea
                 },
                 None => continue,
             };
-            let list = text(prop)?.unwrap_or_default();
             doc.partitions.push(PartitionDecl {
                 name: name.to_string(),
-                members: split_members(&list),
-                location: Location::Prim {
-                    prim: p.to_string(),
-                    attribute: prop.to_string(),
-                },
+                members: split_members(&text(prop).unwrap_or_default()),
+                location: at(prop),
             });
         }
     }
