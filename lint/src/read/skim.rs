@@ -95,36 +95,32 @@ pub fn skim(input: impl Read, keep: impl Fn(&str) -> bool, limit: u64) -> Result
     })
 }
 
-/// Bytes that end a word (a type, a name, a number) in usda.
-fn delimits(b: u8) -> bool {
-    matches!(
-        b,
-        b' ' | b'\t'
-            | b'\r'
-            | b'\n'
-            | b'#'
-            | b'"'
-            | b'\''
-            | b'@'
-            | b'<'
-            | b'('
-            | b')'
-            | b'['
-            | b']'
-            | b'{'
-            | b'}'
-            | b'='
-            | b','
-            | b';'
-    )
+/// A table of the bytes `class` accepts, built at compile time: the scans test one
+/// load per byte.
+const fn table(class: &[u8]) -> [bool; 256] {
+    let mut t = [false; 256];
+    let mut i = 0;
+    while i < class.len() {
+        t[class[i] as usize] = true;
+        i += 1;
+    }
+    t
 }
 
+/// Bytes that end a word (a type, a name, a number) in usda.
+const DELIMITERS: [bool; 256] = table(b" \t\r\n#\"'@<()[]{}=,;");
+
 /// Bytes a skipped value's scan must stop at: every other byte is passed in bulk.
+const SKIP_STOPS: [bool; 256] = table(b"\n#\"'@<()[]{}");
+
+#[inline]
+fn delimits(b: u8) -> bool {
+    DELIMITERS[b as usize]
+}
+
+#[inline]
 fn stops_skip(b: u8) -> bool {
-    matches!(
-        b,
-        b'\n' | b'#' | b'"' | b'\'' | b'@' | b'<' | b'(' | b')' | b'[' | b']' | b'{' | b'}'
-    )
+    SKIP_STOPS[b as usize]
 }
 
 /// What the innermost open bracket is.
@@ -251,24 +247,23 @@ impl<R: Read> Src<R> {
 
     /// Passes bytes up to the next one `stop` accepts, within the current block.
     #[inline]
-    fn run_until(&mut self, stop: fn(u8) -> bool, out: Option<&mut Vec<u8>>) {
+    fn run_until(&mut self, stop: impl Fn(u8) -> bool, out: Option<&mut Vec<u8>>) {
         let start = self.pos;
         let end = self.buf[start..self.avail]
             .iter()
             .position(|&b| stop(b))
             .map_or(self.avail, |i| start + i);
-        // None of the passed bytes is a newline when `stop` stops at newlines; otherwise
-        // count them.
-        for &b in &self.buf[start..end] {
-            if b == b'\n' {
-                self.line += 1;
-                self.column = 1;
-            } else {
-                self.column += 1;
+        let passed = &self.buf[start..end];
+        // Point arrays are long runs without a newline: count them in bulk.
+        match passed.iter().rposition(|&b| b == b'\n') {
+            None => self.column += passed.len(),
+            Some(last) => {
+                self.line += passed.iter().filter(|&&b| b == b'\n').count();
+                self.column = passed.len() - last;
             }
         }
         if let Some(out) = out {
-            out.extend_from_slice(&self.buf[start..end]);
+            out.extend_from_slice(passed);
         }
         self.pos = end;
     }

@@ -188,14 +188,15 @@ def _stage_facts(stage):
         if (ty not in typed and exact.isdisjoint(names)
                 and marker not in "\0" + "\0".join(names)):
             continue
-        values = [
-            (n, _as_text(prim.GetAttribute(n).Get()))
-            for n in names
-            if (n in exact or n.startswith(prefix)) and prim.HasAttribute(n)
-        ]
+        values = []
+        for n in names:
+            if n in exact or n.startswith(prefix):
+                attr = prim.GetAttribute(n)
+                if attr:  # not a relationship of that name
+                    values.append((n, _as_text(attr.Get())))
         rel = prim.GetRelationship(_USD_ORDERED_VARS) if ty in typed else None
         ordered = [t.name for t in rel.GetTargets()] if rel else []
-        prims.append((str(prim.GetPath()), ty, list(names), values, ordered))
+        prims.append((prim.GetPath().pathString, ty, names, values, ordered))
     return prims, sorted(types)
 
 
