@@ -437,7 +437,9 @@ impl<R: Read> Skim<R> {
                 self.skip_space()?;
                 let (line, column) = (self.src.line, self.src.column);
                 if self.src.peek()? != Some(b'{') {
-                    return Err(self.src.error(line, column, "expected `{` of time samples"));
+                    // Not a block of samples: the USD library's to read or refuse.
+                    self.value_pending = true;
+                    return Ok(());
                 }
                 self.src.bump();
                 self.out.extend_from_slice(b"{ ");
@@ -677,8 +679,9 @@ mod tests {
 
     #[test]
     fn scalar_values_and_metadata_after_them() {
-        let text = "def X \"x\"\n{\n    float a = -1.5e-3 (doc = \"d\")\n    token b = \"t\"\n    custom string lpe:renderer = 'karma'\n    double c = 2\n}\n";
-        let expected = "def X \"x\"\n{\n    float a  (doc = \"d\")\n    token b \n    custom string lpe:renderer = 'karma'\n    double c \n}\n";
+        // Samples that are no `{ }` block are copied for the USD library to judge.
+        let text = "def X \"x\"\n{\n    float a = -1.5e-3 (doc = \"d\")\n    token b = \"t\"\n    custom string lpe:renderer = 'karma'\n    double c = 2\n    double d.timeSamples = None\n}\n";
+        let expected = "def X \"x\"\n{\n    float a  (doc = \"d\")\n    token b \n    custom string lpe:renderer = 'karma'\n    double c \n    double d.timeSamples =None\n}\n";
         assert_eq!(skimmed(text), expected);
     }
 
