@@ -12,7 +12,8 @@
 //! dialect and renderer's profile of `dialect=`, `renderer=` and `profile=` among them),
 //! [`error`] (`LpeSyntaxError` and the conversion of every Rust error into a Python
 //! exception), [`set`] (`AovSet`: match, match_many, explain), [`analysis`] (`parse`,
-//! `equiv`, `partition`), [`lint`] (`lpe-check lint`'s run, as JSON).
+//! `equiv`, `partition`), [`lint`] (`lpe-check lint`'s run, as JSON, over files or the
+//! facts of a composed stage).
 //!
 //! Every fallible call returns a Python exception: bad arguments raise `TypeError` or
 //! `ValueError`, an expression that does not parse raises `LpeSyntaxError` (a
@@ -40,6 +41,13 @@ fn _lpe(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(analysis::equiv, m)?)?;
     m.add_function(wrap_pyfunction!(analysis::partition, m)?)?;
     m.add_function(wrap_pyfunction!(lint::lint_json, m)?)?;
+    m.add_function(wrap_pyfunction!(lint::lint_stage_json, m)?)?;
+    // What `lpe.lint(stage)` collects of a stage: the USD reader's conventions.
+    use lpe_lint::read::usd::{ORDERED_VARS, READ_ATTRIBUTES, READ_PREFIX, READ_PRIM_TYPES};
+    m.add("USD_READ_ATTRIBUTES", READ_ATTRIBUTES.to_vec())?;
+    m.add("USD_READ_PREFIX", READ_PREFIX)?;
+    m.add("USD_READ_PRIM_TYPES", READ_PRIM_TYPES.to_vec())?;
+    m.add("USD_ORDERED_VARS", ORDERED_VARS)?;
     m.add("DIALECTS", lpe::DialectName::ALL.map(|d| d.name()).to_vec())?;
     Ok(())
 }

@@ -308,3 +308,45 @@ def test_the_doubled_mark_validator_under_hdprman():
     assert e.GetName() == "doubled_lpe_mark"
     assert e.GetMessage().startswith("doubled_lpe_mark: `directDiffuse`: ")
     assert e.GetMessage().endswith("; help: write the sourceName without its mark: `C<RD>[<L.>O]`")
+
+
+def test_lint_of_a_stage_collects_only_what_lint_reads():
+    # A mesh with points and a group, a typeless Xform with an lpe: attribute, a plain
+    # Xform, a RenderProduct and a RenderVar: the facts handed to the Rust reader, by hand.
+    stage = Usd.Stage.CreateInMemory()
+    mesh = stage.DefinePrim("/World/floor", "Mesh")
+    mesh.CreateAttribute("points", Sdf.ValueTypeNames.Point3fArray).Set([(0, 0, 0)] * 4)
+    mesh.CreateAttribute("primvars:karma:object:lpetag", Sdf.ValueTypeNames.String).Set("floor")
+    tagged = stage.DefinePrim("/World/tagged")
+    tagged.CreateAttribute("lpe:partition:groups", Sdf.ValueTypeNames.String).Set("a")
+    tagged.CreateAttribute("lpe:note", Sdf.ValueTypeNames.Int).Set(3)
+    product = stage.DefinePrim("/Render/product", "RenderProduct")
+    product.CreateRelationship("orderedVars").SetTargets(["/Render/a"])
+    render_var(stage, "/Render/a", "C<RD>L")
+    inactive = render_var(stage, "/Render/off", "C<RD")
+    inactive.SetActive(False)
+    prims, types = lpe._stage_facts(stage)
+    assert prims == [
+        ("/World/floor", "Mesh", ["points", "primvars:karma:object:lpetag"],
+         [("primvars:karma:object:lpetag", "floor")], []),
+        ("/World/tagged", "", ["lpe:note", "lpe:partition:groups"],
+         [("lpe:note", None), ("lpe:partition:groups", "a")], []),
+        ("/Render/product", "RenderProduct", ["orderedVars"], [], ["a"]),
+        ("/Render/a", "RenderVar", ["sourceName", "sourceType"],
+         [("sourceName", "C<RD>L"), ("sourceType", "lpe")], []),
+    ]
+    assert types == ["", "Mesh", "RenderProduct", "RenderVar"]
+
+
+def test_a_stage_changed_after_validation_is_read_again():
+    stage = Usd.Stage.CreateInMemory()
+    render_var(stage, "/Render/a", "C<RD><L.'key'>")
+    light = stage.DefinePrim("/World/light", "RectLight")
+    group = light.CreateAttribute("inputs:karma:light:lpetag", Sdf.ValueTypeNames.String)
+    group.Set("fill")
+    assert errors_by_validator(stage) == [("lpe:UnknownLightGroup", "/Render/a")]
+    # The group is renamed in the root layer: the next validation reads it.
+    group.Set("key")
+    assert errors_by_validator(stage) == []
+    group.Set("rim")
+    assert errors_by_validator(stage) == [("lpe:UnknownLightGroup", "/Render/a")]

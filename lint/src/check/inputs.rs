@@ -31,6 +31,19 @@ pub struct Inputs {
 /// Reads `inis` into the configuration (and their partitions), then `others`; a file
 /// that cannot be read is recorded in its status, and the other files are still read.
 pub fn read_all(inis: &[&Path], others: &[&Path], limits: &Limits) -> Inputs {
+    read_all_by(inis, others, limits, &mut |path| {
+        read::read_file(path, limits)
+    })
+}
+
+/// [`read_all`], with the files other than ini files read by `read_other` (the Python
+/// package hands over a stage it read through Pixar's USD).
+pub fn read_all_by(
+    inis: &[&Path],
+    others: &[&Path],
+    limits: &Limits,
+    read_other: &mut dyn FnMut(&Path) -> Result<Document, ReadError>,
+) -> Inputs {
     let mut config = lpe::renderman::Config::default();
     let mut statuses = Vec::new();
     let mut docs = Vec::new();
@@ -39,12 +52,7 @@ pub fn read_all(inis: &[&Path], others: &[&Path], limits: &Limits) -> Inputs {
         record(path, read, &mut statuses, &mut docs);
     }
     for &path in others {
-        record(
-            path,
-            read::read_file(path, limits),
-            &mut statuses,
-            &mut docs,
-        );
+        record(path, read_other(path), &mut statuses, &mut docs);
     }
     Inputs {
         config,

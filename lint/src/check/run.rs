@@ -144,6 +144,16 @@ pub fn read(req: &Request<'_>) -> Inputs {
     inputs::read_all(&inis, &others, &Limits::default())
 }
 
+/// [`read`], with the files other than ini files read by `read_other`: `lpe.lint(stage)`
+/// makes the document of a stage from what it read through Pixar's USD.
+pub fn read_by(
+    req: &Request<'_>,
+    read_other: &mut dyn FnMut(&Path) -> Result<crate::Document, crate::ReadError>,
+) -> Inputs {
+    let (inis, others) = inputs::split(req.ini, req.files);
+    inputs::read_all_by(&inis, &others, &Limits::default(), read_other)
+}
+
 /// Lints what [`read`] read, in dialect `D`; `registration` as for [`run`].
 pub fn check<D, X>(
     req: &Request<'_>,

@@ -10,7 +10,8 @@ use crate::error::ReadError;
 /// [`ReadError::TooLarge`] or [`crate::RibProblem`], before reading on.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Limits {
-    /// Largest USD file (the USD library holds the whole layer in memory).
+    /// Largest USD file read whole (`.usdc`, `.usdz`, `.usd`: the USD library holds
+    /// the whole layer in memory); for `.usda`, the most text kept after the skim.
     pub usd_bytes: u64,
     /// Largest ini file.
     pub ini_bytes: u64,

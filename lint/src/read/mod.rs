@@ -2,13 +2,15 @@
 //!
 //! | format | read | limit |
 //! |---|---|---|
-//! | USD | whole file, by `openusd` | [`Limits::usd_bytes`] (64 MiB) |
+//! | USD text (`.usda`) | streamed through [`skim`], which drops the values lint never reads; the rest by `openusd` | [`Limits::usd_bytes`] (64 MiB) of kept text; any file size |
+//! | USD otherwise (`.usdc`, `.usdz`, `.usd`) | whole file, by `openusd` | [`Limits::usd_bytes`] (64 MiB) |
 //! | RIB | streamed line by line, only `DisplayChannel` lines kept | [`Limits::line_bytes`] per line (1 MiB), [`Limits::channels`] channels (4096); any file size |
 //! | ini | whole file | [`Limits::ini_bytes`] (1 MiB) |
 
 mod common;
 pub mod ini;
 pub mod rib;
+pub mod skim;
 pub mod usd;
 
 pub use common::Limits;

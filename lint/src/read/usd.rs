@@ -34,17 +34,26 @@
 //! ones, is a [`ReadError::Renderer`]. The namespaces of the attributes authored on
 //! `RenderSettings` prims (`karma:`, `arnold:`, `ri:`) are recorded too: lint takes the
 //! renderer from them when exactly one renderer's are there.
+//!
+//! A `.usda` layer (the root and every layer it composes) is skimmed before the USD
+//! library parses it ([`super::skim`]): values of attributes lint never reads
+//! ([`lint_reads`]: all but `sourceType`, `sourceName`, the group attributes and
+//! `lpe:...`) are dropped unparsed, so reading a shot costs what its declarations cost,
+//! not what its point arrays do. Binary layers (`.usdc`, `.usdz`) are read whole.
 
 use std::collections::BTreeSet;
-use std::path::Path;
+use std::io;
+use std::path::{Path, PathBuf};
+use std::sync::Mutex;
 
-use openusd::{sdf, usd};
+use openusd::{ar, sdf, usd};
 
 use lpe::{DialectName, UnknownDialect};
 
 use crate::decl::{split_members, AovDecl, DialectDecl, Document, Format, Location, PartitionDecl};
 use crate::error::{DialectProblem, ReadError};
 use crate::read::common::{as_text, read_bounded, Limits};
+use crate::read::skim::{skim, SkimError};
 
 /// Light attributes holding the light's group, per delegate (see the module docs).
 pub const LIGHT_GROUP_ATTRIBUTES: [&str; 4] = [
@@ -67,6 +76,30 @@ pub const DIALECT_ATTRIBUTE: &str = "lpe:dialect";
 /// (docs/profiles.md): its dialect and its rules.
 pub const RENDERER_ATTRIBUTE: &str = "lpe:renderer";
 
+/// Whether lint reads the value of the attribute `name` (on any prim): the RenderVar
+/// attributes, the group attributes and every `lpe:` attribute. The `.usda` skim drops
+/// every other value, and `lpe.lint(stage)` queries only these.
+pub fn lint_reads(name: &str) -> bool {
+    name.starts_with(READ_PREFIX) || READ_ATTRIBUTES.contains(&name)
+}
+
+/// Every attribute lint reads by its whole name: the RenderVar attributes and the group
+/// attributes ([`lint_reads`]).
+pub const READ_ATTRIBUTES: [&str; 8] = [
+    "sourceType",
+    "sourceName",
+    LIGHT_GROUP_ATTRIBUTES[0],
+    LIGHT_GROUP_ATTRIBUTES[1],
+    LIGHT_GROUP_ATTRIBUTES[2],
+    LIGHT_GROUP_ATTRIBUTES[3],
+    OBJECT_GROUP_ATTRIBUTES[0],
+    OBJECT_GROUP_ATTRIBUTES[1],
+];
+
+/// The namespace of the attributes lint reads on any prim (`lpe:dialect`,
+/// `lpe:renderer`, `lpe:partition...`).
+pub const READ_PREFIX: &str = "lpe:";
+
 /// Prim types that are geometry: a stage holding one can be checked for object groups.
 const GEOMETRY_TYPES: [&str; 13] = [
     "Mesh",
@@ -86,119 +119,219 @@ const GEOMETRY_TYPES: [&str; 13] = [
 
 /// Reads the declarations of a USD stage.
 pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
+    read_as(path, limits, true)
+}
+
+/// [`read`], with `.usda` layers skimmed or (`skimming` false, for tests that check the
+/// skim changes no finding) parsed whole.
+fn read_as(path: &Path, limits: &Limits, skimming: bool) -> Result<Document, ReadError> {
     let usd_err = |message: String| ReadError::Usd {
         path: path.to_path_buf(),
         message,
     };
-    let bytes = read_bounded(path, limits.usd_bytes, "USD")?;
-    // Text layers must be text; usdc (`PXR-USDC`) and usdz (a zip) are binary by design.
-    if !bytes.starts_with(b"PXR-USDC") && !bytes.starts_with(b"PK\x03\x04") {
-        as_text(&bytes, path, 0)?;
-    }
     let name = path
         .to_str()
         .ok_or_else(|| usd_err("the path is not UTF-8".into()))?;
-    let stage = usd::Stage::open(name).map_err(|e| usd_err(format!("{e:#}")))?;
-    let mut prims = Vec::new();
+    let mut resolver = Skimming {
+        inner: ar::DefaultResolver::new(),
+        root: Mutex::new(None),
+        limit: limits.usd_bytes,
+    };
+    if skimming && is_usda(path) {
+        // The root is skimmed here, so that its errors keep their kinds and positions.
+        let io_err = |source| ReadError::Io {
+            path: path.to_path_buf(),
+            source,
+        };
+        let file = std::fs::File::open(path).map_err(io_err)?;
+        let text =
+            skim(io::BufReader::new(file), lint_reads, limits.usd_bytes).map_err(|e| match e {
+                SkimError::Io(source) => io_err(source),
+                SkimError::NotText { offset } => ReadError::NotText {
+                    path: path.to_path_buf(),
+                    offset,
+                },
+                SkimError::TooLarge { limit } => ReadError::TooLarge {
+                    path: path.to_path_buf(),
+                    bytes: std::fs::metadata(path).map_or(0, |m| m.len()),
+                    limit,
+                    what: "USD text (besides skipped values)",
+                },
+                e @ SkimError::Syntax { .. } => usd_err(e.to_string()),
+            })?;
+        let canonical = path.canonicalize().map_err(io_err)?;
+        resolver.root = Mutex::new(Some((canonical, text.into_bytes())));
+    } else {
+        let bytes = read_bounded(path, limits.usd_bytes, "USD")?;
+        // Text layers must be text; usdc (`PXR-USDC`) and usdz (a zip) are binary.
+        if !bytes.starts_with(b"PXR-USDC") && !bytes.starts_with(b"PK\x03\x04") {
+            as_text(&bytes, path, 0)?;
+        }
+    }
+    let stage = if skimming {
+        usd::Stage::builder().resolver(resolver).open(name)
+    } else {
+        usd::Stage::open(name)
+    }
+    .map_err(|e| usd_err(format!("{e:#}")))?;
+    let mut paths = Vec::new();
     stage
-        .traverse(usd::PrimPredicate::DEFAULT, |p| prims.push(p.clone()))
+        .traverse(usd::PrimPredicate::DEFAULT, |p| paths.push(p.clone()))
         .map_err(|e| usd_err(format!("{e:#}")))?;
-
-    let mut doc = Document::new(path, Format::Usd);
-    let mut lights = BTreeSet::new();
-    let mut objects = BTreeSet::new();
-    let (mut has_lights, mut has_objects) = (false, false);
-    let mut declared = None;
-    for p in &prims {
+    let mut facts = StageFacts::default();
+    for p in &paths {
         let prim = stage.prim(p.clone());
-        let ty = prim
+        let type_name = prim
             .type_name()
             .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?
             .map(|t| t.as_str().to_string())
             .unwrap_or_default();
-        let text = |attr: &str| -> Result<Option<String>, ReadError> {
+        let properties: Vec<String> = prim
+            .property_names()
+            .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?
+            .iter()
+            .map(|t| t.as_str().to_string())
+            .collect();
+        let mut values = Vec::new();
+        for attr in properties.iter().filter(|a| lint_reads(a)) {
             let value = prim
                 .attribute(attr)
                 .get::<sdf::Value>()
                 .map_err(|e| usd_err(format!("<{p}>.{attr}: {e:#}")))?;
-            Ok(value.and_then(|v| v.as_str().map(str::to_string)))
+            values.push((
+                attr.clone(),
+                value.and_then(|v| v.as_str().map(str::to_string)),
+            ));
+        }
+        let ordered_vars = if type_name == "RenderProduct" {
+            prim.relationship(ORDERED_VARS)
+                .targets()
+                .map_err(|e| usd_err(format!("<{p}>.orderedVars: {e:#}")))?
+                .iter()
+                .map(|t| t.name().unwrap_or_default().to_string())
+                .collect()
+        } else {
+            Vec::new()
         };
-        match ty.as_str() {
+        facts.types.insert(type_name.clone());
+        facts.prims.push(PrimFacts {
+            path: p.to_string(),
+            name: p.name().unwrap_or_default().to_string(),
+            type_name,
+            properties,
+            values,
+            ordered_vars,
+        });
+    }
+    document(path, &facts)
+}
+
+/// The relationship of a RenderProduct listing its RenderVars in order.
+pub const ORDERED_VARS: &str = "orderedVars";
+
+/// The prim types whose prims lint reads whatever attributes they hold: RenderVars (the
+/// AOVs), RenderProducts (`orderedVars`), RenderSettings (their namespaces).
+pub const READ_PRIM_TYPES: [&str; 3] = ["RenderVar", "RenderProduct", "RenderSettings"];
+
+/// What lint reads of a composed stage, however it was traversed: by [`read`] through
+/// `openusd`, or by `lpe.lint(stage)` through Pixar's USD. [`document`] makes the
+/// [`Document`] from it, so both readers follow one definition of the conventions.
+#[derive(Clone, Debug, Default)]
+pub struct StageFacts {
+    /// The prims to read, in traversal order: at least every prim of a
+    /// [`READ_PRIM_TYPES`] type and every prim with an attribute [`lint_reads`] (others
+    /// change nothing).
+    pub prims: Vec<PrimFacts>,
+    /// The type names of every prim traversed (`""` for a typeless one): lights and
+    /// geometry make groups checkable.
+    pub types: BTreeSet<String>,
+}
+
+/// One prim of [`StageFacts`].
+#[derive(Clone, Debug, Default)]
+pub struct PrimFacts {
+    /// Its path, `/Render/Vars/diffuse`.
+    pub path: String,
+    /// Its name, `diffuse`.
+    pub name: String,
+    /// Its type name (`""` for none).
+    pub type_name: String,
+    /// Its property names (at least the authored ones), in the library's order.
+    pub properties: Vec<String>,
+    /// Each attribute [`lint_reads`] it holds, with its value as text (a string, token
+    /// or asset path; `None` for any other value or none).
+    pub values: Vec<(String, Option<String>)>,
+    /// A RenderProduct's `orderedVars`: the targets' prim names, in order.
+    pub ordered_vars: Vec<String>,
+}
+
+/// The declarations of a stage `file` whose prims are `facts` (module docs).
+pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> {
+    let mut doc = Document::new(file, Format::Usd);
+    let mut lights = BTreeSet::new();
+    let mut objects = BTreeSet::new();
+    let mut has_lights = facts.types.iter().any(|t| t.ends_with("Light"));
+    let mut has_objects = facts
+        .types
+        .iter()
+        .any(|t| GEOMETRY_TYPES.contains(&t.as_str()));
+    let mut declared = None;
+    for prim in &facts.prims {
+        let p = &prim.path;
+        let text = |attr: &str| -> Option<String> {
+            prim.values
+                .iter()
+                .find(|(name, _)| name == attr)
+                .and_then(|(_, v)| v.clone())
+        };
+        let at = |attribute: &str| Location::Prim {
+            prim: p.clone(),
+            attribute: attribute.to_string(),
+        };
+        match prim.type_name.as_str() {
             "RenderVar" => {
-                let source_type = text("sourceType")?.unwrap_or_else(|| "raw".into());
+                let source_type = text("sourceType").unwrap_or_else(|| "raw".into());
                 if source_type == "lpe" {
                     doc.aovs.push(AovDecl {
-                        name: p.name().unwrap_or_default().to_string(),
-                        source: text("sourceName")?.unwrap_or_default(),
-                        location: Location::Prim {
-                            prim: p.to_string(),
-                            attribute: "sourceName".into(),
-                        },
+                        name: prim.name.clone(),
+                        source: text("sourceName").unwrap_or_default(),
+                        location: at("sourceName"),
                         source_type: Some(source_type),
                     });
                 }
             }
-            "RenderProduct" if doc.ordered_vars.is_none() => {
-                let targets = prim
-                    .relationship("orderedVars")
-                    .targets()
-                    .map_err(|e| usd_err(format!("<{p}>.orderedVars: {e:#}")))?;
-                if !targets.is_empty() {
-                    doc.ordered_vars = Some(
-                        targets
-                            .iter()
-                            .map(|t| t.name().unwrap_or_default().to_string())
-                            .collect(),
-                    );
-                }
+            "RenderProduct" if doc.ordered_vars.is_none() && !prim.ordered_vars.is_empty() => {
+                doc.ordered_vars = Some(prim.ordered_vars.clone());
             }
             _ => {}
         }
-        has_lights |= ty.ends_with("Light");
-        has_objects |= GEOMETRY_TYPES.contains(&ty.as_str());
         for attr in LIGHT_GROUP_ATTRIBUTES {
-            if let Some(g) = text(attr)? {
+            if let Some(g) = text(attr) {
                 has_lights = true;
                 lights.insert(g);
             }
         }
         for attr in OBJECT_GROUP_ATTRIBUTES {
-            if let Some(g) = text(attr)? {
+            if let Some(g) = text(attr) {
                 has_objects = true;
                 objects.insert(g);
             }
         }
-        let names = prim
-            .property_names()
-            .map_err(|e| usd_err(format!("<{p}>: {e:#}")))?;
-        for prop in names {
+        for prop in &prim.properties {
             let prop = prop.as_str();
-            if ty == "RenderSettings" {
+            if prim.type_name == "RenderSettings" {
                 if let Some((namespace, _)) = prop.split_once(':') {
                     doc.settings_namespaces
                         .entry(namespace.to_string())
-                        .or_insert_with(|| p.to_string());
+                        .or_insert_with(|| p.clone());
                 }
             }
             if prop == RENDERER_ATTRIBUTE {
-                let location = Location::Prim {
-                    prim: p.to_string(),
-                    attribute: prop.to_string(),
-                };
-                declare_renderer(&mut doc.renderer, path, text(prop)?, location)?;
+                declare_renderer(&mut doc.renderer, file, text(prop), at(prop))?;
                 continue;
             }
             if prop == DIALECT_ATTRIBUTE {
-                let value = prim
-                    .attribute(prop)
-                    .get::<sdf::Value>()
-                    .map_err(|e| usd_err(format!("<{p}>.{prop}: {e:#}")))?;
-                let location = Location::Prim {
-                    prim: p.to_string(),
-                    attribute: prop.to_string(),
-                };
-                let named = value.as_ref().and_then(sdf::Value::as_str);
-                declare_dialect(&mut declared, path, named, location)?;
+                declare_dialect(&mut declared, file, text(prop).as_deref(), at(prop))?;
                 continue;
             }
             let name = match prop.strip_prefix("lpe:partition") {
@@ -209,14 +342,10 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
                 },
                 None => continue,
             };
-            let list = text(prop)?.unwrap_or_default();
             doc.partitions.push(PartitionDecl {
                 name: name.to_string(),
-                members: split_members(&list),
-                location: Location::Prim {
-                    prim: p.to_string(),
-                    attribute: prop.to_string(),
-                },
+                members: split_members(&text(prop).unwrap_or_default()),
+                location: at(prop),
             });
         }
     }
@@ -227,6 +356,76 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
     doc.light_groups = has_lights.then_some(lights);
     doc.object_groups = has_objects.then_some(objects);
     Ok(doc)
+}
+
+/// Whether `path` names a text layer by its extension: the layers the skim reads.
+fn is_usda(path: &Path) -> bool {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .is_some_and(|e| e.eq_ignore_ascii_case("usda"))
+}
+
+/// The default resolver, but every `.usda` layer it opens is skimmed first; the root
+/// layer, skimmed by [`read`] already, is handed over once.
+struct Skimming {
+    inner: ar::DefaultResolver,
+    root: Mutex<Option<(PathBuf, Vec<u8>)>>,
+    limit: u64,
+}
+
+impl ar::Resolver for Skimming {
+    fn create_identifier(&self, asset_path: &str, anchor: Option<&ar::ResolvedPath>) -> String {
+        self.inner.create_identifier(asset_path, anchor)
+    }
+
+    fn resolve(&self, asset_path: &str) -> Option<ar::ResolvedPath> {
+        self.inner.resolve(asset_path)
+    }
+
+    fn resolve_for_new_asset(&self, asset_path: &str) -> Option<ar::ResolvedPath> {
+        self.inner.resolve_for_new_asset(asset_path)
+    }
+
+    fn open_asset(&self, resolved: &ar::ResolvedPath) -> io::Result<Box<dyn ar::Asset>> {
+        if !is_usda(resolved) {
+            return self.inner.open_asset(resolved);
+        }
+        let mut root = self.root.lock().unwrap_or_else(|e| e.into_inner());
+        if root
+            .as_ref()
+            .is_some_and(|(p, _)| p.as_path() == &**resolved)
+        {
+            if let Some((_, text)) = root.take() {
+                return Ok(Box::new(io::Cursor::new(text)));
+            }
+        }
+        drop(root);
+        let file = self.inner.open_asset(resolved)?;
+        let text = skim(file, lint_reads, self.limit).map_err(|e| match e {
+            SkimError::Io(e) => e,
+            e => io::Error::new(
+                io::ErrorKind::InvalidData,
+                format!("{}: {e}", resolved.display()),
+            ),
+        })?;
+        Ok(Box::new(io::Cursor::new(text.into_bytes())))
+    }
+
+    fn get_asset_info(&self, asset_path: &str, resolved: &ar::ResolvedPath) -> ar::AssetInfo {
+        self.inner.get_asset_info(asset_path, resolved)
+    }
+
+    fn get_modification_timestamp(
+        &self,
+        asset_path: &str,
+        resolved: &ar::ResolvedPath,
+    ) -> Option<std::time::SystemTime> {
+        self.inner.get_modification_timestamp(asset_path, resolved)
+    }
+
+    fn identity(&self) -> String {
+        self.inner.identity()
+    }
 }
 
 /// Records in `declared` the renderer an `lpe:renderer` attribute at `at` names.
@@ -338,5 +537,48 @@ mod profile_tests {
             }
         }
         assert!(cited >= 5, "{cited}");
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every fixture (and every layer it composes) reads the same skimmed as whole.
+    #[test]
+    fn the_skim_changes_nothing_lint_reads() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/testdata/usd");
+        let mut seen = 0;
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if !is_usda(&path) {
+                continue;
+            }
+            let limits = Limits::default();
+            let skimmed = format!("{:?}", read_as(&path, &limits, true));
+            let whole = format!("{:?}", read_as(&path, &limits, false));
+            assert_eq!(skimmed, whole, "{}", path.display());
+            seen += 1;
+        }
+        assert!(seen >= 10, "{seen} fixtures");
+    }
+
+    /// A prim whose group attribute follows heavy values with brackets and quotes in
+    /// strings is still read, with its value.
+    #[test]
+    fn heavy_and_adversarial_values_keep_the_groups() {
+        let dir = std::env::temp_dir().join(format!("lpe-skim-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join("adversarial.usda");
+        let points = "(0.5, -1e3, 2), ".repeat(2000);
+        let text = format!(
+            "#usda 1.0\ndef Mesh \"m\"\n{{\n    point3f[] points = [{points}]\n    string[] primvars:notes = [\"}}]\\\" def Mesh\", '\"', \"\"\"\n]\"\"\"]\n    string primvars:karma:object:lpetag = \"floor\"\n}}\ndef RectLight \"l\"\n{{\n    string primvars:arnold:aov = 'key'\n    float karma:x = 1\n}}\n"
+        );
+        std::fs::write(&path, text).unwrap();
+        let doc = read(&path, &Limits::default()).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        let set = |v: &[&str]| Some(v.iter().map(|s| s.to_string()).collect::<BTreeSet<_>>());
+        assert_eq!(doc.object_groups, set(&["floor"]));
+        assert_eq!(doc.light_groups, set(&["key"]));
     }
 }

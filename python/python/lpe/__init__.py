@@ -31,7 +31,6 @@ import importlib.util as _importlib_util
 import json as _json
 import os as _os
 import sys as _sys
-import tempfile as _tempfile
 import warnings as _warnings
 
 from ._lpe import (
@@ -46,7 +45,12 @@ from ._lpe import (
     parse,
     partition,
 )
+from ._lpe import USD_ORDERED_VARS as _USD_ORDERED_VARS
+from ._lpe import USD_READ_ATTRIBUTES as _USD_READ_ATTRIBUTES
+from ._lpe import USD_READ_PREFIX as _USD_READ_PREFIX
+from ._lpe import USD_READ_PRIM_TYPES as _USD_READ_PRIM_TYPES
 from ._lpe import lint_json as _lint_json
+from ._lpe import lint_stage_json as _lint_stage_json
 
 __all__ = [
     "DIALECTS",
@@ -155,6 +159,47 @@ def stage_name(stage) -> str:
     return layer.realPath or layer.identifier
 
 
+def _as_text(value):
+    """An attribute's value as lint reads it: a string or token (``str``) or an asset
+    path's authored path; ``None`` for any other value."""
+    if isinstance(value, str):
+        return value
+    path = getattr(value, "path", None)  # Sdf.AssetPath
+    return path if isinstance(path, str) else None
+
+
+def _stage_facts(stage):
+    """What lint reads of a composed stage, through pxr's traversal and attribute
+    queries (the native module names what: the USD reader's conventions): the prims
+    of the types it reads and those holding an attribute it reads, as ``(path, type,
+    authored property names, [(attribute, text)], orderedVars target names)``, and the
+    type names of every prim. No value lint does not read is fetched."""
+    exact = frozenset(_USD_READ_ATTRIBUTES)
+    prefix = _USD_READ_PREFIX
+    typed = frozenset(_USD_READ_PRIM_TYPES)
+    # One C-level search of the joined names tells whether any starts with the prefix.
+    marker = "\0" + prefix
+    prims = []
+    types = set()
+    for prim in stage.Traverse():
+        ty = prim.GetTypeName()
+        types.add(ty)
+        names = prim.GetAuthoredPropertyNames()
+        if (ty not in typed and exact.isdisjoint(names)
+                and marker not in "\0" + "\0".join(names)):
+            continue
+        values = []
+        for n in names:
+            if n in exact or n.startswith(prefix):
+                attr = prim.GetAttribute(n)
+                if attr:  # not a relationship of that name
+                    values.append((n, _as_text(attr.Get())))
+        rel = prim.GetRelationship(_USD_ORDERED_VARS) if ty in typed else None
+        ordered = [t.name for t in rel.GetTargets()] if rel else []
+        prims.append((prim.GetPath().pathString, ty, names, values, ordered))
+    return prims, sorted(types)
+
+
 def lint(
     files_or_stage,
     partitions=(),
@@ -170,9 +215,10 @@ def lint(
     ``files_or_stage`` is a path (``str`` or ``os.PathLike``: ``.usda``/``.usdc``/
     ``.usdz``, ``.rib``, ``.ini``), a list of paths, or a ``pxr.Usd.Stage``. A stage is
     read as composed (session layer, variant selections, references and payloads
-    loaded): it is exported flattened (``Usd.Stage.ExportToString``) to a temporary
-    ``.usda`` file that the Rust reader reads, and its findings name the root layer's
-    file. ``partitions`` are lists of AOV names, each ``"a,b,c"`` or a list of names,
+    loaded) through pxr's own traversal: only the prims and attributes lint reads are
+    queried (RenderVars, RenderProducts, RenderSettings, the group attributes,
+    ``lpe:`` attributes), no geometry is fetched or serialized, and the Rust reader's
+    own code makes the declarations of them; its findings name the root layer's file. ``partitions`` are lists of AOV names, each ``"a,b,c"`` or a list of names,
     that must partition ``universe``. ``dialect`` (``"renderman"`` or ``"osl"``) reads
     every AOV in that dialect; left ``None``, AOVs are read as RenderMan's and a stage
     that declares no dialect is also checked for AOVs whose RenderMan and OSL readings
@@ -193,17 +239,11 @@ def lint(
         else:
             raise TypeError("a partition is 'a,b,c' or a list of AOV names")
     if _is_stage(files_or_stage):
-        text = files_or_stage.ExportToString(addSourceFileComment=False)
-        fd, tmp = _tempfile.mkstemp(suffix=".usda", prefix="lpe-stage-")
-        try:
-            with _os.fdopen(fd, "w", encoding="utf-8") as f:
-                f.write(text)
-            out = _lint_json(
-                [tmp], parts, universe, dialect, ini, register,
-                (tmp, stage_name(files_or_stage)), renderer, profile,
-            )
-        finally:
-            _os.unlink(tmp)
+        prims, types = _stage_facts(files_or_stage)
+        out = _lint_stage_json(
+            prims, types, stage_name(files_or_stage), parts, universe, dialect, ini,
+            register, renderer, profile,
+        )
     else:
         if isinstance(files_or_stage, (str, _os.PathLike)):
             files = [files_or_stage]
