@@ -150,11 +150,36 @@ fn match_rate(out: &str) -> &str {
     out.lines().find(|l| l.starts_with("match rate")).unwrap()
 }
 
-/// A default run (10 000 cases) writes every production of each dialect's grammar;
-/// `--coverage` lists them with their counts, each written at least once.
+/// A default run (10 000 cases) writes every production of each dialect's grammar and
+/// every boundary value of one (docs/fuzzing.md); `--coverage` lists them with their
+/// counts, each written at least once.
+///
+/// Fault planted in `testkit/src/grammar/renderman.rs`, seen to fail this test and
+/// reverted (the production counts alone passed it): lobes drawn as
+/// `1 + c.below(max - 1)`, never the largest of a kind.
 #[test]
 fn a_default_diff_run_covers_every_grammar_production() {
-    for (dialect, total) in [("renderman", 68), ("osl", 57)] {
+    // The boundary values, listed by hand from docs/language.md: the lobe ranges of §2.4
+    // (RenderMan only), the count limit of §10, the empty label and the longest written.
+    let both = [
+        "value.count.0",
+        "value.count.1",
+        "value.count.256",
+        "label.empty",
+        "label.longest",
+    ];
+    let lobes = [
+        "value.lobe.D1",
+        "value.lobe.D4",
+        "value.lobe.S1",
+        "value.lobe.S8",
+        "value.lobe.U1",
+        "value.lobe.U12",
+    ];
+    for (dialect, total, values) in [
+        ("renderman", 77, [&both[..], &lobes[..]].concat()),
+        ("osl", 60, both.to_vec()),
+    ] {
         let (code, out, err) = lpe_check(&["diff", "--dialect", dialect, "--coverage"], "");
         assert_eq!(code, 0, "{out}{err}");
         let line =
@@ -168,9 +193,17 @@ fn a_default_diff_run_covers_every_grammar_production() {
             .take_while(|l| l.starts_with("  ") && !l.starts_with("  both reject"))
             .collect();
         assert_eq!(listed.len(), total, "{out}");
-        for l in listed {
+        for l in &listed {
             let n: u64 = l.split_whitespace().last().unwrap().parse().unwrap();
             assert!(n > 0, "{l}");
+        }
+        for v in values {
+            assert!(
+                listed
+                    .iter()
+                    .any(|l| l.split_whitespace().next() == Some(v)),
+                "{dialect}: {v} not listed\n{out}"
+            );
         }
     }
 }
