@@ -150,11 +150,36 @@ fn match_rate(out: &str) -> &str {
     out.lines().find(|l| l.starts_with("match rate")).unwrap()
 }
 
-/// A default run (10 000 cases) writes every production of each dialect's grammar;
-/// `--coverage` lists them with their counts, each written at least once.
+/// A default run (10 000 cases) writes every production of each dialect's grammar and
+/// every boundary value of one (docs/fuzzing.md); `--coverage` lists them with their
+/// counts, each written at least once.
+///
+/// Fault planted in `testkit/src/grammar/renderman.rs`, seen to fail this test and
+/// reverted (the production counts alone passed it): lobes drawn as
+/// `1 + c.below(max - 1)`, never the largest of a kind.
 #[test]
 fn a_default_diff_run_covers_every_grammar_production() {
-    for (dialect, total) in [("renderman", 68), ("osl", 57)] {
+    // The boundary values, listed by hand from docs/language.md: the lobe ranges of §2.4
+    // (RenderMan only), the count limit of §10, the empty label and the longest written.
+    let both = [
+        "value.count.0",
+        "value.count.1",
+        "value.count.256",
+        "label.empty",
+        "label.longest",
+    ];
+    let lobes = [
+        "value.lobe.D1",
+        "value.lobe.D4",
+        "value.lobe.S1",
+        "value.lobe.S8",
+        "value.lobe.U1",
+        "value.lobe.U12",
+    ];
+    for (dialect, total, values) in [
+        ("renderman", 77, [&both[..], &lobes[..]].concat()),
+        ("osl", 60, both.to_vec()),
+    ] {
         let (code, out, err) = lpe_check(&["diff", "--dialect", dialect, "--coverage"], "");
         assert_eq!(code, 0, "{out}{err}");
         let line =
@@ -168,9 +193,17 @@ fn a_default_diff_run_covers_every_grammar_production() {
             .take_while(|l| l.starts_with("  ") && !l.starts_with("  both reject"))
             .collect();
         assert_eq!(listed.len(), total, "{out}");
-        for l in listed {
+        for l in &listed {
             let n: u64 = l.split_whitespace().last().unwrap().parse().unwrap();
             assert!(n > 0, "{l}");
+        }
+        for v in values {
+            assert!(
+                listed
+                    .iter()
+                    .any(|l| l.split_whitespace().next() == Some(v)),
+                "{dialect}: {v} not listed\n{out}"
+            );
         }
     }
 }
@@ -675,6 +708,130 @@ fn translate_reads_rib_and_ini_sets_and_reports_what_does_not_parse() {
             "keyDiffuse: C<RD>.*<L.'key'>  ->  <C.><RD><[RT].>*<L.'key'>  (exact)\n"
         )
     );
+}
+
+/// The `rendermn.ini` of the translate tests below: a user macro, a built-in redefined
+/// (`emissive`: lights only), a built-in defined again as it is (`directSpecular`) and a
+/// glass macro.
+const TRANSLATE_INI: &str = "\
+# user macros next to built-ins
+/prman/lpe/macro/keyDiffuse      C<RD>.*<L.'key'>
+/prman/lpe/macro/emissive        C<L.>
+/prman/lpe/macro/directSpecular  C<RS>[<L.>O]
+/prman/lpe/macro/glassDirect     C<RS8>[<L.>O]
+";
+
+/// `translate`'s whole output, text and JSON, for a `rendermn.ini` alone and for
+/// arguments mixing built-ins, its macros and plain expressions. Worked by hand from
+/// docs/language.md §19 (default correspondence: D lobes are `D`, S1-S7 `G`, S8 `S`):
+/// `C` is `<C.>`, `[<L.>O]` is `<[LO].>`, a middle `.` is `<[RT].>`, RenderMan's `S` is
+/// `[GS]` and `S8` alone `S`, a label on `L` is the custom label; `<RD2>` collides with
+/// `<RD1>` (one view `R,D`), so from above it takes the whole `<RD>` (adding `C RD1 L`)
+/// and from below nothing (`[]`, missing `C RD2 L`); on the right of `-` it rounds the
+/// other way, so the whole from above subtracts nothing (adding `C RD2 L`) and from below
+/// subtracts every `R,D` vertex (missing `C RD1 L`).
+///
+/// From the file the set is the user macros, in the file's order, but not one defined as
+/// its built-in already is (`directSpecular`), while a redefined built-in (`emissive`)
+/// is one; as arguments each name reads as the ini defines it.
+///
+/// Faults planted in `cli/src/cmd/translate.rs`, each seen to fail this test and
+/// reverted: user macros filtered by name (`builtin.get(n).is_none()`: the redefined
+/// `emissive` dropped), which the test of the shipped ini above passes; the filter
+/// dropped (every built-in printed); `--ini` not read for arguments.
+#[test]
+fn translate_prints_user_macros_beside_builtins_and_plain_expressions() {
+    let dir = std::env::temp_dir().join(format!("lpe-translate-ini-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let ini = dir.join("rendermn.ini");
+    std::fs::write(&ini, TRANSLATE_INI).unwrap();
+    let ini = ini.to_str().unwrap();
+    let head = ["translate", "--from", "renderman", "--to", "osl"];
+    let run = |rest: &[&str]| lpe_check(&[&head[..], rest].concat(), "");
+
+    let (code, out, err) = run(&["--from-file", ini]);
+    assert_eq!(
+        (code, out.as_str()),
+        (
+            0,
+            "keyDiffuse: C<RD>.*<L.'key'>  ->  <C.><RD><[RT].>*<L.'key'>  (exact)\n\
+             emissive: C<L.>  ->  <C.><L.>  (exact)\n\
+             glassDirect: C<RS8>[<L.>O]  ->  <C.><RS><[LO].>  (exact)\n"
+        ),
+        "{err}"
+    );
+
+    let args = [
+        "--ini",
+        ini,
+        "directDiffuse",
+        "keyDiffuse",
+        "emissive",
+        "directSpecular",
+        "C<RD2>L",
+        "C.*L - C<RD2>L",
+    ];
+    let (code, out, err) = run(&args);
+    let want = "\
+directDiffuse  ->  <C.><RD><[LO].>  (exact)
+keyDiffuse  ->  <C.><RD><[RT].>*<L.'key'>  (exact)
+emissive  ->  <C.><L.>  (exact)
+directSpecular  ->  <C.><R[GS]><[LO].>  (exact)
+C<RD2>L  ->  not expressible
+  why: `C RD2 L` and `C RD1 L` have one OSL view `C,~ R,D L,~` and only the first matches
+  from above: <C.><RD><L.>  (adds `C RD1 L` (OSL `C,~ R,D L,~`))
+  from below: <C.>[]<L.>  (misses `C RD2 L` (OSL `C,~ R,D L,~`))
+C.*L - C<RD2>L  ->  not expressible
+  why: `C RD1 L` and `C RD2 L` have one OSL view `C,~ R,D L,~` and only the first matches
+  from above: <C.><[RT].>*<L.> - <C.>[]<L.>  (adds `C RD2 L` (OSL `C,~ R,D L,~`))
+  from below: <C.><[RT].>*<L.> - <C.><RD><L.>  (misses `C RD1 L` (OSL `C,~ R,D L,~`))
+";
+    assert_eq!((code, out.as_str()), (1, want), "{err}");
+
+    let (code, json, err) = run(&[&["--format", "json"][..], &args].concat());
+    assert_eq!(code, 1, "{err}");
+    let got: serde_json::Value = serde_json::from_str(&json).unwrap();
+    let exact = |source: &str, translation: &str| {
+        serde_json::json!({
+            "name": "", "source": source, "translation": translation, "exact": true,
+            "reasons": [], "lower": translation, "adds": null, "misses": null, "notes": [],
+        })
+    };
+    let view = "(OSL `C,~ R,D L,~`)";
+    let why = |matched: &str, unmatched: &str| {
+        format!(
+            "`{matched}` and `{unmatched}` have one OSL view `C,~ R,D L,~` and only the \
+             first matches"
+        )
+    };
+    let want = serde_json::json!({
+        "from": "renderman",
+        "to": "osl",
+        "correspondence": "S1-S7=G S8=S",
+        "aovs": [
+            exact("directDiffuse", "<C.><RD><[LO].>"),
+            exact("keyDiffuse", "<C.><RD><[RT].>*<L.'key'>"),
+            exact("emissive", "<C.><L.>"),
+            exact("directSpecular", "<C.><R[GS]><[LO].>"),
+            {
+                "name": "", "source": "C<RD2>L", "translation": "<C.><RD><L.>",
+                "exact": false, "reasons": [why("C RD2 L", "C RD1 L")],
+                "lower": "<C.>[]<L.>",
+                "adds": format!("`C RD1 L` {view}"), "misses": format!("`C RD2 L` {view}"),
+                "notes": [],
+            },
+            {
+                "name": "", "source": "C.*L - C<RD2>L",
+                "translation": "<C.><[RT].>*<L.> - <C.>[]<L.>",
+                "exact": false, "reasons": [why("C RD1 L", "C RD2 L")],
+                "lower": "<C.><[RT].>*<L.> - <C.><RD><L.>",
+                "adds": format!("`C RD2 L` {view}"), "misses": format!("`C RD1 L` {view}"),
+                "notes": [],
+            },
+        ],
+    });
+    assert_eq!(got, want, "{json}");
+    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// `--to` a renderer translates with its profile's correspondence: every RenderMan

@@ -80,6 +80,13 @@ struct FrontFaults {
     prints_a_stray_paren: bool,
     /// Text without an `O` is rejected (an acceptance finding).
     rejects_text_without_o: bool,
+    /// The tree reads every `D` as `D1`: a narrower reading, so the only paths the two
+    /// readings answer differently are ones lpe's matches and the reference's does not
+    /// (use on texts without lobe numbers).
+    reads_diffuse_as_first_lobe: bool,
+    /// The tree reads every `D1` as `D`: a wider reading, so the only paths answered
+    /// differently are ones the reference's matches and lpe's does not.
+    reads_first_lobe_as_diffuse: bool,
 }
 
 impl FrontFaults {
@@ -88,6 +95,16 @@ impl FrontFaults {
         prints_diffuse_as_specular: false,
         prints_a_stray_paren: false,
         rejects_text_without_o: false,
+        reads_diffuse_as_first_lobe: false,
+        reads_first_lobe_as_diffuse: false,
+    };
+    const READS_D_AS_D1: FrontFaults = FrontFaults {
+        reads_diffuse_as_first_lobe: true,
+        ..FrontFaults::NONE
+    };
+    const READS_D1_AS_D: FrontFaults = FrontFaults {
+        reads_first_lobe_as_diffuse: true,
+        ..FrontFaults::NONE
     };
     const READS_D_AS_S: FrontFaults = FrontFaults {
         reads_diffuse_as_specular: true,
@@ -369,11 +386,16 @@ impl FrontEnds for Letters {
         if faults.rejects_text_without_o && !text.contains('O') {
             return Err((0, "planted: no O".into()));
         }
-        let text = if faults.reads_diffuse_as_specular {
-            text.replace('D', "S")
-        } else {
-            text.to_string()
-        };
+        let mut text = text.to_string();
+        if faults.reads_diffuse_as_specular {
+            text = text.replace('D', "S");
+        }
+        if faults.reads_diffuse_as_first_lobe {
+            text = text.replace('D', "D1");
+        }
+        if faults.reads_first_lobe_as_diffuse {
+            text = text.replace("D1", "D");
+        }
         renderman::parse(&swap(&text))
             .map(LettersLpe)
             .map_err(|e| RenderMan::parse_error(&e))
@@ -723,6 +745,91 @@ fn a_misreading_only_a_long_path_shows_is_a_meaning_finding() {
     let (path, ours, reference) = meaning(compared(FrontFaults::READS_D_AS_S, "E<BD>{30}L"));
     assert_eq!(path.split(' ').count(), 32, "{path}");
     assert!(ours && !reference, "{path}");
+}
+
+/// A misreading shows in one direction only: a narrower reading (`D` as `D1`) leaves
+/// only paths lpe's reading matches and the reference's does not, a wider one (`D1` as
+/// `D`) only the reverse. Each is found, with its own pair of answers, both by the drawn
+/// paths (an alternation of 70 labelled operands: 144 positions, past the equivalence
+/// limit of 128, so only paths can find it) and by the equivalence step (a repeat of 30:
+/// paths of 32 vertices, longer than any drawn). The expected answers are worked out by
+/// hand from the two readings; the path found is checked on the reference matcher with
+/// each reading written out.
+///
+/// Faults planted in `engines/src/differential/front/compare.rs`, each seen to fail this
+/// test and reverted: the drawn paths compared as `a && !b` (blind to reference-only
+/// matches) and as `!a && b` (blind to lpe-only ones); paths aimed only at lpe's
+/// operands (`l.operands()` alone as targets); the equivalence witness taken from
+/// `c.first_only` alone and from `c.second_only` alone; a witness reported as a meaning
+/// finding only when `a && !b`.
+#[test]
+fn a_misreading_in_either_direction_is_found_by_paths_and_by_equivalence() {
+    let alternation = |lobe: &str| {
+        let alternatives: Vec<String> = (0..70).map(|i| format!("<BD{lobe}'a{i}'>")).collect();
+        format!("E({})L", alternatives.join("|"))
+    };
+    // (fault, text (lpe's reading), the reference's reading, vertices on the path, lpe's
+    // answer, the reference's)
+    let cases = [
+        (
+            FrontFaults::READS_D_AS_D1,
+            alternation(""),
+            alternation("1"),
+            3,
+            true,
+            false,
+        ),
+        (
+            FrontFaults::READS_D1_AS_D,
+            alternation("1"),
+            alternation(""),
+            3,
+            false,
+            true,
+        ),
+        (
+            FrontFaults::READS_D_AS_D1,
+            "E<BD>{30}L".into(),
+            "E<BD1>{30}L".into(),
+            32,
+            true,
+            false,
+        ),
+        (
+            FrontFaults::READS_D1_AS_D,
+            "E<BD1>{30}L".into(),
+            "E<BD>{30}L".into(),
+            32,
+            false,
+            true,
+        ),
+    ];
+    for (faults, text, theirs_read, vertices, want_ours, want_theirs) in cases {
+        let (path, ours, reference) = meaning(compared(faults, &text));
+        assert_eq!(
+            (ours, reference),
+            (want_ours, want_theirs),
+            "{text}: {path}"
+        );
+        assert_eq!(path.split(' ').count(), vertices, "{text}: {path}");
+        let on = LettersPath::from_str(&path).unwrap();
+        assert_eq!(Letters::reference(&lpe(&text), &on), ours, "{path}");
+        assert_eq!(
+            Letters::reference(&lpe(&theirs_read), &on),
+            reference,
+            "{path}"
+        );
+        // The two readings differ only on the lobe of a diffuse vertex: the path's
+        // differing vertices are diffuse ones of lobe 2 to 4.
+        assert!(
+            path.split(' ')
+                .any(|v| ["BD2", "BD3", "BD4"].iter().any(|d| v.starts_with(d))),
+            "{path}"
+        );
+    }
+    // 70 alternatives, the camera and the emitter: 72 positions a side, 144 together,
+    // past the equivalence limit, so it was the drawn paths that found the alternation.
+    assert_eq!(Letters::positions(lpe(&alternation("")).first(), None), 72);
 }
 
 /// A disagreement is minimized only through texts that disagree the same way: deleting

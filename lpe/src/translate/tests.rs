@@ -220,6 +220,42 @@ fn translations_from_the_osl_dialect() {
     assert_eq!(t.text.to_string(), "C[^.]L");
 }
 
+/// Under `^` the operand rounds the other way (§19.2): the complement of the operand's
+/// lower translation is the whole's upper one, and the reverse. The operands are the
+/// collision and the quoted negation worked above; each witness is the operand's
+/// witness seen from the other side (a path the operand's upper translation adds is
+/// one the complement matches and its lower translation misses).
+///
+/// Fault planted in `bound.rs`, seen to fail this test and reverted: `^` not flipping its
+/// operand's bound.
+#[test]
+fn complements_round_their_operand_the_other_way() {
+    let t = translate::<RenderMan>(&rm("^C<RS2>L"), &corr()).unwrap();
+    assert!(!t.exact);
+    assert_eq!(t.text.to_string(), "^<C.>[]<L.>");
+    assert_eq!(t.lower.to_string(), "^<C.><RG><L.>");
+    assert_eq!(
+        show(&t.upper_witness).as_deref(),
+        Some("C RS2 L / C,~ R,G L,~")
+    );
+    assert_eq!(
+        show(&t.lower_witness).as_deref(),
+        Some("C RS1 L / C,~ R,G L,~")
+    );
+    let t = translate::<Osl>(&parse::<Osl>("^C<RD[^'a']>L"), &corr()).unwrap();
+    assert!(!t.exact);
+    assert_eq!(t.text.to_string(), "^C[^.]L");
+    assert_eq!(t.lower.to_string(), "^C<RD[^'a']>L");
+    assert_eq!(
+        show(&t.upper_witness).as_deref(),
+        Some("C RD1'other' L / C,~ R,D,other L,~")
+    );
+    assert_eq!(
+        show(&t.lower_witness).as_deref(),
+        Some("C RD1 L / C,~ R,D L,~")
+    );
+}
+
 #[test]
 fn errors_say_what_went_wrong() {
     let e = TranslateError::Unreadable {

@@ -12,8 +12,10 @@
 //! Every production a generator writes is counted in a [`Coverage`] over the dialect's
 //! list of productions ([`renderman::PRODUCTIONS`], [`osl::PRODUCTIONS`]);
 //! `lpe-check diff --coverage` prints the totals. The lists name what the grammars
-//! allow a user to write; the tests of this module check that a default-sized run
-//! writes every one of them.
+//! allow a user to write, and the boundary values a production may be written with
+//! (`value.…`, `label.empty`, `label.longest`), since a production is covered by any of
+//! its values; the tests of this module check that a default-sized run writes every one
+//! of them.
 //!
 //! The text is valid by construction: every draw respects the documented limits and
 //! constraints (counts, `n <= m`, no `{0}` where it is an error, labels without `'`).
@@ -136,12 +138,22 @@ impl<'a> Writer<'a> {
     }
 }
 
+/// Bytes of the longest label written: as long as the longest of
+/// [`crate::labels`], well past the 16 bytes RenderMan's label key holds in place.
+/// Neither dialect limits a label's length; renderers write long light-group names.
+pub const LONGEST_LABEL: usize = 40;
+
 /// A quoted label: plain, with a space, with characters that are operators or
-/// punctuation elsewhere, UTF-8, or empty. Never holds `'` (no escapes in either
-/// dialect).
+/// punctuation elsewhere, UTF-8, empty (the shortest), or [`LONGEST_LABEL`] bytes long
+/// (the longest). Never holds `'` (no escapes in either dialect).
 pub(crate) fn label(c: &mut impl Choices, w: &mut Writer<'_>, plain: &[&str]) {
     match c.below(6) {
         0 => w.put("label.empty", "''"),
+        // The longest, 1 in 30: a boundary the plain labels below never reach.
+        4 if c.chance(20) => {
+            let l = format!("'{}'", "k".repeat(LONGEST_LABEL));
+            w.put("label.longest", &l)
+        }
         1 => w.put("label.space", "'a b'"),
         2 => {
             let l = *c.pick(&["'a|b'", "'x-y'", "'p&q'", "'^n'", "'<R>'", "'[D]'", "'(c)'"]);
@@ -162,6 +174,18 @@ pub(crate) fn count(c: &mut impl Choices, large: bool) -> u32 {
         256
     } else {
         c.below(4) as u32
+    }
+}
+
+/// Records the boundary values of a count written in `{…}`: 0, 1 and the documented
+/// limit (256). The quantifier's production counts it whatever its value; these say
+/// whether a run wrote each boundary (docs/language.md §10).
+pub(crate) fn mark_count(w: &mut Writer<'_>, n: u32) {
+    match n {
+        0 => w.cov.hit("value.count.0"),
+        1 => w.cov.hit("value.count.1"),
+        256 => w.cov.hit("value.count.256"),
+        _ => {}
     }
 }
 

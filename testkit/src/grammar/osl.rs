@@ -9,7 +9,7 @@
 //! write as shorthand); the `lpe:` mark is a source-level convenience of the command
 //! line (`parse_source`), not of the dialect's grammar, and is not written.
 
-use super::{count, label, Config, Coverage, Writer};
+use super::{count, label, mark_count, Config, Coverage, Writer};
 use crate::generate::Choices;
 
 /// The productions this generator writes, as `lpe-check diff --coverage` counts them.
@@ -30,7 +30,9 @@ pub const PRODUCTIONS: &[&str] = &[
     "quant.range",
     "quant.reversed-range",
     "quant.zero-leading",
-    "quant.max-count",
+    "value.count.0",
+    "value.count.1",
+    "value.count.256",
     "item.event",
     "item.scatter",
     "item.registered-event",
@@ -71,6 +73,7 @@ pub const PRODUCTIONS: &[&str] = &[
     "label.space",
     "label.punctuation",
     "label.utf8",
+    "label.longest",
 ];
 
 const EVENTS: [&str; 7] = ["C", "L", "B", "V", "T", "R", "O"];
@@ -221,18 +224,19 @@ impl Gen<'_, '_> {
             1 => w.put("quant.plus", "+"),
             2 => {
                 let n = count(c, large).max(1);
-                max_count(w, n);
+                mark_count(w, n);
                 w.put("quant.exact", &format!("{{{n}}}"))
             }
             3 => {
                 let n = count(c, large);
-                max_count(w, n);
+                mark_count(w, n);
                 w.put("quant.at-least", &format!("{{{n},}}"))
             }
             4 => {
                 let n = count(c, false);
                 let m = n.max(count(c, large)).max(1);
-                max_count(w, m);
+                mark_count(w, n);
+                mark_count(w, m);
                 w.put("quant.range", &format!("{{{n},{m}}}"))
             }
             _ => {
@@ -514,12 +518,6 @@ impl Gen<'_, '_> {
     }
 }
 
-fn max_count(w: &mut Writer<'_>, n: u32) {
-    if n == 256 {
-        w.cov.hit("quant.max-count");
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use lpe::osl::Registered;
@@ -528,7 +526,11 @@ mod tests {
 
     /// Every text parses with lpe's OSL parser under its registration (a rejection is
     /// a bug on one side and names the text), and 10 000 texts, half of them under a
-    /// registration, write every production.
+    /// registration, write every production and every boundary value (counts 0, 1 and
+    /// 256, the empty and the longest label).
+    ///
+    /// Faults planted in `grammar/mod.rs`, each seen to fail this test and reverted:
+    /// `count` never 0; `count` never 256; the longest label never written.
     #[test]
     fn texts_parse_and_reach_every_production() {
         let cfg = Config::default();

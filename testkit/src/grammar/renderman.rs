@@ -7,7 +7,7 @@
 //! parser); user macros from `rendermn.ini` are a registration, read by the conformance
 //! suite's ini cases instead.
 
-use super::{count, label, Config, Coverage, Writer};
+use super::{count, label, mark_count, Config, Coverage, Writer};
 use crate::generate::Choices;
 
 /// The productions this generator writes, as `lpe-check diff --coverage` counts them.
@@ -44,18 +44,27 @@ pub const PRODUCTIONS: &[&str] = &[
     "quant.at-least",
     "quant.range",
     "quant.zero",
-    "quant.max-count",
+    "value.count.0",
+    "value.count.1",
+    "value.count.256",
     "letter.type",
     "letter.event",
     "letter.lobe",
     "letter.user-lobe",
     "letter.lower-case",
+    "value.lobe.D1",
+    "value.lobe.D4",
+    "value.lobe.S1",
+    "value.lobe.S8",
+    "value.lobe.U1",
+    "value.lobe.U12",
     "dot",
     "label.plain",
     "label.empty",
     "label.space",
     "label.punctuation",
     "label.utf8",
+    "label.longest",
     "triple.type-only",
     "triple.type-event",
     "triple.full",
@@ -310,6 +319,7 @@ fn quantifier(c: &mut impl Choices, w: &mut Writer<'_>, large: bool) {
         5 => {
             let n = count(c, false);
             let m = n.max(count(c, large));
+            mark_count(w, n);
             mark_count(w, m);
             w.put("quant.range", &format!("{{{n},{m}}}"))
         }
@@ -317,12 +327,6 @@ fn quantifier(c: &mut impl Choices, w: &mut Writer<'_>, large: bool) {
             let z = *c.pick(&["{0}", "{0,0}"]);
             w.put("quant.zero", z)
         }
-    }
-}
-
-fn mark_count(w: &mut Writer<'_>, n: u32) {
-    if n == 256 {
-        w.cov.hit("quant.max-count");
     }
 }
 
@@ -384,7 +388,9 @@ fn letter(c: &mut impl Choices, w: &mut Writer<'_>, types: bool) {
     }
 }
 
-/// `D S U` with an optional lobe in range (D 1-4, S 1-8, U 1-12).
+/// `D S U` with an optional lobe in range (D 1-4, S 1-8, U 1-12); the smallest and the
+/// largest lobe of each kind are recorded as values (`value.lobe.D1` … `value.lobe.U12`),
+/// since `letter.lobe` is covered by any lobe.
 fn event(c: &mut impl Choices, w: &mut Writer<'_>, bare: &str, lobe: &str, user: &str) -> String {
     let (kind, max) = *c.pick(&[('D', 4), ('S', 8), ('U', 12)]);
     if kind == 'U' {
@@ -392,7 +398,11 @@ fn event(c: &mut impl Choices, w: &mut Writer<'_>, bare: &str, lobe: &str, user:
     }
     if c.chance(40) {
         w.cov.hit(lobe);
-        format!("{kind}{}", 1 + c.below(max))
+        let n = 1 + c.below(max);
+        if n == 1 || n == max {
+            w.cov.hit(&format!("value.lobe.{kind}{n}"));
+        }
+        format!("{kind}{n}")
     } else {
         w.cov.hit(bare);
         kind.to_string()
@@ -538,13 +548,23 @@ fn class(c: &mut impl Choices, w: &mut Writer<'_>) {
 
 #[cfg(test)]
 mod tests {
+    use std::collections::BTreeSet;
+
     use lpe::rng::SplitMix64;
 
     use super::*;
 
     /// Every text parses with lpe's RenderMan parser (the grammar is the documented
     /// one, so a rejection is a bug on one side: it names the text), and a default-sized
-    /// run of 10 000 texts writes every production.
+    /// run of 10 000 texts writes every production and every boundary value (the
+    /// smallest and largest lobe of each kind, counts 0, 1 and 256, the empty and the
+    /// longest label).
+    ///
+    /// Faults planted, each seen to fail this test and reverted: lobes drawn as
+    /// `1 + c.below(max - 1)` (never the largest) and `count` never 0
+    /// (`1 + c.below(3)`), both of which the production list alone passed (each
+    /// production covered by its other values); `count` never 256 (caught before too,
+    /// by `quant.max-count`); the longest label never written.
     #[test]
     fn texts_parse_and_reach_every_production() {
         let cfg = Config::default();
@@ -558,6 +578,59 @@ mod tests {
                     .map_err(|e| e.to_string())
             },
         );
+    }
+
+    /// The lobes `text` writes at the ends of their ranges (`D1 D4 S1 S8 U1 U12`), read
+    /// from the text outside quoted labels, ignoring case (`d4` is `D4`).
+    fn extreme_lobes(text: &str) -> BTreeSet<String> {
+        let chars: Vec<char> = text.to_uppercase().chars().collect();
+        let mut out = BTreeSet::new();
+        let mut quoted = false;
+        for (i, &ch) in chars.iter().enumerate() {
+            if ch == '\'' {
+                quoted = !quoted;
+            }
+            let max = match ch {
+                'D' => "4",
+                'S' => "8",
+                'U' => "12",
+                _ => continue,
+            };
+            let digits: String = chars[i + 1..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit())
+                .collect();
+            if !quoted && (digits == "1" || digits == max) {
+                out.insert(format!("{ch}{digits}"));
+            }
+        }
+        out
+    }
+
+    /// A lobe value is recorded for a text exactly when the text writes that lobe, so
+    /// full coverage means each boundary lobe was written, not only drawn.
+    ///
+    /// Fault planted in `event`, seen to fail this test and reverted (the coverage test
+    /// above passes it): the largest lobe of the kind recorded for every lobe drawn.
+    #[test]
+    fn lobe_values_are_recorded_exactly_when_written() {
+        let cfg = Config::default();
+        let mut rng = SplitMix64::new(9);
+        let mut written = 0;
+        for _ in 0..3000 {
+            let mut cov = coverage();
+            let text = source(&mut rng, &cfg, &mut cov);
+            let recorded: BTreeSet<String> = cov
+                .counts()
+                .filter(|(_, n)| *n > 0)
+                .filter_map(|(p, _)| p.strip_prefix("value.lobe."))
+                .map(str::to_string)
+                .collect();
+            let lobes = extreme_lobes(&text);
+            assert_eq!(recorded, lobes, "`{text}`");
+            written += lobes.len();
+        }
+        assert!(written > 300, "{written}: few boundary lobes were written");
     }
 
     #[test]
