@@ -10,7 +10,7 @@ use lpe::osl::{EVENT_LABELS, SCATTERING_LABELS};
 use lpe::translate::Correspondence;
 
 use crate::error::{line_of, ProfileError};
-use crate::registration::osl_registration;
+use crate::registration::registered_with;
 use crate::schema::Profile;
 
 /// A refusal: the key, where it is, and why.
@@ -221,7 +221,7 @@ fn expressions(p: &Profile) -> Option<Refusal> {
     let parses = |src: &str| -> Result<(), String> {
         match p.dialect() {
             lpe::DialectName::Osl => {
-                lpe::osl::parse(src, &osl_registration(p, Default::default(), false))
+                lpe::osl::parse(src, &registered_with(p, Default::default(), false))
                     .map(drop)
                     .map_err(|e| e.to_string())
             }

@@ -17,7 +17,7 @@ pub trait ProfileDialect: lpe::Dialect {
 
 impl ProfileDialect for Osl {
     fn with_profile(profile: &Profile, base: Registered) -> Registered {
-        osl_registration(profile, base, true)
+        registered_with(profile, base, true)
     }
 }
 
@@ -32,7 +32,7 @@ impl ProfileDialect for RenderMan {
 
 /// OSL's registration from `profile` on top of `base`, with its built-in names when
 /// `with_builtins` (the checks parse the built-ins themselves without them).
-pub(crate) fn osl_registration(
+pub(crate) fn registered_with(
     profile: &Profile,
     base: Registered,
     with_builtins: bool,
