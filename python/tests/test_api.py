@@ -491,3 +491,33 @@ def test_no_input_panics():
                 lpe.AovSet({"a": "C.*L"}, dialect=dialect).match(s)
             except ValueError:
                 pass
+
+
+# Text that is not ASCII: positions count characters, as Python indexes a str, never
+# bytes. Each position is counted by hand; `é` and `Ä` are two bytes in UTF-8, so a byte
+# offset would be one more. Planted fault, checked by hand: returning the byte offset
+# (`python/src/error.rs`) fails all three.
+@pytest.mark.parametrize(
+    "expr, kwargs, char",
+    [
+        # RenderMan blames the unclosed `<`: byte 8, character 7.
+        ("C'café'<RD", {}, 7),
+        # OSL blames the end of the text: 11 bytes, 10 characters.
+        ("C'café'<RD", {"dialect": "osl"}, 10),
+        # Under Karma, `Ä` is no letter: byte 9, character 8.
+        ("C'é'<RD>Ä", {"renderer": "karma"}, 8),
+    ],
+)
+def test_positions_in_text_that_is_not_ascii_count_characters(expr, kwargs, char):
+    with pytest.raises(lpe.LpeSyntaxError) as info:
+        lpe.parse(expr, **kwargs)
+    assert info.value.position == char
+
+
+def test_labels_that_are_not_ascii_match_exactly_in_both_dialects():
+    rm = lpe.AovSet({"k": "C<RD'café'>L"})
+    assert rm.match("C RD'café' L") == ["k"]
+    assert rm.match("C RD'cafe' L") == []
+    osl = lpe.AovSet({"k": "C<RD'café'>L"}, dialect="osl")
+    assert osl.match("C,~ R,D,café L,~") == ["k"]
+    assert osl.match("C,~ R,D,cafe L,~") == []
