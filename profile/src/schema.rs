@@ -5,6 +5,7 @@
 use serde::Deserialize;
 use toml::Spanned;
 
+use lpe::translate::Correspondence;
 use lpe::DialectName;
 
 /// One renderer's reading of LPEs.
@@ -80,13 +81,17 @@ impl Profile {
         self.detect.as_ref().map(|d| d.settings_namespace.as_str())
     }
 
-    /// The correspondence declaration translation reads
-    /// (`lpe::translate::Correspondence::parse`), empty for none.
-    pub fn correspondence(&self) -> &str {
-        self.translate
+    /// How RenderMan's lobes and labels become this renderer's letters: its `[translate]`
+    /// declaration applied to the default, or the default when it has none.
+    pub fn correspondence(&self) -> Correspondence {
+        let declared = self
+            .translate
             .as_ref()
-            .map(|t| t.correspondence.get_ref().as_str())
-            .unwrap_or("")
+            .map_or("", |t| t.correspondence.get_ref());
+        // The declaration parsed when the profile loaded (`check`): a failure here is a
+        // profile built past the loader.
+        Correspondence::parse(declared)
+            .expect("a profile's correspondence is checked when it loads")
     }
 }
 

@@ -62,7 +62,10 @@ fn a_minimal_profile_loads_and_reads_as_its_base() {
     let p = Profile::from_text("inhouse.toml", HEAD).unwrap();
     assert_eq!(p.dialect(), lpe::DialectName::Osl);
     assert!(!p.prepends_lpe_mark());
-    assert_eq!(p.correspondence(), "");
+    assert_eq!(
+        p.correspondence(),
+        lpe::translate::Correspondence::default()
+    );
 }
 
 #[test]

@@ -189,9 +189,7 @@ fn a_renderers_correspondence_decides_the_scattering_its_vertices_show() {
     ] {
         let profile = lpe_profile::by_name(renderer).unwrap();
         let settings = Settings {
-            scattering: Some(
-                lpe::translate::Correspondence::parse(profile.correspondence()).unwrap(),
-            ),
+            scattering: Some(profile.correspondence()),
             ..small(24, 4)
         };
         let mut osl = AovList::<Osl>::new();

@@ -135,9 +135,7 @@ pub fn run(args: Args) -> ExitCode {
     };
     // The profile's correspondence first (checked when it loaded), then the user's
     // changes to it.
-    let corr = match Correspondence::parse(sides.osl().correspondence())
-        .and_then(|c| c.apply(&args.correspondence))
-    {
+    let corr = match sides.osl().correspondence().apply(&args.correspondence) {
         Ok(c) => c,
         Err(e) => return bad_input(format!("error: --correspondence: {e}")),
     };

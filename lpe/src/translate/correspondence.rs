@@ -186,6 +186,11 @@ impl Correspondence {
         }
     }
 
+    /// Whether some transport lobe is shown as `s`.
+    pub fn shows(&self, s: Scattering) -> bool {
+        self.diffuse.contains(&s) || self.specular.contains(&s)
+    }
+
     /// The OSL custom label of a RenderMan label.
     pub fn rename<'a>(&'a self, label: &'a str) -> &'a str {
         self.labels.get(label).map_or(label, String::as_str)
@@ -427,5 +432,18 @@ mod tests {
         let osl: BTreeSet<String> = ["other".to_string()].into();
         let (_, fresh) = Correspondence::default().universe(&BTreeSet::new(), &osl);
         assert_eq!(fresh, "other_");
+    }
+
+    #[test]
+    fn shows_names_the_scatterings_some_lobe_becomes() {
+        let default = Correspondence::default();
+        assert!(default.shows(Scattering::Glossy) && default.shows(Scattering::Singular));
+        assert!(!default.shows(Scattering::Straight));
+        // Karma's: every specular lobe glossy, so no lobe is singular any more.
+        let karma = Correspondence::parse("S1-S8=G").unwrap();
+        assert!(!karma.shows(Scattering::Singular));
+        assert!(Correspondence::parse("D3=s")
+            .unwrap()
+            .shows(Scattering::Straight));
     }
 }

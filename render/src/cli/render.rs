@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use lpe::translate::Correspondence;
+use lpe::translate::Scattering as OslScattering;
 use lpe_profile::Profile;
 use lpe_render::aov::SceneDialect;
 use lpe_render::inputs::{self, Inputs, Sources};
@@ -88,7 +88,7 @@ impl RenderArgs {
                 p.dialect()
             )));
         }
-        if p.correspondence().contains("=s") {
+        if p.correspondence().shows(OslScattering::Straight) {
             return Err(InputError::Renderer(format!(
                 "--renderer {name} shows some lobes as `s` (straight), which no lobe of \
                  lpe-render's materials is"
@@ -137,10 +137,7 @@ pub fn run<D: SceneDialect>(args: &RenderArgs) -> Result<bool, InputError> {
         progress: true,
         scattering: profile
             .filter(|p| p.dialect() == lpe::DialectName::Osl)
-            .map(|p| {
-                Correspondence::parse(p.correspondence())
-                    .expect("a profile's correspondence is checked when it loads")
-            }),
+            .map(Profile::correspondence),
         ..Settings::default()
     };
     let threads = args.threads.unwrap_or_else(rayon::current_num_threads);
