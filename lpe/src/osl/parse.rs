@@ -62,14 +62,19 @@ pub fn parse_source(src: &str, registered: &Registered) -> std::result::Result<L
     let Some(body) = src.strip_prefix(SOURCE_MARK) else {
         return parse(src, registered);
     };
-    let shift = SOURCE_MARK.len();
-    match parse(body, registered) {
+    shifted(parse(body, registered), SOURCE_MARK.len())
+}
+
+/// The parse of a text that starts `by` bytes into the source: its error and warning
+/// positions moved to count from the source's start.
+fn shifted(parsed: std::result::Result<Lpe, Error>, by: usize) -> std::result::Result<Lpe, Error> {
+    match parsed {
         Ok(mut lpe) => {
-            lpe.shift_warnings(shift);
+            lpe.shift_warnings(by);
             Ok(lpe)
         }
         Err(e) => Err(Error {
-            pos: e.pos + shift,
+            pos: e.pos + by,
             ..e
         }),
     }
@@ -131,18 +136,7 @@ fn parse_renderer(
                 pos: start,
             })
         }
-        Builtin::NotAName => match parse_expression(body, registered, limits) {
-            Ok(mut lpe) => {
-                lpe.shift_warnings(start);
-                lpe
-            }
-            Err(e) => {
-                return Err(Error {
-                    pos: e.pos + start,
-                    ..e
-                })
-            }
-        },
+        Builtin::NotAName => shifted(parse_expression(body, registered, limits), start)?,
     };
     lpe.prefix = prefix;
     Ok(lpe)
