@@ -113,6 +113,22 @@ impl<D: Dialect> Engine<D> for Fast {
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
         compile_set(exprs, registration, &Options::default())
     }
+
+    /// The lazy DFA (`dfa_budget` 0, the default cache): the NFA is all it compiles, and
+    /// it builds the DFA rows that the paths it is asked about reach. Building the whole
+    /// minimized DFA of a counted repetition costs as much as matching thousands of paths;
+    /// a batch line whose expression does not repeat would pay it for one path.
+    fn compile_for_few_paths(
+        &self,
+        exprs: &[D::Lpe],
+        registration: &D::Registration,
+    ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+        let lazy = Options {
+            dfa_budget: 0,
+            ..Options::default()
+        };
+        compile_set(exprs, registration, &lazy)
+    }
 }
 
 impl<D: Dialect> Engine<D> for BitsetNfa {

@@ -36,6 +36,18 @@ pub trait Engine<D: Dialect>: Sync {
         exprs: &[D::Lpe],
         registration: &D::Registration,
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError>;
+
+    /// Compiles a set that will answer only a few paths (a batch line whose expression
+    /// has not repeated yet): an engine whose [`Engine::compile`] pays up front for fast
+    /// steps may build something cheaper to compile here, with the same answers. By
+    /// default the same as [`Engine::compile`].
+    fn compile_for_few_paths(
+        &self,
+        exprs: &[D::Lpe],
+        registration: &D::Registration,
+    ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+        self.compile(exprs, registration)
+    }
 }
 
 /// Refuses a set wider than an [`AovMask`]: the engines that answer one expression at a

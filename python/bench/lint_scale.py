@@ -9,7 +9,10 @@
 2. `lpe-check lint` on the stage exported as `.usda`, against the file's size (MB/s)
    and with its peak resident memory (GNU time's `%M`: `/usr/bin/time` is needed);
 3. `lpe-check match --batch` (`--engine fast` and `--engine reference`) against
-   `AovSet.match_many` on the same paths (match_many.py's draw and expression).
+   `AovSet.match_many` on the same paths (match_many.py's draw and expression);
+4. `lpe-check match --batch`, `--engine fast` against `--engine reference`, on lines
+   whose expressions do not repeat (every line its own expression: a counted
+   repetition, which the fast engine's full DFA pays for, and a label of its own).
 
 Usage: python lint_scale.py LPE_CHECK [--sizes PRIMS:POINTS,...] [--paths N]
 (default sizes: 1000:100000, 1000:10000000, 100000:100000, 100000:10000000; paths:
@@ -189,6 +192,33 @@ def match_rows(lpe_check, n, tmp):
     return rows
 
 
+def distinct_rows(lpe_check, n, tmp):
+    """`--batch` on N lines that each bring their own expression, over the first N paths
+    of the draw: both engines must give the same answers."""
+    ps = match_many.paths(n)
+    tsv = os.path.join(tmp, "distinct.tsv")
+    with open(tsv, "w") as f:
+        for i, p in enumerate(ps):
+            f.write(f"C.{{{i % 200}}}[LO]|C<RD'l{i}'>.*L\t{p}\n")
+    rows, answers = [], []
+    for engine in ("fast", "reference"):
+        times = []
+        for _ in range(3):
+            with open(tsv) as stdin:
+                t, _, code, out, err = run_child(
+                    [lpe_check, "match", "--batch", "--engine", engine], stdin=stdin,
+                    stdout=subprocess.PIPE)
+            if code != 0:
+                sys.exit(f"match --batch --engine {engine} exited {code}: {err[:500]!r}")
+            times.append(t)
+        answers.append(out)
+        rows.append((f"lpe-check match --batch --engine {engine}", min(times)))
+    if answers[0] != answers[1]:
+        sys.exit("match --batch: the engines answer the distinct lines differently")
+    os.unlink(tsv)
+    return rows
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("lpe_check")
@@ -217,6 +247,14 @@ def main():
         print("|---|---|---|---|")
         for name, t in rows:
             print(f"| {name} | {t:.2f} s | {t / args.paths * 1e9:.0f} ns | {t / base:.2f}x |")
+        print()
+        n = min(args.paths, 20_000)
+        rows = distinct_rows(args.lpe_check, n, tmp)
+        base = rows[1][1]
+        print(f"| {n:,} lines, each its own expression | time | per line | / reference |")
+        print("|---|---|---|---|")
+        for name, t in rows:
+            print(f"| {name} | {t:.2f} s | {t / n * 1e6:.1f} µs | {t / base:.2f}x |")
 
 
 if __name__ == "__main__":

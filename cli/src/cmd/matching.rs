@@ -13,9 +13,10 @@
 //! [`answer`] holds the arguments, the verdict over every engine and the printing.
 //!
 //! `--batch` streams: one line in, one line out, with bounded memory. Each distinct
-//! expression (with its registration) is compiled once by every engine and kept for
-//! the lines that repeat it ([`BatchCache`], at most [`MAX_CACHED_EXPRESSIONS`] at a
-//! time), and a long run reports its progress on stderr every few seconds.
+//! expression (with its registration) is parsed once and kept for the lines that repeat
+//! it ([`BatchCache`], at most [`MAX_CACHED_EXPRESSIONS`] at a time): every engine
+//! compiles it for a few paths, and again in full once [`UPGRADE_AFTER_USES`] lines
+//! have asked for it. A long run reports its progress on stderr every few seconds.
 
 use std::process::ExitCode;
 
@@ -29,8 +30,8 @@ pub mod osl;
 pub mod renderman;
 
 pub use answer::{
-    answer_paths, batch, verdict, Args, BatchCache, Compiled, LineOutcome, Verdict,
-    MAX_CACHED_EXPRESSIONS,
+    answer_paths, batch, verdict, Args, BatchCache, Compiled, Expected, LineOutcome, Verdict,
+    MAX_CACHED_EXPRESSIONS, UPGRADE_AFTER_USES,
 };
 pub use dialect::MatchDialect;
 
@@ -55,8 +56,8 @@ fn run_in<D: MatchDialect>(args: &Args) -> ExitCode {
         Err(e) => return bad_input(e),
     };
     if args.batch {
-        let mut cache = BatchCache::default();
-        return batch(|line| D::batch_line(&engines, &registration, line, &mut cache));
+        let mut cache = BatchCache::new(&engines);
+        return batch(|line| D::batch_line(&registration, line, &mut cache));
     }
     let lpe = match D::read_arg(args.expr.as_deref().unwrap_or_default(), &registration) {
         Ok(l) => l,

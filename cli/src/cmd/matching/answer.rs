@@ -75,23 +75,42 @@ pub struct Compiled<'e, D: EngineDialect> {
 /// One engine's matcher for an expression, or why it could not build one.
 type Built<'e, D> = Result<Box<dyn Matcher<D> + 'e>, String>;
 
+/// How many paths a compiled expression is expected to answer, which decides what an
+/// engine builds ([`Engine::compile_for_few_paths`] or [`Engine::compile`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Expected {
+    /// A batch expression seen fewer than [`UPGRADE_AFTER_USES`] times.
+    FewPaths,
+    /// An expression argument, or a batch expression that has repeated.
+    ManyPaths,
+}
+
 impl<'e, D: EngineDialect> Compiled<'e, D> {
     /// Compiles `lpe`, parsed under `registration`, with each of `engines`.
     pub fn new(
         engines: &[&'e dyn Engine<D>],
         registration: &D::Registration,
         lpe: &D::Lpe,
+        expected: Expected,
     ) -> Self {
         let engines = engines
             .iter()
             .map(|e| {
-                let built = e
-                    .compile(std::slice::from_ref(lpe), registration)
-                    .map_err(|why| format!("skip({why})"));
+                let exprs = std::slice::from_ref(lpe);
+                let built = match expected {
+                    Expected::FewPaths => e.compile_for_few_paths(exprs, registration),
+                    Expected::ManyPaths => e.compile(exprs, registration),
+                }
+                .map_err(|why| format!("skip({why})"));
                 (e.name(), built)
             })
             .collect();
         Compiled { engines }
+    }
+
+    /// The engines' names, in order.
+    pub fn engine_names(&self) -> impl Iterator<Item = &'static str> + '_ {
+        self.engines.iter().map(|(name, _)| *name)
     }
 
     /// Every engine's answer on `path`. An engine that could not build the expression
@@ -127,7 +146,7 @@ pub fn verdict<D: EngineDialect>(
     lpe: &D::Lpe,
     path: &D::Path,
 ) -> Verdict {
-    Compiled::new(engines, registration, lpe).verdict(path)
+    Compiled::new(engines, registration, lpe, Expected::ManyPaths).verdict(path)
 }
 
 /// Most distinct expressions `match --batch` keeps compiled at once. Past it the cache
@@ -136,32 +155,77 @@ pub fn verdict<D: EngineDialect>(
 /// paths per AOV) compiles each of them once.
 pub const MAX_CACHED_EXPRESSIONS: usize = 1024;
 
+/// How many lines of one expression `match --batch` answers with what the engines build
+/// for a few paths ([`Expected::FewPaths`]) before it compiles the expression in full.
+/// The full compile (the fast engine's minimized DFA) can cost as much as thousands of
+/// lines: an input whose expressions rarely repeat would pay it per line, while one that
+/// repeats a few expressions (the usual shape) pays it once each and steps the full
+/// automaton from then on.
+pub const UPGRADE_AFTER_USES: u32 = 64;
+
 /// What `match --batch` has compiled so far, by the columns of a line that decide the
-/// compiled expression (the expression, and for OSL the registration): the expression
-/// compiled by every engine, or the line's error message when it does not parse.
+/// compiled expression (the expression, and for OSL the registration): the parsed
+/// expression compiled by every engine, or the line's error message when it does not
+/// parse.
 pub struct BatchCache<'e, D: EngineDialect> {
-    compiled: HashMap<String, Result<Compiled<'e, D>, String>>,
+    engines: Vec<&'e dyn Engine<D>>,
+    compiled: HashMap<String, Result<Entry<'e, D>, String>>,
 }
 
-impl<'e, D: EngineDialect> Default for BatchCache<'e, D> {
-    fn default() -> Self {
-        BatchCache {
-            compiled: HashMap::new(),
-        }
-    }
+/// One parsed expression of a batch, what it is compiled into now, and how many lines
+/// have asked for it.
+struct Entry<'e, D: EngineDialect> {
+    registration: D::Registration,
+    lpe: D::Lpe,
+    compiled: Compiled<'e, D>,
+    uses: u32,
 }
 
 impl<'e, D: EngineDialect> BatchCache<'e, D> {
-    /// The entry for `key`, made by `compile` the first time it is asked for.
+    /// An empty cache compiling with `engines`.
+    pub fn new(engines: &[&'e dyn Engine<D>]) -> Self {
+        BatchCache {
+            engines: engines.to_vec(),
+            compiled: HashMap::new(),
+        }
+    }
+
+    /// The compiled expression for `key`: `parse` gives the registration and expression
+    /// the first time it is asked for (or the line's error); the expression is compiled
+    /// for a few paths, then in full at its [`UPGRADE_AFTER_USES`]-th line.
     pub fn get_or_compile(
         &mut self,
         key: &str,
-        compile: impl FnOnce() -> Result<Compiled<'e, D>, String>,
-    ) -> &Result<Compiled<'e, D>, String> {
-        if !self.compiled.contains_key(key) && self.compiled.len() >= MAX_CACHED_EXPRESSIONS {
-            self.compiled.clear();
+        parse: impl FnOnce() -> Result<(D::Registration, D::Lpe), String>,
+    ) -> Result<&Compiled<'e, D>, &str> {
+        if !self.compiled.contains_key(key) {
+            if self.compiled.len() >= MAX_CACHED_EXPRESSIONS {
+                self.compiled.clear();
+            }
+            let entry = parse().map(|(registration, lpe)| Entry {
+                compiled: Compiled::new(&self.engines, &registration, &lpe, Expected::FewPaths),
+                registration,
+                lpe,
+                uses: 0,
+            });
+            self.compiled.insert(key.to_string(), entry);
         }
-        self.compiled.entry(key.to_string()).or_insert_with(compile)
+        let engines = &self.engines;
+        match self.compiled.get_mut(key).expect("inserted above") {
+            Ok(entry) => {
+                entry.uses = entry.uses.saturating_add(1);
+                if entry.uses == UPGRADE_AFTER_USES {
+                    entry.compiled = Compiled::new(
+                        engines,
+                        &entry.registration,
+                        &entry.lpe,
+                        Expected::ManyPaths,
+                    );
+                }
+                Ok(&entry.compiled)
+            }
+            Err(e) => Err(e),
+        }
     }
 
     /// How many expressions are compiled now.
@@ -310,7 +374,9 @@ mod tests {
     //! The batch cache, with an engine that counts its compiles. Checked against planted
     //! faults: a cache that never stores (every line compiles: the count test fails), a
     //! key without OSL's registration column (the second registration answers as the
-    //! first: the OSL test fails), and a cache that never clears (the bound test fails).
+    //! first: the OSL test fails), a cache that never clears (the bound test fails), an
+    //! upgrade one line early or never, or on every line past the threshold (the upgrade
+    //! test fails), and lines compiled in full from the start (both count tests fail).
 
     use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -318,11 +384,25 @@ mod tests {
     use lpe::renderman::{Parser, RenderMan};
     use lpe_engines::{Engine, EngineDialect, EngineError, Matcher};
 
-    use super::{BatchCache, Compiled, MAX_CACHED_EXPRESSIONS};
+    use super::{BatchCache, MAX_CACHED_EXPRESSIONS, UPGRADE_AFTER_USES};
     use crate::cmd::matching::MatchDialect;
 
-    /// The `fast` engine, counting how often it is asked to compile.
-    struct Counting(AtomicUsize);
+    /// The `fast` engine, counting how often it is asked to compile for a few paths and
+    /// in full.
+    #[derive(Default)]
+    struct Counting {
+        few: AtomicUsize,
+        full: AtomicUsize,
+    }
+
+    impl Counting {
+        fn counts(&self) -> (usize, usize) {
+            (
+                self.few.load(Ordering::Relaxed),
+                self.full.load(Ordering::Relaxed),
+            )
+        }
+    }
 
     impl<D: EngineDialect> Engine<D> for Counting {
         fn name(&self) -> &'static str {
@@ -333,10 +413,20 @@ mod tests {
             exprs: &[D::Lpe],
             registration: &D::Registration,
         ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
-            self.0.fetch_add(1, Ordering::Relaxed);
+            self.full.fetch_add(1, Ordering::Relaxed);
             lpe_engines::by_name::<D>("fast")
                 .expect("the fast engine")
                 .compile(exprs, registration)
+        }
+        fn compile_for_few_paths(
+            &self,
+            exprs: &[D::Lpe],
+            registration: &D::Registration,
+        ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+            self.few.fetch_add(1, Ordering::Relaxed);
+            lpe_engines::by_name::<D>("fast")
+                .expect("the fast engine")
+                .compile_for_few_paths(exprs, registration)
         }
     }
 
@@ -346,16 +436,16 @@ mod tests {
         lines: &[&str],
     ) -> Vec<String> {
         let engines: Vec<&dyn Engine<D>> = vec![engine];
-        let mut cache = BatchCache::default();
+        let mut cache = BatchCache::new(&engines);
         lines
             .iter()
-            .map(|l| D::batch_line(&engines, registration, l, &mut cache).to_string())
+            .map(|l| D::batch_line(registration, l, &mut cache).to_string())
             .collect()
     }
 
     #[test]
     fn each_distinct_expression_compiles_once() {
-        let engine = Counting(AtomicUsize::new(0));
+        let engine = Counting::default();
         let lines = [
             "C<RD>L\tC RD L",
             "C<RD>L\tC RS L",
@@ -376,15 +466,50 @@ mod tests {
             "a cached parse error answers as the first time"
         );
         assert_eq!(
-            engine.0.load(Ordering::Relaxed),
-            2,
-            "two distinct expressions"
+            engine.counts(),
+            (2, 0),
+            "two distinct expressions, each compiled for a few paths"
         );
     }
 
     #[test]
+    fn an_expression_is_compiled_in_full_at_its_upgrade_line_and_only_then() {
+        let engine = Counting::default();
+        let engines: Vec<&dyn Engine<RenderMan>> = vec![&engine];
+        let mut cache = BatchCache::new(&engines);
+        let parser = Parser::default();
+        // Alternating answers, so that a matcher lost or mixed up in the upgrade shows.
+        let even = |i: u32| i.is_multiple_of(2);
+        let line = |i: u32| {
+            if even(i) {
+                "C<RD>L\tC RD L"
+            } else {
+                "C<RD>L\tC RS L"
+            }
+        };
+        for i in 1..UPGRADE_AFTER_USES {
+            let got = RenderMan::batch_line(&parser, line(i), &mut cache).to_string();
+            assert_eq!(
+                got,
+                if i % 2 == 0 { "match" } else { "no-match" },
+                "line {i}"
+            );
+            assert_eq!(engine.counts(), (1, 0), "line {i}: not yet upgraded");
+        }
+        for i in UPGRADE_AFTER_USES..3 * UPGRADE_AFTER_USES {
+            let got = RenderMan::batch_line(&parser, line(i), &mut cache).to_string();
+            assert_eq!(
+                got,
+                if i % 2 == 0 { "match" } else { "no-match" },
+                "line {i}"
+            );
+            assert_eq!(engine.counts(), (1, 1), "line {i}: upgraded once");
+        }
+    }
+
+    #[test]
     fn a_line_is_cached_by_its_expression_and_its_registration() {
-        let engine = Counting(AtomicUsize::new(0));
+        let engine = Counting::default();
         // A registered `U` is a basic label, which the eater no longer skips: the same
         // expression text reads differently under the two registrations.
         let lines = [
@@ -394,22 +519,21 @@ mod tests {
         ];
         let got = answers::<Osl>(&engine, &Default::default(), &lines);
         assert_eq!(got, ["no-match", "match", "no-match"]);
-        assert_eq!(engine.0.load(Ordering::Relaxed), 2);
+        assert_eq!(engine.counts(), (2, 0));
     }
 
     #[test]
     fn the_cache_holds_at_most_its_bound() {
-        let mut cache: BatchCache<'_, RenderMan> = BatchCache::default();
+        let engines: Vec<&dyn Engine<RenderMan>> = Vec::new();
+        let mut cache: BatchCache<'_, RenderMan> = BatchCache::new(&engines);
         for i in 0..=MAX_CACHED_EXPRESSIONS {
-            cache.get_or_compile(&format!("C.{{{i}}}L"), || {
-                Ok(Compiled {
-                    engines: Vec::new(),
-                })
-            });
+            let text = format!("C<RD'l{i}'>L");
+            let parsed = lpe::renderman::parse(&text).expect("parses");
+            let _ = cache.get_or_compile(&text, || Ok((Parser::default(), parsed)));
             assert!(cache.len() <= MAX_CACHED_EXPRESSIONS);
         }
         assert_eq!(cache.len(), 1, "full, then started afresh");
         let empty = cache.get_or_compile("x", || Err("never".into()));
-        assert!(matches!(empty, Err(e) if e == "never"));
+        assert!(matches!(empty, Err("never")));
     }
 }

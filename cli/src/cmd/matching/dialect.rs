@@ -2,7 +2,7 @@
 //! ([`EngineDialect`]) and the command line's ([`CliDialect`]): [`MatchDialect`],
 //! implemented in [`super::renderman`] and [`super::osl`].
 
-use lpe_engines::{Engine, EngineDialect};
+use lpe_engines::EngineDialect;
 
 use super::answer::{Args, BatchCache, LineOutcome};
 use crate::dialect::CliDialect;
@@ -31,10 +31,9 @@ pub trait MatchDialect: EngineDialect + CliDialect {
         Ok(lpe)
     }
 
-    /// Answers one batch line (not blank, not a comment), compiling its expression only
-    /// if `cache` does not hold it yet.
+    /// Answers one batch line (not blank, not a comment) with the engines of `cache`,
+    /// parsing its expression only if `cache` does not hold it yet.
     fn batch_line<'e>(
-        engines: &[&'e dyn Engine<Self>],
         registration: &Self::Registration,
         line: &str,
         cache: &mut BatchCache<'e, Self>,

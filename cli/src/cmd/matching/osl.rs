@@ -11,9 +11,8 @@
 //! further column is an error; blank lines and `#` comments are echoed.
 
 use lpe::osl::{self, Osl, Registered};
-use lpe_engines::Engine;
 
-use super::answer::{Args, BatchCache, Compiled, LineOutcome, Verdict};
+use super::answer::{Args, BatchCache, LineOutcome, Verdict};
 use super::dialect::MatchDialect;
 
 impl MatchDialect for Osl {
@@ -37,23 +36,17 @@ impl MatchDialect for Osl {
     /// Each line's labels are registered on top of the renderer's profile, if one is
     /// named (`--renderer`): its letters, prefixes and built-in names.
     fn batch_line<'e>(
-        engines: &[&'e dyn Engine<Osl>],
         base: &Registered,
         line: &str,
         cache: &mut BatchCache<'e, Osl>,
     ) -> LineOutcome {
-        batch_line(engines, base, line, cache)
+        batch_line(base, line, cache)
     }
 }
 
 /// Answers one `EXPR<TAB>REGISTERED<TAB>PATH[<TAB>MATCH|NOMATCH]` line, under the
 /// line's own registration on top of `base`; the first two columns are the cache's key.
-fn batch_line<'e>(
-    engines: &[&'e dyn Engine<Osl>],
-    base: &Registered,
-    line: &str,
-    cache: &mut BatchCache<'e, Osl>,
-) -> LineOutcome {
+fn batch_line<'e>(base: &Registered, line: &str, cache: &mut BatchCache<'e, Osl>) -> LineOutcome {
     let cols: Vec<&str> = line.split('\t').collect();
     let (expr, reg, path, expected) = match cols[..] {
         [e, r, p] => (e, r, p, None),
@@ -79,11 +72,11 @@ fn batch_line<'e>(
         registered.events.extend(own.events);
         registered.scatters.extend(own.scatters);
         let lpe = osl::parse(expr, &registered).map_err(|e| format!("expression: {e}"))?;
-        Ok(Compiled::new(engines, &registered, &lpe))
+        Ok((registered, lpe))
     });
     let compiled = match compiled {
         Ok(c) => c,
-        Err(e) => return LineOutcome::Error(e.clone()),
+        Err(e) => return LineOutcome::Error(e.to_string()),
     };
     let path = match path.parse::<osl::Path>() {
         Ok(p) => p,
@@ -94,7 +87,7 @@ fn batch_line<'e>(
         (Some(want), Verdict::Match | Verdict::NoMatch) if want != (v == Verdict::Match) => {
             let shown = |b: bool| if b { "match" } else { "no-match" }.to_string();
             let mut answers = vec![("expected", shown(want))];
-            answers.extend(engines.iter().map(|e| (e.name(), shown(!want))));
+            answers.extend(compiled.engine_names().map(|e| (e, shown(!want))));
             Verdict::Disagree(answers)
         }
         _ => v,

@@ -2,9 +2,8 @@
 //! registration, `--ini`'s macros, is read as every subcommand reads it).
 
 use lpe::renderman::{Parser, Path, RenderMan};
-use lpe_engines::Engine;
 
-use super::answer::{BatchCache, Compiled, LineOutcome};
+use super::answer::{BatchCache, LineOutcome};
 use super::dialect::MatchDialect;
 
 impl MatchDialect for RenderMan {
@@ -12,7 +11,6 @@ impl MatchDialect for RenderMan {
 
     /// Answers one `EXPR<TAB>PATH` line; the expression column is the cache's key.
     fn batch_line<'e>(
-        engines: &[&'e dyn Engine<RenderMan>],
         parser: &Parser,
         line: &str,
         cache: &mut BatchCache<'e, RenderMan>,
@@ -24,11 +22,11 @@ impl MatchDialect for RenderMan {
             let lpe = parser
                 .parse(expr)
                 .map_err(|e| format!("expression: {}", e.one_line()))?;
-            Ok(Compiled::new(engines, parser, &lpe))
+            Ok((parser.clone(), lpe))
         });
         let compiled = match compiled {
             Ok(c) => c,
-            Err(e) => return LineOutcome::Error(e.clone()),
+            Err(e) => return LineOutcome::Error(e.to_string()),
         };
         match path.parse::<Path>() {
             Ok(p) => LineOutcome::Ran(compiled.verdict(&p)),
