@@ -54,6 +54,10 @@ mod tests {
         assert_eq!(edit_distance("kitten", "sitting"), 3);
         assert_eq!(edit_distance("ABC", "abc"), 0);
         assert_eq!(edit_distance("", "abc"), 3);
+        // Deletions after the first character read the row above. Planted fault, seen
+        // failing: `prev[j * 1]` for `prev[j + 1]` (8 and 3 here).
+        assert_eq!(edit_distance("holdouts", "holdout"), 1);
+        assert_eq!(edit_distance("cab", "c"), 2);
     }
 
     #[test]

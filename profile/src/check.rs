@@ -134,18 +134,17 @@ fn letters(p: &Profile) -> Option<Refusal> {
     let added = p
         .events
         .iter()
-        .map(|r| ("events", r))
-        .chain(p.scatterings.iter().map(|r| ("scatterings", r)));
+        .enumerate()
+        .map(|(i, r)| ("events", i, r))
+        .chain(
+            p.scatterings
+                .iter()
+                .enumerate()
+                .map(|(i, r)| ("scatterings", i, r)),
+        );
     let mut seen: Vec<&str> = Vec::new();
-    let mut index = [0usize; 2];
-    for (list, r) in added {
-        let i = if list == "events" {
-            &mut index[0]
-        } else {
-            &mut index[1]
-        };
+    for (list, i, r) in added {
         let key = format!("{list}[{i}].letter");
-        *i += 1;
         let letter = r.letter.get_ref().as_str();
         if p.dialect() == lpe::DialectName::RenderMan {
             return Some(refuse(

@@ -187,3 +187,109 @@ fn a_profile_registers_its_letters_prefixes_and_builtins() {
     // Plain OSL has neither.
     assert!(parse_source("C[DSV]A", &Default::default()).is_err());
 }
+
+/// A profile's name: lowercase letters, digits, `_` and `-`, never empty. Planted faults
+/// (cargo-mutants), each seen failing: the emptiness test or'd with the rest (any name
+/// passes); digits, `_` or `-` refused; `b == b'_'` as `!=` (any byte passes).
+#[test]
+fn a_profile_name_is_lowercase_letters_digits_underscores_and_hyphens() {
+    let named = |name: &str| HEAD.replace("name = \"inhouse\"", &format!("name = \"{name}\""));
+    let p = Profile::from_text("inhouse.toml", &named("in-house_2")).unwrap();
+    assert_eq!(p.name, "in-house_2");
+    for bad in ["", "In-house", "in house", "in.house"] {
+        let (line, key, message) = invalid(&named(bad));
+        assert_eq!((line, key.as_deref()), (None, Some("name")), "{bad:?}");
+        assert!(
+            message.contains(&format!("`{bad}` is not a profile name")),
+            "{message}"
+        );
+    }
+}
+
+/// An added letter is letters and digits, never empty, and each list counts its own
+/// keys. Planted faults, each seen failing: `is_empty() || !all(..)` as `&&` (the empty
+/// letter and `A'` pass); one counter shared by both lists (`scatterings[2]`).
+#[test]
+fn an_added_letter_is_letters_and_digits_and_keyed_in_its_own_list() {
+    let event =
+        |l: &str| format!("[[events]]\nletter = \"{l}\"\nmeaning = \"m\"\nsource = \"doc\"\n");
+    let scattering =
+        |l: &str| format!("[[scatterings]]\nletter = \"{l}\"\nmeaning = \"m\"\nsource = \"doc\"\n");
+    Profile::from_text("inhouse.toml", &format!("{HEAD}{}", event("A2"))).unwrap();
+    for bad in ["", "A'", "a b"] {
+        let (_, key, message) = invalid(&format!("{HEAD}{}", event(bad)));
+        assert_eq!(key.as_deref(), Some("events[0].letter"));
+        assert!(
+            message.contains(&format!("`{bad}` is not a label OSL's syntax can write")),
+            "{message}"
+        );
+    }
+    let text = format!("{HEAD}{}{}{}", event("U"), scattering("Q"), scattering("S"));
+    assert_eq!(invalid(&text).1.as_deref(), Some("scatterings[1].letter"));
+}
+
+/// A prefix is letters and `_`, never empty, each once. Planted faults, each seen
+/// failing: `is_empty() || !all(..)` as `&&`; `b == b'_'` as `!=` (`no_shadow` refused,
+/// `no-shadow` passed); the twice test as `!=` (two different prefixes refused).
+#[test]
+fn a_prefix_is_letters_and_underscores_each_listed_once() {
+    let with = |names: &[&str]| {
+        names.iter().fold(HEAD.to_string(), |t, n| {
+            format!("{t}[[prefixes]]\nname = \"{n}\"\nmeaning = \"m\"\nsource = \"doc\"\n")
+        })
+    };
+    Profile::from_text("inhouse.toml", &with(&["no_shadow", "unoccluded"])).unwrap();
+    for bad in ["", "no-shadow", "shadow2"] {
+        let (_, key, message) = invalid(&with(&[bad]));
+        assert_eq!(key.as_deref(), Some("prefixes[0].name"));
+        assert!(
+            message.contains(&format!("`{bad}` is not a prefix name")),
+            "{message}"
+        );
+    }
+    let (_, key, message) = invalid(&with(&["shadow", "unoccluded", "shadow"]));
+    assert_eq!(key.as_deref(), Some("prefixes[2].name"));
+    assert!(message.contains("`shadow` is listed twice"), "{message}");
+}
+
+/// A RenderMan-based profile (hdPrman) reads RenderMan's dialect as the parser it is
+/// given has it: an ini's macros and the limits stay. Planted fault, seen failing:
+/// `with_profile` returning the default parser.
+#[test]
+fn a_renderman_based_profile_keeps_the_parser_it_is_given() {
+    use lpe::renderman::{macros::MacroTable, Limits, Parser, RenderMan};
+    let mut macros = MacroTable::builtin();
+    macros.define("keyDiffuse", "C<RD><L.'key'>");
+    let limits = Limits {
+        max_repeat: 3,
+        ..Limits::default()
+    };
+    let hdprman = by_name("hdprman").unwrap();
+    let parser = <RenderMan as ProfileDialect>::with_profile(hdprman, Parser::new(limits, macros));
+    assert!(parser.parse("keyDiffuse").is_ok());
+    assert!(parser.parse("C<RD>{3}L").is_ok());
+    assert!(parser.parse("C<RD>{4}L").is_err());
+    assert!(lpe::renderman::parse("keyDiffuse").is_err());
+}
+
+/// What the shipped profiles say, as docs/profiles.md has it: hdPrman prepends `lpe:` and
+/// Karma does not; Karma's settings are `karma:`, hdPrman's `ri:`, a profile without
+/// `[detect]` has none; Karma shows every specular lobe as `G`, where the default
+/// correspondence shows `S8` as `S`. Planted faults, each seen failing:
+/// `prepends_lpe_mark` always false, `settings_namespace` always `None`, `Some("")` or
+/// `Some("xyzzy")`, `correspondence` always the default.
+#[test]
+fn the_shipped_profiles_marks_namespaces_and_correspondences() {
+    use lpe::translate::{Correspondence, Scattering};
+    let karma = by_name("karma").unwrap();
+    let hdprman = by_name("hdprman").unwrap();
+    assert!(hdprman.prepends_lpe_mark());
+    assert!(!karma.prepends_lpe_mark());
+    assert_eq!(karma.settings_namespace(), Some("karma"));
+    assert_eq!(hdprman.settings_namespace(), Some("ri"));
+    let minimal = Profile::from_text("inhouse.toml", HEAD).unwrap();
+    assert_eq!(minimal.settings_namespace(), None);
+    assert_eq!(karma.correspondence().declaration(), "S1-S8=G");
+    assert!(!karma.correspondence().shows(Scattering::Singular));
+    assert_eq!(Correspondence::default().declaration(), "S1-S7=G S8=S");
+}

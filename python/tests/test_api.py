@@ -521,3 +521,62 @@ def test_labels_that_are_not_ascii_match_exactly_in_both_dialects():
     osl = lpe.AovSet({"k": "C<RD'café'>L"}, dialect="osl")
     assert osl.match("C,~ R,D,café L,~") == ["k"]
     assert osl.match("C,~ R,D,cafe L,~") == []
+
+
+# --- the package's Python code ----------------------------------------------------------
+# Each test below kills mutants of python/python/lpe/__init__.py that the rest of the
+# suite let through (cosmic-ray, docs/mutants.toml); the expected values are written out
+# by hand.
+
+
+def test_findings_compare_field_by_field_and_print_where_they_are():
+    # Planted faults, each seen failing: __eq__ true for any two findings, or comparing
+    # the dicts with `<` (dicts do not order: TypeError) or `is`; the repr naming the line
+    # of a finding that has a prim, or `None` for one that has only a line.
+    at_line = dict.fromkeys(lpe.FINDING_FIELDS)
+    at_line.update(kind="empty", subject="a",
+                   location={"line": 3, "column": 5, "prim": None, "attribute": None})
+    at_prim = dict(at_line, location={"line": None, "column": None, "prim": "/Render/a",
+                                      "attribute": "sourceName"})
+    f = lpe.Finding(at_line)
+    assert f == lpe.Finding(dict(at_line))
+    assert f != lpe.Finding(at_prim)
+    assert f != lpe.Finding(dict(at_line, witness="C L"))
+    assert f != at_line
+    assert repr(f) == "<lpe.Finding empty 'a' at 3>"
+    assert repr(lpe.Finding(at_prim)) == "<lpe.Finding empty 'a' at /Render/a>"
+
+
+def test_lint_takes_a_partition_as_text_or_as_names_and_refuses_the_rest():
+    # clean_basic.usda: directDiffuse and indirectDiffuse alone leave the other five AOVs'
+    # paths uncovered, a gap, however the partition is spelt.
+    for partitions in [
+        "directDiffuse,indirectDiffuse",
+        ["directDiffuse,indirectDiffuse"],
+        [["directDiffuse", "indirectDiffuse"]],
+        [("directDiffuse", "indirectDiffuse")],
+    ]:
+        report = lpe.lint(USD / "clean_basic.usda", partitions=partitions)
+        assert [(f.kind, f.subject) for f in report.findings] == [("gap", "--partition #1")]
+    with pytest.raises(TypeError, match="a partition is 'a,b,c' or a list of AOV names"):
+        lpe.lint(USD / "clean_basic.usda", partitions=[["directDiffuse", 3]])
+    # Planted fault, seen failing: the per-file type check skipped (os.fspath then raises
+    # its own TypeError, without the message).
+    with pytest.raises(TypeError, match="a file is a str or os.PathLike, not int"):
+        lpe.lint([USD / "clean_basic.usda", 3])
+    with pytest.raises(ValueError, match="lint needs at least one file"):
+        lpe.lint([])
+
+
+class _HalfAStage:
+    """Has a stage's GetRootLayer but not its ExportToString: not a stage."""
+
+    def GetRootLayer(self):
+        raise AssertionError("read as a stage")
+
+
+def test_lint_reads_as_a_stage_only_what_has_both_stage_methods():
+    # Planted fault, seen failing: `_is_stage` asking for either method (the object is
+    # then traversed as a stage: AttributeError).
+    with pytest.raises(TypeError, match="not _HalfAStage"):
+        lpe.lint(_HalfAStage())

@@ -350,3 +350,163 @@ def test_a_stage_changed_after_validation_is_read_again():
     assert errors_by_validator(stage) == []
     group.Set("rim")
     assert errors_by_validator(stage) == [("lpe:UnknownLightGroup", "/Render/a")]
+
+
+# --- the package's Python code ----------------------------------------------------------
+# Each test below kills mutants of python/python/lpe/*.py that the rest of the suite let
+# through (cosmic-ray, docs/mutants.toml); the expected values are written out by hand.
+
+
+def test_findings_of_an_anonymous_stage_name_its_identifier():
+    # An in-memory stage has no file: its findings name the root layer's identifier.
+    # Planted fault, seen failing: `realPath and identifier` (the empty real path).
+    stage = Usd.Stage.CreateInMemory()
+    render_var(stage, "/Render/bad", "C<RD")
+    ident = stage.GetRootLayer().identifier
+    assert ident.startswith("anon:")
+    files = {f.file for f in lpe.lint(stage).findings if f.kind == "parse_error"}
+    assert files == {ident}
+
+
+def test_an_asset_valued_attribute_reads_as_its_authored_path():
+    # Planted fault, seen failing: `_as_text` returning None for an asset path.
+    stage = Usd.Stage.CreateInMemory()
+    prim = stage.DefinePrim("/World/tagged")
+    prim.CreateAttribute("lpe:ini", Sdf.ValueTypeNames.Asset).Set(Sdf.AssetPath("looks/rendermn.ini"))
+    prims, types = lpe._stage_facts(stage)
+    assert prims == [("/World/tagged", "", ["lpe:ini"], [("lpe:ini", "looks/rendermn.ini")], [])]
+    assert types == [""]  # /World and /World/tagged: each type name once
+
+
+def test_options_come_from_the_environment_until_configured(monkeypatch):
+    # Planted faults, seen failing: each `env(...) or None` as `and` (a set variable read
+    # as unset).
+    monkeypatch.setenv("LPE_DIALECT", "osl")
+    monkeypatch.setenv("LPE_INI", "/studio/rendermn.ini")
+    monkeypatch.setenv("LPE_REGISTER", "events=U")
+    monkeypatch.setenv("LPE_UNIVERSE", "C.*L")
+    monkeypatch.setenv("LPE_RENDERER", "")  # set but empty: unset
+    assert uv.options() == {
+        "dialect": "osl",
+        "ini": "/studio/rendermn.ini",
+        "register": "events=U",
+        "universe": "C.*L",
+        "partitions": (),
+        "renderer": None,
+    }
+    uv.configure(dialect="renderman")
+    assert uv.options() == {
+        "dialect": "renderman",
+        "ini": None,
+        "register": None,
+        "universe": None,
+        "partitions": (),
+        "renderer": None,
+    }
+
+
+def test_the_validators_follow_the_dialect_in_the_environment_on_the_same_stage(monkeypatch):
+    # solaris_karma.usda declares no dialect: specular_key (C<RS>.*<L.'key'>) reads
+    # differently as RenderMan's and as OSL's, until LPE_DIALECT names one; diffuse_fill
+    # names the unknown group 'fil' either way.
+    monkeypatch.delenv("LPE_RENDERER", raising=False)
+    monkeypatch.delenv("LPE_DIALECT", raising=False)
+    stage = Usd.Stage.Open(str(ROOT / "tests" / "testdata" / "usd" / "solaris_karma.usda"))
+    vars_ = "/Render/Products/Vars"
+    assert errors_by_validator(stage) == [
+        ("lpe:AmbiguousDialect", f"{vars_}/specular_key"),
+        ("lpe:UnknownLightGroup", f"{vars_}/diffuse_fill"),
+    ]
+    monkeypatch.setenv("LPE_DIALECT", "osl")
+    assert errors_by_validator(stage) == [("lpe:UnknownLightGroup", f"{vars_}/diffuse_fill")]
+
+
+def test_the_validators_keep_the_lint_runs_of_the_last_eight_stages():
+    # The cache holds a stage alive: it keeps eight, the newest, so that validating many
+    # stages does not keep them all. Planted faults, seen failing: nine or seven kept;
+    # `>` for `>=` (nine kept); the listener of an evicted entry read from the wrong
+    # slot (`[2]`, `[0]`: no Revoke).
+    stages = []
+    for _ in range(10):
+        stage = Usd.Stage.CreateInMemory()
+        render_var(stage, "/Render/a", "C<RD>L")
+        assert uv.validate(stage) == []
+        stages.append(stage)
+    assert [key[0] for key in uv._cache] == stages[2:]
+
+
+def test_register_says_true_when_it_registers(monkeypatch):
+    # The module registered when imported; registering again (as after a reload) finds
+    # every validator there and says so. Planted fault, seen failing: `return False` at
+    # the end of register().
+    monkeypatch.setattr(uv, "_registered", False)
+    assert uv.register() is True
+    registry = UsdValidation.ValidationRegistry()
+    found = sorted(m.name for m in registry.GetValidatorMetadataForKeyword("lpe"))
+    assert found == sorted(NAMES)
+
+
+def test_a_plugin_that_fails_to_register_warns_and_pxr_still_imports():
+    # Planted fault, seen failing: the loader letting the error out of `import pxr...`.
+    run = run_python(
+        "import sys, warnings\n"
+        "import lpe\n"
+        "sys.modules['lpe.usd_validation'] = None  # its import now fails\n"
+        "with warnings.catch_warnings(record=True) as caught:\n"
+        "    warnings.simplefilter('always')\n"
+        "    from pxr import UsdValidation\n"
+        "print(UsdValidation.__name__)\n"
+        "for w in caught:\n"
+        "    print(w.message)\n",
+        plugin=True,
+    )
+    assert run.returncode == 0, run.stderr
+    name, warning = run.stdout.splitlines()[:2]
+    assert name == "pxr.UsdValidation"
+    assert warning.startswith("lpe: the UsdValidation plugin did not register: ")
+
+
+def test_importing_lpe_and_other_modules_leaves_pxr_unimported():
+    # The import hook waits for pxr.UsdValidation alone. Planted faults, seen failing:
+    # its name test inverted or made an ordering (`colorsys` sorts before `pxr...`,
+    # `wave` after), which wraps the first module imported after lpe and imports pxr
+    # with it.
+    run = run_python(
+        "import sys\nimport lpe\nimport colorsys\nimport wave\n"
+        "print('pxr' in sys.modules, 'lpe.usd_validation' in sys.modules)\n",
+        plugin=True,
+    )
+    assert run.stdout.split() == ["False", "False"], run.stderr
+
+
+def test_a_usd_without_validation_fails_to_import_it_as_it_would_without_lpe(tmp_path):
+    # A USD build older than UsdValidation: a `pxr` package without the module.
+    # Planted fault, seen failing: `spec is not None or ...` (AttributeError on None).
+    (tmp_path / "pxr").mkdir()
+    (tmp_path / "pxr" / "__init__.py").write_text("")
+    run = run_python(
+        f"import sys\nsys.path.insert(0, {str(tmp_path)!r})\nimport lpe\n"
+        "try:\n    import pxr.UsdValidation\n"
+        "except ModuleNotFoundError as e:\n    print(e.name)\n",
+        plugin=False,
+    )
+    assert run.stdout.split() == ["pxr.UsdValidation"], run.stderr
+
+
+def test_lpe_sees_pxr_validation_before_an_import_hook_installed_earlier():
+    # An import hook installed before lpe that finds every module itself (as profilers
+    # and type checkers install): lpe's hook goes in front, so it still wraps
+    # pxr.UsdValidation. Planted faults, seen failing: lpe's hook inserted at 1 or last.
+    run = run_python(
+        "import sys, importlib.machinery\n"
+        "class Hook:\n"
+        "    def find_spec(self, name, path=None, target=None):\n"
+        "        return importlib.machinery.PathFinder.find_spec(name, path)\n"
+        "sys.meta_path.insert(0, Hook())\n"
+        "import lpe\n"
+        "from pxr import UsdValidation\n"
+        "r = UsdValidation.ValidationRegistry()\n"
+        "print(r.GetOrLoadValidatorByName('lpe:Syntax') is not None)\n",
+        plugin=True,
+    )
+    assert run.stdout.split() == ["True"], run.stderr
