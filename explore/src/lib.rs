@@ -17,6 +17,7 @@
 //! - [`partition`](mod@partition): the `partition` view: overlaps, gap and outside paths as rows.
 //! - [`explain`](mod@explain): the `explain` view: a path stepped through the automaton.
 //! - [`equiv`](mod@equiv): the `equiv` view: two expressions or lines compared.
+//! - [`html`]: HTML fragments for notebooks (the Python package's `_repr_html_`).
 //!
 //! Every view answers within lpe's budgets and never panics: a body it cannot read is a
 //! 4xx, never a crash (`tests/robust.rs` throws random bytes and random JSON at each).
@@ -27,6 +28,7 @@ pub mod draw;
 pub mod equiv;
 pub mod explain;
 pub mod graph;
+pub mod html;
 pub mod lines;
 pub mod list;
 pub mod partition;
