@@ -1,0 +1,86 @@
+//! The LPE explorer's JSON API: one entry point, [`answer`], that `lpe-check serve`,
+//! `lpe-check report` and the Python package's HTML views call, and one typed function
+//! per view for Rust callers. docs/usage.md ("The explorer's JSON API") is the
+//! reference of every view's request and reply.
+//!
+//! - [`request`]: the body read into [`Request`] (within [`MAX_BODY_BYTES`]), the dialect
+//!   and renderer it names ([`Setting`]), [`ApiError`] (the 4xx replies).
+//! - [`lines`]: the AOV list's text, one `name = expression` per line.
+//! - [`list`]: the lines parsed in one dialect ([`list::ExploreDialect`]), the list
+//!   compiled.
+//! - [`check`]: the `check` view.
+//!
+//! Every view answers within lpe's budgets and never panics: a body it cannot read is a
+//! 4xx, never a crash (`tests/robust.rs` throws random bytes and random JSON at each).
+
+pub mod check;
+pub mod lines;
+pub mod list;
+pub mod request;
+
+use lpe::with_dialect;
+use serde::Serialize;
+
+pub use check::Check;
+pub use request::{ApiError, Request, Setting, MAX_BODY_BYTES};
+
+/// The views, by the name the URL ends with (`/api/check`).
+pub const VIEWS: [&str; 1] = ["check"];
+
+/// A view's reply: an HTTP status and its JSON body (`{"error": "..."}` for a 4xx).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Reply {
+    /// 200, or the 4xx of [`ApiError::status`].
+    pub status: u16,
+    /// The JSON body.
+    pub json: String,
+}
+
+impl Reply {
+    fn ok(value: &impl Serialize) -> Reply {
+        match serde_json::to_string(value) {
+            Ok(json) => Reply { status: 200, json },
+            // The replies are plain structs of strings and numbers: serializing cannot
+            // fail, but a failure would still be an answer, not a panic.
+            Err(e) => Reply::error(&ApiError {
+                status: 500,
+                message: format!("the reply did not serialize: {e}"),
+            }),
+        }
+    }
+
+    fn error(e: &ApiError) -> Reply {
+        Reply {
+            status: e.status,
+            json: serde_json::json!({ "error": e.message }).to_string(),
+        }
+    }
+}
+
+/// Answers `view` (the URL's last segment) for the JSON `body`: 200 with the view's
+/// reply, 404 for an unknown view, 400/413/422 as [`ApiError`] says.
+///
+/// ```
+/// let reply = lpe_explore::answer("check", br#"{"aovs": "diffuse = C<RD>L"}"#);
+/// assert_eq!(reply.status, 200);
+/// assert!(reply.json.contains(r#""canonical":"C<RD>L""#));
+/// assert_eq!(lpe_explore::answer("nope", b"{}").status, 404);
+/// ```
+pub fn answer(view: &str, body: &[u8]) -> Reply {
+    let reply = match view {
+        "check" => Request::from_body(body)
+            .and_then(|r| check(&r))
+            .map(|v| Reply::ok(&v)),
+        _ => Err(ApiError {
+            status: 404,
+            message: format!("no view `{view}` (views: {})", VIEWS.join(", ")),
+        }),
+    };
+    reply.unwrap_or_else(|e| Reply::error(&e))
+}
+
+/// The `check` view: each line's canonical form or parse error, and the warnings.
+pub fn check(request: &Request) -> Result<Check, ApiError> {
+    let setting = request.setting()?;
+    Ok(with_dialect!(setting.dialect, D => check::check_in::<D>(request, &setting)))
+}
