@@ -75,7 +75,9 @@ pub fn run(args: Args) -> ExitCode {
         partitions: &args.partition,
         universe: args.universe.as_deref(),
     };
-    let linted = match lint(&files, &args.lang, &mut |p| read::read_file(p, &Limits::default())) {
+    let linted = match lint(&files, &args.lang, &mut |p| {
+        read::read_file(p, &Limits::default())
+    }) {
         Ok(l) => l,
         Err(Failed::Disagreement(e)) => {
             eprintln!("{e}");

@@ -103,7 +103,12 @@ fn entry(file: &Path, inis: &[PathBuf], lang: &DialectArgs) -> Result<Value, Fai
     }
     let name = file.display().to_string();
     let mine = |v: &Value| v["file"].as_str() == Some(name.as_str());
-    let aovs: Vec<&Value> = linted.json["aovs"].as_array().into_iter().flatten().filter(|a| mine(a)).collect();
+    let aovs: Vec<&Value> = linted.json["aovs"]
+        .as_array()
+        .into_iter()
+        .flatten()
+        .filter(|a| mine(a))
+        .collect();
     let findings: Vec<Value> = linted.json["findings"]
         .as_array()
         .into_iter()
@@ -116,7 +121,13 @@ fn entry(file: &Path, inis: &[PathBuf], lang: &DialectArgs) -> Result<Value, Fai
         std::fs::read_to_string(file).map_err(|e| Failed::BadInput(format!("{name}: {e}")))?
     } else {
         aovs.iter()
-            .map(|a| format!("{} = {}\n", a["name"].as_str().unwrap_or_default(), a["source"].as_str().unwrap_or_default()))
+            .map(|a| {
+                format!(
+                    "{} = {}\n",
+                    a["name"].as_str().unwrap_or_default(),
+                    a["source"].as_str().unwrap_or_default()
+                )
+            })
             .collect()
     };
     let views = views(&list, &linted);
@@ -141,12 +152,14 @@ fn views(list: &str, linted: &Linted) -> Value {
         .as_ref()
         .filter(|p| lpe_profile::by_name(&p.name).is_ok())
         .map(|p| p.name.clone());
-    let body = json!({ "aovs": list, "dialect": linted.dialect.name(), "renderer": renderer }).to_string();
+    let body =
+        json!({ "aovs": list, "dialect": linted.dialect.name(), "renderer": renderer }).to_string();
     let mut out = serde_json::Map::new();
     for view in VIEWS {
         let reply = lpe_explore::answer(view, body.as_bytes());
-        let value = serde_json::from_str(&reply.json)
-            .unwrap_or_else(|e| json!({ "error": format!("the {view} view's reply is no JSON: {e}") }));
+        let value = serde_json::from_str(&reply.json).unwrap_or_else(
+            |e| json!({ "error": format!("the {view} view's reply is no JSON: {e}") }),
+        );
         out.insert(view.to_string(), value);
     }
     Value::Object(out)

@@ -80,7 +80,10 @@ fn route(request: &Request, html: &str, port: u16) -> Response {
         ("GET", "/", _) => {
             let mut r = Response::html(html.to_string());
             // The page may reach this server and nothing else.
-            r.headers.push(("Content-Security-Policy", page::CONTENT_SECURITY_POLICY.into()));
+            r.headers.push((
+                "Content-Security-Policy",
+                page::CONTENT_SECURITY_POLICY.into(),
+            ));
             r
         }
         ("POST", _, Some(view)) => {

@@ -103,8 +103,7 @@ mod tests {
         assert_eq!(data["mode"], "report");
     }
 
-    /// Faults caught: a renderer's dialect not taken from its profile; a contradicting
-    /// `--dialect` accepted.
+    /// Fault caught: a contradicting `--dialect` accepted.
     #[test]
     fn the_start_language_follows_the_renderer() {
         let karma = Start::new(None, Some("karma")).unwrap();
@@ -112,7 +111,9 @@ mod tests {
         assert_eq!(karma.renderer.as_deref(), Some("karma"));
         let e = Start::new(Some(DialectName::RenderMan), Some("karma")).unwrap_err();
         assert!(e.contains("contradicts --renderer karma"), "{e}");
-        assert!(Start::new(None, Some("karm")).unwrap_err().contains("karma"));
+        assert!(Start::new(None, Some("karm"))
+            .unwrap_err()
+            .contains("karma"));
         assert_eq!(
             Start::new(Some(DialectName::Osl), None).unwrap().dialect,
             DialectName::Osl
