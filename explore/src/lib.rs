@@ -9,11 +9,15 @@
 //! - [`list`]: the lines parsed in one dialect ([`list::ExploreDialect`]), the list
 //!   compiled.
 //! - [`check`]: the `check` view.
+//! - [`graph`]: the `graph` view: the automaton explored from its start ([`graph::Explored`]).
+//! - [`draw`]: the graph drawn as SVG (layout by `layout-rs`), with ids per state and edge.
 //!
 //! Every view answers within lpe's budgets and never panics: a body it cannot read is a
 //! 4xx, never a crash (`tests/robust.rs` throws random bytes and random JSON at each).
 
 pub mod check;
+pub mod draw;
+pub mod graph;
 pub mod lines;
 pub mod list;
 pub mod request;
@@ -22,10 +26,11 @@ use lpe::with_dialect;
 use serde::Serialize;
 
 pub use check::Check;
+pub use graph::Graph;
 pub use request::{ApiError, Request, Setting, MAX_BODY_BYTES};
 
 /// The views, by the name the URL ends with (`/api/check`).
-pub const VIEWS: [&str; 1] = ["check"];
+pub const VIEWS: [&str; 2] = ["check", "graph"];
 
 /// A view's reply: an HTTP status and its JSON body (`{"error": "..."}` for a 4xx).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -68,9 +73,8 @@ impl Reply {
 /// ```
 pub fn answer(view: &str, body: &[u8]) -> Reply {
     let reply = match view {
-        "check" => Request::from_body(body)
-            .and_then(|r| check(&r))
-            .map(|v| Reply::ok(&v)),
+        "check" => run(body, check),
+        "graph" => run(body, graph),
         _ => Err(ApiError {
             status: 404,
             message: format!("no view `{view}` (views: {})", VIEWS.join(", ")),
@@ -79,8 +83,23 @@ pub fn answer(view: &str, body: &[u8]) -> Reply {
     reply.unwrap_or_else(|e| Reply::error(&e))
 }
 
+/// Reads `body` and answers it with `view`.
+fn run<T: Serialize>(
+    body: &[u8],
+    view: fn(&Request) -> Result<T, ApiError>,
+) -> Result<Reply, ApiError> {
+    let request = Request::from_body(body)?;
+    Ok(Reply::ok(&view(&request)?))
+}
+
 /// The `check` view: each line's canonical form or parse error, and the warnings.
 pub fn check(request: &Request) -> Result<Check, ApiError> {
     let setting = request.setting()?;
     Ok(with_dialect!(setting.dialect, D => check::check_in::<D>(request, &setting)))
+}
+
+/// The `graph` view: the list's automaton, drawn when small enough.
+pub fn graph(request: &Request) -> Result<Graph, ApiError> {
+    let setting = request.setting()?;
+    with_dialect!(setting.dialect, D => graph::graph_in::<D>(request, &setting))
 }
