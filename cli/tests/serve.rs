@@ -290,3 +290,21 @@ fn a_bad_start_language_is_exit_2() {
         assert!(err.contains(says), "{err}");
     }
 }
+
+/// Ctrl-C (SIGINT) stops the server: the process ends and the port is free again.
+#[test]
+fn ctrl_c_stops_the_server() {
+    let mut server = Server::start();
+    assert_eq!(server.get("/").0, 200);
+    let sent = Command::new("kill")
+        .args(["-INT", &server.child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(sent.success());
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(10);
+    while server.child.try_wait().unwrap().is_none() {
+        assert!(std::time::Instant::now() < deadline, "still running after SIGINT");
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    assert!(TcpListener::bind(("127.0.0.1", server.port)).is_ok());
+}
