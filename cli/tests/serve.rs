@@ -303,7 +303,10 @@ fn ctrl_c_stops_the_server() {
     assert!(sent.success());
     let deadline = std::time::Instant::now() + std::time::Duration::from_secs(10);
     while server.child.try_wait().unwrap().is_none() {
-        assert!(std::time::Instant::now() < deadline, "still running after SIGINT");
+        assert!(
+            std::time::Instant::now() < deadline,
+            "still running after SIGINT"
+        );
         std::thread::sleep(std::time::Duration::from_millis(20));
     }
     assert!(TcpListener::bind(("127.0.0.1", server.port)).is_ok());

@@ -120,12 +120,16 @@ fn entry(file: &Path, inis: &[PathBuf], lang: &DialectArgs) -> Result<Value, Fai
         // An AOV list goes to the views as written, so their line numbers are the file's.
         std::fs::read_to_string(file).map_err(|e| Failed::BadInput(format!("{name}: {e}")))?
     } else {
+        // Lint's canonical form where the AOV parsed: the ini files' macros expanded
+        // and a renderer's `lpe:` mark read, which the views (given no ini) could not
+        // do; the source as written where it did not, so the check view shows the error.
         aovs.iter()
             .map(|a| {
+                let text = a["expression"].as_str().or(a["source"].as_str());
                 format!(
                     "{} = {}\n",
                     a["name"].as_str().unwrap_or_default(),
-                    a["source"].as_str().unwrap_or_default()
+                    text.unwrap_or_default()
                 )
             })
             .collect()
