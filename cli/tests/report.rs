@@ -223,3 +223,27 @@ fn a_bad_file_is_an_error_naming_it() {
         assert!(!Path::new(&out).exists());
     }
 }
+
+/// A RIB file with the ini that defines its macro: the views read the AOV with the
+/// macro expanded (they are given no ini), and the ini's own part has no AOV. Fault
+/// caught: the views given each AOV's source as written (`keyDiffuse` is then an
+/// unknown macro and the drawing is missing).
+#[test]
+fn the_views_read_ini_macros_expanded() {
+    let dir = scratch("ini");
+    let out = dir.join("report.html");
+    let (code, _, stderr) = lpe_check(&[
+        "report",
+        "tests/testdata/lint/display.rib",
+        "tests/testdata/lint/rendermn.ini",
+        "--html",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    let written = data(&std::fs::read_to_string(&out).unwrap());
+    let rib = &written["files"][0];
+    let lines = rib["views"]["check"]["lines"].as_array().unwrap();
+    let key = lines.iter().find(|l| l["name"] == "keyDiffuse").unwrap();
+    assert_eq!(key["canonical"], "C<RD>.*<L.'key'>", "{key}");
+    assert!(written["files"][1]["aovs"].as_array().unwrap().is_empty());
+}
