@@ -1,5 +1,5 @@
 //! The drawing of a [`Graph`]: laid out by `layout-rs` (graphviz's dot layering:
-//! ranks, crossing reduction, Brandes-Köpf placement), written as SVG by [`Canvas`],
+//! ranks, crossing reduction, Brandes-Köpf placement), written as SVG by `Canvas`,
 //! this crate's backend for the library's draw calls, so that every state's shape and
 //! every edge's path carry the ids the page highlights a trace by (`s3`, `e3-5`), text
 //! is escaped, and the styling is inline (a notebook shows it without a style sheet).
@@ -13,7 +13,7 @@ use layout::core::style::StyleAttr;
 use layout::std_shapes::shapes::{Arrow, Element, ShapeKind};
 use layout::topo::layout::VisualGraph;
 
-use crate::graph::Graph;
+use crate::automaton::Graph;
 
 /// Size of a state's circle before the library fits its label.
 const STATE_SIZE: f64 = 36.0;
@@ -25,7 +25,7 @@ pub const CROSSING_LIMIT: usize = 200;
 /// The font size of every text, state names and edge labels alike.
 const FONT: f64 = 11.0;
 
-/// The SVG of `graph`'s states and edges (the caller keeps it to [`crate::graph::DRAW_LIMIT`]
+/// The SVG of `graph`'s states and edges (the `graph` view keeps it to a few hundred
 /// states). The start state is drawn with a thicker line, accepting states as double
 /// circles; each shape has a `<title>` (the accepted AOVs, the edge's vertices) that
 /// browsers show on hover.
@@ -48,7 +48,7 @@ pub fn svg_with(graph: &Graph, nodes: usize) -> String {
 /// The nodes the layout places for `graph`: its states, plus one connector per edge
 /// label and per rank a long edge passes through (with the rank optimizer off). The
 /// placement's time grows faster than the square of it (0.1 s at 1 809 nodes, 1.6 s at
-/// 5 341), so the view draws no more than [`crate::graph::LAYOUT_NODE_LIMIT`]. Computed by
+/// 5 341), so the `graph` view draws no more than a limit of them. Computed by
 /// the library's own lowering steps, the ones `do_it` starts with, on a graph of its own.
 pub fn layout_nodes(graph: &Graph) -> usize {
     let mut vg = visual(graph);

@@ -8,29 +8,44 @@
 //! - [`lines`]: the AOV list's text, one `name = expression` per line.
 //! - [`list`]: the lines parsed in one dialect ([`list::ExploreDialect`]), the list
 //!   compiled.
-//! - [`check`]: the `check` view.
-//! - [`graph`]: the `graph` view: the automaton explored from its start ([`graph::Explored`]).
+//! - [`check`](mod@check): the `check` view.
+//! - [`automaton`]: the list's automaton explored from its start ([`automaton::Explored`]),
+//!   the `graph` view's reply types and the state and edge ids every view shares.
+//! - [`graph`](mod@graph): the `graph` view: the automaton with its limits for drawing.
 //! - [`draw`]: the graph drawn as SVG (layout by `layout-rs`), with ids per state and edge.
+//! - [`paths`](mod@paths): the `paths` view: each AOV's shortest paths and near misses.
+//! - [`partition`](mod@partition): the `partition` view: overlaps, gap and outside paths as rows.
+//! - [`explain`](mod@explain): the `explain` view: a path stepped through the automaton.
+//! - [`equiv`](mod@equiv): the `equiv` view: two expressions or lines compared.
 //!
 //! Every view answers within lpe's budgets and never panics: a body it cannot read is a
 //! 4xx, never a crash (`tests/robust.rs` throws random bytes and random JSON at each).
 
+pub mod automaton;
 pub mod check;
 pub mod draw;
+pub mod equiv;
+pub mod explain;
 pub mod graph;
 pub mod lines;
 pub mod list;
+pub mod partition;
+pub mod paths;
 pub mod request;
 
 use lpe::with_dialect;
 use serde::Serialize;
 
+pub use automaton::Graph;
 pub use check::Check;
-pub use graph::Graph;
+pub use equiv::Equiv;
+pub use explain::Explain;
+pub use partition::PartitionView;
+pub use paths::Paths;
 pub use request::{ApiError, Request, Setting, MAX_BODY_BYTES};
 
 /// The views, by the name the URL ends with (`/api/check`).
-pub const VIEWS: [&str; 2] = ["check", "graph"];
+pub const VIEWS: [&str; 6] = ["check", "graph", "paths", "partition", "explain", "equiv"];
 
 /// A view's reply: an HTTP status and its JSON body (`{"error": "..."}` for a 4xx).
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -75,6 +90,10 @@ pub fn answer(view: &str, body: &[u8]) -> Reply {
     let reply = match view {
         "check" => run(body, check),
         "graph" => run(body, graph),
+        "paths" => run(body, paths),
+        "partition" => run(body, partition),
+        "explain" => run(body, explain),
+        "equiv" => run(body, equiv),
         _ => Err(ApiError {
             status: 404,
             message: format!("no view `{view}` (views: {})", VIEWS.join(", ")),
@@ -102,4 +121,28 @@ pub fn check(request: &Request) -> Result<Check, ApiError> {
 pub fn graph(request: &Request) -> Result<Graph, ApiError> {
     let setting = request.setting()?;
     with_dialect!(setting.dialect, D => graph::graph_in::<D>(request, &setting))
+}
+
+/// The `paths` view: each AOV's shortest paths and near misses.
+pub fn paths(request: &Request) -> Result<Paths, ApiError> {
+    let setting = request.setting()?;
+    with_dialect!(setting.dialect, D => paths::paths_in::<D>(request, &setting))
+}
+
+/// The `partition` view: the list against the universe.
+pub fn partition(request: &Request) -> Result<PartitionView, ApiError> {
+    let setting = request.setting()?;
+    with_dialect!(setting.dialect, D => partition::partition_in::<D>(request, &setting))
+}
+
+/// The `explain` view: `path` stepped through the list's automaton.
+pub fn explain(request: &Request) -> Result<Explain, ApiError> {
+    let setting = request.setting()?;
+    with_dialect!(setting.dialect, D => explain::explain_in::<D>(request, &setting))
+}
+
+/// The `equiv` view: `left` against `right`.
+pub fn equiv(request: &Request) -> Result<Equiv, ApiError> {
+    let setting = request.setting()?;
+    with_dialect!(setting.dialect, D => equiv::equiv_in::<D>(request, &setting))
 }

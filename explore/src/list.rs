@@ -1,6 +1,9 @@
 //! An AOV list read in one dialect: every line parsed ([`Parsed`]), and the list
 //! compiled into one [`AovSet`] for the views that need the whole list to parse.
 
+use std::time::Duration;
+
+use lpe::analysis::{AnalysisBudget, DEFAULT_STEPS};
 use lpe::{AovSet, Options};
 use lpe_lint::check::dialect::{LintDialect, ParseFailure};
 use lpe_profile::ProfileDialect;
@@ -79,4 +82,53 @@ pub fn compile<D: ExploreDialect>(
 ) -> Result<AovSet<D>, ApiError> {
     AovSet::<D>::compile_under(aovs, registration, &Options::default())
         .map_err(|e| ApiError::unprocessable(format!("the list does not compile: {e}")))
+}
+
+/// Wall-clock time one analysis of a view may take (besides lpe's default step budget),
+/// so that a page waits at most this long for `partition` or `equiv`; past either the
+/// answer is undecided, a value of the reply, not an error.
+pub const ANALYSIS_TIME: Duration = Duration::from_secs(2);
+
+/// The budget of every analysis a view runs: lpe's default steps and [`ANALYSIS_TIME`].
+pub fn budget() -> AnalysisBudget {
+    AnalysisBudget {
+        steps: DEFAULT_STEPS,
+        time: Some(ANALYSIS_TIME),
+    }
+}
+
+/// A witness the reference matcher does not confirm: a bug of lpe's, answered 500 so
+/// that it is never shown as a fact about the user's expressions.
+pub fn disagreement(e: lpe_lint::witness::Disagreement) -> ApiError {
+    ApiError {
+        status: 500,
+        message: e.to_string(),
+    }
+}
+
+impl<D: ExploreDialect> Parsed<D> {
+    /// The expression of line `name`, if the list has a line of that name that parses.
+    pub fn line(&self, name: &str) -> Option<&D::Lpe> {
+        self.lines
+            .iter()
+            .find(|(l, _)| l.name == name)
+            .and_then(|(_, p)| p.as_ref().ok())
+    }
+}
+
+/// `text` parsed as one expression under `registration`: a 422 naming `field` and the
+/// column on failure.
+pub fn expression<D: ExploreDialect>(
+    field: &str,
+    text: &str,
+    registration: &D::Registration,
+) -> Result<D::Lpe, ApiError> {
+    D::parse_source(text, registration).map_err(|e| {
+        let column = e
+            .source
+            .get(..e.span.start)
+            .map_or(0, |s| s.chars().count())
+            + 1;
+        ApiError::unprocessable(format!("`{field}` column {column}: {}", e.message))
+    })
 }

@@ -2,7 +2,8 @@
 //! compiled set and through each AOV alone, one row per vertex (its class, the set's
 //! state, the AOVs still reachable), then the AOVs it lands in or, for a path landing
 //! nowhere, the longest live prefix and the closest AOV. `lpe-check explain` prints it;
-//! the Python package's `AovSet.explain` returns it.
+//! the Python package's `AovSet.explain` returns it; the explorer's `explain` view
+//! (`lpe-explore`) answers from the same [`Walk`].
 
 use lpe::{AovSet, Dialect, State};
 use tabled::builder::Builder;
@@ -23,31 +24,73 @@ pub fn explain<D: Dialect>(
     registration: &D::Registration,
     path: &D::Path,
 ) -> Result<Explanation, lpe::CompileError> {
-    let opts = lpe::Options::default();
-    let set = AovSet::<D>::compile_under(aovs, registration, &opts)?;
-    let alone: Vec<AovSet<D>> = aovs
-        .iter()
-        .map(|a| AovSet::<D>::compile_under(std::slice::from_ref(a), registration, &opts))
-        .collect::<Result<_, _>>()?;
-    Ok(walk(aovs, &set, &alone, D::vertices(path)))
+    let set = AovSet::<D>::compile_under(aovs, registration, &lpe::Options::default())?;
+    let alone = alone(aovs, registration)?;
+    let vertices = D::vertices(path);
+    Ok(report(aovs, vertices, &walk(&set, &alone, vertices)))
 }
 
-/// The report of one path, `vertices`, through `set` and through each AOV `alone` (the
-/// joint state only says whether any AOV is still reachable). States are numbered in the
-/// order this path first reaches them, the start `s0`; `dead` once no AOV can match.
-fn walk<D: Dialect>(
+/// Each AOV of `aovs` compiled alone, as [`walk`] steps them.
+pub fn alone<D: Dialect>(
     aovs: &[(String, D::Lpe)],
-    set: &AovSet<D>,
-    alone: &[AovSet<D>],
-    vertices: &[D::Vertex],
-) -> Explanation {
+    registration: &D::Registration,
+) -> Result<Vec<AovSet<D>>, lpe::CompileError> {
+    let opts = lpe::Options::default();
+    aovs.iter()
+        .map(|a| AovSet::<D>::compile_under(std::slice::from_ref(a), registration, &opts))
+        .collect()
+}
+
+/// One vertex of a [`Walk`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Step {
+    /// The vertex's class in the set.
+    pub class: usize,
+    /// The set's state after the vertex.
+    pub state: State,
+    /// Whether no AOV can match any continuation from `state`.
+    pub dead: bool,
+    /// The AOVs (indices) still reachable after the vertex, each stepped alone.
+    pub reachable: Vec<usize>,
+}
+
+/// A path stepped through a set and through each of its AOVs alone.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Walk {
+    /// The set's state before the first vertex.
+    pub start: State,
+    /// One step per vertex.
+    pub steps: Vec<Step>,
+    /// Indices of the AOVs the whole path matches.
+    pub landed: Vec<usize>,
+    /// For each AOV, how many vertices it stayed reachable through.
+    pub alive_for: Vec<usize>,
+}
+
+impl Walk {
+    /// For a path landing nowhere: the AOV that stayed reachable longest (the closest
+    /// miss) and for how many vertices; `None` if it landed, or no AOV survived the
+    /// first vertex.
+    pub fn closest(&self) -> Option<(usize, usize)> {
+        if !self.landed.is_empty() {
+            return None;
+        }
+        let longest = self.alive_for.iter().copied().max().unwrap_or(0);
+        if longest == 0 {
+            return None;
+        }
+        let aov = self.alive_for.iter().position(|&n| n == longest)?;
+        Some((aov, longest))
+    }
+}
+
+/// Steps `vertices` through `set` and through each AOV `alone` (in the set's order; the
+/// joint state only says whether any AOV is still reachable).
+pub fn walk<D: Dialect>(set: &AovSet<D>, alone: &[AovSet<D>], vertices: &[D::Vertex]) -> Walk {
     let mut states: Vec<_> = alone.iter().map(|a| a.start()).collect();
-    // How many vertices each AOV stayed reachable through.
-    let mut alive_for = vec![0usize; aovs.len()];
+    let mut alive_for = vec![0usize; alone.len()];
     let mut s = set.start();
-    let mut seen: Vec<State> = vec![s];
-    let mut table = Builder::default();
-    table.push_record(["#", "vertex", "class", "state", "still reachable"]);
+    let mut steps = Vec::with_capacity(vertices.len());
     for (k, v) in vertices.iter().enumerate() {
         let class = set.classify(v);
         s = set.step_class(s, class);
@@ -56,32 +99,58 @@ fn walk<D: Dialect>(
             states[i] = a.step_class(states[i], a.classify(v));
             if !a.is_dead(states[i]) {
                 alive_for[i] = k + 1;
-                reachable.push(aovs[i].0.as_str());
+                reachable.push(i);
             }
         }
-        let reach = if reachable.is_empty() {
+        steps.push(Step {
+            class: class.index(),
+            state: s,
+            dead: set.is_dead(s),
+            reachable,
+        });
+    }
+    Walk {
+        start: set.start(),
+        steps,
+        landed: set.matches(s).iter().collect(),
+        alive_for,
+    }
+}
+
+/// The printed report of `walk`, the path `vertices` through the set of `aovs`. States
+/// are numbered in the order this path first reaches them, the start `s0`; `dead` once
+/// no AOV can match.
+fn report<E>(aovs: &[(String, E)], vertices: &[impl ToString], walk: &Walk) -> Explanation {
+    let mut seen: Vec<State> = vec![walk.start];
+    let mut table = Builder::default();
+    table.push_record(["#", "vertex", "class", "state", "still reachable"]);
+    for (k, (v, step)) in vertices.iter().zip(&walk.steps).enumerate() {
+        let reach = if step.reachable.is_empty() {
             "(none: dead)".to_string()
         } else {
-            reachable.join(", ")
+            let names: Vec<&str> = step.reachable.iter().map(|&i| aovs[i].0.as_str()).collect();
+            names.join(", ")
         };
-        let state = if set.is_dead(s) {
+        let state = if step.dead {
             "dead".to_string()
         } else {
-            let id = seen.iter().position(|&x| x == s).unwrap_or_else(|| {
-                seen.push(s);
-                seen.len() - 1
-            });
+            let id = seen
+                .iter()
+                .position(|&x| x == step.state)
+                .unwrap_or_else(|| {
+                    seen.push(step.state);
+                    seen.len() - 1
+                });
             format!("s{id}")
         };
         table.push_record([
             (k + 1).to_string(),
             v.to_string(),
-            class.index().to_string(),
+            step.class.to_string(),
             state,
             reach,
         ]);
     }
-    let landed: Vec<usize> = set.matches(s).iter().collect();
     let shown: Vec<String> = vertices.iter().map(ToString::to_string).collect();
     let mut text = format!(
         "path {} against {} AOVs\n{}\n",
@@ -89,33 +158,33 @@ fn walk<D: Dialect>(
         aovs.len(),
         table.build().with(Style::markdown())
     );
-    if landed.is_empty() {
-        let longest = alive_for.iter().copied().max().unwrap_or(0);
+    if walk.landed.is_empty() {
         text.push_str("lands in no AOV\n");
-        if longest == 0 {
-            text.push_str("no AOV can match any path starting with its first vertex\n");
-        } else {
-            let closest = alive_for
-                .iter()
-                .position(|&n| n == longest)
-                .expect("the maximum is in the list");
-            let how = if longest == vertices.len() {
-                "still reachable after the last vertex: the path ends too early for it".to_string()
-            } else {
-                format!("dead at vertex {}", longest + 1)
-            };
-            text.push_str(&format!(
-                "longest live prefix: {} ({longest} of {} vertices)\nclosest AOV: {} ({how})\n",
-                shown[..longest].join(" "),
-                vertices.len(),
-                aovs[closest].0
-            ));
+        match walk.closest() {
+            None => text.push_str("no AOV can match any path starting with its first vertex\n"),
+            Some((closest, longest)) => {
+                let how = if longest == vertices.len() {
+                    "still reachable after the last vertex: the path ends too early for it"
+                        .to_string()
+                } else {
+                    format!("dead at vertex {}", longest + 1)
+                };
+                text.push_str(&format!(
+                    "longest live prefix: {} ({longest} of {} vertices)\nclosest AOV: {} ({how})\n",
+                    shown[..longest].join(" "),
+                    vertices.len(),
+                    aovs[closest].0
+                ));
+            }
         }
     } else {
-        let names: Vec<&str> = landed.iter().map(|&i| aovs[i].0.as_str()).collect();
+        let names: Vec<&str> = walk.landed.iter().map(|&i| aovs[i].0.as_str()).collect();
         text.push_str(&format!("lands in: {}\n", names.join(", ")));
     }
-    Explanation { landed, text }
+    Explanation {
+        landed: walk.landed.clone(),
+        text,
+    }
 }
 
 #[cfg(test)]

@@ -66,3 +66,36 @@ where
     }
     Ok(())
 }
+
+/// Re-checks both witnesses of a comparison of `a` (named `a_name`) with `b`: the path
+/// only `a` matches, and the path only `b` matches, each as claimed.
+pub fn recheck_comparison<L>(
+    (a_name, a): (&str, &L),
+    (b_name, b): (&str, &L),
+    c: &lpe::analysis::Comparison<PathOf<L>>,
+) -> Result<(), Disagreement>
+where
+    L: DialectLpe,
+    L::Dialect: Checked,
+{
+    for (path, in_a) in [(&c.first_only, true), (&c.second_only, false)] {
+        if let Some(path) = path {
+            recheck(
+                path,
+                &[
+                    Expect {
+                        name: a_name,
+                        lpe: a,
+                        matches: in_a,
+                    },
+                    Expect {
+                        name: b_name,
+                        lpe: b,
+                        matches: !in_a,
+                    },
+                ],
+            )?;
+        }
+    }
+    Ok(())
+}

@@ -19,7 +19,7 @@ use lpe::{with_dialect, DialectLpe};
 
 use crate::dialect::CliDialect;
 use crate::input::{bad_input, DialectArgs};
-use crate::witness::{self, Checked, Disagreement, Expect, PathOf};
+use crate::witness::{self, Checked, Disagreement, PathOf};
 
 /// Arguments of `lpe-check equiv`.
 #[derive(clap::Args, Debug)]
@@ -93,33 +93,15 @@ where
     L::Dialect: Checked,
 {
     let (sa, sb) = (a.to_string(), b.to_string());
-    let check = |path: &PathOf<L>, in_a: bool| {
-        witness::recheck(
-            path,
-            &[
-                Expect {
-                    name: &sa,
-                    lpe: a,
-                    matches: in_a,
-                },
-                Expect {
-                    name: &sb,
-                    lpe: b,
-                    matches: !in_a,
-                },
-            ],
-        )
-    };
+    lpe_lint::witness::recheck_comparison((&sa, a), (&sb, b), c)?;
     if c.equivalent() {
         return Ok("equivalent\n".to_string());
     }
     let mut out = String::from("not equivalent\n");
     if let Some(p) = &c.first_only {
-        check(p, true)?;
         out.push_str(&format!("only A: {p}\n"));
     }
     if let Some(p) = &c.second_only {
-        check(p, false)?;
         out.push_str(&format!("only B: {p}\n"));
     }
     match (&c.first_only, &c.second_only) {

@@ -115,79 +115,73 @@ where
     L: DialectLpe + Display,
     L::Dialect: Checked,
 {
-    let uname = format!("universe {universe}");
+    let remainder = recheck(aovs, universe, p)?;
     let mut out = format!("partition of {universe} by {} AOVs\n", aovs.len());
     for (i, j, path) in &p.overlaps {
-        let (a, b) = (&aovs[*i], &aovs[*j]);
-        witness::recheck(
-            path,
-            &[
-                Expect {
-                    name: &uname,
-                    lpe: universe,
-                    matches: true,
-                },
-                Expect {
-                    name: &a.0,
-                    lpe: &a.1,
-                    matches: true,
-                },
-                Expect {
-                    name: &b.0,
-                    lpe: &b.1,
-                    matches: true,
-                },
-            ],
-        )?;
-        out.push_str(&format!("overlap: {} & {}: {path}\n", a.0, b.0));
+        out.push_str(&format!(
+            "overlap: {} & {}: {path}\n",
+            aovs[*i].0, aovs[*j].0
+        ));
     }
-    if let Some(path) = &p.gap {
-        let mut expects = vec![Expect {
-            name: &uname,
-            lpe: universe,
-            matches: true,
-        }];
-        expects.extend(aovs.iter().map(|(n, l)| Expect {
-            name: n,
-            lpe: l,
-            matches: false,
-        }));
-        witness::recheck(path, &expects)?;
-        out.push_str(&format!("gap: {path}\n"));
-        let rest = lpe::analysis::remainder(aovs, universe);
-        witness::recheck(
-            path,
-            &[Expect {
-                name: "remainder",
-                lpe: &rest,
-                matches: true,
-            }],
-        )?;
-        out.push_str(&format!("remainder: {rest}\n"));
+    if let (Some(path), Some(rest)) = (&p.gap, &remainder) {
+        out.push_str(&format!("gap: {path}\nremainder: {rest}\n"));
     }
     for (i, path) in &p.outside {
-        let a = &aovs[*i];
-        witness::recheck(
-            path,
-            &[
-                Expect {
-                    name: &uname,
-                    lpe: universe,
-                    matches: false,
-                },
-                Expect {
-                    name: &a.0,
-                    lpe: &a.1,
-                    matches: true,
-                },
-            ],
-        )?;
-        out.push_str(&format!("outside: {}: {path}\n", a.0));
+        out.push_str(&format!("outside: {}: {path}\n", aovs[*i].0));
     }
     if p.is_clean() {
         out.push_str("clean partition\n");
     }
     Ok(out)
+}
+
+/// Re-checks every witness of `p` with the reference matcher: an overlap's path is in
+/// the universe and both AOVs, the gap's in the universe and no AOV and in the
+/// remainder, an outside path in its AOV and not the universe. Returns the remainder
+/// AOV (the universe minus every AOV) when there is a gap.
+pub fn recheck<L>(
+    aovs: &[(String, L)],
+    universe: &L,
+    p: &Partition<PathOf<L>>,
+) -> Result<Option<L>, Disagreement>
+where
+    L: DialectLpe + Display,
+    L::Dialect: Checked,
+{
+    let uname = format!("universe {universe}");
+    for (i, j, path) in &p.overlaps {
+        let (a, b) = (&aovs[*i], &aovs[*j]);
+        witness::recheck(
+            path,
+            &[
+                expect(&uname, universe, true),
+                expect(&a.0, &a.1, true),
+                expect(&b.0, &b.1, true),
+            ],
+        )?;
+    }
+    let mut remainder = None;
+    if let Some(path) = &p.gap {
+        let mut expects = vec![expect(&uname, universe, true)];
+        expects.extend(aovs.iter().map(|(n, l)| expect(n, l, false)));
+        witness::recheck(path, &expects)?;
+        let rest = lpe::analysis::remainder(aovs, universe);
+        witness::recheck(path, &[expect("remainder", &rest, true)])?;
+        remainder = Some(rest);
+    }
+    for (i, path) in &p.outside {
+        let a = &aovs[*i];
+        witness::recheck(
+            path,
+            &[expect(&uname, universe, false), expect(&a.0, &a.1, true)],
+        )?;
+    }
+    Ok(remainder)
+}
+
+/// What `lpe` must answer on a witness.
+fn expect<'a, L>(name: &'a str, lpe: &'a L, matches: bool) -> Expect<'a, L> {
+    Expect { name, lpe, matches }
 }
 
 #[cfg(test)]
