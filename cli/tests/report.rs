@@ -161,7 +161,9 @@ fn the_report_refers_to_nothing_on_the_network() {
 }
 
 /// An AOV list file (any other extension) is read line by line: lint's parse error and
-/// the check view's both sit on the file's line 3 (a comment line counted).
+/// the check view's both sit on the file's line 3 (a comment line counted), and the
+/// other views are of the lines that parse. Fault caught: every line handed to the
+/// drawing (the list then does not compile: no drawing, a 422).
 #[test]
 fn an_aov_list_file_keeps_its_line_numbers() {
     let dir = scratch("list");
@@ -196,6 +198,18 @@ fn an_aov_list_file_keeps_its_line_numbers() {
     let check = &entry["views"]["check"]["lines"][1];
     assert_eq!(check["error"]["line"], 3);
     assert_eq!(check["error"]["message"], "unclosed `<`");
+    // The drawing and the partition are of the one AOV that parses.
+    assert_eq!(entry["parsed"], 1);
+    let graph = &entry["views"]["graph"];
+    assert!(graph["error"].is_null(), "{graph}");
+    let accepting: Vec<&Value> = graph["states"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .flat_map(|s| s["accepts"].as_array().unwrap())
+        .collect();
+    assert_eq!(accepting, ["diffuse"]);
+    assert_eq!(entry["views"]["partition"]["rows"][0]["kind"], "gap");
 }
 
 /// A file that cannot be read is an error naming it (exit 2), and no page is written.

@@ -65,7 +65,7 @@ def browser(user_data_dir):
     for flag in [
         "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
         "--disable-background-networking", "--disable-component-update", "--disable-sync",
-        "--user-data-dir=" + user_data_dir, "--window-size=1400,1300",
+        "--user-data-dir=" + user_data_dir, "--window-size=1200,1000",
     ]:
         options.add_argument(flag)
     # Every request the browser makes is in the performance log (CDP Network events).
@@ -160,7 +160,7 @@ def step_equivalence(driver):
 
 def step_report_offline(driver, lpe_check):
     page = os.path.join(OUT, "report.html")
-    fixtures = sorted(glob.glob(os.path.join(ROOT, "tests", "testdata", "usd", "*.usda")))
+    fixtures = sorted(glob.glob("tests/testdata/usd/*.usda", root_dir=ROOT))
     subprocess.run([lpe_check, "report", *fixtures, "--html", page], check=True, cwd=ROOT, stdout=subprocess.DEVNULL)
     requests_made(driver)  # forget the explorer's requests
     driver.execute_cdp_cmd("Network.enable", {})

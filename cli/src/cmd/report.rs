@@ -116,25 +116,35 @@ fn entry(file: &Path, inis: &[PathBuf], lang: &DialectArgs) -> Result<Value, Fai
         .filter(|f| mine(f))
         .map(finding)
         .collect();
-    let list = if read::format_of(file).is_none() {
-        // An AOV list goes to the views as written, so their line numbers are the file's.
+    let line = |a: &&Value, text: Option<&str>| {
+        format!(
+            "{} = {}\n",
+            a["name"].as_str().unwrap_or_default(),
+            text.unwrap_or_default()
+        )
+    };
+    // The check view reads every AOV: an AOV list as written, so that its line numbers
+    // are the file's; else lint's canonical form where the AOV parsed (the ini files'
+    // macros expanded and a renderer's `lpe:` mark read, which the views, given no ini,
+    // could not do), the source as written where it did not, so its error shows.
+    let every = if read::format_of(file).is_none() {
         std::fs::read_to_string(file).map_err(|e| Failed::BadInput(format!("{name}: {e}")))?
     } else {
-        // Lint's canonical form where the AOV parsed: the ini files' macros expanded
-        // and a renderer's `lpe:` mark read, which the views (given no ini) could not
-        // do; the source as written where it did not, so the check view shows the error.
         aovs.iter()
-            .map(|a| {
-                let text = a["expression"].as_str().or(a["source"].as_str());
-                format!(
-                    "{} = {}\n",
-                    a["name"].as_str().unwrap_or_default(),
-                    text.unwrap_or_default()
-                )
-            })
+            .map(|a| line(a, a["expression"].as_str().or(a["source"].as_str())))
             .collect()
     };
-    let views = views(&list, &linted);
+    // The other views need the whole list to parse: they get the AOVs that do, so a
+    // file with one bad line still has its drawing and partition.
+    let parsed: Vec<&&Value> = aovs
+        .iter()
+        .filter(|a| a["expression"].is_string())
+        .collect();
+    let parsed_list: String = parsed
+        .iter()
+        .map(|a| line(a, a["expression"].as_str()))
+        .collect();
+    let views = views(&every, &parsed_list, &linted);
     Ok(json!({
         "file": name,
         "reading": reading(&linted),
@@ -144,23 +154,26 @@ fn entry(file: &Path, inis: &[PathBuf], lang: &DialectArgs) -> Result<Value, Fai
             "location": location(&a["location"]),
         })).collect::<Vec<_>>(),
         "findings": findings,
+        "parsed": parsed.len(),
         "views": views,
     }))
 }
 
-/// The views of `list` read as `linted` read the file: each view's reply, or
-/// `{"error": ...}` when it gave none.
-fn views(list: &str, linted: &Linted) -> Value {
+/// The views, read as `linted` read the file: `check` of `every` line, the others of
+/// the `parsed` ones; each view's reply, or `{"error": ...}` when it gave none.
+fn views(every: &str, parsed: &str, linted: &Linted) -> Value {
     let renderer = linted
         .profile
         .as_ref()
         .filter(|p| lpe_profile::by_name(&p.name).is_ok())
         .map(|p| p.name.clone());
-    let body =
-        json!({ "aovs": list, "dialect": linted.dialect.name(), "renderer": renderer }).to_string();
+    let body = |aovs: &str| {
+        json!({ "aovs": aovs, "dialect": linted.dialect.name(), "renderer": renderer }).to_string()
+    };
     let mut out = serde_json::Map::new();
     for view in VIEWS {
-        let reply = lpe_explore::answer(view, body.as_bytes());
+        let list = if view == "check" { every } else { parsed };
+        let reply = lpe_explore::answer(view, body(list).as_bytes());
         let value = serde_json::from_str(&reply.json).unwrap_or_else(
             |e| json!({ "error": format!("the {view} view's reply is no JSON: {e}") }),
         );
