@@ -4,9 +4,12 @@ Debian's chromedriver by Selenium (pinned in .ci/browser-requirements.txt).
 Starts `lpe-check serve --port 0`, loads the page and does what a person would: types an
 expression with an error and reads the caret message, types a valid list and finds the
 automaton drawn and the partition table, types a path and finds its trace highlighted on
-the drawing, compares two lines. Then writes a report with `lpe-check report` and opens
+the drawing, compares two lines, switches the language. Then writes a report with `lpe-check report` and opens
 it from a file:// URL with the network off, checking that the page asks for nothing
 but its own file. A screenshot of each step goes to target/explorer/*.png.
+
+Faults caught: the page leaving the selected language out of its requests; only the
+current vertex of a trace highlighted (not the path up to it).
 
     python3 tests/browser/explorer.py [path/to/lpe-check]
 
@@ -28,7 +31,7 @@ from selenium.common.exceptions import TimeoutException
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
-from selenium.webdriver.support.ui import WebDriverWait
+from selenium.webdriver.support.ui import Select, WebDriverWait
 
 ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 OUT = os.path.join(ROOT, "target", "explorer")
@@ -136,17 +139,22 @@ def step_drawing_and_partition(driver):
 
 
 def step_trace(driver):
+    """`C RD1 L` through the list's automaton: the start s0, `C` to s1, `RD1` to s2 (the
+    diffuse branch), `L` to s5 (diffuse's accepting state); states are numbered
+    breadth-first, so these ids are fixed by the list."""
     type_into(driver, "path", "C RD1 L")
-    lit = wait_for(driver, "the trace highlighted", lambda d: d.find_elements(By.CSS_SELECTOR, ".graph svg .lpe-trace"))
-    ids = {e.get_attribute("id") for e in lit}
-    assert any(i.startswith("s") for i in ids) and any(i.startswith("e") for i in ids), ids
-    assert "diffuse" in driver.find_element(By.ID, "explain").text
+    want = {"s0", "e0-1", "s1", "e1-2", "s2", "e2-5", "s5"}
+    lit = lambda d: {e.get_attribute("id") for e in d.find_elements(By.CSS_SELECTOR, ".graph svg .lpe-trace")}
+    wait_for(driver, "the trace highlighted", lambda d: lit(d) == want or None)
+    current = lambda d: {e.get_attribute("id") for e in d.find_elements(By.CSS_SELECTOR, ".graph svg .lpe-current")}
+    assert current(driver) == {"e2-5", "s5"}, current(driver)
+    assert "Lands in diffuse" in driver.find_element(By.ID, "explain").text
     shot(driver, "3-trace")
-    # Stepping back one vertex moves the current mark to an earlier state.
-    current = [e.get_attribute("id") for e in driver.find_elements(By.CSS_SELECTOR, ".graph svg .lpe-current")]
+    # One vertex back: the trace ends at s2, reached by RD1.
     driver.find_element(By.ID, "step-prev").click()
-    earlier = [e.get_attribute("id") for e in driver.find_elements(By.CSS_SELECTOR, ".graph svg .lpe-current")]
-    assert earlier and earlier != current, (current, earlier)
+    assert current(driver) == {"e1-2", "s2"}, current(driver)
+    assert lit(driver) == {"s0", "e0-1", "s1", "e1-2", "s2"}, lit(driver)
+    driver.find_element(By.ID, "step-next").click()
 
 
 def step_equivalence(driver):
@@ -156,6 +164,19 @@ def step_equivalence(driver):
     type_into(driver, "right", "C<RD>[<L.>O]")
     wait_for(driver, "the distinguishing path", lambda d: "distinguishing path" in d.find_element(By.ID, "equiv").text)
     shot(driver, "4-equivalence")
+
+
+def step_language(driver):
+    """`C<R[GS]>.*[LO]` is OSL's (G: glossy), an error in RenderMan's dialect: the
+    selector's choice reaches the API, for a dialect and for a renderer's profile."""
+    language = Select(driver.find_element(By.ID, "language"))
+    type_into(driver, "aovs", "glossy = C<R[GS]>.*[LO]")
+    wait_for(driver, "RenderMan's error on G", lambda d: "unexpected character `G`" in d.find_element(By.ID, "diagnostics").text)
+    for choice in ["dialect:osl", "renderer:karma"]:
+        language.select_by_value(choice)
+        wait_for(driver, "the line to parse as " + choice, lambda d: "Every line parses" in d.find_element(By.ID, "diagnostics").text)
+        language.select_by_value("dialect:renderman")
+        wait_for(driver, "the error again", lambda d: "unexpected character `G`" in d.find_element(By.ID, "diagnostics").text)
 
 
 def step_report_offline(driver, lpe_check):
@@ -193,6 +214,7 @@ def main():
         ("a list is drawn and partitioned", lambda: step_drawing_and_partition(driver)),
         ("a path's trace is highlighted", lambda: step_trace(driver)),
         ("two lines are compared", lambda: step_equivalence(driver)),
+        ("the language selector reaches the API", lambda: step_language(driver)),
         ("the report opens offline, asking for nothing", lambda: step_report_offline(driver, lpe_check)),
     ]
     failed = 0
