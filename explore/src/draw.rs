@@ -37,9 +37,10 @@ pub fn svg(graph: &Graph) -> String {
 pub fn svg_with(graph: &Graph, nodes: usize) -> String {
     let mut vg = visual(graph);
     let mut canvas = Canvas::default();
-    // The crossing reduction (and the rank optimizer the flag also turns off) costs
-    // most of the time on larger layouts: 32 ms at 173 nodes, 0.37 s at 461, where the
-    // placement alone takes 20 ms; past the limit the drawing is read by hovering anyway.
+    // The crossing reduction (and the rank optimizer the flag also turns off) grows
+    // much faster than the placement and dominates past a few hundred nodes (the
+    // 193-state list of `cargo bench -p lpe-bench --bench explore`, 521 nodes, draws in
+    // 30 ms without it); past the limit the drawing is read by hovering anyway.
     let skip_optimizations = nodes > CROSSING_LIMIT;
     vg.do_it(false, skip_optimizations, false, &mut canvas);
     canvas.finish()
@@ -47,9 +48,9 @@ pub fn svg_with(graph: &Graph, nodes: usize) -> String {
 
 /// The nodes the layout places for `graph`: its states, plus one connector per edge
 /// label and per rank a long edge passes through (with the rank optimizer off). The
-/// placement's time grows faster than the square of it (0.1 s at 1 809 nodes, 1.6 s at
-/// 5 341), so the `graph` view draws no more than a limit of them. Computed by
-/// the library's own lowering steps, the ones `do_it` starts with, on a graph of its own.
+/// placement's time grows faster than the square of it, so the `graph` view draws no
+/// more than a limit of them. Computed by the library's own lowering steps, the ones
+/// `do_it` starts with, on a graph of its own.
 pub fn layout_nodes(graph: &Graph) -> usize {
     let mut vg = visual(graph);
     vg.to_valid_dag();
@@ -150,8 +151,8 @@ impl Shape {
     }
 }
 
-/// Text made safe inside an SVG element or attribute.
-fn escape(s: &str) -> String {
+/// Text made safe inside an SVG or HTML element or attribute.
+pub fn escape(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
         match c {

@@ -6,7 +6,8 @@
 use lpe_lint::explain::{alone, walk};
 use serde::Serialize;
 
-use crate::automaton::{edge_id, state_id, Explored, EXPLORE_LIMIT};
+use crate::automaton::{edge_id, state_id, Explored};
+use crate::graph::DRAW_LIMIT;
 use crate::list::{ExploreDialect, Parsed};
 use crate::request::{ApiError, Request, Setting};
 
@@ -36,7 +37,8 @@ pub struct ExplainStep {
     pub class: usize,
     /// The state before it (`sN`, as in `graph`).
     pub from: Option<String>,
-    /// The state after it; `null` once dead (or past the explored states).
+    /// The state after it; `null` once dead, or for a state past the first 301 of the
+    /// breadth-first order (the automaton is then too large to draw).
     pub to: Option<String>,
     /// The edge taken (`eA-B`, as in `graph`), if both states are live.
     pub edge: Option<String>,
@@ -75,7 +77,9 @@ pub(crate) fn explain_in<D: ExploreDialect>(
     let aovs = parsed.all()?;
     let alone = alone(&aovs, &parsed.registration)
         .map_err(|e| ApiError::unprocessable(format!("an AOV does not compile: {e}")))?;
-    let explored = Explored::of(&set, EXPLORE_LIMIT);
+    // Ids only matter where `graph` can draw: its first states in the same breadth-first
+    // order (a lazy set's 20 000 would cost a third of a second for nothing).
+    let explored = Explored::of(&set, DRAW_LIMIT + 1);
     let vertices = D::vertices(&path);
     let walked = walk(&set, &alone, vertices);
     let id = |s| explored.ids.get(&s).copied();

@@ -20,14 +20,15 @@ use crate::request::{ApiError, Request, Setting};
 pub const DRAW_LIMIT: usize = 300;
 
 /// Most edges the view lays out: the library's first lowering step, which makes the
-/// graph acyclic, searches the graph once per edge (a dense 258-state automaton of 641
-/// edges takes 2.6 s there); above it the reply is `too_large` without a layout.
+/// graph acyclic, searches the graph once per edge; above it the reply is `too_large`
+/// without a layout.
 pub const DRAW_EDGE_LIMIT: usize = 400;
 
 /// Most nodes the layout may place ([`draw::layout_nodes`]: the states and a connector
-/// per edge label and per rank a long edge crosses): about 0.1 s of placement. A list
-/// of 193 states needs 521; a dense automaton of 66 states (`C.*<RD>.{5}L`) 1 809, and
-/// one of 130 states 5 341 (1.6 s). Above it the reply is `too_large`.
+/// per edge label and per rank a long edge crosses). A list of 193 states needs 521;
+/// the dense `C.*<RD>.{5}L` (66 states) 1 809 and draws in 0.13 s; `C.*<RD>.{6}L` (130
+/// states) 5 341 and is refused (`cargo bench -p lpe-bench --bench explore`). Above it
+/// the reply is `too_large`.
 pub const LAYOUT_NODE_LIMIT: usize = 2_000;
 
 /// Representative vertices shown on an edge's label before `+N`.

@@ -4,7 +4,7 @@
 //! reference of every view's request and reply.
 //!
 //! - [`request`]: the body read into [`Request`] (within [`MAX_BODY_BYTES`]), the dialect
-//!   and renderer it names ([`Setting`]), [`ApiError`] (the 4xx replies).
+//!   and renderer it names ([`Setting`]), [`ApiError`] (the replies other than 200).
 //! - [`lines`]: the AOV list's text, one `name = expression` per line.
 //! - [`list`]: the lines parsed in one dialect ([`list::ExploreDialect`]), the list
 //!   compiled.
@@ -17,6 +17,7 @@
 //! - [`partition`](mod@partition): the `partition` view: overlaps, gap and outside paths as rows.
 //! - [`explain`](mod@explain): the `explain` view: a path stepped through the automaton.
 //! - [`equiv`](mod@equiv): the `equiv` view: two expressions or lines compared.
+//! - [`html`]: HTML fragments for notebooks (the Python package's `_repr_html_`).
 //!
 //! Every view answers within lpe's budgets and never panics: a body it cannot read is a
 //! 4xx, never a crash (`tests/robust.rs` throws random bytes and random JSON at each).
@@ -27,6 +28,7 @@ pub mod draw;
 pub mod equiv;
 pub mod explain;
 pub mod graph;
+pub mod html;
 pub mod lines;
 pub mod list;
 pub mod partition;
@@ -47,10 +49,11 @@ pub use request::{ApiError, Request, Setting, MAX_BODY_BYTES};
 /// The views, by the name the URL ends with (`/api/check`).
 pub const VIEWS: [&str; 6] = ["check", "graph", "paths", "partition", "explain", "equiv"];
 
-/// A view's reply: an HTTP status and its JSON body (`{"error": "..."}` for a 4xx).
+/// A view's reply: an HTTP status and its JSON body (`{"error": "..."}` otherwise).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Reply {
-    /// 200, or the 4xx of [`ApiError::status`].
+    /// 200, or [`ApiError::status`]: a 4xx for the request, 500 only for a bug of
+    /// lpe's (a witness the reference matcher does not confirm).
     pub status: u16,
     /// The JSON body.
     pub json: String,

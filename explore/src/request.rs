@@ -1,6 +1,6 @@
 //! A view's request: the JSON body read into [`Request`] (within [`MAX_BODY_BYTES`]),
-//! the dialect and renderer profile it names ([`Setting`]), and [`ApiError`], the 4xx
-//! reply of everything that can go wrong before or while a view answers.
+//! the dialect and renderer profile it names ([`Setting`]), and [`ApiError`], the reply
+//! of everything that can go wrong before or while a view answers.
 
 use std::fmt;
 
@@ -44,8 +44,9 @@ pub struct Request {
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ApiError {
     /// 400 (malformed body, missing or unknown field value), 404 (unknown view), 413
-    /// (body over [`MAX_BODY_BYTES`]) or 422 (an expression that does not parse or a
-    /// list that does not compile within lpe's limits).
+    /// (body over [`MAX_BODY_BYTES`]), 422 (an expression or path that does not read,
+    /// or a list that does not compile within lpe's limits), or 500 (a witness the
+    /// reference matcher does not confirm: a bug of lpe's).
     pub status: u16,
     /// What went wrong, with the position where there is one.
     pub message: String,

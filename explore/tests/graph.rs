@@ -139,7 +139,7 @@ fn a_large_automaton_gives_its_counts_only() {
 /// but its layout needs over 2 000 nodes (each back edge crosses many ranks), so it is
 /// `too_large` with its layout's size.
 ///
-/// Caught a planted fault: the layout-node check dropped (the drawing took 1.6 s).
+/// Caught a planted fault: the layout-node check dropped (the set was drawn).
 #[test]
 fn a_dense_automaton_is_refused_by_its_layout_size() {
     let (_, v) = ask(r#"{"aovs": "a = C.*<RD>.{6}L"}"#);

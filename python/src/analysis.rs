@@ -253,6 +253,32 @@ impl Partition {
     fn __bool__(&self) -> bool {
         self.clean
     }
+
+    /// The check as a notebook shows it: the explorer's table of findings (overlaps,
+    /// the gap, paths outside) with their witnesses, and the remainder.
+    fn _repr_html_(&self) -> String {
+        use lpe_explore::partition::PartitionRow;
+        let mut rows: Vec<PartitionRow> = self
+            .overlaps
+            .iter()
+            .map(|(a, b, w)| PartitionRow {
+                kind: "overlap",
+                aovs: vec![a.clone(), b.clone()],
+                witness: w.clone(),
+            })
+            .collect();
+        rows.extend(self.gaps.iter().map(|w| PartitionRow {
+            kind: "gap",
+            aovs: Vec::new(),
+            witness: w.clone(),
+        }));
+        rows.extend(self.outside.iter().map(|(a, w)| PartitionRow {
+            kind: "outside",
+            aovs: vec![a.clone()],
+            witness: w.clone(),
+        }));
+        lpe_explore::html::partition(&self.universe, &rows, self.remainder.as_deref())
+    }
 }
 
 /// The members of `partition`: a dict `{name: expr}`, or a list of expressions (each

@@ -1,6 +1,7 @@
 //! `lpe.AovSet`: named AOVs of one dialect compiled into one automaton, matched one
 //! path at a time (`match`), in a batch (`match_many`, parsing and matching with the
-//! GIL released), or explained vertex by vertex (`explain`, `lpe_lint::explain`).
+//! GIL released), or explained vertex by vertex (`explain`, `lpe_lint::explain`); in a
+//! notebook, drawn (`_repr_html_`, `lpe_explore::html`).
 //! The set is generic over the dialect ([`Compiled`]); the Python class holds one of
 //! any dialect behind [`AnySet`].
 
@@ -94,6 +95,8 @@ trait AnySet: Send + Sync {
     ) -> PyResult<Bound<'py, PyList>>;
     /// `AovSet.explain`: how one path went through the set.
     fn explain(&self, path: &Bound<'_, PyAny>) -> PyResult<Explanation>;
+    /// `AovSet._repr_html_`: the explorer's drawing and table of the set.
+    fn html(&self) -> String;
 }
 
 impl<D: PyDialect> AnySet for Compiled<D>
@@ -161,6 +164,10 @@ where
             landed: e.landed.iter().map(|&i| self.aovs[i].0.clone()).collect(),
             text: e.text,
         })
+    }
+
+    fn html(&self) -> String {
+        lpe_explore::html::aov_set(&self.set)
     }
 }
 
@@ -270,6 +277,14 @@ impl AovSet {
     /// How `path` went through the set, vertex by vertex (`lpe-check explain`'s report).
     fn explain(&self, path: &Bound<'_, PyAny>) -> PyResult<Explanation> {
         self.inner.explain(path)
+    }
+
+    /// The set as a notebook shows it: the drawing of its automaton (SVG, states `sN`,
+    /// edges `eA-B`) and a table of its AOVs, as the explorer (`lpe-check serve`) draws
+    /// them; the GIL is released while the layout runs.
+    fn _repr_html_(&self, py: Python<'_>) -> String {
+        let inner = &self.inner;
+        py.allow_threads(|| inner.html())
     }
 }
 
