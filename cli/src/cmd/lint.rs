@@ -101,7 +101,7 @@ pub fn run(args: Args) -> ExitCode {
         ),
     }
     let code = if linted.read_errors.is_empty() {
-        u8::from(linted.findings > 0)
+        u8::from(!linted.outcome.findings.is_empty())
     } else {
         2
     };
@@ -134,8 +134,8 @@ pub struct Linted {
     pub text: String,
     /// The errors of the files that could not be read.
     pub read_errors: Vec<String>,
-    /// How many findings.
-    pub findings: usize,
+    /// The AOVs, partitions and findings, each expression printed in its canonical form.
+    pub outcome: lpe_lint::check::Outcome<String>,
 }
 
 /// Why a lint run checked nothing.
@@ -192,7 +192,7 @@ pub fn lint(
         json: out.json,
         text: out.text,
         read_errors: out.read_errors,
-        findings: out.findings,
+        outcome: out.outcome,
         profile,
     })
 }
@@ -202,7 +202,7 @@ struct Reports {
     json: serde_json::Value,
     text: String,
     read_errors: Vec<String>,
-    findings: usize,
+    outcome: lpe_lint::check::Outcome<String>,
 }
 
 fn lint_in<D: CliDialect>(
@@ -216,7 +216,20 @@ fn lint_in<D: CliDialect>(
             json: out.json(),
             text: out.text(),
             read_errors: out.read_errors().map(str::to_string).collect(),
-            findings: out.outcome.findings.len(),
+            outcome: lpe_lint::check::Outcome {
+                aovs: out
+                    .outcome
+                    .aovs
+                    .into_iter()
+                    .map(|a| lpe_lint::check::Linted {
+                        file: a.file,
+                        decl: a.decl,
+                        lpe: a.lpe.map(|e| e.to_string()),
+                    })
+                    .collect(),
+                partitions: out.outcome.partitions,
+                findings: out.outcome.findings,
+            },
         }),
         Err(RunError::Disagreement(e)) => Err(Failed::Disagreement(e.to_string())),
         Err(e) => Err(Failed::BadInput(e.to_string())),

@@ -15,6 +15,7 @@
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
+use lpe_lint::check::Finding;
 use lpe_lint::read::{self, Limits};
 use lpe_lint::{AovDecl, Document, Format, Location, ReadError};
 use serde_json::{json, Value};
@@ -102,27 +103,21 @@ fn entry(file: &Path, inis: &[PathBuf], lang: &DialectArgs) -> Result<Value, Fai
         return Err(Failed::BadInput(e.clone()));
     }
     let name = file.display().to_string();
-    let mine = |v: &Value| v["file"].as_str() == Some(name.as_str());
-    let aovs: Vec<&Value> = linted.json["aovs"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .filter(|a| mine(a))
+    let aovs: Vec<&lpe_lint::check::Linted<String>> = linted
+        .outcome
+        .aovs
+        .iter()
+        .filter(|a| a.file == name)
         .collect();
-    let findings: Vec<Value> = linted.json["findings"]
-        .as_array()
-        .into_iter()
-        .flatten()
-        .filter(|f| mine(f))
+    let findings: Vec<Value> = linted
+        .outcome
+        .findings
+        .iter()
+        .filter(|f| f.file == name)
         .map(finding)
         .collect();
-    let line = |a: &&Value, text: Option<&str>| {
-        format!(
-            "{} = {}\n",
-            a["name"].as_str().unwrap_or_default(),
-            text.unwrap_or_default()
-        )
-    };
+    let line =
+        |a: &lpe_lint::check::Linted<String>, text: &str| format!("{} = {text}\n", a.decl.name);
     // The check view reads every AOV: an AOV list as written, so that its line numbers
     // are the file's; else lint's canonical form where the AOV parsed (the ini files'
     // macros expanded and a renderer's `lpe:` mark read, which the views, given no ini,
@@ -131,31 +126,27 @@ fn entry(file: &Path, inis: &[PathBuf], lang: &DialectArgs) -> Result<Value, Fai
         std::fs::read_to_string(file).map_err(|e| Failed::BadInput(format!("{name}: {e}")))?
     } else {
         aovs.iter()
-            .map(|a| line(a, a["expression"].as_str().or(a["source"].as_str())))
+            .map(|a| line(a, a.lpe.as_deref().unwrap_or(&a.decl.source)))
             .collect()
     };
     // The other views need the whole list to parse: they get the AOVs that do, so a
     // file with one bad line still has its drawing and partition.
-    let parsed: Vec<&&Value> = aovs
+    let parsed: String = aovs
         .iter()
-        .filter(|a| a["expression"].is_string())
+        .filter_map(|a| a.lpe.as_deref().map(|e| line(a, e)))
         .collect();
-    let parsed_list: String = parsed
-        .iter()
-        .map(|a| line(a, a["expression"].as_str()))
-        .collect();
-    let views = views(&every, &parsed_list, &linted);
+    let parsed_count = aovs.iter().filter(|a| a.lpe.is_some()).count();
     Ok(json!({
         "file": name,
         "reading": reading(&linted),
         "aovs": aovs.iter().map(|a| json!({
-            "name": a["name"],
-            "source": a["source"],
-            "location": location(&a["location"]),
+            "name": a.decl.name,
+            "source": a.decl.source,
+            "location": a.decl.location.to_string(),
         })).collect::<Vec<_>>(),
         "findings": findings,
-        "parsed": parsed.len(),
-        "views": views,
+        "parsed": parsed_count,
+        "views": views(&every, &parsed, &linted),
     }))
 }
 
@@ -191,31 +182,16 @@ fn reading(linted: &Linted) -> String {
     }
 }
 
-/// A finding as the page shows it: the caret line drawn from its source and span.
-fn finding(f: &Value) -> Value {
-    let caret = match (f["source"].as_str(), f["span"].as_array()) {
-        (Some(source), Some(span)) => {
-            let at = |i: usize| span.get(i).and_then(Value::as_u64).unwrap_or(0) as usize;
-            Some(lpe_explore::lines::caret(source, at(0)..at(1)).0)
-        }
-        _ => None,
-    };
+/// A finding as the page shows it: the caret line drawn under its expression.
+fn finding(f: &Finding) -> Value {
     json!({
-        "kind": f["kind"],
-        "subject": f["subject"],
-        "location": location(&f["location"]),
-        "message": f["message"],
-        "help": f["help"],
-        "caret": caret,
+        "kind": f.kind.name(),
+        "subject": f.subject,
+        "location": f.location.to_string(),
+        "message": f.message,
+        "help": f.help,
+        "caret": f.caret.as_ref().map(|(source, span)| lpe_explore::lines::caret(source, span.clone()).0),
     })
-}
-
-/// A lint JSON location as people write it: `line:column`, or `<prim>.attribute`.
-fn location(l: &Value) -> String {
-    match (l["prim"].as_str(), l["attribute"].as_str()) {
-        (Some(prim), Some(attribute)) => format!("<{prim}>.{attribute}"),
-        _ => format!("{}:{}", l["line"], l["column"]),
-    }
 }
 
 /// Reads a file lint reads, or else an AOV list.
