@@ -119,6 +119,15 @@ fn the_page_and_the_api_answer() {
         v,
         serde_json::from_str::<serde_json::Value>(&direct.json).unwrap()
     );
+    // Every view answers through the server as the API does.
+    let body = r#"{"aovs": "d = C<RD>.*L\ns = C<RS>.*L", "path": "C RD1 L", "left": "d", "right": "C<RD>L"}"#;
+    for view in ["check", "graph", "paths", "partition", "explain", "equiv"] {
+        let (status, v) = server.post(&format!("/api/{view}"), body);
+        assert_eq!(status, 200, "{view}: {v}");
+        let direct = lpe_explore::answer(view, body.as_bytes());
+        let direct: serde_json::Value = serde_json::from_str(&direct.json).unwrap();
+        assert_eq!(v, direct, "{view}");
+    }
 }
 
 /// Each malformed or misdirected request gets its 4xx and a message saying what to

@@ -61,7 +61,11 @@ pub fn run(args: Args) -> ExitCode {
     println!("lpe-check serve: the LPE explorer is at http://127.0.0.1:{port}/ (Ctrl-C stops it)");
     // The tests and scripts read the URL from a pipe: it must not wait in a buffer.
     let _ = std::io::Write::flush(&mut std::io::stdout());
-    match http::serve(listener, &Limits::default(), move |r| route(r, &html, port)) {
+    let limits = Limits {
+        max_body: lpe_explore::MAX_BODY_BYTES,
+        ..Limits::default()
+    };
+    match http::serve(listener, &limits, move |r| route(r, &html, port)) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("error: serving: {e}");
