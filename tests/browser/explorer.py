@@ -4,7 +4,7 @@ Debian's chromedriver by Selenium (pinned in .ci/browser-requirements.txt).
 Starts `lpe-check serve --port 0`, loads the page and does what a person would: types an
 expression with an error and reads the caret message, types a valid list and finds the
 automaton drawn and the partition table, types a path and finds its trace highlighted on
-the drawing, compares two lines, switches the language. Then writes a report with `lpe-check report` and opens
+the drawing, compares two lines, finds the size of a set too large to draw, switches the language. Then writes a report with `lpe-check report` and opens
 it from a file:// URL with the network off, checking that the page asks for nothing
 but its own file. A screenshot of each step goes to target/explorer/*.png.
 
@@ -166,6 +166,15 @@ def step_equivalence(driver):
     shot(driver, "4-equivalence")
 
 
+def step_too_large(driver):
+    """`C.*<RD>.{6}L` compiles to 130 states whose layout needs 5 341 nodes, over the
+    drawing's limit: the page says so with the size instead of a drawing."""
+    type_into(driver, "aovs", "big = C.*<RD>.{6}L")
+    note = wait_for(driver, "the too-large note", lambda d: d.find_elements(By.CSS_SELECTOR, ".graph .too-large"))[0]
+    assert "too large to draw: 130 states" in note.text, note.text
+    assert not driver.find_elements(By.CSS_SELECTOR, ".graph svg")
+
+
 def step_language(driver):
     """`C<R[GS]>.*[LO]` is OSL's (G: glossy), an error in RenderMan's dialect: the
     selector's choice reaches the API, for a dialect and for a renderer's profile."""
@@ -214,6 +223,7 @@ def main():
         ("a list is drawn and partitioned", lambda: step_drawing_and_partition(driver)),
         ("a path's trace is highlighted", lambda: step_trace(driver)),
         ("two lines are compared", lambda: step_equivalence(driver)),
+        ("a set too large to draw gives its size", lambda: step_too_large(driver)),
         ("the language selector reaches the API", lambda: step_language(driver)),
         ("the report opens offline, asking for nothing", lambda: step_report_offline(driver, lpe_check)),
     ]
