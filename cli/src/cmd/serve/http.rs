@@ -205,7 +205,7 @@ fn work(
 }
 
 /// Writes `response`; for a refused request, then reads and drops what the client still
-/// sends (`unread` body bytes and a head, within a second) before closing: closing a
+/// sends (`unread` body bytes and a head, within 2 s) before closing: closing a
 /// socket with unread input resets the connection, and the client would see the reset
 /// instead of the answer. A request read whole needs no such wait.
 fn answer(mut stream: TcpStream, response: &Response, limits: &Limits, unread: Option<usize>) {
@@ -215,7 +215,7 @@ fn answer(mut stream: TcpStream, response: &Response, limits: &Limits, unread: O
     }
     let _ = stream.shutdown(Shutdown::Write);
     let Some(unread) = unread else { return };
-    let deadline = Instant::now() + Duration::from_secs(1);
+    let deadline = Instant::now() + Duration::from_secs(2);
     let mut left = unread + limits.max_head;
     let mut sink = [0u8; 8192];
     while left > 0 {
