@@ -41,6 +41,9 @@ pub struct CheckedLine {
     pub canonical: Option<String>,
     /// Its parse error, when it does not.
     pub error: Option<LineError>,
+    /// What the parser warns of in a line it accepts (OSL: a reversed `{m,n}`, labels of
+    /// different slots in one `[^...]`), positions counted in the expression.
+    pub warnings: Vec<String>,
 }
 
 /// A parse error placed in the list's text.
@@ -84,6 +87,9 @@ pub(crate) fn check_in<D: ExploreDialect>(request: &Request, setting: &Setting) 
             ok: result.is_ok(),
             canonical: result.as_ref().ok().map(ToString::to_string),
             error: result.as_ref().err().map(|e| placed(line, e)),
+            warnings: result
+                .as_ref()
+                .map_or_else(|_| Vec::new(), D::parse_warnings),
         })
         .collect();
     let good: Vec<&Line> = parsed

@@ -18,13 +18,14 @@ pub struct Line {
     pub offset: usize,
 }
 
-/// Whether `s` reads as an AOV name: letters, digits and `_ . : -`, as renderers name
-/// their outputs (`directDiffuse`, `lpe:diffuse`, `C.key`). Nothing else is taken as a
-/// name, so an expression alone on its line is never split at a `=` inside it.
+/// Whether `s` reads as an AOV name: letters, digits and `_ . : - /`, as renderers and
+/// stages name their outputs (`directDiffuse`, `lpe:diffuse`, `C.key`,
+/// `/Render/Vars/diffuse`). Nothing else is taken as a name, so an expression alone on
+/// its line is never split at a `=` inside it.
 fn is_name(s: &str) -> bool {
     !s.is_empty()
         && s.chars()
-            .all(|c| c.is_alphanumeric() || matches!(c, '_' | '.' | ':' | '-'))
+            .all(|c| c.is_alphanumeric() || matches!(c, '_' | '.' | ':' | '-' | '/'))
 }
 
 /// The AOV lines of `text`, in order.
@@ -94,9 +95,9 @@ mod tests {
     /// every named line then sat under the name).
     #[test]
     fn names_offsets_and_skipped_lines() {
-        let text = "  # comment\r\ndiffuse =  C<RD>L\r\n\n\tC.*L  \nx y = C L";
+        let text = "  # comment\r\ndiffuse =  C<RD>L\r\n\n\tC.*L  \nx y = C L\n/Render/Vars/d=C";
         let lines = read(text);
-        assert_eq!(lines.len(), 3);
+        assert_eq!(lines.len(), 4);
         assert_eq!(lines[0].number, 2);
         assert_eq!(lines[0].name, "diffuse");
         assert_eq!(lines[0].source, "C<RD>L");
@@ -107,6 +108,10 @@ mod tests {
         // `x y` is no name: the whole line is the expression.
         assert_eq!(lines[2].name, "line5");
         assert_eq!(lines[2].source, "x y = C L");
+        assert_eq!(
+            (lines[3].name.as_str(), lines[3].source.as_str()),
+            ("/Render/Vars/d", "C")
+        );
     }
 
     /// Caught a planted fault: the column counted bytes (`é` is two), putting the caret

@@ -108,6 +108,24 @@ fn dialect_and_renderer_choose_the_reading() {
     assert_eq!(v["lines"][0]["ok"], true);
 }
 
+/// OSL accepts `{3,2}` and reads it as `{3}` with a warning, which the line carries
+/// (its position counted in the expression: the `{` is character 2 of `CD{3,2}L`).
+///
+/// Caught a planted fault: the warnings of every line left empty.
+#[test]
+fn a_line_that_parses_carries_its_warnings() {
+    let (_, v) = ask(
+        "check",
+        r#"{"aovs": "a = CD{3,2}L\nb = C<RD>L", "dialect": "osl"}"#,
+    );
+    assert_eq!(v["lines"][0]["ok"], true);
+    assert_eq!(
+        v["lines"][0]["warnings"],
+        serde_json::json!(["{3,2} at char 2 has its bounds reversed: read as {3}"])
+    );
+    assert_eq!(v["lines"][1]["warnings"], serde_json::json!([]));
+}
+
 /// Every way a request can be wrong, with its status and a message naming the field.
 #[test]
 fn bad_requests_get_their_status() {

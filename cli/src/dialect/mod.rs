@@ -48,10 +48,4 @@ pub trait CliDialect: LintDialect + lpe_profile::ProfileDialect {
         let _ = registration;
         Vec::new()
     }
-
-    /// The warnings `parse` prints on stderr for an expression that parsed.
-    fn parse_warnings(lpe: &Self::Lpe) -> Vec<String> {
-        let _ = lpe;
-        Vec::new()
-    }
 }

@@ -43,8 +43,4 @@ impl CliDialect for Osl {
     fn path_error(text: &str, e: &PathError) -> String {
         format!("path `{text}`: {e}")
     }
-
-    fn parse_warnings(lpe: &osl::Lpe) -> Vec<String> {
-        lpe.warnings.iter().map(ToString::to_string).collect()
-    }
 }

@@ -57,6 +57,14 @@ pub trait LintDialect: Checked {
         registration: &Self::Registration,
     ) -> Result<Self::Lpe, ParseFailure>;
 
+    /// The warnings a parse gives for an expression it accepts (OSL's reversed ranges
+    /// and mixed negations, which OSL prints on stderr): `lpe-check parse` prints them,
+    /// the explorer's `check` view shows them per line; none by default.
+    fn parse_warnings(lpe: &Self::Lpe) -> Vec<String> {
+        let _ = lpe;
+        Vec::new()
+    }
+
     /// The group labels the AOV asks lights or objects of the scene to carry.
     fn labels(e: &Self::Lpe) -> Vec<(Carrier, String)>;
 

@@ -42,6 +42,10 @@ impl LintDialect for Osl {
         })
     }
 
+    fn parse_warnings(lpe: &osl::Lpe) -> Vec<String> {
+        lpe.warnings.iter().map(ToString::to_string).collect()
+    }
+
     fn labels(e: &osl::Lpe) -> Vec<(Carrier, String)> {
         labels(e)
     }
