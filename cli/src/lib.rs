@@ -4,7 +4,7 @@
 //! prints and gives exit codes.
 //!
 //! - [`cmd`]: one module per subcommand (`parse`, `match`, `equiv`, `partition`,
-//!   `bench`, `diff`, `lint`, `explain`), each with its clap `Args` and a `run` giving
+//!   `bench`, `diff`, `lint`, `explain`, `translate`, `serve`, `report`), each with its clap `Args` and a `run` giving
 //!   the exit code; the binary (`src/main.rs`) only dispatches.
 //! - [`dialect`]: what the subcommands ask of an expression language
 //!   ([`dialect::CliDialect`], on `lpe`'s RenderMan and OSL markers): registration from

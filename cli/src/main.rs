@@ -37,6 +37,10 @@ enum Command {
     Explain(cmd::explain::Args),
     /// Carry expressions between the RenderMan and OSL dialects, with a proved verdict.
     Translate(cmd::translate::Args),
+    /// Serve the LPE explorer page on 127.0.0.1 (the URL is printed; Ctrl-C stops it).
+    Serve(cmd::serve::Args),
+    /// Write one self-contained HTML page of files' AOVs, findings and explorer views.
+    Report(cmd::report::Args),
 }
 
 fn main() -> ExitCode {
@@ -56,6 +60,8 @@ fn main() -> ExitCode {
             Command::Diff(a) => cmd::diff::run(a),
             Command::Lint(a) => cmd::lint::run(a),
             Command::Explain(a) => cmd::explain::run(a),
+            Command::Serve(a) => cmd::serve::run(a),
+            Command::Report(a) => cmd::report::run(a),
         });
     match worker.map(|w| w.join()) {
         Ok(Ok(code)) => code,

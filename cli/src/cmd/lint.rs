@@ -19,12 +19,13 @@
 //! [`lpe_lint::check::run`]); this module
 //! parses the arguments, prints and gives the exit code.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use lpe::with_dialect;
 use lpe_lint::check::renderer;
 use lpe_lint::check::run::{self, Request, RunError};
+use lpe_lint::read::{self, Limits};
 
 use crate::dialect::CliDialect;
 use crate::input::{bad_input, DialectArgs};
@@ -66,72 +67,171 @@ pub struct Args {
     pub lang: DialectArgs,
 }
 
-/// Runs `lpe-check lint`: the files are read first, so that without `--renderer`,
-/// `--profile` or `--dialect` the renderer the stages name (`lpe:renderer`, or one
-/// renderer's RenderSettings attributes) chooses the dialect and adds its rules.
+/// Runs `lpe-check lint`.
 pub fn run(args: Args) -> ExitCode {
-    let given = match args.lang.renderer_profile() {
-        Ok(p) => p,
-        Err(e) => return bad_input(format!("error: {e}")),
-    };
-    let mut req = Request {
+    let files = Files {
         files: &args.files,
         ini: args.ini.as_deref(),
         partitions: &args.partition,
         universe: args.universe.as_deref(),
-        dialect_given: args.lang.dialect.is_some() || given.is_some(),
+    };
+    let linted = match lint(&files, &args.lang, &mut |p| {
+        read::read_file(p, &Limits::default())
+    }) {
+        Ok(l) => l,
+        Err(Failed::Disagreement(e)) => {
+            eprintln!("{e}");
+            return ExitCode::from(DISAGREE);
+        }
+        Err(Failed::BadInput(e)) => return bad_input(format!("error: {e}")),
+    };
+    match args.format {
+        OutputFormat::Text => {
+            if let (Some(p), Some(how)) = (&linted.profile, &linted.named_by) {
+                eprintln!("note: reading as {} ({}), named by {how}", p.title, p.name);
+            }
+            for e in &linted.read_errors {
+                eprintln!("error: {e}");
+            }
+            print!("{}", linted.text);
+        }
+        OutputFormat::Json => println!(
+            "{}",
+            serde_json::to_string_pretty(&linted.json).expect("JSON values serialize")
+        ),
+    }
+    let code = if linted.read_errors.is_empty() {
+        u8::from(!linted.outcome.findings.is_empty())
+    } else {
+        2
+    };
+    ExitCode::from(code)
+}
+
+/// The files of one lint run and what to check across them.
+pub struct Files<'a> {
+    /// USD, RIB and ini files, in order.
+    pub files: &'a [PathBuf],
+    /// `--ini`.
+    pub ini: Option<&'a Path>,
+    /// `--partition` lists.
+    pub partitions: &'a [String],
+    /// `--universe`.
+    pub universe: Option<&'a str>,
+}
+
+/// One lint run's result, as `lint` prints it and `report` shows it.
+pub struct Linted {
+    /// The dialect the files were read in.
+    pub dialect: lpe::DialectName,
+    /// The renderer's profile the files were read under, if any.
+    pub profile: Option<lpe_profile::Profile>,
+    /// How the stages named that profile, when the arguments did not.
+    pub named_by: Option<String>,
+    /// The JSON report (schema `lpe-lint/1`).
+    pub json: serde_json::Value,
+    /// The text report.
+    pub text: String,
+    /// The errors of the files that could not be read.
+    pub read_errors: Vec<String>,
+    /// The AOVs, partitions and findings, each expression printed in its canonical form.
+    pub outcome: lpe_lint::check::Outcome<String>,
+}
+
+/// Why a lint run checked nothing.
+pub enum Failed {
+    /// A bad argument or configuration (exit 2).
+    BadInput(String),
+    /// A witness the reference matcher refused (exit 3).
+    Disagreement(String),
+}
+
+/// Lints `files` read by `read_other` (ini files apart): the files are read first, so
+/// that without `--renderer`, `--profile` or `--dialect` the renderer the stages name
+/// (`lpe:renderer`, or one renderer's RenderSettings attributes) chooses the dialect and
+/// adds its rules.
+pub fn lint(
+    files: &Files<'_>,
+    lang: &DialectArgs,
+    read_other: &mut dyn FnMut(&Path) -> Result<lpe_lint::Document, lpe_lint::ReadError>,
+) -> Result<Linted, Failed> {
+    let given = lang
+        .renderer_profile()
+        .map_err(|e| Failed::BadInput(e.to_string()))?;
+    let mut req = Request {
+        files: files.files,
+        ini: files.ini,
+        partitions: files.partitions,
+        universe: files.universe,
+        dialect_given: lang.dialect.is_some() || given.is_some(),
         profile: None,
     };
-    let read = run::read(&req);
+    let read = run::read_by(&req, read_other);
+    let mut named_by = None;
     let profile = match given {
         Some(p) => Some(p),
-        None if args.lang.dialect.is_none() => match renderer::named_by(&read.docs) {
+        None if lang.dialect.is_none() => match renderer::named_by(&read.docs) {
             Ok(Some((p, how))) => {
-                if args.format == OutputFormat::Text {
-                    eprintln!("note: reading as {} ({}), named by {how}", p.title, p.name);
-                }
+                named_by = Some(how.to_string());
                 req.dialect_given = true;
                 Some(p.clone())
             }
             Ok(None) => None,
-            Err(e) => return bad_input(format!("error: {e}")),
+            Err(e) => return Err(Failed::BadInput(e.to_string())),
         },
         None => None,
     };
     req.profile = profile.as_ref();
     let dialect = profile
         .as_ref()
-        .map_or(args.lang.dialect(), lpe_profile::Profile::dialect);
-    with_dialect!(dialect, D => run_in::<D>(&args, &req, read))
+        .map_or(lang.dialect(), lpe_profile::Profile::dialect);
+    let out = with_dialect!(dialect, D => lint_in::<D>(lang, &req, read))?;
+    Ok(Linted {
+        dialect,
+        named_by,
+        json: out.json,
+        text: out.text,
+        read_errors: out.read_errors,
+        outcome: out.outcome,
+        profile,
+    })
 }
 
-fn run_in<D: CliDialect>(args: &Args, req: &Request<'_>, read: run::Inputs) -> ExitCode {
-    let registration =
-        |ini: Option<&std::path::Path>| args.lang.registration_under::<D>(ini, req.profile);
-    let out = match run::check::<D, _>(req, read, registration) {
-        Ok(out) => out,
-        Err(RunError::Disagreement(e)) => {
-            eprintln!("{e}");
-            return ExitCode::from(DISAGREE);
-        }
-        Err(e) => return bad_input(format!("error: {e}")),
-    };
-    match args.format {
-        OutputFormat::Text => {
-            for e in out.read_errors() {
-                eprintln!("error: {e}");
-            }
-            print!("{}", out.text());
-        }
-        OutputFormat::Json => println!(
-            "{}",
-            serde_json::to_string_pretty(&out.json()).expect("JSON values serialize")
-        ),
+/// The run's reports, without the dialect's expression type.
+struct Reports {
+    json: serde_json::Value,
+    text: String,
+    read_errors: Vec<String>,
+    outcome: lpe_lint::check::Outcome<String>,
+}
+
+fn lint_in<D: CliDialect>(
+    lang: &DialectArgs,
+    req: &Request<'_>,
+    read: run::Inputs,
+) -> Result<Reports, Failed> {
+    let registration = |ini: Option<&Path>| lang.registration_under::<D>(ini, req.profile);
+    match run::check::<D, _>(req, read, registration) {
+        Ok(out) => Ok(Reports {
+            json: out.json(),
+            text: out.text(),
+            read_errors: out.read_errors().map(str::to_string).collect(),
+            outcome: lpe_lint::check::Outcome {
+                aovs: out
+                    .outcome
+                    .aovs
+                    .into_iter()
+                    .map(|a| lpe_lint::check::Linted {
+                        file: a.file,
+                        decl: a.decl,
+                        lpe: a.lpe.map(|e| e.to_string()),
+                    })
+                    .collect(),
+                partitions: out.outcome.partitions,
+                findings: out.outcome.findings,
+            },
+        }),
+        Err(RunError::Disagreement(e)) => Err(Failed::Disagreement(e.to_string())),
+        Err(e) => Err(Failed::BadInput(e.to_string())),
     }
-    let code = if out.read_errors().next().is_some() {
-        2
-    } else {
-        u8::from(!out.outcome.findings.is_empty())
-    };
-    ExitCode::from(code)
 }

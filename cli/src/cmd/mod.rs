@@ -10,4 +10,6 @@ pub mod lint;
 pub mod matching;
 pub mod parse;
 pub mod partition;
+pub mod report;
+pub mod serve;
 pub mod translate;
