@@ -807,3 +807,124 @@ fn a_stage_names_its_renderer_by_attribute_or_by_its_settings_namespace() {
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// A scratch folder of `.usda` stages for one test, removed when dropped.
+struct Stages(PathBuf);
+
+impl Stages {
+    fn new(name: &str) -> Stages {
+        let dir = std::env::temp_dir().join(format!("lpe-{name}-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        Stages(dir)
+    }
+
+    /// Writes `NAME.usda`: RenderSettings with `settings` as its attributes, then one LPE
+    /// RenderVar per `(name, sourceName)` under `/vars`; returns its path.
+    fn write(&self, name: &str, settings: &str, vars: &[(&str, &str)]) -> String {
+        let mut text = format!("#usda 1.0\ndef RenderSettings \"settings\"\n{{\n{settings}}}\n");
+        text += "def Scope \"vars\"\n{\n";
+        for (var, source) in vars {
+            text += &format!(
+                "    def RenderVar \"{var}\"\n    {{\n        uniform token sourceType = \"lpe\"\n        \
+                 uniform string sourceName = \"{source}\"\n    }}\n"
+            );
+        }
+        text += "}\n";
+        let path = self.0.join(format!("{name}.usda"));
+        std::fs::write(&path, text).unwrap();
+        path.to_str().unwrap().to_string()
+    }
+}
+
+impl Drop for Stages {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+/// `(kind, subject, file)` of every finding.
+fn kinds_by_file(v: &serde_json::Value) -> Vec<(String, String, String)> {
+    v["findings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|f| {
+            let file = f["file"].as_str().unwrap();
+            let name = file.rsplit('/').next().unwrap();
+            (
+                f["kind"].as_str().unwrap().to_string(),
+                f["subject"].as_str().unwrap().to_string(),
+                name.to_string(),
+            )
+        })
+        .collect()
+}
+
+/// Under Karma, `C<RD>L - C<RD>L` matches no path at all, so every path it matches
+/// passes `S` vacuously: it is reported `empty` and not also `never_produced`. The skip is for that
+/// AOV of that file only: `specular` beside it and `dark` of another file, which asks for
+/// `S`, are `never_produced`. A marked sourceName is no finding under Karma, which reads
+/// it as authored. Planted faults (cargo-mutants), each seen failing: the skip's `kind ==
+/// Empty`, `subject` or `file` test as `!=`, either `&&` as `||`; the doubled-mark check
+/// run for a renderer that does not prepend the mark (`&&` as `||`).
+#[test]
+fn under_karma_an_empty_aov_is_only_empty_and_the_skip_is_per_aov_and_file() {
+    let stages = Stages::new("karma-empty");
+    let a = stages.write(
+        "a",
+        "",
+        &[
+            ("dark", "C<RD>L - C<RD>L"),
+            ("specular", "C<RS>.*L"),
+            ("marked", "lpe:C<RD>L"),
+        ],
+    );
+    let b = stages.write("b", "", &[("dark", "C<RS>.*L")]);
+    let (code, v) = json(&["--renderer", "karma", &a, &b]);
+    assert_eq!(code, 1);
+    let want = [
+        ("empty", "dark", "a.usda"),
+        ("never_produced", "specular", "a.usda"),
+        ("never_produced", "dark", "b.usda"),
+    ];
+    assert_eq!(kinds_by_file(&v), triples(&want), "{v}");
+}
+
+/// A stage whose RenderSettings use two renderers' namespaces (`karma:` and hdPrman's
+/// `ri:`) names neither: it lints as a stage with no namespace, with no renderer's rule.
+/// Two stages that both name Karma agree: both are linted under it. Planted faults, each
+/// seen failing: `of_document` taking the first of two namespaces (by hand); `named_by`
+/// calling any two namings a conflict (cargo-mutants).
+#[test]
+fn two_namespaces_name_no_renderer_and_two_stages_naming_one_agree() {
+    let stages = Stages::new("two-namespaces");
+    let vars = [("specular", "C<RS>.*L"), ("marked", "lpe:C<RD>L")];
+    let both = stages.write(
+        "both",
+        "    uniform int karma:global:pathtracedsamples = 8\n    uniform int ri:hider:maxsamples = 8\n",
+        &vars,
+    );
+    let none = stages.write("none", "", &vars);
+    let (code_both, v_both) = json(&[&both]);
+    let (code_none, v_none) = json(&[&none]);
+    assert_eq!(code_both, code_none);
+    assert_eq!(findings(&v_both), findings(&v_none));
+    assert!(!findings(&v_both)
+        .iter()
+        .any(|(kind, _, _)| kind == "never_produced" || kind == "doubled_lpe_mark"));
+
+    let karma = "    uniform int karma:global:pathtracedsamples = 8\n";
+    let one = stages.write("one", karma, &[("specular", "C<RS>.*L")]);
+    let two = stages.write(
+        "two",
+        "    custom string lpe:renderer = \"karma\"\n",
+        &[("specular", "C<RS>.*L")],
+    );
+    let (code, v) = json(&[&one, &two]);
+    assert_eq!(code, 1);
+    let want = [
+        ("never_produced", "specular", "one.usda"),
+        ("never_produced", "specular", "two.usda"),
+    ];
+    assert_eq!(kinds_by_file(&v), triples(&want), "{v}");
+}

@@ -245,23 +245,19 @@ impl<R: Read> Src<R> {
         b
     }
 
-    /// Passes bytes up to the next one `stop` accepts, within the current block.
+    /// Passes bytes up to the next one `stop` accepts, within the current block. Every
+    /// `stop` accepts `\n`, so the bytes passed are on one line: point arrays are long
+    /// runs, counted in bulk.
     #[inline]
     fn run_until(&mut self, stop: impl Fn(u8) -> bool, out: Option<&mut Vec<u8>>) {
+        debug_assert!(stop(b'\n'));
         let start = self.pos;
         let end = self.buf[start..self.avail]
             .iter()
             .position(|&b| stop(b))
             .map_or(self.avail, |i| start + i);
         let passed = &self.buf[start..end];
-        // Point arrays are long runs without a newline: count them in bulk.
-        match passed.iter().rposition(|&b| b == b'\n') {
-            None => self.column += passed.len(),
-            Some(last) => {
-                self.line += passed.iter().filter(|&&b| b == b'\n').count();
-                self.column = passed.len() - last;
-            }
-        }
+        self.column += passed.len();
         if let Some(out) = out {
             out.extend_from_slice(passed);
         }
@@ -749,5 +745,163 @@ mod tests {
             skim(Trickle(text.as_bytes()), keep, u64::MAX).unwrap(),
             "def X \"é\"\n{\n    string[] s \n    float2[] p \n    string sourceName = \"\"\"C<.D>L\"\"\"\n}\n"
         );
+    }
+
+    /// A reader that hands out its chunks in turn, then an error or the end.
+    struct Chunks {
+        chunks: Vec<io::Result<Vec<u8>>>,
+    }
+
+    impl Read for Chunks {
+        fn read(&mut self, buf: &mut [u8]) -> io::Result<usize> {
+            if self.chunks.is_empty() {
+                return Ok(0);
+            }
+            let chunk = self.chunks.remove(0)?;
+            buf[..chunk.len()].copy_from_slice(&chunk);
+            Ok(chunk.len())
+        }
+    }
+
+    fn chunks(list: Vec<io::Result<&[u8]>>) -> Chunks {
+        Chunks {
+            chunks: list.into_iter().map(|c| c.map(<[u8]>::to_vec)).collect(),
+        }
+    }
+
+    /// An interrupted read is tried again; any other read error is handed on as it is,
+    /// with its own message; a byte that is not UTF-8 is reported before anything past it
+    /// is read. Planted faults (cargo-mutants), each seen failing: the `Interrupted` guard
+    /// as `true`, `false` or `!=` (the interrupted read an error, or a failing reader
+    /// asked forever); the invalid-byte test as `false` (the next read's error reported
+    /// instead of the byte).
+    #[test]
+    fn read_errors_are_handed_on_and_interrupted_reads_tried_again() {
+        let interrupted = || Err(io::Error::from(io::ErrorKind::Interrupted));
+        let text = chunks(vec![
+            interrupted(),
+            Ok(b"def X \"x\"\n"),
+            interrupted(),
+            Ok(b"{\n}\n"),
+        ]);
+        assert_eq!(skim(text, keep, u64::MAX).unwrap(), "def X \"x\"\n{\n}\n");
+        let broken = chunks(vec![Ok(b"def X"), Err(io::Error::other("disk gone"))]);
+        match skim(broken, keep, u64::MAX) {
+            Err(e @ SkimError::Io(_)) => assert_eq!(e.to_string(), "disk gone"),
+            other => panic!("{other:?}"),
+        }
+        let bad_then_broken = chunks(vec![Ok(b"ab\xff"), Err(io::Error::other("disk gone"))]);
+        match skim(bad_then_broken, keep, u64::MAX) {
+            Err(SkimError::NotText { offset }) => assert_eq!(offset, 2),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    /// Offsets count from the start of the input across blocks: a NUL 70 000 bytes in is
+    /// at byte 70 000, in the second 64 KiB block. Planted faults (cargo-mutants), each
+    /// seen failing: the block's base advanced by `-=` or `*=`.
+    #[test]
+    fn offsets_count_across_blocks() {
+        let mut text = format!("#{}\n", "x".repeat(69_998)).into_bytes();
+        text.push(0);
+        assert_eq!(text.len(), 70_001);
+        match skim(&text[..], keep, u64::MAX) {
+            Err(e @ SkimError::NotText { offset: 70_000 }) => {
+                assert_eq!(e.to_string(), "byte 70000: not text")
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    /// The limit is on the kept text, exactly: text of `limit` bytes passes, one byte
+    /// more does not, and the error says how much. Planted faults (cargo-mutants), each
+    /// seen failing: `>` as `>=` or `==`.
+    #[test]
+    fn the_limit_on_kept_text_is_exact() {
+        let text = "def X \"x\"\n{\n}\n";
+        assert_eq!(text.len(), 14);
+        assert_eq!(skim(text.as_bytes(), keep, 14).unwrap(), text);
+        match skim(text.as_bytes(), keep, 13) {
+            Err(e @ SkimError::TooLarge { limit: 13 }) => assert_eq!(
+                e.to_string(),
+                "more than 13 bytes of text besides skipped values"
+            ),
+            other => panic!("{other:?}"),
+        }
+    }
+
+    /// A kept attribute's dictionary is copied whole: its entries are not statements
+    /// whose values could be dropped. Planted fault (cargo-mutants), seen failing: the
+    /// `{` after a kept attribute's `=` opened as a prim body (the entry's value dropped).
+    #[test]
+    fn a_kept_dictionary_keeps_its_entries() {
+        let text = "def X \"x\"\n{\n    custom dictionary lpe:notes = {\n        string a = \"x\"\n    }\n}\n";
+        assert_eq!(skimmed(text), text);
+    }
+
+    /// A dropped value may start on the next line: the newlines between stay. Planted
+    /// fault (cargo-mutants), seen failing: the skip of white space stopping at a newline
+    /// (the value then an error).
+    #[test]
+    fn a_dropped_value_may_start_on_the_next_line() {
+        let text = "def X \"x\"\n{\n    float a =\n        1\n    double b.timeSamples =\n    {\n        1: 2,\n    }\n}\n";
+        assert_eq!(
+            skimmed(text),
+            "def X \"x\"\n{\n    float a \n\n    double b.timeSamples =\n{ \n\n}\n}\n"
+        );
+    }
+
+    /// A closing bracket of the wrong kind in kept text, and a delimiter where a dropped
+    /// value starts, are errors at their line and column. Planted faults
+    /// (cargo-mutants), each seen failing: any closer accepted; the delimiter read as an
+    /// empty value.
+    #[test]
+    fn a_wrong_closer_and_a_missing_value_are_errors_where_they_are() {
+        assert_eq!(error("def X \"x\"\n{\n)\n"), "3:1: `)` where `}` closes");
+        assert_eq!(
+            error("def X \"x\"\n{\n    float a = ,\n}\n"),
+            "3:15: `,` where a value starts"
+        );
+    }
+
+    /// An unterminated path or asset path is named as what it is. Planted faults
+    /// (cargo-mutants), each seen failing: either called a string.
+    #[test]
+    fn an_unterminated_path_or_asset_path_says_which() {
+        assert_eq!(
+            error("def X \"x\"\n{\n    rel r = </a\n"),
+            "3:13: end of file inside the path starting here"
+        );
+        assert_eq!(
+            error("def X \"x\"\n{\n    asset a = @x\n"),
+            "3:15: end of file inside the asset path starting here"
+        );
+    }
+
+    /// A triple-quoted string ends at three quotes, not one: a single quote inside it,
+    /// then a bracket, do not end the dropped value. Planted fault (cargo-mutants), seen
+    /// failing: `run == 3` as `!=`.
+    #[test]
+    fn a_triple_quoted_string_ends_at_three_quotes() {
+        let text = "def X \"x\"\n{\n    string[] a = [\"\"\"say \"x]\" here\"\"\", \"y\"]\n    string sourceName = \"L\"\n}\n";
+        assert_eq!(
+            skimmed(text),
+            "def X \"x\"\n{\n    string[] a \n    string sourceName = \"L\"\n}\n"
+        );
+    }
+
+    /// After a kept value in brackets, the next statement's head is read whole, so its
+    /// value is dropped: the brackets of the value end the statement, and an `=` inside
+    /// them starts none. Planted faults (cargo-mutants), each seen failing: `open`'s
+    /// `ctx != Bracket || value_pending` as `&&`; `equals`' `!in_body() || value_pending`
+    /// as `&&` (both keep `float` from the next head, which then keeps its value).
+    #[test]
+    fn after_a_kept_bracketed_value_the_next_statement_is_read_whole() {
+        let text = "def X \"x\"\n{\n    custom string[] lpe:xs = [\"a\"]\n    float a = 1\n    \
+                    custom string[] lpe:ys = [(\"k\" = 1)]\n    float b = 2\n}\n";
+        let expected = text
+            .replace("float a = 1", "float a ")
+            .replace("float b = 2", "float b ");
+        assert_eq!(skimmed(text), expected);
     }
 }

@@ -198,4 +198,50 @@ mod tests {
         let stopped = (0..2 * CLOCK_EVERY).any(|_| m.spend(1).is_err());
         assert!(stopped);
     }
+
+    /// The clock is read once every `CLOCK_EVERY` steps, and only a passed deadline
+    /// stops: with no time at all, step 1 024 is the first refused, with an hour none of
+    /// 3 000 is. Planted faults (cargo-mutants), each seen failing: the clock read at
+    /// every other step (`until_clock == 0` as `!=`: step 1 refused); any deadline taken
+    /// as passed (the hour's first clock read refused).
+    #[test]
+    fn the_clock_is_read_every_1024_steps_and_stops_only_past_the_deadline() {
+        let mut m = Meter::new(&AnalysisBudget {
+            steps: usize::MAX,
+            time: Some(Duration::ZERO),
+        });
+        assert!((1..1024).all(|_| m.spend(1).is_ok()));
+        assert_eq!(
+            m.spend(1),
+            Err(Undecided {
+                limit: Limit::Time(Duration::ZERO)
+            })
+        );
+        let mut m = Meter::new(&AnalysisBudget {
+            steps: usize::MAX,
+            time: Some(Duration::from_secs(3600)),
+        });
+        assert!((0..3000).all(|_| m.spend(1).is_ok()));
+    }
+
+    /// What an undecided answer says, and a decision's answer. Planted faults
+    /// (cargo-mutants), each seen failing: `Display` writing nothing; `decided` always
+    /// `None`.
+    #[test]
+    fn an_undecided_answer_names_its_limit_and_a_decision_gives_its_answer() {
+        let steps = Undecided {
+            limit: Limit::Steps(10),
+        };
+        assert_eq!(
+            steps.to_string(),
+            "undecided within the budget of 10 search steps"
+        );
+        let time = Undecided {
+            limit: Limit::Time(Duration::from_millis(5)),
+        };
+        assert_eq!(time.to_string(), "undecided within the time budget of 5ms");
+        assert_eq!(Decision::Decided(2).decided(), Some(2));
+        assert_eq!(Decision::<u32>::Undecided(steps).decided(), None);
+        assert_eq!(Decision::Decided(2).map(|x| x + 1), Decision::Decided(3));
+    }
 }
