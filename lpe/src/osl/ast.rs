@@ -41,6 +41,45 @@ impl SymbolPattern {
         }
     }
 
+    /// The pattern accepting what either accepts (`[…]` inside `<>` joins its
+    /// one-symbol items so): the union of two lists, a blacklist less what a list
+    /// accepts, the common part of two blacklists; `.` absorbs everything.
+    pub fn union(self, other: SymbolPattern) -> SymbolPattern {
+        use SymbolPattern::{Any, NotIn, One, Set};
+        let listed = |p: SymbolPattern| match p {
+            One(s) => Set(vec![s]),
+            p => p,
+        };
+        match (listed(self), listed(other)) {
+            (Any, _) | (_, Any) => Any,
+            (Set(mut a), Set(b)) => {
+                for s in b {
+                    if !a.contains(&s) {
+                        a.push(s);
+                    }
+                }
+                Set(a)
+            }
+            (NotIn(n), Set(a)) | (Set(a), NotIn(n)) => {
+                let rest: Vec<Symbol> = n.into_iter().filter(|s| !a.contains(s)).collect();
+                if rest.is_empty() {
+                    Any
+                } else {
+                    NotIn(rest)
+                }
+            }
+            (NotIn(a), NotIn(b)) => {
+                let common: Vec<Symbol> = a.into_iter().filter(|s| b.contains(s)).collect();
+                if common.is_empty() {
+                    Any
+                } else {
+                    NotIn(common)
+                }
+            }
+            (One(_), _) | (_, One(_)) => unreachable!("listed above"),
+        }
+    }
+
     /// Every symbol the pattern names.
     pub fn symbols(&self) -> &[Symbol] {
         match self {
@@ -294,18 +333,15 @@ fn write_symbol(f: &mut fmt::Formatter<'_>, s: &Symbol) -> fmt::Result {
 
 impl fmt::Display for SymbolPattern {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        // In a set every unquoted character is a label; in a negation only known labels
-        // may go unquoted, so its labels are all quoted. NONE has no spelling in either.
+        // A set's items read as slots (`x` NONE, `.` any symbol, `(`, `[`, `<` and the
+        // postfixes with their meaning), so its labels print as slot labels; in a
+        // negation only known labels may go unquoted, so its labels are all quoted.
         let list = |f: &mut fmt::Formatter<'_>, open: &str, xs: &[Symbol], bare: bool| {
             f.write_str(open)?;
             for x in xs {
                 match x {
                     Symbol::None => f.write_str("x")?,
-                    Symbol::Label(l)
-                        if bare && l.chars().count() == 1 && !"'[]^".contains(l.as_str()) =>
-                    {
-                        f.write_str(l)?
-                    }
+                    Symbol::Label(l) if bare => write_label(f, l)?,
                     Symbol::Label(l) => write!(f, "'{l}'")?,
                 }
             }
