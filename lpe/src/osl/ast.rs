@@ -315,11 +315,12 @@ impl SetExpr for Lpe {
 }
 
 /// A label as it reads inside `<>`: one plain character bare, anything else quoted
-/// (characters with a meaning inside `<>` included).
+/// (characters with a meaning inside `<>` included; `|` alternates inside a `( … )`,
+/// where the printer may put custom labels).
 fn write_label(f: &mut fmt::Formatter<'_>, l: &str) -> fmt::Result {
     let mut cs = l.chars();
     match (cs.next(), cs.next()) {
-        (Some(c), None) if !"x.'[]()<>*+{}^".contains(c) => write!(f, "{c}"),
+        (Some(c), None) if !"x.'[]()<>*+{}^|".contains(c) => write!(f, "{c}"),
         _ => write!(f, "'{l}'"),
     }
 }

@@ -7,9 +7,12 @@
 //! atom   := '.' | letter | "'" label "'" | '(' seq ')' | '[' item* ']'
 //!         | '[^' label+ ']' | '<' slot* '>'
 //! postfix:= '*' | '+' | '{' n '}' | '{' n ',' '}' | '{' n ',' m '}'
-//! slot   := '.' | 'x' | char | "'" label "'" | '[' label* ']' | '[^' label+ ']'
-//!         | '(' slot+ ')'
+//! slot   := '.' | 'x' | char | "'" label "'" | '[' slot* ']' | '[^' label+ ']'
+//!         | '(' (slot | '|' slot)+ ')'     `|` ORs the next slot with the previous one
 //! ```
+//!
+//! Inside `<>` no slot takes a postfix: a `*`, `+` or `{` after a slot is an error, one
+//! starting a slot is its label (`<*D>`), as OSL reads them.
 //!
 //! Every vertex-level atom expands to a whole [`VertexPattern`] with the eater (when it
 //! has fewer than five custom items). No whitespace is skipped.
