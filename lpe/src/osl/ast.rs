@@ -41,42 +41,44 @@ impl SymbolPattern {
         }
     }
 
-    /// The pattern accepting what either accepts (`[…]` inside `<>` joins its
-    /// one-symbol items so): the union of two lists, a blacklist less what a list
-    /// accepts, the common part of two blacklists; `.` absorbs everything.
-    pub fn union(self, other: SymbolPattern) -> SymbolPattern {
-        use SymbolPattern::{Any, NotIn, One, Set};
-        let listed = |p: SymbolPattern| match p {
-            One(s) => Set(vec![s]),
-            p => p,
+    /// The pattern accepting what any of `patterns` accepts (`[…]` inside `<>` joins its
+    /// one-symbol items so; none: the empty set): the lists one after the other (as
+    /// written, repeats kept), or, with blacklists among them, their common part less
+    /// what the lists accept; `.` absorbs everything. Linear in the patterns' lengths,
+    /// however long a set is.
+    pub fn any_of(patterns: Vec<SymbolPattern>) -> SymbolPattern {
+        use std::collections::HashSet;
+        let mut listed = Vec::new();
+        // The common part of the blacklists so far, if any was seen.
+        let mut excluded: Option<Vec<Symbol>> = None;
+        for p in patterns {
+            match p {
+                SymbolPattern::Any => return SymbolPattern::Any,
+                SymbolPattern::One(s) => listed.push(s),
+                SymbolPattern::Set(xs) => listed.extend(xs),
+                SymbolPattern::NotIn(xs) => {
+                    excluded = Some(match excluded {
+                        None => xs,
+                        Some(common) => {
+                            let xs: HashSet<Symbol> = xs.into_iter().collect();
+                            common.into_iter().filter(|s| xs.contains(s)).collect()
+                        }
+                    })
+                }
+            }
+        }
+        let Some(excluded) = excluded else {
+            return SymbolPattern::Set(listed);
         };
-        match (listed(self), listed(other)) {
-            (Any, _) | (_, Any) => Any,
-            (Set(mut a), Set(b)) => {
-                for s in b {
-                    if !a.contains(&s) {
-                        a.push(s);
-                    }
-                }
-                Set(a)
-            }
-            (NotIn(n), Set(a)) | (Set(a), NotIn(n)) => {
-                let rest: Vec<Symbol> = n.into_iter().filter(|s| !a.contains(s)).collect();
-                if rest.is_empty() {
-                    Any
-                } else {
-                    NotIn(rest)
-                }
-            }
-            (NotIn(a), NotIn(b)) => {
-                let common: Vec<Symbol> = a.into_iter().filter(|s| b.contains(s)).collect();
-                if common.is_empty() {
-                    Any
-                } else {
-                    NotIn(common)
-                }
-            }
-            (One(_), _) | (_, One(_)) => unreachable!("listed above"),
+        let listed: HashSet<Symbol> = listed.into_iter().collect();
+        let rest: Vec<Symbol> = excluded
+            .into_iter()
+            .filter(|s| !listed.contains(s))
+            .collect();
+        if rest.is_empty() {
+            SymbolPattern::Any
+        } else {
+            SymbolPattern::NotIn(rest)
         }
     }
 
@@ -455,6 +457,39 @@ mod tests {
         };
         assert!(!short.accepts(&[lbl("R")]));
         assert!(short.accepts(&[lbl("R"), lbl("D")]));
+    }
+
+    /// Planted fault caught: the blacklists' common part taken as their union fails the
+    /// second assertion; listed labels not taken off a blacklist fail the first.
+    #[test]
+    fn any_of_accepts_what_one_of_the_patterns_accepts() {
+        use SymbolPattern::{Any, NotIn, One, Set};
+        let not_rt = NotIn(vec![lbl("R"), lbl("T")]);
+        assert_eq!(
+            SymbolPattern::any_of(vec![not_rt.clone(), One(lbl("R"))]),
+            NotIn(vec![lbl("T")])
+        );
+        assert_eq!(
+            SymbolPattern::any_of(vec![not_rt.clone(), NotIn(vec![lbl("T"), lbl("V")])]),
+            NotIn(vec![lbl("T")])
+        );
+        assert_eq!(
+            SymbolPattern::any_of(vec![not_rt, Set(vec![lbl("T"), lbl("R")])]),
+            Any
+        );
+        assert_eq!(
+            SymbolPattern::any_of(vec![One(Symbol::None), Set(vec![lbl("x")])]),
+            Set(vec![Symbol::None, lbl("x")])
+        );
+        assert_eq!(SymbolPattern::any_of(vec![One(lbl("R")), Any]), Any);
+        assert_eq!(SymbolPattern::any_of(vec![]), Set(vec![]));
+        // A long set costs its length: 200 000 items parse at once.
+        let long = format!("<[[^RT]{}]D>", "a".repeat(200_000));
+        let e = crate::osl::parse(&long, &crate::osl::Registered::none()).unwrap();
+        let mut first = None;
+        e.expr
+            .for_each_vertex(&mut |v| first = Some(v.symbols[0].clone()));
+        assert_eq!(first, Some(NotIn(vec![lbl("R"), lbl("T")])));
     }
 
     #[test]

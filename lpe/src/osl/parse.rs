@@ -798,7 +798,7 @@ impl<'a> Parser<'a> {
     /// symbol, `( … )` a sequence, `[ … ]` a nested list). Its one-symbol alternatives
     /// join into one pattern (so `[RT]` stays one vertex pattern); `[]` is the empty set.
     fn set_alternatives(&mut self) -> Result<Vec<Vec<SymbolPattern>>> {
-        let mut one: Option<SymbolPattern> = None;
+        let mut one = Vec::new();
         let mut longer = Vec::new();
         loop {
             match self.head() {
@@ -810,11 +810,7 @@ impl<'a> Parser<'a> {
                 Some(_) => {
                     for mut alt in self.slot_item()? {
                         if alt.len() == 1 {
-                            let p = alt.pop().expect("one pattern");
-                            one = Some(match one {
-                                None => p,
-                                Some(q) => q.union(p),
-                            });
+                            one.push(alt.pop().expect("one pattern"));
                         } else {
                             longer.push(alt);
                         }
@@ -823,12 +819,8 @@ impl<'a> Parser<'a> {
             }
         }
         let mut alts = Vec::with_capacity(longer.len() + 1);
-        if one.is_some() || longer.is_empty() {
-            alts.push(vec![match one {
-                Some(SymbolPattern::One(s)) => SymbolPattern::Set(vec![s]),
-                Some(p) => p,
-                None => SymbolPattern::Set(Vec::new()),
-            }]);
+        if !one.is_empty() || longer.is_empty() {
+            alts.push(vec![SymbolPattern::any_of(one)]);
         }
         alts.extend(longer);
         Ok(alts)
