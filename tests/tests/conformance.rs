@@ -79,12 +79,13 @@ fn the_suite_is_loaded_whole_and_runs_on_every_registered_engine() {
             "no case loaded from {file}"
         );
     }
-    // The OSL dialect's files, converted from 228 TSV rows (130 + 66 + 32); cases may be
-    // added, never dropped.
+    // The OSL dialect's files, converted from 228 TSV rows (130 + 66 + 32), and the 55
+    // rows probed on OSL's own matcher; cases may be added, never dropped.
     for (file, rows) in [
         ("osl/accum_test.toml", 130),
         ("osl/extra.toml", 66),
         ("osl/algebra.toml", 32),
+        ("osl/probed.toml", 55),
     ] {
         let of_file: Vec<Loaded> = cases.iter().filter(|c| c.file == file).cloned().collect();
         assert!(

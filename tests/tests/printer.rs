@@ -82,7 +82,8 @@ fn groups_inside_vertex_patterns_print_as_alternations_in_the_osl_dialect() {
         ("C<(R|T)D>L", "<C.><RD>|<TD><L.>"),
         // The group is one item: the scattering slot is padded with `.` after it.
         ("C<(RD)>L", "<C.><RD.><L.>"),
-        ("C<((R|T)D|GS)>L", "<C.><RD.>|<TD.>|<GS.><L.>"),
+        // `|` takes one item each side inside a group too: R or T, D or G, then S.
+        ("C<((R|T)D|GS)>L", "<C.><RDS.>|<RGS.>|<TDS.>|<TGS.><L.>"),
         // `-` inside `<…>` is a label, not set algebra.
         ("C<R-D>L", "<C.><R-D><L.>"),
     ] {

@@ -41,6 +41,47 @@ impl SymbolPattern {
         }
     }
 
+    /// The pattern accepting what any of `patterns` accepts (`[…]` inside `<>` joins its
+    /// one-symbol items so; none: the empty set): the lists one after the other (as
+    /// written, repeats kept), or, with blacklists among them, their common part less
+    /// what the lists accept; `.` absorbs everything. Linear in the patterns' lengths,
+    /// however long a set is.
+    pub fn any_of(patterns: Vec<SymbolPattern>) -> SymbolPattern {
+        use std::collections::HashSet;
+        let mut listed = Vec::new();
+        // The common part of the blacklists so far, if any was seen.
+        let mut excluded: Option<Vec<Symbol>> = None;
+        for p in patterns {
+            match p {
+                SymbolPattern::Any => return SymbolPattern::Any,
+                SymbolPattern::One(s) => listed.push(s),
+                SymbolPattern::Set(xs) => listed.extend(xs),
+                SymbolPattern::NotIn(xs) => {
+                    excluded = Some(match excluded {
+                        None => xs,
+                        Some(common) => {
+                            let xs: HashSet<Symbol> = xs.into_iter().collect();
+                            common.into_iter().filter(|s| xs.contains(s)).collect()
+                        }
+                    })
+                }
+            }
+        }
+        let Some(excluded) = excluded else {
+            return SymbolPattern::Set(listed);
+        };
+        let listed: HashSet<Symbol> = listed.into_iter().collect();
+        let rest: Vec<Symbol> = excluded
+            .into_iter()
+            .filter(|s| !listed.contains(s))
+            .collect();
+        if rest.is_empty() {
+            SymbolPattern::Any
+        } else {
+            SymbolPattern::NotIn(rest)
+        }
+    }
+
     /// Every symbol the pattern names.
     pub fn symbols(&self) -> &[Symbol] {
         match self {
@@ -276,11 +317,12 @@ impl SetExpr for Lpe {
 }
 
 /// A label as it reads inside `<>`: one plain character bare, anything else quoted
-/// (characters with a meaning inside `<>` included).
+/// (characters with a meaning inside `<>` included; `|` alternates inside a `( … )`,
+/// where the printer may put custom labels).
 fn write_label(f: &mut fmt::Formatter<'_>, l: &str) -> fmt::Result {
     let mut cs = l.chars();
     match (cs.next(), cs.next()) {
-        (Some(c), None) if !"x.'[]()<>*+{}^".contains(c) => write!(f, "{c}"),
+        (Some(c), None) if !"x.'[]()<>*+{}^|".contains(c) => write!(f, "{c}"),
         _ => write!(f, "'{l}'"),
     }
 }
@@ -294,18 +336,15 @@ fn write_symbol(f: &mut fmt::Formatter<'_>, s: &Symbol) -> fmt::Result {
 
 impl fmt::Display for SymbolPattern {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        // In a set every unquoted character is a label; in a negation only known labels
-        // may go unquoted, so its labels are all quoted. NONE has no spelling in either.
+        // A set's items read as slots (`x` NONE, `.` any symbol, `(`, `[`, `<` and the
+        // postfixes with their meaning), so its labels print as slot labels; in a
+        // negation only known labels may go unquoted, so its labels are all quoted.
         let list = |f: &mut fmt::Formatter<'_>, open: &str, xs: &[Symbol], bare: bool| {
             f.write_str(open)?;
             for x in xs {
                 match x {
                     Symbol::None => f.write_str("x")?,
-                    Symbol::Label(l)
-                        if bare && l.chars().count() == 1 && !"'[]^".contains(l.as_str()) =>
-                    {
-                        f.write_str(l)?
-                    }
+                    Symbol::Label(l) if bare => write_label(f, l)?,
                     Symbol::Label(l) => write!(f, "'{l}'")?,
                 }
             }
@@ -418,6 +457,39 @@ mod tests {
         };
         assert!(!short.accepts(&[lbl("R")]));
         assert!(short.accepts(&[lbl("R"), lbl("D")]));
+    }
+
+    /// Planted fault caught: the blacklists' common part taken as their union fails the
+    /// second assertion; listed labels not taken off a blacklist fail the first.
+    #[test]
+    fn any_of_accepts_what_one_of_the_patterns_accepts() {
+        use SymbolPattern::{Any, NotIn, One, Set};
+        let not_rt = NotIn(vec![lbl("R"), lbl("T")]);
+        assert_eq!(
+            SymbolPattern::any_of(vec![not_rt.clone(), One(lbl("R"))]),
+            NotIn(vec![lbl("T")])
+        );
+        assert_eq!(
+            SymbolPattern::any_of(vec![not_rt.clone(), NotIn(vec![lbl("T"), lbl("V")])]),
+            NotIn(vec![lbl("T")])
+        );
+        assert_eq!(
+            SymbolPattern::any_of(vec![not_rt, Set(vec![lbl("T"), lbl("R")])]),
+            Any
+        );
+        assert_eq!(
+            SymbolPattern::any_of(vec![One(Symbol::None), Set(vec![lbl("x")])]),
+            Set(vec![Symbol::None, lbl("x")])
+        );
+        assert_eq!(SymbolPattern::any_of(vec![One(lbl("R")), Any]), Any);
+        assert_eq!(SymbolPattern::any_of(vec![]), Set(vec![]));
+        // A long set costs its length: 200 000 items parse at once.
+        let long = format!("<[[^RT]{}]D>", "a".repeat(200_000));
+        let e = crate::osl::parse(&long, &crate::osl::Registered::none()).unwrap();
+        let mut first = None;
+        e.expr
+            .for_each_vertex(&mut |v| first = Some(v.symbols[0].clone()));
+        assert_eq!(first, Some(NotIn(vec![lbl("R"), lbl("T")])));
     }
 
     #[test]

@@ -7,9 +7,12 @@
 //! atom   := '.' | letter | "'" label "'" | '(' seq ')' | '[' item* ']'
 //!         | '[^' label+ ']' | '<' slot* '>'
 //! postfix:= '*' | '+' | '{' n '}' | '{' n ',' '}' | '{' n ',' m '}'
-//! slot   := '.' | 'x' | char | "'" label "'" | '[' label* ']' | '[^' label+ ']'
-//!         | '(' slot+ ')'
+//! slot   := '.' | 'x' | char | "'" label "'" | '[' slot* ']' | '[^' label+ ']'
+//!         | '(' (slot | '|' slot)+ ')'     `|` ORs the next slot with the previous one
 //! ```
+//!
+//! Inside `<>` no slot takes a postfix: a `*`, `+` or `{` after a slot is an error, one
+//! starting a slot is its label (`<*D>`), as OSL reads them.
 //!
 //! Every vertex-level atom expands to a whole [`VertexPattern`] with the eater (when it
 //! has fewer than five custom items). No whitespace is skipped.
@@ -649,18 +652,7 @@ impl<'a> Parser<'a> {
                     self.pos += 1;
                     break;
                 }
-                Some('(') => {
-                    self.enter()?;
-                    let open = self.pos;
-                    self.pos += 1;
-                    let alts = self.slot_alternatives(open)?;
-                    self.depth -= 1;
-                    items.push(alts);
-                }
-                Some(_) => {
-                    let s = self.slot()?;
-                    items.push(vec![vec![s]]);
-                }
+                Some(_) => items.push(self.slot_item()?),
             }
         }
         let customs = items.len().saturating_sub(2);
@@ -701,63 +693,82 @@ impl<'a> Parser<'a> {
             .collect())
     }
 
-    /// `( ... )` inside `<>`, after the `(`: alternatives (`|`) of sequences of slot
-    /// patterns, up to `)`. A group inside is a sub-expression too: its alternatives
-    /// multiply into the sequence. An empty alternative is an error, as in OSL.
+    /// `( ... )` inside `<>`, after the `(`, through its `)`: a sequence of slot items,
+    /// its alternative symbol sequences. `|` binds tighter than the sequence, as
+    /// everywhere in OSL: it takes the one item before it and the one after
+    /// (`(RD|T)` is `R` then `D` or `T`). An empty side is an error.
     fn slot_alternatives(&mut self, open: usize) -> Result<Vec<Vec<SymbolPattern>>> {
-        let mut out: Vec<Vec<SymbolPattern>> = Vec::new();
-        // The current alternative's ways (several after a nested group with `|`).
-        let mut ways: Vec<Vec<SymbolPattern>> = vec![Vec::new()];
-        let mut empty = true;
+        // Per item, with its start, its alternative symbol sequences.
+        let mut items: Vec<(usize, Vec<Vec<SymbolPattern>>)> = Vec::new();
         loop {
+            let at = self.pos;
             match self.head() {
                 None => return Err(self.err(ErrorKind::UnclosedParen, self.src.len())),
                 Some(')') => {
-                    if empty {
-                        return Err(if out.is_empty() {
-                            self.err(ErrorKind::EmptyGroup, open)
-                        } else {
-                            self.err(ErrorKind::EmptyAlternative, self.pos)
-                        });
+                    if items.is_empty() {
+                        return Err(self.err(ErrorKind::EmptyGroup, open));
                     }
                     self.pos += 1;
-                    out.extend(ways);
-                    return Ok(out);
+                    break;
                 }
                 Some('|') => {
-                    if empty {
+                    let Some((prev_at, mut alts)) = items.pop() else {
+                        return Err(self.err(ErrorKind::EmptyAlternative, at));
+                    };
+                    self.pos += 1;
+                    if matches!(self.head(), Some(')' | '|')) {
                         return Err(self.err(ErrorKind::EmptyAlternative, self.pos));
                     }
-                    self.pos += 1;
-                    out.extend(std::mem::replace(&mut ways, vec![Vec::new()]));
-                    empty = true;
-                }
-                Some('(') => {
-                    self.enter()?;
-                    let inner = self.pos;
-                    self.pos += 1;
-                    let alts = self.slot_alternatives(inner)?;
-                    self.depth -= 1;
-                    ways = self.then(ways, &alts, inner)?;
-                    empty = false;
+                    alts.extend(self.slot_item()?);
+                    items.push((prev_at, alts));
                 }
                 Some(_) => {
-                    let s = self.slot()?;
-                    for w in &mut ways {
-                        w.push(s.clone());
-                    }
-                    empty = false;
+                    let alts = self.slot_item()?;
+                    items.push((at, alts));
                 }
             }
         }
+        let mut ways: Vec<Vec<SymbolPattern>> = vec![Vec::new()];
+        for (at, alts) in &items {
+            ways = self.then(ways, alts, *at)?;
+        }
+        Ok(ways)
     }
 
-    /// One slot pattern inside `<>`.
+    /// One item inside `<>` (a slot, or an item of a `( … )` or `[ … ]` there): its
+    /// alternative symbol sequences (one sequence of one pattern for a plain slot). As in
+    /// OSL, which reads a postfix after every item and refuses it inside `<>`, a `*`, `+`
+    /// or `{` right after an item is an error, while at an item's start it is a label.
+    fn slot_item(&mut self) -> Result<Vec<Vec<SymbolPattern>>> {
+        let open = self.pos;
+        let alts = match (self.head(), self.src[open..].chars().nth(1)) {
+            (Some('('), _) => {
+                self.enter()?;
+                self.pos += 1;
+                let alts = self.slot_alternatives(open)?;
+                self.depth -= 1;
+                alts
+            }
+            (Some('['), next) if next != Some('^') => {
+                self.enter()?;
+                self.pos += 1;
+                let alts = self.set_alternatives()?;
+                self.depth -= 1;
+                alts
+            }
+            _ => vec![vec![self.slot()?]],
+        };
+        if let Some('*' | '+' | '{') = self.head() {
+            return Err(self.err(ErrorKind::RepetitionInGroup, self.pos));
+        }
+        Ok(alts)
+    }
+
+    /// One slot pattern inside `<>`: `.`, `x`, a quoted or plain label, a `[^…]`.
     fn slot(&mut self) -> Result<SymbolPattern> {
         let at = self.pos;
         match self.head() {
             Some('<') => Err(self.err(ErrorKind::NestedGroup, at)),
-            Some('*' | '+' | '{') => Err(self.err(ErrorKind::RepetitionInGroup, at)),
             Some('.') => {
                 self.pos += 1;
                 Ok(SymbolPattern::Any)
@@ -768,16 +779,12 @@ impl<'a> Parser<'a> {
             }
             Some('\'') => Ok(SymbolPattern::One(self.literal()?)),
             Some('[') => {
-                self.pos += 1;
-                if self.head() == Some('^') {
-                    self.pos += 1;
-                    let labels = self.negated_labels()?;
-                    Ok(SymbolPattern::NotIn(
-                        labels.into_iter().map(|(s, _)| s).collect(),
-                    ))
-                } else {
-                    self.symbol_set()
-                }
+                // `slot_item` reads a plain `[…]`: here it is `[^…]`.
+                self.pos += 2;
+                let labels = self.negated_labels()?;
+                Ok(SymbolPattern::NotIn(
+                    labels.into_iter().map(|(s, _)| s).collect(),
+                ))
             }
             _ => {
                 let c = self.bump().expect("not at the end");
@@ -786,22 +793,36 @@ impl<'a> Parser<'a> {
         }
     }
 
-    /// `[...]` inside `<>`, after the `[`: every unquoted character is a label.
-    fn symbol_set(&mut self) -> Result<SymbolPattern> {
-        let mut out = Vec::new();
+    /// `[...]` inside `<>`, after the `[`: the alternation of its items, each read as a
+    /// slot item (OSL's or-list parses items there as everywhere: `x` is NONE, `.` any
+    /// symbol, `( … )` a sequence, `[ … ]` a nested list). Its one-symbol alternatives
+    /// join into one pattern (so `[RT]` stays one vertex pattern); `[]` is the empty set.
+    fn set_alternatives(&mut self) -> Result<Vec<Vec<SymbolPattern>>> {
+        let mut one = Vec::new();
+        let mut longer = Vec::new();
         loop {
             match self.head() {
                 None => return Err(self.err(ErrorKind::UnclosedOrList, self.src.len())),
                 Some(']') => {
                     self.pos += 1;
-                    return Ok(SymbolPattern::Set(out));
+                    break;
                 }
-                Some('\'') => out.push(self.literal()?),
                 Some(_) => {
-                    let c = self.bump().expect("not at the end");
-                    out.push(Symbol::label(c));
+                    for mut alt in self.slot_item()? {
+                        if alt.len() == 1 {
+                            one.push(alt.pop().expect("one pattern"));
+                        } else {
+                            longer.push(alt);
+                        }
+                    }
                 }
             }
         }
+        let mut alts = Vec::with_capacity(longer.len() + 1);
+        if !one.is_empty() || longer.is_empty() {
+            alts.push(vec![SymbolPattern::any_of(one)]);
+        }
+        alts.extend(longer);
+        Ok(alts)
     }
 }

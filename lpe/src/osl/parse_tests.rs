@@ -131,19 +131,85 @@ fn groups_fill_slots_in_order() {
             ]
         )
     );
-    // Inside a set every character is a label, `x` and `.` included.
-    assert_eq!(
-        p("<[x.]>"),
-        v(&none(), vec![P::Set(vec![lbl("x"), lbl(".")]), P::Any])
-    );
     assert_eq!(p("<[]D>"), v(&none(), vec![P::Set(vec![]), one("D")]));
+}
+
+/// A `[…]` inside `<…>` reads its items as OSL's or-list does (each one slot item: `x`
+/// NONE, `.` any symbol, `( … )` a sequence, `[ … ]` nested, `*` a label at an item's
+/// start and an error after one). Trees worked from OSL's `parseOrlist`/`parseSymbol`
+/// and confirmed on OSL's matcher built from its sources. Planted faults caught: the
+/// old reading back (every character of the set a label) fails the first assertion;
+/// dropping the repetition check after an item fails the `<[R*]D>` one.
+#[test]
+fn sets_inside_a_group_read_their_items_as_slots() {
+    let none_sym = P::Set(vec![Symbol::None]);
+    assert_eq!(p("<[x].>"), v(&none(), vec![none_sym.clone(), P::Any]));
+    assert_eq!(p("<.[x]>"), v(&none(), vec![P::Any, none_sym.clone()]));
+    assert_eq!(p("<..[x]>"), v(&none(), vec![P::Any, P::Any, none_sym]));
+    assert_eq!(p("<[.].>"), v(&none(), vec![P::Any, P::Any]));
+    assert_eq!(p("<..[.R]>"), v(&none(), vec![P::Any, P::Any, P::Any]));
+    assert_eq!(
+        p("<[xR'x'].>"),
+        v(
+            &none(),
+            vec![P::Set(vec![Symbol::None, lbl("R"), lbl("x")]), P::Any]
+        )
+    );
+    // A nested list joins in; a blacklist less the listed labels.
+    assert_eq!(
+        p("<[[RT]]D>"),
+        v(&none(), vec![P::Set(vec![lbl("R"), lbl("T")]), one("D")])
+    );
+    assert_eq!(
+        p("<[[^RT]R]D>"),
+        v(&none(), vec![P::NotIn(vec![lbl("T")]), one("D")])
+    );
+    // `( … )` in a list is a sequence of symbols: one vertex pattern per way.
+    assert_eq!(
+        p("<[(RD)S]>"),
+        Expr::Alt(vec![
+            v(&none(), vec![P::Set(vec![lbl("S")]), P::Any]),
+            v(&none(), vec![one("R"), one("D"), P::Any]),
+        ])
+    );
+    // `*`, `+`, `{` starting an item are labels; after one they are a repetition.
+    assert_eq!(p("<*D>"), v(&none(), vec![one("*"), one("D")]));
+    assert_eq!(p("<+>"), v(&none(), vec![one("+"), P::Any]));
+    assert_eq!(
+        p("<[*]D>"),
+        v(&none(), vec![P::Set(vec![lbl("*")]), one("D")])
+    );
+    assert_eq!(
+        p("<(R|{)D>"),
+        Expr::Alt(vec![
+            v(&none(), vec![one("R"), one("D")]),
+            v(&none(), vec![one("{"), one("D")]),
+        ])
+    );
+    for (src, kind, pos) in [
+        ("<[R*]D>", K::RepetitionInGroup, 3),
+        ("<[(R)+]D>", K::RepetitionInGroup, 5),
+        ("<[*]+>", K::RepetitionInGroup, 4),
+        ("<R[x]{2}>", K::RepetitionInGroup, 5),
+        ("<[<R>]D>", K::NestedGroup, 2),
+        ("<[x", K::UnclosedOrList, 3),
+        ("<[^x]D>", K::UnrecognizedLabel, 3),
+    ] {
+        let e = parse(src, &none()).expect_err(src);
+        assert_eq!((&e.kind, e.pos), (&kind, pos), "{src}");
+    }
+    // Printing quotes what a list would read otherwise, and reads back.
+    for src in ["<['x''.''*'(RD)].>", "<[x.]>", "<[[^RT]G]D>"] {
+        let e = p(src);
+        assert_eq!(p(&e.to_string()), e, "{src} printed {e}");
+    }
 }
 
 #[test]
 fn parentheses_inside_a_group_put_a_sequence_in_one_slot() {
     // `<(RD)>`: R, D in the event item, then the missing scattering slot.
     assert_eq!(p("<(RD)>"), v(&none(), vec![one("R"), one("D"), P::Any]));
-    // A group is a sub-expression: `|` alternates sequences, one vertex pattern each.
+    // A group is a sub-expression: `|` alternates, one vertex pattern each way.
     assert_eq!(
         p("<(R|T)D>"),
         Expr::Alt(vec![
@@ -151,12 +217,23 @@ fn parentheses_inside_a_group_put_a_sequence_in_one_slot() {
             v(&none(), vec![one("T"), one("D")])
         ])
     );
-    // Alternatives of different lengths, and nested groups.
+    // `|` takes one item on each side there too, as OSL's sequence parser reads it
+    // (confirmed on OSL's matcher: `<(RD|T)S>` matches `R,T,S`, not `T,S`). Planted
+    // fault caught: `|` alternating whole sequences (the earlier reading) fails this.
     assert_eq!(
         p("<(RD|T)S>"),
         Expr::Alt(vec![
             v(&none(), vec![one("R"), one("D"), one("S")]),
-            v(&none(), vec![one("T"), one("S")])
+            v(&none(), vec![one("R"), one("T"), one("S")])
+        ])
+    );
+    assert_eq!(
+        p("<(R(D|G)S|T)>"),
+        Expr::Alt(vec![
+            v(&none(), vec![one("R"), one("D"), one("S"), P::Any]),
+            v(&none(), vec![one("R"), one("D"), one("T"), P::Any]),
+            v(&none(), vec![one("R"), one("G"), one("S"), P::Any]),
+            v(&none(), vec![one("R"), one("G"), one("T"), P::Any]),
         ])
     );
     assert_eq!(

@@ -29,8 +29,9 @@ pub enum Pattern {
     Any,
     /// Exactly this symbol.
     Is(Sym),
-    /// A set `[…]` inside `<…>` (possibly empty: nothing).
-    In(Vec<Sym>),
+    /// A `[…]` inside `<…>` of one-symbol items: any of these patterns (none when
+    /// empty).
+    Either(Vec<Pattern>),
     /// A blacklist `[^…]`.
     NotIn(Vec<Sym>),
 }

@@ -52,7 +52,7 @@ pub fn symbol_matches(p: &Pattern, s: &Sym) -> bool {
     match p {
         Pattern::Any => true,
         Pattern::Is(x) => x == s,
-        Pattern::In(xs) => xs.contains(s),
+        Pattern::Either(ps) => ps.iter().any(|p| symbol_matches(p, s)),
         Pattern::NotIn(xs) => !xs.contains(s),
     }
 }

@@ -97,8 +97,22 @@ mod tests {
         assert!(m("C<(R|T)D>L", "C,_ R,D L,_"));
         assert!(m("C<(R|T)D>L", "C,_ T,D L,_"));
         assert!(!m("C<(R|T)D>L", "C,_ R,|,T L,_"));
+        // There too `|` takes one item on each side: `(RD|T)` is R, then D or T.
         assert!(m("C<(RD|T)S>L", "C,_ R,D,S L,_"));
-        assert!(m("C<(RD|T)S>L", "C,_ T,S L,_"));
+        assert!(m("C<(RD|T)S>L", "C,_ R,T,S L,_"));
+        assert!(!m("C<(RD|T)S>L", "C,_ T,S L,_"));
+        // In a `[…]` inside `<…>` every item reads as a slot item: `x` is NONE, `.` any
+        // symbol, `( … )` a sequence; `*` starting an item is a label. Planted fault
+        // caught: the set read character by character (the earlier reading) fails the
+        // `C<[x].>L` line, and engines/tests/front_ends.rs names the probed.toml cases.
+        assert!(m("C<[x].>L", "C,_ ~,D L,_"));
+        assert!(!m("C<[x].>L", "C,_ x,D L,_"));
+        assert!(m("C<..[.]>L", "C,_ R,D,D L,_"));
+        assert!(m("C<[(RD)S]>L", "C,_ R,D,G L,_"));
+        assert!(!m("C<[(RD)S]>L", "C,_ R,G L,_"));
+        assert!(m("C<[[^RT]R]D>L", "C,_ R,D L,_"));
+        assert!(!m("C<[[^RT]R]D>L", "C,_ T,D L,_"));
+        assert!(m("C<*D>L", "C,_ *,D L,_"));
     }
 
     #[test]

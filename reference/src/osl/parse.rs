@@ -360,7 +360,7 @@ impl Parser<'_> {
             '<' => {
                 let depth = self.deeper(depth)?;
                 self.bump();
-                let slots = self.slots(depth, false)?;
+                let slots = self.slots(depth)?;
                 Ok(self.vertex(slots))
             }
             '[' => {
@@ -494,106 +494,172 @@ impl Parser<'_> {
         Ok((kind, list))
     }
 
-    /// Slot items inside `<…>` (or, `group`, inside a `( … )` there: up to `|` or `)`),
-    /// through the closer.
-    fn slots(&mut self, depth: usize, group: bool) -> Result<Vec<Slot>, FrontError> {
+    /// Slot items inside `<…>`, through the `>`.
+    fn slots(&mut self, depth: usize) -> Result<Vec<Slot>, FrontError> {
         let mut slots = Vec::new();
         loop {
-            let at = self.pos;
-            let Some(c) = self.peek() else {
-                let message = if group {
-                    "Reached end of line looking for )"
-                } else {
-                    "Reached end of line looking for > to end a group"
-                };
-                return Err(FrontError::new(ErrorKind::Syntax, self.end, message));
-            };
-            match c {
-                '>' if !group => {
+            match self.peek() {
+                None => {
+                    return Err(FrontError::new(
+                        ErrorKind::Syntax,
+                        self.end,
+                        "Reached end of line looking for > to end a group",
+                    ))
+                }
+                Some('>') => {
                     self.bump();
                     break;
                 }
-                ')' | '|' if group => break,
-                '<' => return Err(self.error("No groups allowed inside of groups")),
-                '*' | '+' | '{' => return Err(self.error("Repetitions not allowed inside '<...>'")),
-                '\'' => {
-                    self.bump();
-                    slots.push(Slot::One(Pattern::Is(Sym::Label(self.quoted(at, false)?))));
-                }
-                '.' => {
-                    self.bump();
-                    slots.push(Slot::One(Pattern::Any));
-                }
-                'x' => {
-                    self.bump();
-                    slots.push(Slot::One(Pattern::Is(Sym::None)));
-                }
-                '[' => {
-                    let _ = self.deeper(depth)?;
-                    self.bump();
-                    if self.peek() == Some('^') {
-                        self.bump();
-                        let (_, list) = self.blacklist(at, true)?;
-                        slots.push(Slot::One(Pattern::NotIn(list)));
-                        continue;
-                    }
-                    let mut set = Vec::new();
-                    loop {
-                        let at = self.pos;
-                        match self.bump() {
-                            None => {
-                                return Err(FrontError::new(
-                                    ErrorKind::Syntax,
-                                    self.end,
-                                    "Reached end of line looking for ] to end an or list",
-                                ))
-                            }
-                            Some(']') => break,
-                            Some('\'') => set.push(Sym::Label(self.quoted(at, false)?)),
-                            Some(c) => set.push(Sym::Label(c.to_string())),
-                        }
-                    }
-                    slots.push(Slot::One(Pattern::In(set)));
-                }
-                '(' => {
-                    let depth = self.deeper(depth)?;
-                    self.bump();
-                    let mut alts = Vec::new();
-                    loop {
-                        let seq = self.slots(depth, true)?;
-                        let closer = self.bump();
-                        if seq.is_empty() {
-                            let message = if alts.is_empty() && closer == Some(')') {
-                                "Empty group () not allowed"
-                            } else {
-                                "Empty alternative in a group: `|` needs an expression on both sides"
-                            };
-                            return Err(FrontError::new(ErrorKind::Syntax, at, message));
-                        }
-                        alts.push(seq);
-                        if closer == Some(')') {
-                            break;
-                        }
-                    }
-                    slots.push(Slot::Group(alts));
-                }
-                c => {
-                    self.bump();
-                    slots.push(Slot::One(Pattern::Is(Sym::Label(c.to_string()))));
-                }
+                Some(_) => slots.push(self.slot(depth)?),
             }
         }
-        if !group {
-            let patterns = slots.iter().map(slot_patterns).fold(1, u64::saturating_mul);
-            if patterns > MAX_GROUP_ALTERNATIVES {
-                return Err(FrontError::new(
-                    ErrorKind::Limit,
-                    self.pos,
-                    format!("one `<…>` stands for {patterns} vertex patterns, more than {MAX_GROUP_ALTERNATIVES}"),
-                ));
-            }
+        let patterns = slots.iter().map(slot_patterns).fold(1, u64::saturating_mul);
+        if patterns > MAX_GROUP_ALTERNATIVES {
+            return Err(FrontError::new(
+                ErrorKind::Limit,
+                self.pos,
+                format!("one `<…>` stands for {patterns} vertex patterns, more than {MAX_GROUP_ALTERNATIVES}"),
+            ));
         }
         Ok(slots)
+    }
+
+    /// The items of a `( … )` inside `<…>` after its `(` (at `open`), through `)`: a
+    /// sequence in which `|` joins the one item before it and the one after (§18.4),
+    /// neither side empty.
+    fn group_items(&mut self, depth: usize, open: usize) -> Result<Vec<Slot>, FrontError> {
+        let unclosed =
+            |end| FrontError::new(ErrorKind::Syntax, end, "Reached end of line looking for )");
+        let empty_side = |at| {
+            FrontError::new(
+                ErrorKind::Syntax,
+                at,
+                "Empty alternative in a group: `|` needs an expression on both sides",
+            )
+        };
+        let mut items = Vec::new();
+        loop {
+            match self.peek() {
+                None => return Err(unclosed(self.end)),
+                Some(')') => {
+                    self.bump();
+                    break;
+                }
+                Some('|') => {
+                    let Some(before) = items.pop() else {
+                        return Err(empty_side(self.pos));
+                    };
+                    self.bump();
+                    match self.peek() {
+                        None => return Err(unclosed(self.end)),
+                        Some(')' | '|') => return Err(empty_side(self.pos)),
+                        Some(_) => {}
+                    }
+                    let after = self.slot(depth)?;
+                    items.push(Slot::Group(vec![vec![before], vec![after]]));
+                }
+                Some(_) => items.push(self.slot(depth)?),
+            }
+        }
+        if items.is_empty() {
+            return Err(FrontError::new(
+                ErrorKind::Syntax,
+                open,
+                "Empty group () not allowed",
+            ));
+        }
+        Ok(items)
+    }
+
+    /// One slot item inside `<…>`, and the check after it: a `*`, `+` or `{` that
+    /// follows an item is a repetition, refused inside `<…>` (§18.4); one that starts an
+    /// item is read as a label by the last arm.
+    fn slot(&mut self, depth: usize) -> Result<Slot, FrontError> {
+        let at = self.pos;
+        let c = self.peek().expect("the caller saw a character");
+        let slot = match c {
+            '<' => return Err(self.error("No groups allowed inside of groups")),
+            '\'' => {
+                self.bump();
+                Slot::One(Pattern::Is(Sym::Label(self.quoted(at, false)?)))
+            }
+            '.' => {
+                self.bump();
+                Slot::One(Pattern::Any)
+            }
+            'x' => {
+                self.bump();
+                Slot::One(Pattern::Is(Sym::None))
+            }
+            '[' => {
+                let depth = self.deeper(depth)?;
+                self.bump();
+                if self.peek() == Some('^') {
+                    self.bump();
+                    let (_, list) = self.blacklist(at, true)?;
+                    Slot::One(Pattern::NotIn(list))
+                } else {
+                    self.set(depth)?
+                }
+            }
+            '(' => {
+                let depth = self.deeper(depth)?;
+                self.bump();
+                Slot::Group(vec![self.group_items(depth, at)?])
+            }
+            c => {
+                self.bump();
+                Slot::One(Pattern::Is(Sym::Label(c.to_string())))
+            }
+        };
+        if matches!(self.peek(), Some('*' | '+' | '{')) {
+            return Err(self.error("Repetitions not allowed inside '<...>'"));
+        }
+        Ok(slot)
+    }
+
+    /// A `[…]` inside `<…>` after its `[`, through `]` (§18.4): the alternation of its
+    /// slot items. The ways of one symbol make one slot pattern (any of them); each
+    /// longer way, through a `( … )` item, stays a way of its own.
+    fn set(&mut self, depth: usize) -> Result<Slot, FrontError> {
+        let mut one = Vec::new();
+        let mut longer = Vec::new();
+        loop {
+            match self.peek() {
+                None => {
+                    return Err(FrontError::new(
+                        ErrorKind::Syntax,
+                        self.end,
+                        "Reached end of line looking for ] to end an or list",
+                    ))
+                }
+                Some(']') => {
+                    self.bump();
+                    break;
+                }
+                Some(_) => match self.slot(depth)? {
+                    Slot::One(p) => one.push(p),
+                    Slot::Group(alts) => {
+                        for seq in alts {
+                            match <[Slot; 1]>::try_from(seq) {
+                                Ok([Slot::One(p)]) => one.push(p),
+                                Ok([g]) => longer.push(vec![g]),
+                                Err(seq) => longer.push(seq),
+                            }
+                        }
+                    }
+                },
+            }
+        }
+        if longer.is_empty() {
+            return Ok(Slot::One(Pattern::Either(one)));
+        }
+        let mut alts = Vec::new();
+        if !one.is_empty() {
+            alts.push(vec![Slot::One(Pattern::Either(one))]);
+        }
+        alts.extend(longer);
+        Ok(Slot::Group(alts))
     }
 }
 

@@ -28,12 +28,13 @@ fn pattern(p: &Pattern) -> String {
     match p {
         Pattern::Any => ".".into(),
         Pattern::Is(s) => sym(s),
-        Pattern::In(xs) => {
-            let items: String = xs
+        // Its items read as slot items: `x` NONE, `.` any, labels all quoted.
+        Pattern::Either(ps) => {
+            let items: String = ps
                 .iter()
-                .map(|s| match s {
-                    Sym::None => "'x'".into(),
-                    Sym::Label(l) => format!("'{l}'"),
+                .map(|p| match p {
+                    Pattern::Is(Sym::Label(l)) => format!("'{l}'"),
+                    p => pattern(p),
                 })
                 .collect();
             format!("[{items}]")
@@ -54,12 +55,20 @@ fn pattern(p: &Pattern) -> String {
 fn slot(s: &Slot) -> String {
     match s {
         Slot::One(p) => pattern(p),
+        // `|` takes one item on each side (§18.4): a longer alternative is one `( … )`.
         Slot::Group(alts) => {
-            let alts: Vec<String> = alts
+            let texts: Vec<String> = alts
                 .iter()
-                .map(|seq| seq.iter().map(slot).collect())
+                .map(|seq| {
+                    let text: String = seq.iter().map(slot).collect();
+                    if alts.len() > 1 && seq.len() > 1 {
+                        format!("({text})")
+                    } else {
+                        text
+                    }
+                })
                 .collect();
-            format!("({})", alts.join("|"))
+            format!("({})", texts.join("|"))
         }
     }
 }
