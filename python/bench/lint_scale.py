@@ -176,20 +176,26 @@ def match_rows(lpe_check, n, tmp):
     want = [bool(g) for g in got]
     rows = [("AovSet.match_many", t_many)]
     for engine in ("fast", "reference"):
-        times = []
-        for _ in range(3):
-            with open(tsv) as stdin:
-                t, _, code, out, err = run_child(
-                    [lpe_check, "match", "--batch", "--engine", engine], stdin=stdin,
-                    stdout=subprocess.PIPE)
-            if code != 0:
-                sys.exit(f"match --batch --engine {engine} exited {code}: {err[:500]!r}")
-            if [line == b"match" for line in out.splitlines()] != want:
-                sys.exit(f"match --batch --engine {engine} and match_many answer differently")
-            times.append(t)
-        rows.append((f"lpe-check match --batch --engine {engine}", min(times)))
+        t, out = time_batch(lpe_check, tsv, engine)
+        if [line == b"match" for line in out.splitlines()] != want:
+            sys.exit(f"match --batch --engine {engine} and match_many answer differently")
+        rows.append((f"lpe-check match --batch --engine {engine}", t))
     os.unlink(tsv)
     return rows
+
+
+def time_batch(lpe_check, tsv, engine):
+    """The best of three `match --batch --engine ENGINE < TSV` runs, and its output."""
+    times = []
+    for _ in range(3):
+        with open(tsv) as stdin:
+            t, _, code, out, err = run_child(
+                [lpe_check, "match", "--batch", "--engine", engine], stdin=stdin,
+                stdout=subprocess.PIPE)
+        if code != 0:
+            sys.exit(f"match --batch --engine {engine} exited {code}: {err[:500]!r}")
+        times.append(t)
+    return min(times), out
 
 
 def distinct_rows(lpe_check, n, tmp):
@@ -202,17 +208,9 @@ def distinct_rows(lpe_check, n, tmp):
             f.write(f"C.{{{i % 200}}}[LO]|C<RD'l{i}'>.*L\t{p}\n")
     rows, answers = [], []
     for engine in ("fast", "reference"):
-        times = []
-        for _ in range(3):
-            with open(tsv) as stdin:
-                t, _, code, out, err = run_child(
-                    [lpe_check, "match", "--batch", "--engine", engine], stdin=stdin,
-                    stdout=subprocess.PIPE)
-            if code != 0:
-                sys.exit(f"match --batch --engine {engine} exited {code}: {err[:500]!r}")
-            times.append(t)
+        t, out = time_batch(lpe_check, tsv, engine)
         answers.append(out)
-        rows.append((f"lpe-check match --batch --engine {engine}", min(times)))
+        rows.append((f"lpe-check match --batch --engine {engine}", t))
     if answers[0] != answers[1]:
         sys.exit("match --batch: the engines answer the distinct lines differently")
     os.unlink(tsv)
