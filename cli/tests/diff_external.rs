@@ -216,10 +216,10 @@ fn the_osl_suite_replays_clean_through_the_osl_proxy() {
         "tests/testdata/osl",
     ]);
     assert_eq!(code, 0, "{out}{err}");
-    // 62 cases, 249 verdicts: 228 (130 + 66 + 32 rows of the former TSV files) and the
-    // 21 of the groups-inside-`<…>` cases.
+    // 79 cases, 307 verdicts: 228 (130 + 66 + 32 rows of the former TSV files), the 21
+    // of the groups-inside-`<…>` cases and the 58 of `probed.toml` (17 cases).
     assert!(
-        out.contains("suite: 62 cases run (249 answers checked), 0 failed"),
+        out.contains("suite: 79 cases run (307 answers checked), 0 failed"),
         "{out}"
     );
     // The proxy that forgets registrations fails the cases that register labels, each
