@@ -3,20 +3,8 @@
 //! naming what to install, when python3 is absent (a skip would read as a pass); the
 //! harness itself is tested in lpe-engines.
 
-use std::process::Command;
-
-fn lpe_check(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lpe-check"))
-        .args(args)
-        .current_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/.."))
-        .output()
-        .expect("lpe-check runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
+mod common;
+use common::lpe_check;
 
 #[test]
 fn bad_input_exits_2() {

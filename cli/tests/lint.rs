@@ -1,26 +1,10 @@
 //! `lpe-check lint` and `explain` end to end on the fixtures in tests/testdata/usd and
 //! tests/testdata/lint: every fixture's findings, exactly, and the exit codes.
 
+mod common;
+use common::{lpe_check, root};
+
 use std::path::PathBuf;
-use std::process::Command;
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
-}
-
-/// Runs lpe-check in the repository root (so file names in reports are relative).
-fn lpe_check(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lpe-check"))
-        .current_dir(root())
-        .args(args)
-        .output()
-        .expect("lpe-check runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
-}
 
 fn json(args: &[&str]) -> (i32, serde_json::Value) {
     let mut all = vec!["lint", "--format", "json"];

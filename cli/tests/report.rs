@@ -3,14 +3,12 @@
 //! network; an AOV list file is read with its line numbers; a bad file is an error
 //! naming it, and no page is written.
 
+mod common;
+use common::{lpe_check, root};
+
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use serde_json::Value;
-
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
-}
 
 /// A fresh scratch directory for one test.
 fn scratch(test: &str) -> PathBuf {
@@ -18,20 +16,6 @@ fn scratch(test: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     dir
-}
-
-/// Runs lpe-check in the repository root: exit code, stdout, stderr.
-fn lpe_check(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_lpe-check"))
-        .current_dir(root())
-        .args(args)
-        .output()
-        .expect("lpe-check runs");
-    (
-        out.status.code().unwrap_or(-1),
-        String::from_utf8(out.stdout).unwrap(),
-        String::from_utf8(out.stderr).unwrap(),
-    )
 }
 
 /// The data the page was written with.
