@@ -1,8 +1,9 @@
 //! OSL expression text from the grammar of docs/language.md §18: items outside `<…>`
 //! (events, scatterings, registered one-character labels, `.`, quoted labels,
 //! negations by slot, `[…]` lists of arbitrary items), vertex patterns `<…>` with every
-//! kind of slot item (symbols, NONE, sets, blacklists, quoted labels, groups with `|`
-//! and nested groups, literal `|`, `-`, `&` and `]`, five or more custom items),
+//! kind of slot item (symbols, NONE, sets whose items are slot items, blacklists, quoted
+//! labels, groups with `|` and nested groups, literal `|`, `-`, `&` and `]`, `*`, `+`
+//! and `{` starting an item, five or more custom items),
 //! postfixes (reversed ranges and leading `{0}` included), `|`, groups and set algebra.
 //!
 //! A registration is plain data here (the one-character events and scatterings to
@@ -60,6 +61,12 @@ pub const PRODUCTIONS: &[&str] = &[
     "pattern.quoted",
     "pattern.set",
     "pattern.set-quoted",
+    "pattern.set-none",
+    "pattern.set-dot",
+    "pattern.set-blacklist",
+    "pattern.set-nested",
+    "pattern.set-sequence",
+    "pattern.postfix-label",
     "pattern.blacklist",
     "pattern.group",
     "pattern.group-alternation",
@@ -428,7 +435,14 @@ impl Gen<'_, '_> {
             _ => "pattern.customs",
         });
         self.group_room = true;
-        for slot in 0..items {
+        if c.chance(6) {
+            // `*`, `+` and `{` are postfixes right after an item and an error there
+            // (§18.4); only where an item starts are they a label.
+            self.postfix_label(c);
+        } else {
+            self.slot_item(c, 0, 0);
+        }
+        for slot in 1..items {
             self.slot_item(c, slot, 0);
         }
         self.w.raw(">");
@@ -443,7 +457,7 @@ impl Gen<'_, '_> {
                 let l = format!("'{}'", c.pick(&["floor", "a b", "", "|x|", "é"]));
                 self.w.put("pattern.quoted", &l)
             }
-            3 => self.set(c),
+            3 => self.set(c, depth),
             4 => {
                 self.w.put("pattern.blacklist", "[^");
                 for _ in 0..1 + c.below(2) {
@@ -477,16 +491,51 @@ impl Gen<'_, '_> {
         }
     }
 
-    /// `[…]` inside `<…>`: unquoted characters (`x` and `.` too) and quoted labels.
-    fn set(&mut self, c: &mut impl Choices) {
+    /// `*`, `+` or `{` where an item starts: the label of that character.
+    fn postfix_label(&mut self, c: &mut impl Choices) {
+        let l = *c.pick(&["*", "+", "{"]);
+        self.w.put("pattern.postfix-label", l);
+    }
+
+    /// `[…]` inside `<…>` (`depth`: sets and groups around it): each item a slot item
+    /// (§18.4), so `x` is NONE, `.` any symbol, `[^…]` a blacklist, a nested `[…]`
+    /// joins in and `( … )` is a sequence of symbols, one vertex pattern of its own.
+    fn set(&mut self, c: &mut impl Choices, depth: usize) {
         self.w.put("pattern.set", "[");
-        for _ in 0..1 + c.below(3) {
-            if c.chance(25) {
-                let l = format!("'{}'", c.pick(&LABELS));
-                self.w.put("pattern.set-quoted", &l);
-            } else {
-                let s = *c.pick(&["R", "T", "D", "G", "x", ".", "a", "1"]);
-                self.w.raw(s);
+        for i in 0..1 + c.below(3) {
+            match c.below(12) {
+                0 | 1 => {
+                    let l = format!("'{}'", c.pick(&LABELS));
+                    self.w.put("pattern.set-quoted", &l);
+                }
+                2 => self.w.put("pattern.set-none", "x"),
+                3 => self.w.put("pattern.set-dot", "."),
+                4 => {
+                    self.w.put("pattern.set-blacklist", "[^");
+                    let s = c.below(3);
+                    self.known_or_quoted(c, s);
+                    self.w.raw("]");
+                }
+                5 if depth < 2 => {
+                    self.w.cov.hit("pattern.set-nested");
+                    self.set(c, depth + 1);
+                }
+                // A sequence adds a vertex pattern per way through it: one per `<…>`,
+                // as for groups, keeps the product of ways below the parser's bound.
+                6 if self.group_room => {
+                    self.group_room = false;
+                    self.w.put("pattern.set-sequence", "(");
+                    for _ in 0..1 + c.below(3) {
+                        let s = *c.pick(&["R", "T", "D", "S", "x", ".", "a"]);
+                        self.w.raw(s);
+                    }
+                    self.w.raw(")");
+                }
+                7 if i == 0 => self.postfix_label(c),
+                _ => {
+                    let s = *c.pick(&["R", "T", "D", "G", "a", "1"]);
+                    self.w.raw(s);
+                }
             }
         }
         self.w.raw("]");
@@ -530,7 +579,9 @@ mod tests {
     /// 256, the empty and the longest label).
     ///
     /// Faults planted in `grammar/mod.rs`, each seen to fail this test and reverted:
-    /// `count` never 0; `count` never 256; the longest label never written.
+    /// `count` never 0; `count` never 256; the longest label never written. In this
+    /// file: `*`, `+` or `{` written as any item of a `[…]` inside `<…>`, not only the
+    /// first (`<[R*]>` is a postfix where the parser refuses one: rejected).
     #[test]
     fn texts_parse_and_reach_every_production() {
         let cfg = Config::default();
