@@ -1,12 +1,12 @@
 //! `lpe.lint`'s native half: `lpe-check lint`'s run ([`lpe_lint::check::run`]) over
 //! files, returned as its JSON report (schema `lpe-lint/1`, docs/lint.md) for
-//! `lpe/__init__.py` to wrap. A `pxr.Usd.Stage` comes as the facts `lpe/__init__.py`
-//! collected by traversing it ([`lint_stage_json`]): the document is made from them by
-//! the USD reader's own [`document`], so the conventions (attribute names, `sourceType`
-//! spellings) are written once; what to collect is exported as `USD_READ_ATTRIBUTES`,
-//! `USD_READ_PREFIX`, `USD_READ_PRIM_TYPES` and `USD_ORDERED_VARS`. A renderer's profile (`renderer=`, `profile=`, or, with
-//! neither nor `dialect=`, the one the stages name) gives the dialect and registration,
-//! and lint checks its rules too.
+//! `lpe/__init__.py` to wrap. A `pxr.Usd.Stage` comes as a [`StageReading`]: the facts
+//! `lpe/__init__.py` collected by traversing it, as the USD reader's [`PrimReading`] said
+//! which; the document is made from them by the USD reader's own [`document`]
+//! ([`lint_stage_json`]), so the conventions (attribute names, `sourceType` spellings)
+//! are written once. A renderer's profile (`renderer=`, `profile=`, or, with neither nor
+//! `dialect=`, the one the stages name) gives the dialect and registration, and lint
+//! checks its rules too.
 
 use std::path::PathBuf;
 
@@ -15,8 +15,9 @@ use std::borrow::Cow;
 
 use lpe_lint::check::renderer::named_by;
 use lpe_lint::check::run::{check, read, read_by, Inputs, Request, RunError};
-use lpe_lint::read::usd::{document, PrimFacts, StageFacts};
+use lpe_lint::read::usd::{document, lint_reads, PrimFacts, PrimReading, StageFacts};
 use pyo3::prelude::*;
+use pyo3::types::PyString;
 
 use crate::dialect::{Language, PyDialect};
 use crate::error::{disagreement, value_error};
@@ -49,7 +50,24 @@ pub fn lint_json(
     lint_in_py(py, files, &options, rename, None)
 }
 
-/// One prim as `lpe/__init__.py` collects it: path, type name, authored property
+/// What `lpe.lint(stage)` reads of a traversal of a composed stage, collected in the
+/// order `lpe/__init__.py` queries pxr (`_stage_facts`): [`StageReading::new`] takes
+/// every traversed prim's type name and authored property names and keeps the prims
+/// [`PrimReading`] says lint reads; [`StageReading::wanted`] names the attributes whose
+/// values to fetch; [`StageReading::complete`] takes those values, then the paths and
+/// `orderedVars` of the prims that declare something (a few: RenderVars, RenderProducts,
+/// RenderSettings, prims with `lpe:` attributes). Of the prims that only carry group
+/// attributes (every mesh of a shot, maybe) only the type name and values cross over.
+#[pyclass(module = "lpe._lpe")]
+pub struct StageReading {
+    facts: StageFacts,
+    /// Each prim of `facts.prims`: its index in the traversal and its reading.
+    read: Vec<(usize, PrimReading)>,
+    /// Whether [`StageReading::complete`] filled in the values, paths and `orderedVars`.
+    complete: bool,
+}
+
+/// One prim of a [`StageReading`] as `facts()` shows it: path, type name, property
 /// names, `(attribute, text or None)` for the attributes lint reads, and a
 /// RenderProduct's `orderedVars` target names.
 type PrimTuple = (
@@ -60,17 +78,179 @@ type PrimTuple = (
     Vec<String>,
 );
 
-/// Lints a composed stage from the facts `lpe/__init__.py` read of it through pxr:
-/// `prims` (every prim of a `USD_READ_PRIM_TYPES` type or with an attribute lint reads,
-/// in traversal order), `types` (every prim's type name) and `name` (the file the
-/// findings name); the options are [`lint_json`]'s.
+#[pymethods]
+impl StageReading {
+    /// `types` and `properties`: one item per traversed prim, in traversal order, its
+    /// type name (`""` for none) and its authored property names.
+    #[new]
+    fn new(types: &Bound<'_, PyAny>, properties: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let mut facts = StageFacts::default();
+        let mut read = Vec::new();
+        let (mut types, mut properties) = (types.try_iter()?, properties.try_iter()?);
+        for index in 0.. {
+            let (type_name, names) = match (types.next(), properties.next()) {
+                (None, None) => break,
+                (Some(t), Some(n)) => (t?, n?),
+                _ => {
+                    return Err(value_error(format!(
+                        "a stage reading takes one type name and one list of property \
+                         names per prim; one of them ended at prim {index}"
+                    )))
+                }
+            };
+            let type_name = type_name.downcast::<PyString>()?.to_str()?;
+            if !facts.types.contains(type_name) {
+                facts.types.insert(type_name.to_string());
+            }
+            let names = names
+                .try_iter()?
+                .map(|n| Ok(n?.downcast_into::<PyString>()?))
+                .collect::<PyResult<Vec<_>>>()?;
+            let mut reading = PrimReading::of_type(type_name);
+            for n in &names {
+                reading = reading.max(PrimReading::of_property(n.to_str()?));
+            }
+            if reading == PrimReading::Nothing {
+                continue;
+            }
+            let mut prim = PrimFacts {
+                type_name: type_name.to_string(),
+                ..PrimFacts::default()
+            };
+            for n in &names {
+                let n = n.to_str()?;
+                if lint_reads(n) {
+                    prim.values.push((n.to_string(), None));
+                }
+                if reading == PrimReading::Declarations {
+                    prim.properties.push(n.to_string());
+                }
+            }
+            facts.prims.push(prim);
+            read.push((index, reading));
+        }
+        Ok(Self {
+            facts,
+            read,
+            complete: false,
+        })
+    }
+
+    /// The attributes whose values lint reads: the traversal index of each one's prim
+    /// and its name, in the order [`StageReading::complete`] takes the values.
+    fn wanted<'py>(&self, py: Python<'py>) -> (Vec<usize>, Vec<Bound<'py, PyString>>) {
+        // One Python string per attribute name, however many prims carry it.
+        let mut names: Vec<(&str, Bound<'py, PyString>)> = Vec::new();
+        let mut at = Vec::new();
+        let mut wanted = Vec::new();
+        for (prim, (index, _)) in self.facts.prims.iter().zip(&self.read) {
+            for (name, _) in &prim.values {
+                let s = match names.iter().find(|(n, _)| n == name) {
+                    Some((_, s)) => s.clone(),
+                    None => {
+                        let s = PyString::new(py, name);
+                        names.push((name, s.clone()));
+                        s
+                    }
+                };
+                at.push(*index);
+                wanted.push(s);
+            }
+        }
+        (at, wanted)
+    }
+
+    /// Fills in the facts: `values`, one per [`StageReading::wanted`] attribute (a `str`,
+    /// an object whose `path` is a `str` as an asset path's, or anything else: no text);
+    /// `path_of(i)` and `ordered_vars_of(i)`, the path and the `orderedVars` target
+    /// names of the traversal's prim `i`, are called for the prims that declare
+    /// something (`ordered_vars_of` for RenderProducts only). A value that could not be
+    /// fetched is a `ValueError` naming the prim and the attribute.
+    fn complete(
+        &mut self,
+        values: &Bound<'_, PyAny>,
+        path_of: &Bound<'_, PyAny>,
+        ordered_vars_of: &Bound<'_, PyAny>,
+    ) -> PyResult<()> {
+        let mut values = values.try_iter()?;
+        let mut fetched = 0;
+        for (prim, (index, reading)) in self.facts.prims.iter_mut().zip(&self.read) {
+            for (name, text) in &mut prim.values {
+                let value = values.next().ok_or_else(|| {
+                    value_error(format!(
+                        "fewer values ({fetched}) than attributes lint reads"
+                    ))
+                })?;
+                let value = value.map_err(|e| {
+                    let at = path_of
+                        .call1((*index,))
+                        .and_then(|p| p.extract::<String>())
+                        .unwrap_or_else(|_| format!("prim {index} of the traversal"));
+                    let err = value_error(format!("<{at}>.{name}: {e}"));
+                    err.set_cause(path_of.py(), Some(e));
+                    err
+                })?;
+                *text = text_of(&value);
+                fetched += 1;
+            }
+            if *reading == PrimReading::Declarations {
+                prim.path = path_of.call1((*index,))?.extract()?;
+                prim.name = prim.path.rsplit('/').next().unwrap_or_default().to_string();
+                if prim.type_name == "RenderProduct" {
+                    prim.ordered_vars = ordered_vars_of.call1((*index,))?.extract()?;
+                }
+            }
+        }
+        if values.next().is_some() {
+            return Err(value_error(format!(
+                "more values than the {fetched} attributes lint reads"
+            )));
+        }
+        self.complete = true;
+        Ok(())
+    }
+
+    /// The facts, for tests: each prim read as a `(path, type, property names,
+    /// [(attribute, text)], orderedVars)` tuple (the path and property names empty for
+    /// a prim read for its values only), and every traversed prim's type name once,
+    /// sorted.
+    fn facts(&self) -> (Vec<PrimTuple>, Vec<String>) {
+        let prims = self.facts.prims.iter().map(|p| {
+            (
+                p.path.clone(),
+                p.type_name.clone(),
+                p.properties.clone(),
+                p.values.clone(),
+                p.ordered_vars.clone(),
+            )
+        });
+        (prims.collect(), self.facts.types.iter().cloned().collect())
+    }
+}
+
+/// An attribute's value as lint reads it: a `str` (a string or token) or an asset
+/// path's authored path (an object whose `path` is a `str`); `None` for any other value.
+fn text_of(value: &Bound<'_, PyAny>) -> Option<String> {
+    if let Ok(s) = value.downcast::<PyString>() {
+        return s.to_str().ok().map(str::to_string);
+    }
+    if value.is_none() {
+        return None;
+    }
+    let path = value.getattr("path").ok()?;
+    let path = path.downcast::<PyString>().ok()?;
+    path.to_str().ok().map(str::to_string)
+}
+
+/// Lints a composed stage from what `lpe/__init__.py` read of it through pxr: `reading`
+/// (a completed [`StageReading`]) and `name` (the file the findings name); the options
+/// are [`lint_json`]'s.
 #[pyfunction]
-#[pyo3(signature = (prims, types, name, partitions = Vec::new(), universe = None, dialect = None, ini = None, register = None, renderer = None, profile = None))]
+#[pyo3(signature = (reading, name, partitions = Vec::new(), universe = None, dialect = None, ini = None, register = None, renderer = None, profile = None))]
 #[allow(clippy::too_many_arguments)]
 pub fn lint_stage_json(
     py: Python<'_>,
-    prims: Vec<PrimTuple>,
-    types: Vec<String>,
+    reading: PyRef<'_, StageReading>,
     name: String,
     partitions: Vec<String>,
     universe: Option<String>,
@@ -80,22 +260,11 @@ pub fn lint_stage_json(
     renderer: Option<&str>,
     profile: Option<PathBuf>,
 ) -> PyResult<String> {
-    let facts = StageFacts {
-        prims: prims
-            .into_iter()
-            .map(
-                |(path, type_name, properties, values, ordered_vars)| PrimFacts {
-                    name: path.rsplit('/').next().unwrap_or_default().to_string(),
-                    path,
-                    type_name,
-                    properties,
-                    values,
-                    ordered_vars,
-                },
-            )
-            .collect(),
-        types: types.into_iter().collect(),
-    };
+    if !reading.complete {
+        return Err(value_error(
+            "the stage reading is not complete: its values were not given",
+        ));
+    }
     let options = Options {
         partitions,
         universe,
@@ -109,7 +278,13 @@ pub fn lint_stage_json(
     // it reads), then the report takes the stage's own name.
     let placeholder = String::from("stage.usda");
     let files = vec![PathBuf::from(&placeholder)];
-    lint_in_py(py, files, &options, Some((placeholder, name)), Some(facts))
+    lint_in_py(
+        py,
+        files,
+        &options,
+        Some((placeholder, name)),
+        Some(&reading.facts),
+    )
 }
 
 /// The options every lint call takes.
@@ -130,7 +305,7 @@ fn lint_in_py(
     files: Vec<PathBuf>,
     o: &Options<'_>,
     rename: Option<(String, String)>,
-    stage: Option<StageFacts>,
+    stage: Option<&StageFacts>,
 ) -> PyResult<String> {
     let Options {
         partitions,
@@ -154,7 +329,7 @@ fn lint_in_py(
         dialect_given: dialect.is_some() || lang.profile.is_some(),
         profile: None,
     };
-    let inputs = py.allow_threads(|| match &stage {
+    let inputs = py.allow_threads(|| match stage {
         None => read(&req),
         Some(facts) => read_by(&req, &mut |file| document(file, facts)),
     });

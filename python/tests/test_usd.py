@@ -325,10 +325,10 @@ def test_lint_of_a_stage_collects_only_what_lint_reads():
     render_var(stage, "/Render/a", "C<RD>L")
     inactive = render_var(stage, "/Render/off", "C<RD")
     inactive.SetActive(False)
-    prims, types = lpe._stage_facts(stage)
+    prims, types = lpe._stage_facts(stage).facts()
     assert prims == [
-        ("/World/floor", "Mesh", ["points", "primvars:karma:object:lpetag"],
-         [("primvars:karma:object:lpetag", "floor")], []),
+        # Only its group is read: no path, no property names.
+        ("", "Mesh", [], [("primvars:karma:object:lpetag", "floor")], []),
         ("/World/tagged", "", ["lpe:note", "lpe:partition:groups"],
          [("lpe:note", None), ("lpe:partition:groups", "a")], []),
         ("/Render/product", "RenderProduct", ["orderedVars"], [], ["a"]),
@@ -373,7 +373,7 @@ def test_an_asset_valued_attribute_reads_as_its_authored_path():
     stage = Usd.Stage.CreateInMemory()
     prim = stage.DefinePrim("/World/tagged")
     prim.CreateAttribute("lpe:ini", Sdf.ValueTypeNames.Asset).Set(Sdf.AssetPath("looks/rendermn.ini"))
-    prims, types = lpe._stage_facts(stage)
+    prims, types = lpe._stage_facts(stage).facts()
     assert prims == [("/World/tagged", "", ["lpe:ini"], [("lpe:ini", "looks/rendermn.ini")], [])]
     assert types == [""]  # /World and /World/tagged: each type name once
 
