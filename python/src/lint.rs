@@ -8,6 +8,7 @@
 //! `dialect=`, the one the stages name) gives the dialect and registration, and lint
 //! checks its rules too.
 
+use std::collections::BTreeSet;
 use std::path::PathBuf;
 
 use lpe::with_dialect;
@@ -15,7 +16,9 @@ use std::borrow::Cow;
 
 use lpe_lint::check::renderer::named_by;
 use lpe_lint::check::run::{check, read, read_by, Inputs, Request, RunError};
-use lpe_lint::read::usd::{document, lint_reads, PrimFacts, PrimReading, StageFacts};
+use lpe_lint::read::usd::{
+    document, lint_reads, PrimFacts, PrimReading, StageFacts, READ_ATTRIBUTES,
+};
 use pyo3::prelude::*;
 use pyo3::types::PyString;
 
@@ -52,19 +55,25 @@ pub fn lint_json(
 
 /// What `lpe.lint(stage)` reads of a traversal of a composed stage, collected in the
 /// order `lpe/__init__.py` queries pxr (`_stage_facts`): [`StageReading::new`] takes
-/// every traversed prim's type name and authored property names and keeps the prims
+/// every traversed prim's type name and authored property names and keeps what
 /// [`PrimReading`] says lint reads; [`StageReading::wanted`] names the attributes whose
 /// values to fetch; [`StageReading::complete`] takes those values, then the paths and
 /// `orderedVars` of the prims that declare something (a few: RenderVars, RenderProducts,
-/// RenderSettings, prims with `lpe:` attributes). Of the prims that only carry group
-/// attributes (every mesh of a shot, maybe) only the type name and values cross over.
+/// RenderSettings, prims with `lpe:` attributes). Of the prims read for their values
+/// only (every mesh of a shot may carry a group) nothing is kept but where each value
+/// comes from and, once given, each distinct text ([`StageFacts::prims`] allows it).
 #[pyclass(module = "lpe._lpe")]
 pub struct StageReading {
-    facts: StageFacts,
-    /// Each prim of `facts.prims`: its index in the traversal and its reading.
-    read: Vec<(usize, PrimReading)>,
-    /// Whether [`StageReading::complete`] filled in the values, paths and `orderedVars`.
-    complete: bool,
+    /// Every traversed prim's type name.
+    types: BTreeSet<String>,
+    /// The prims that declare something: traversal index and facts (path, name and
+    /// values filled in by [`StageReading::complete`]).
+    declaring: Vec<(usize, PrimFacts)>,
+    /// Each value of the prims read for their values only: the prim's traversal index
+    /// and the attribute's index in [`READ_ATTRIBUTES`].
+    valued: Vec<(usize, usize)>,
+    /// The facts, once [`StageReading::complete`] made them.
+    facts: Option<StageFacts>,
 }
 
 /// One prim of a [`StageReading`] as `facts()` shows it: path, type name, property
@@ -84,11 +93,16 @@ impl StageReading {
     /// type name (`""` for none) and its authored property names.
     #[new]
     fn new(types: &Bound<'_, PyAny>, properties: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let mut facts = StageFacts::default();
-        let mut read = Vec::new();
+        let mut reading = Self {
+            types: BTreeSet::new(),
+            declaring: Vec::new(),
+            valued: Vec::new(),
+            facts: None,
+        };
         let (mut types, mut properties) = (types.try_iter()?, properties.try_iter()?);
+        let mut names = Vec::new();
         for index in 0.. {
-            let (type_name, names) = match (types.next(), properties.next()) {
+            let (type_name, properties) = match (types.next(), properties.next()) {
                 (None, None) => break,
                 (Some(t), Some(n)) => (t?, n?),
                 _ => {
@@ -99,68 +113,68 @@ impl StageReading {
                 }
             };
             let type_name = type_name.downcast::<PyString>()?.to_str()?;
-            if !facts.types.contains(type_name) {
-                facts.types.insert(type_name.to_string());
+            if !reading.types.contains(type_name) {
+                reading.types.insert(type_name.to_string());
             }
-            let names = names
-                .try_iter()?
-                .map(|n| Ok(n?.downcast_into::<PyString>()?))
-                .collect::<PyResult<Vec<_>>>()?;
-            let mut reading = PrimReading::of_type(type_name);
+            names.clear();
+            for n in properties.try_iter()? {
+                names.push(n?.downcast_into::<PyString>()?);
+            }
+            let mut read = PrimReading::of_type(type_name);
             for n in &names {
-                reading = reading.max(PrimReading::of_property(n.to_str()?));
+                read = read.max(PrimReading::of_property(n.to_str()?));
             }
-            if reading == PrimReading::Nothing {
-                continue;
-            }
-            let mut prim = PrimFacts {
-                type_name: type_name.to_string(),
-                ..PrimFacts::default()
-            };
-            for n in &names {
-                let n = n.to_str()?;
-                if lint_reads(n) {
-                    prim.values.push((n.to_string(), None));
+            match read {
+                PrimReading::Nothing => {}
+                PrimReading::Values => {
+                    for n in &names {
+                        // No `lpe:` name here (it would declare): a read one is one of these.
+                        let n = n.to_str()?;
+                        if let Some(a) = READ_ATTRIBUTES.iter().position(|a| *a == n) {
+                            reading.valued.push((index, a));
+                        }
+                    }
                 }
-                if reading == PrimReading::Declarations {
-                    prim.properties.push(n.to_string());
+                PrimReading::Declarations => {
+                    let mut prim = PrimFacts {
+                        type_name: type_name.to_string(),
+                        ..PrimFacts::default()
+                    };
+                    for n in &names {
+                        let n = n.to_str()?;
+                        if lint_reads(n) {
+                            prim.values.push((n.to_string(), None));
+                        }
+                        prim.properties.push(n.to_string());
+                    }
+                    reading.declaring.push((index, prim));
                 }
             }
-            facts.prims.push(prim);
-            read.push((index, reading));
         }
-        Ok(Self {
-            facts,
-            read,
-            complete: false,
-        })
+        Ok(reading)
     }
 
     /// The attributes whose values lint reads: the traversal index of each one's prim
     /// and its name, in the order [`StageReading::complete`] takes the values.
     fn wanted<'py>(&self, py: Python<'py>) -> (Vec<usize>, Vec<Bound<'py, PyString>>) {
-        // One Python string per attribute name, however many prims carry it.
-        let mut names: Vec<(&str, Bound<'py, PyString>)> = Vec::new();
         let mut at = Vec::new();
-        let mut wanted = Vec::new();
-        for (prim, (index, _)) in self.facts.prims.iter().zip(&self.read) {
+        let mut names = Vec::new();
+        for (index, prim) in &self.declaring {
             for (name, _) in &prim.values {
-                let s = match names.iter().find(|(n, _)| n == name) {
-                    Some((_, s)) => s.clone(),
-                    None => {
-                        let s = PyString::new(py, name);
-                        names.push((name, s.clone()));
-                        s
-                    }
-                };
                 at.push(*index);
-                wanted.push(s);
+                names.push(PyString::new(py, name));
             }
         }
-        (at, wanted)
+        // One Python string per attribute, however many prims carry it.
+        let read = READ_ATTRIBUTES.map(|a| PyString::new(py, a));
+        for &(index, a) in &self.valued {
+            at.push(index);
+            names.push(read[a].clone());
+        }
+        (at, names)
     }
 
-    /// Fills in the facts: `values`, one per [`StageReading::wanted`] attribute (a `str`,
+    /// Makes the facts: `values`, one per [`StageReading::wanted`] attribute (a `str`,
     /// an object whose `path` is a `str` as an asset path's, or anything else: no text);
     /// `path_of(i)` and `ordered_vars_of(i)`, the path and the `orderedVars` target
     /// names of the traversal's prim `i`, are called for the prims that declare
@@ -174,48 +188,78 @@ impl StageReading {
     ) -> PyResult<()> {
         let mut values = values.try_iter()?;
         let mut fetched = 0;
-        for (prim, (index, reading)) in self.facts.prims.iter_mut().zip(&self.read) {
+        let mut next = |index: usize, name: &str| -> PyResult<Bound<'_, PyAny>> {
+            let value = values.next().ok_or_else(|| {
+                value_error(format!(
+                    "fewer values ({fetched}) than attributes lint reads"
+                ))
+            })?;
+            fetched += 1;
+            value.map_err(|e| {
+                let at = path_of
+                    .call1((index,))
+                    .and_then(|p| p.extract::<String>())
+                    .unwrap_or_else(|_| format!("prim {index} of the traversal"));
+                let err = value_error(format!("<{at}>.{name}: {e}"));
+                err.set_cause(path_of.py(), Some(e));
+                err
+            })
+        };
+        let mut prims = Vec::with_capacity(self.declaring.len());
+        for (index, prim) in &self.declaring {
+            let mut prim = prim.clone();
             for (name, text) in &mut prim.values {
-                let value = values.next().ok_or_else(|| {
-                    value_error(format!(
-                        "fewer values ({fetched}) than attributes lint reads"
-                    ))
-                })?;
-                let value = value.map_err(|e| {
-                    let at = path_of
-                        .call1((*index,))
-                        .and_then(|p| p.extract::<String>())
-                        .unwrap_or_else(|_| format!("prim {index} of the traversal"));
-                    let err = value_error(format!("<{at}>.{name}: {e}"));
-                    err.set_cause(path_of.py(), Some(e));
-                    err
-                })?;
-                *text = text_of(&value);
-                fetched += 1;
+                *text = text_of(&next(*index, name)?);
             }
-            if *reading == PrimReading::Declarations {
-                prim.path = path_of.call1((*index,))?.extract()?;
-                prim.name = prim.path.rsplit('/').next().unwrap_or_default().to_string();
-                if prim.type_name == "RenderProduct" {
-                    prim.ordered_vars = ordered_vars_of.call1((*index,))?.extract()?;
+            prim.path = path_of.call1((*index,))?.extract()?;
+            prim.name = prim.path.rsplit('/').next().unwrap_or_default().to_string();
+            if prim.type_name == "RenderProduct" {
+                prim.ordered_vars = ordered_vars_of.call1((*index,))?.extract()?;
+            }
+            prims.push(prim);
+        }
+        // The texts of the prims read for their values: each distinct one once.
+        let mut texts = vec![BTreeSet::<String>::new(); READ_ATTRIBUTES.len()];
+        for &(index, a) in &self.valued {
+            let value = next(index, READ_ATTRIBUTES[a])?;
+            if let Some(text) = as_str(&value) {
+                if !texts[a].contains(text.as_ref()) {
+                    texts[a].insert(text.into_owned());
                 }
             }
         }
         if values.next().is_some() {
             return Err(value_error(format!(
-                "more values than the {fetched} attributes lint reads"
+                "more values than the {} attributes lint reads",
+                self.declaring
+                    .iter()
+                    .map(|(_, p)| p.values.len())
+                    .sum::<usize>()
+                    + self.valued.len()
             )));
         }
-        self.complete = true;
+        for (a, texts) in texts.into_iter().enumerate() {
+            prims.extend(texts.into_iter().map(|text| PrimFacts {
+                values: vec![(READ_ATTRIBUTES[a].to_string(), Some(text))],
+                ..PrimFacts::default()
+            }));
+        }
+        self.facts = Some(StageFacts {
+            prims,
+            types: self.types.clone(),
+        });
         Ok(())
     }
 
-    /// The facts, for tests: each prim read as a `(path, type, property names,
-    /// [(attribute, text)], orderedVars)` tuple (the path and property names empty for
-    /// a prim read for its values only), and every traversed prim's type name once,
-    /// sorted.
+    /// The facts, for tests (empty before [`StageReading::complete`]): each prim read
+    /// as a `(path, type, property names, [(attribute, text)], orderedVars)` tuple (the
+    /// prims that declare, in traversal order, then each distinct text of the others,
+    /// with its attribute alone), and every traversed prim's type name once, sorted.
     fn facts(&self) -> (Vec<PrimTuple>, Vec<String>) {
-        let prims = self.facts.prims.iter().map(|p| {
+        let Some(facts) = &self.facts else {
+            return (Vec::new(), Vec::new());
+        };
+        let prims = facts.prims.iter().map(|p| {
             (
                 p.path.clone(),
                 p.type_name.clone(),
@@ -224,22 +268,27 @@ impl StageReading {
                 p.ordered_vars.clone(),
             )
         });
-        (prims.collect(), self.facts.types.iter().cloned().collect())
+        (prims.collect(), facts.types.iter().cloned().collect())
     }
 }
 
 /// An attribute's value as lint reads it: a `str` (a string or token) or an asset
 /// path's authored path (an object whose `path` is a `str`); `None` for any other value.
 fn text_of(value: &Bound<'_, PyAny>) -> Option<String> {
+    as_str(value).map(Cow::into_owned)
+}
+
+/// [`text_of`], borrowed where the value is a `str`.
+fn as_str<'a>(value: &'a Bound<'_, PyAny>) -> Option<Cow<'a, str>> {
     if let Ok(s) = value.downcast::<PyString>() {
-        return s.to_str().ok().map(str::to_string);
+        return s.to_str().ok().map(Cow::Borrowed);
     }
     if value.is_none() {
         return None;
     }
     let path = value.getattr("path").ok()?;
     let path = path.downcast::<PyString>().ok()?;
-    path.to_str().ok().map(str::to_string)
+    path.to_str().ok().map(|p| Cow::Owned(p.to_string()))
 }
 
 /// Lints a composed stage from what `lpe/__init__.py` read of it through pxr: `reading`
@@ -260,11 +309,11 @@ pub fn lint_stage_json(
     renderer: Option<&str>,
     profile: Option<PathBuf>,
 ) -> PyResult<String> {
-    if !reading.complete {
+    let Some(facts) = &reading.facts else {
         return Err(value_error(
             "the stage reading is not complete: its values were not given",
         ));
-    }
+    };
     let options = Options {
         partitions,
         universe,
@@ -278,13 +327,7 @@ pub fn lint_stage_json(
     // it reads), then the report takes the stage's own name.
     let placeholder = String::from("stage.usda");
     let files = vec![PathBuf::from(&placeholder)];
-    lint_in_py(
-        py,
-        files,
-        &options,
-        Some((placeholder, name)),
-        Some(&reading.facts),
-    )
+    lint_in_py(py, files, &options, Some((placeholder, name)), Some(facts))
 }
 
 /// The options every lint call takes.

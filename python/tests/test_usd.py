@@ -327,13 +327,13 @@ def test_lint_of_a_stage_collects_only_what_lint_reads():
     inactive.SetActive(False)
     prims, types = lpe._stage_facts(stage).facts()
     assert prims == [
-        # Only its group is read: no path, no property names.
-        ("", "Mesh", [], [("primvars:karma:object:lpetag", "floor")], []),
         ("/World/tagged", "", ["lpe:note", "lpe:partition:groups"],
          [("lpe:note", None), ("lpe:partition:groups", "a")], []),
         ("/Render/product", "RenderProduct", ["orderedVars"], [], ["a"]),
         ("/Render/a", "RenderVar", ["sourceName", "sourceType"],
          [("sourceName", "C<RD>L"), ("sourceType", "lpe")], []),
+        # Of the mesh only its group is read: no path, type or property names.
+        ("", "", [], [("primvars:karma:object:lpetag", "floor")], []),
     ]
     assert types == ["", "Mesh", "RenderProduct", "RenderVar"]
 

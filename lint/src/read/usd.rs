@@ -610,27 +610,32 @@ mod tests {
         assert!(seen >= 10, "{seen} fixtures");
     }
 
-    /// `facts` as `lpe.lint(stage)` collects them: only the prims whose [`PrimReading`]
-    /// is more than nothing, and of those read for values only, the type name and values.
+    /// `facts` as `lpe.lint(stage)` collects them: the prims whose [`PrimReading`] is
+    /// `Declarations` whole, in order; then, of those read for their values only, each
+    /// distinct attribute and text once, with nothing else.
     fn as_collected(facts: &StageFacts) -> StageFacts {
-        let prims = facts.prims.iter().filter_map(|p| {
+        let mut prims = Vec::new();
+        let mut texts = BTreeSet::new();
+        for p in &facts.prims {
             let reading = p
                 .properties
                 .iter()
                 .map(|n| PrimReading::of_property(n))
                 .fold(PrimReading::of_type(&p.type_name), Ord::max);
             match reading {
-                PrimReading::Nothing => None,
-                PrimReading::Values => Some(PrimFacts {
-                    type_name: p.type_name.clone(),
-                    values: p.values.clone(),
-                    ..PrimFacts::default()
-                }),
-                PrimReading::Declarations => Some(p.clone()),
+                PrimReading::Nothing => {}
+                PrimReading::Values => {
+                    texts.extend(p.values.iter().filter(|(_, t)| t.is_some()).cloned())
+                }
+                PrimReading::Declarations => prims.push(p.clone()),
             }
-        });
+        }
+        prims.extend(texts.into_iter().map(|value| PrimFacts {
+            values: vec![value],
+            ..PrimFacts::default()
+        }));
         StageFacts {
-            prims: prims.collect(),
+            prims,
             types: facts.types.clone(),
         }
     }
@@ -715,6 +720,11 @@ mod tests {
                 ),
                 prim("/World/plain", "Xform", &[("points", "")]),
                 prim(
+                    "/World/wall",
+                    "Mesh",
+                    &[("primvars:karma:object:lpetag", "floor")],
+                ),
+                prim(
                     "/World/notes",
                     "",
                     &[("lpe:dialect", "osl"), ("lpe:partition:groups", "a,b")],
@@ -723,17 +733,25 @@ mod tests {
             types: ["Mesh", "RectLight", "Xform", ""].map(String::from).into(),
         };
         let collected = as_collected(&facts);
+        // The declaring prim whole; the two meshes' group once, the light's.
         let kept: Vec<_> = collected
             .prims
             .iter()
-            .map(|p| (p.path.as_str(), p.type_name.as_str(), p.properties.len()))
+            .map(|p| {
+                (
+                    p.path.as_str(),
+                    p.type_name.as_str(),
+                    p.properties.len(),
+                    p.values[0].0.as_str(),
+                )
+            })
             .collect();
         assert_eq!(
             kept,
             [
-                ("", "Mesh", 0),
-                ("", "RectLight", 0),
-                ("/World/notes", "", 2)
+                ("/World/notes", "", 2, "lpe:dialect"),
+                ("", "", 0, "inputs:karma:light:lpetag"),
+                ("", "", 0, "primvars:karma:object:lpetag"),
             ]
         );
         let file = Path::new("stage.usda");
