@@ -414,6 +414,7 @@ def test_a_light_type_without_groups_makes_light_groups_checkable(light):
 
 
 def test_a_geometry_type_without_groups_makes_object_groups_checkable():
+    # Planted fault, seen failing: type names recorded only of the prims lint reads.
     stage = Usd.Stage.CreateInMemory()
     stage.DefinePrim("/World/box", "Cube")
     render_var(stage, "/Render/o", "C<RD'floor'>.*L")
