@@ -13,7 +13,7 @@
 //! [`error`] (`LpeSyntaxError` and the conversion of every Rust error into a Python
 //! exception), [`set`] (`AovSet`: match, match_many, explain), [`analysis`] (`parse`,
 //! `equiv`, `partition`), [`lint`] (`lpe-check lint`'s run, as JSON, over files or the
-//! facts of a composed stage).
+//! facts of a composed stage, collected in a `StageReading`).
 //!
 //! Every fallible call returns a Python exception: bad arguments raise `TypeError` or
 //! `ValueError`, an expression that does not parse raises `LpeSyntaxError` (a
@@ -42,12 +42,9 @@ fn _lpe(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(analysis::partition, m)?)?;
     m.add_function(wrap_pyfunction!(lint::lint_json, m)?)?;
     m.add_function(wrap_pyfunction!(lint::lint_stage_json, m)?)?;
-    // What `lpe.lint(stage)` collects of a stage: the USD reader's conventions.
-    use lpe_lint::read::usd::{ORDERED_VARS, READ_ATTRIBUTES, READ_PREFIX, READ_PRIM_TYPES};
-    m.add("USD_READ_ATTRIBUTES", READ_ATTRIBUTES.to_vec())?;
-    m.add("USD_READ_PREFIX", READ_PREFIX)?;
-    m.add("USD_READ_PRIM_TYPES", READ_PRIM_TYPES.to_vec())?;
-    m.add("USD_ORDERED_VARS", ORDERED_VARS)?;
+    m.add_class::<lint::StageReading>()?;
+    // The relationship `lpe.lint(stage)` asks a RenderProduct for.
+    m.add("USD_ORDERED_VARS", lpe_lint::read::usd::ORDERED_VARS)?;
     m.add("DIALECTS", lpe::DialectName::ALL.map(|d| d.name()).to_vec())?;
     Ok(())
 }

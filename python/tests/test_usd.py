@@ -325,15 +325,15 @@ def test_lint_of_a_stage_collects_only_what_lint_reads():
     render_var(stage, "/Render/a", "C<RD>L")
     inactive = render_var(stage, "/Render/off", "C<RD")
     inactive.SetActive(False)
-    prims, types = lpe._stage_facts(stage)
+    prims, types = lpe._stage_facts(stage).facts()
     assert prims == [
-        ("/World/floor", "Mesh", ["points", "primvars:karma:object:lpetag"],
-         [("primvars:karma:object:lpetag", "floor")], []),
         ("/World/tagged", "", ["lpe:note", "lpe:partition:groups"],
          [("lpe:note", None), ("lpe:partition:groups", "a")], []),
         ("/Render/product", "RenderProduct", ["orderedVars"], [], ["a"]),
         ("/Render/a", "RenderVar", ["sourceName", "sourceType"],
          [("sourceName", "C<RD>L"), ("sourceType", "lpe")], []),
+        # Of the mesh only its group is read: no path, type or property names.
+        ("", "", [], [("primvars:karma:object:lpetag", "floor")], []),
     ]
     assert types == ["", "Mesh", "RenderProduct", "RenderVar"]
 
@@ -350,6 +350,182 @@ def test_a_stage_changed_after_validation_is_read_again():
     assert errors_by_validator(stage) == []
     group.Set("rim")
     assert errors_by_validator(stage) == [("lpe:UnknownLightGroup", "/Render/a")]
+
+
+# --- what lpe.lint(stage) reads: each kind of fact on a stage built here -----------------
+# The findings are worked by hand from the stage: the groups each message lists are the
+# values of the group attributes written here.
+
+
+def attribute(prim, name, value, type_name=Sdf.ValueTypeNames.String):
+    prim.CreateAttribute(name, type_name).Set(value)
+    return prim
+
+
+def kinds_and_messages(report):
+    return [(f.kind, f.subject, f.location["prim"], f.location["attribute"], f.message)
+            for f in report.findings]
+
+
+def test_every_group_attribute_of_lights_and_objects_is_read():
+    # Each light group attribute on a light of its own type, the object group attributes
+    # on meshes (two meshes carry the same attribute with different groups, one of them
+    # twice); one RenderVar per group and one naming a group nobody carries.
+    # Planted faults, seen failing: the values-only reading skipping
+    # `primvars:arnold:aov` (`fill` unknown, missing from the list); keeping one text per
+    # attribute (`door` or `wall` lost).
+    stage = Usd.Stage.CreateInMemory()
+    attribute(stage.DefinePrim("/World/key", "RectLight"), "inputs:karma:light:lpetag", "key")
+    attribute(stage.DefinePrim("/World/fill", "SphereLight"), "primvars:arnold:aov", "fill")
+    attribute(stage.DefinePrim("/World/rim", "DiskLight"), "ri:light:lightGroup", "rim")
+    attribute(stage.DefinePrim("/World/top", "DistantLight"), "inputs:ri:light:lightGroup", "top")
+    attribute(stage.DefinePrim("/World/floor", "Mesh"), "primvars:karma:object:lpetag", "floor")
+    wall = "primvars:ri:attributes:identifier:lpegroup"
+    attribute(stage.DefinePrim("/World/wall", "Mesh"), wall, "wall")
+    attribute(stage.DefinePrim("/World/door", "Mesh"), wall, "door")
+    attribute(stage.DefinePrim("/World/door2", "Mesh"), wall, "door")
+    for g in ["key", "fill", "rim", "top", "sky"]:
+        render_var(stage, f"/Render/light_{g}", f"C<RD>.*<L.'{g}'>")
+    for g in ["floor", "wall", "door", "roof"]:
+        render_var(stage, f"/Render/object_{g}", f"C<RD'{g}'>.*L")
+    assert kinds_and_messages(lpe.lint(stage, dialect="renderman")) == [
+        ("unknown_light_group", "light_sky", "/Render/light_sky", "sourceName",
+         "no light in this stage carries group 'sky' (they carry 'fill', 'key', 'rim', 'top')"),
+        ("unknown_object_group", "object_roof", "/Render/object_roof", "sourceName",
+         "no object in this stage carries group 'roof' (they carry 'door', 'floor', 'wall')"),
+    ]
+
+
+@pytest.mark.parametrize("light", ["CylinderLight", "PxrRectLight"])
+def test_a_light_type_without_groups_makes_light_groups_checkable(light):
+    # Any type named ...Light counts, a schema pxr does not know too (hdPrman's lights
+    # without its plugin). Without one, a light group cannot be checked. Planted fault,
+    # seen failing: type names recorded only of the prims lint reads (no finding).
+    stage = Usd.Stage.CreateInMemory()
+    stage.DefinePrim("/World/lamp", light)
+    render_var(stage, "/Render/k", "C<RD>.*<L.'key'>")
+    assert kinds_and_messages(lpe.lint(stage, dialect="renderman")) == [
+        ("unknown_light_group", "k", "/Render/k", "sourceName",
+         "no light in this stage carries group 'key' (none carries a group)"),
+    ]
+    stage.RemovePrim("/World/lamp")
+    stage.DefinePrim("/World/lamp", "Xform")
+    assert lpe.lint(stage, dialect="renderman").clean
+
+
+def test_a_geometry_type_without_groups_makes_object_groups_checkable():
+    # Planted fault, seen failing: type names recorded only of the prims lint reads.
+    stage = Usd.Stage.CreateInMemory()
+    stage.DefinePrim("/World/box", "Cube")
+    render_var(stage, "/Render/o", "C<RD'floor'>.*L")
+    assert kinds_and_messages(lpe.lint(stage, dialect="renderman")) == [
+        ("unknown_object_group", "o", "/Render/o", "sourceName",
+         "no object in this stage carries group 'floor' (none carries a group)"),
+    ]
+
+
+def test_lpe_attributes_on_a_typeless_prim_declare_at_its_path():
+    # A partition and the dialect declared on a plain prim, not the RenderSettings: the
+    # partition's findings stand at that prim and attribute. `a` and `b` are the same
+    # expression: equivalent, overlapping on every path they match (shortest: C RD1 L)
+    # and leaving a gap (shortest universe path neither matches: C L). Planted fault,
+    # seen failing: the prims' paths given as their names (`notes`).
+    stage = Usd.Stage.CreateInMemory()
+    render_var(stage, "/Render/a", "C<RD>L")
+    render_var(stage, "/Render/b", "C<RD>L")
+    notes = attribute(stage.DefinePrim("/World/notes"), "lpe:partition:pair", "a,b")
+    attribute(notes, "lpe:dialect", "renderman")
+    report = lpe.lint(stage)
+    got = [(f.kind, f.subject, f.location["prim"], f.location["attribute"], f.witness)
+           for f in report.findings]
+    assert got == [
+        ("equivalent", "b", "/Render/b", "sourceName", None),
+        ("overlap", "pair", "/World/notes", "lpe:partition:pair", "C RD1 L"),
+        ("gap", "pair", "/World/notes", "lpe:partition:pair", "C L"),
+    ]
+    # A dialect no one reads: the stage cannot be read, and the error names the prim
+    # and the attribute under the stage's own name.
+    attribute(notes, "lpe:dialect", "karma")
+    report = lpe.lint(stage)
+    assert [f["error"] for f in report.files] == [
+        f"{stage.GetRootLayer().identifier}: </World/notes>.lpe:dialect: unknown dialect "
+        "`karma` (expected `renderman` or `osl`); did you mean `osl`?"
+    ]
+
+
+KARMA_NEVER = (
+    "renders black in Karma (Houdini Solaris): every path it matches passes a vertex it "
+    "never produces: `<.[Ss]>`"
+)
+
+
+def test_the_renderer_is_named_by_an_lpe_attribute_or_the_settings_namespaces():
+    # Karma labels no vertex S: `C<RS>.*L` renders black there, whether `lpe:renderer`
+    # names Karma on a plain prim or the RenderSettings hold `karma:` settings.
+    # Planted fault, seen failing: RenderSettings given no property names (no finding
+    # in the second stage).
+    for declare in ("attribute", "settings"):
+        stage = Usd.Stage.CreateInMemory()
+        render_var(stage, "/Render/spec", "C<RS>.*L")
+        if declare == "attribute":
+            attribute(stage.DefinePrim("/World/notes"), "lpe:renderer", "karma")
+        else:
+            settings = stage.DefinePrim("/Render/settings", "RenderSettings")
+            attribute(settings, "karma:global:samples", 3, Sdf.ValueTypeNames.Int)
+        [f] = lpe.lint(stage).findings
+        assert (f.kind, f.subject, f.location["prim"]) == ("never_produced", "spec", "/Render/spec")
+        assert f.message.startswith(KARMA_NEVER), declare
+
+
+def test_a_relationship_with_a_group_attributes_name_carries_no_group():
+    # Only an attribute's value is a group: the light carries none, and reading it
+    # raises nothing.
+    stage = Usd.Stage.CreateInMemory()
+    light = stage.DefinePrim("/World/key", "RectLight")
+    light.CreateRelationship("inputs:karma:light:lpetag").SetTargets(["/World"])
+    render_var(stage, "/Render/k", "C<RD>.*<L.'key'>")
+    assert [f.message for f in lpe.lint(stage, dialect="renderman").findings] == [
+        "no light in this stage carries group 'key' (none carries a group)"
+    ]
+
+
+def test_a_value_that_cannot_be_fetched_is_an_error_naming_the_prim_and_attribute():
+    # The native reading on its own, given by hand what pxr would give: a RectLight with
+    # a group attribute and a RenderVar (read whole); the light's value raises. Planted
+    # fault, seen failing: the error message without the prim's path.
+    from lpe._lpe import StageReading
+
+    reading = StageReading(["RectLight", "RenderVar"],
+                           [["inputs:karma:light:lpetag", "points"], ["sourceName"]])
+    at, names = reading.wanted()
+    assert (at, names) == ([1, 0], ["sourceName", "inputs:karma:light:lpetag"])
+
+    def values():
+        yield "C<RD>L"
+        raise RuntimeError("the layer could not be read")
+
+    paths = ["/World/key", "/Render/a"]
+    with pytest.raises(ValueError) as e:
+        reading.complete(values(), paths.__getitem__, lambda i: [])
+    assert str(e.value) == (
+        "</World/key>.inputs:karma:light:lpetag: RuntimeError: the layer could not be read"
+    )
+    assert isinstance(e.value.__cause__, RuntimeError)
+    with pytest.raises(ValueError, match="not complete"):
+        lpe._lpe.lint_stage_json(reading, "stage")
+    # Too few or too many values, or lists of different lengths, are errors too.
+    with pytest.raises(ValueError, match=r"fewer values \(1\)"):
+        reading.complete(iter(["C<RD>L"]), paths.__getitem__, lambda i: [])
+    with pytest.raises(ValueError, match="more values than the 2 attributes"):
+        reading.complete(iter(["C<RD>L", "key", "extra"]), paths.__getitem__, lambda i: [])
+    with pytest.raises(ValueError, match="ended at prim 1"):
+        StageReading(["RectLight"], [[], []])
+    reading.complete(iter(["C<RD>L", "key"]), paths.__getitem__, lambda i: [])
+    assert reading.facts() == (
+        [("/Render/a", "RenderVar", ["sourceName"], [("sourceName", "C<RD>L")], []),
+         ("", "", [], [("inputs:karma:light:lpetag", "key")], [])],
+        ["RectLight", "RenderVar"],
+    )
 
 
 # --- the package's Python code ----------------------------------------------------------
@@ -373,7 +549,7 @@ def test_an_asset_valued_attribute_reads_as_its_authored_path():
     stage = Usd.Stage.CreateInMemory()
     prim = stage.DefinePrim("/World/tagged")
     prim.CreateAttribute("lpe:ini", Sdf.ValueTypeNames.Asset).Set(Sdf.AssetPath("looks/rendermn.ini"))
-    prims, types = lpe._stage_facts(stage)
+    prims, types = lpe._stage_facts(stage).facts()
     assert prims == [("/World/tagged", "", ["lpe:ini"], [("lpe:ini", "looks/rendermn.ini")], [])]
     assert types == [""]  # /World and /World/tagged: each type name once
 

@@ -97,15 +97,25 @@ impl<E: fmt::Display> Run<E> {
         self.statuses.iter().filter_map(|s| s.error.as_deref())
     }
 
-    /// Names the file `from` `to` in every status, AOV, partition and finding (a stage
-    /// exported to a temporary file is reported under its own name).
+    /// Names the file `from` `to` in every status (its error's leading file name too),
+    /// AOV, partition and finding (a stage read under a placeholder name is reported
+    /// under its own).
     pub fn rename_file(&mut self, from: &str, to: &str) {
         let rename = |f: &mut String| {
             if f == from {
                 *f = to.to_string();
             }
         };
-        self.statuses.iter_mut().for_each(|s| rename(&mut s.file));
+        for s in &mut self.statuses {
+            if s.file == from {
+                if let Some(e) = &mut s.error {
+                    if let Some(rest) = e.strip_prefix(from).filter(|r| r.starts_with(": ")) {
+                        *e = format!("{to}{rest}");
+                    }
+                }
+            }
+            rename(&mut s.file);
+        }
         self.outcome
             .aovs
             .iter_mut()

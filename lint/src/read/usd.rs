@@ -80,7 +80,47 @@ pub const RENDERER_ATTRIBUTE: &str = "lpe:renderer";
 /// attributes, the group attributes and every `lpe:` attribute. The `.usda` skim drops
 /// every other value, and `lpe.lint(stage)` queries only these.
 pub fn lint_reads(name: &str) -> bool {
-    name.starts_with(READ_PREFIX) || READ_ATTRIBUTES.contains(&name)
+    PrimReading::of_property(name) != PrimReading::Nothing
+}
+
+/// How much of a prim lint reads, known from its type name and property names before
+/// any value is fetched: `lpe.lint(stage)` asks pxr for no more. A prim's reading is the
+/// most that its type or any of its properties asks ([`PrimReading::of_type`],
+/// [`PrimReading::of_property`]). [`document`] uses nothing else of a prim: a test
+/// checks it on every fixture.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum PrimReading {
+    /// Nothing but its type name (in [`StageFacts::types`]).
+    Nothing,
+    /// Its type name and the values of the attributes [`lint_reads`]: a group attribute
+    /// only adds its group, wherever the prim is.
+    Values,
+    /// Also its path, every property name and, a RenderProduct, its [`ORDERED_VARS`]:
+    /// the prims that declare AOVs, partitions, the dialect or the renderer.
+    Declarations,
+}
+
+impl PrimReading {
+    /// What a prim's type asks: [`READ_PRIM_TYPES`] are read whatever they hold.
+    pub fn of_type(type_name: &str) -> Self {
+        if READ_PRIM_TYPES.contains(&type_name) {
+            Self::Declarations
+        } else {
+            Self::Nothing
+        }
+    }
+
+    /// What one property of a prim asks: an `lpe:` attribute declares, the other
+    /// [`READ_ATTRIBUTES`] are read for their values.
+    pub fn of_property(name: &str) -> Self {
+        if name.starts_with(READ_PREFIX) {
+            Self::Declarations
+        } else if READ_ATTRIBUTES.contains(&name) {
+            Self::Values
+        } else {
+            Self::Nothing
+        }
+    }
 }
 
 /// Every attribute lint reads by its whole name: the RenderVar attributes and the group
@@ -125,6 +165,12 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
 /// [`read`], with `.usda` layers skimmed or (`skimming` false, for tests that check the
 /// skim changes no finding) parsed whole.
 fn read_as(path: &Path, limits: &Limits, skimming: bool) -> Result<Document, ReadError> {
+    document(path, &facts_of(path, limits, skimming)?)
+}
+
+/// The facts of every prim of the stage at `path` (every property name, every value
+/// [`lint_reads`]), read by `openusd`.
+fn facts_of(path: &Path, limits: &Limits, skimming: bool) -> Result<StageFacts, ReadError> {
     let usd_err = |message: String| ReadError::Usd {
         path: path.to_path_buf(),
         message,
@@ -223,7 +269,7 @@ fn read_as(path: &Path, limits: &Limits, skimming: bool) -> Result<Document, Rea
             ordered_vars,
         });
     }
-    document(path, &facts)
+    Ok(facts)
 }
 
 /// The relationship of a RenderProduct listing its RenderVars in order.
@@ -238,16 +284,17 @@ pub const READ_PRIM_TYPES: [&str; 3] = ["RenderVar", "RenderProduct", "RenderSet
 /// [`Document`] from it, so both readers follow one definition of the conventions.
 #[derive(Clone, Debug, Default)]
 pub struct StageFacts {
-    /// The prims to read, in traversal order: at least every prim of a
-    /// [`READ_PRIM_TYPES`] type and every prim with an attribute [`lint_reads`] (others
-    /// change nothing).
+    /// The prims to read, in traversal order: at least every prim whose
+    /// [`PrimReading`] is more than nothing (others change nothing).
     pub prims: Vec<PrimFacts>,
     /// The type names of every prim traversed (`""` for a typeless one): lights and
     /// geometry make groups checkable.
     pub types: BTreeSet<String>,
 }
 
-/// One prim of [`StageFacts`].
+/// One prim of [`StageFacts`]. Of a prim whose [`PrimReading`] is
+/// [`PrimReading::Values`], the path, the name and the property names may be left
+/// empty: [`document`] does not read them.
 #[derive(Clone, Debug, Default)]
 pub struct PrimFacts {
     /// Its path, `/Render/Vars/diffuse`.
@@ -561,6 +608,171 @@ mod tests {
             seen += 1;
         }
         assert!(seen >= 10, "{seen} fixtures");
+    }
+
+    /// `facts` as `lpe.lint(stage)` collects them: the prims whose [`PrimReading`] is
+    /// `Declarations` whole, in order; then, of those read for their values only, each
+    /// distinct attribute and text once, with nothing else.
+    fn as_collected(facts: &StageFacts) -> StageFacts {
+        let mut prims = Vec::new();
+        let mut texts = BTreeSet::new();
+        for p in &facts.prims {
+            let reading = p
+                .properties
+                .iter()
+                .map(|n| PrimReading::of_property(n))
+                .fold(PrimReading::of_type(&p.type_name), Ord::max);
+            match reading {
+                PrimReading::Nothing => {}
+                PrimReading::Values => {
+                    texts.extend(p.values.iter().filter(|(_, t)| t.is_some()).cloned())
+                }
+                PrimReading::Declarations => prims.push(p.clone()),
+            }
+        }
+        prims.extend(texts.into_iter().map(|value| PrimFacts {
+            values: vec![value],
+            ..PrimFacts::default()
+        }));
+        StageFacts {
+            prims,
+            types: facts.types.clone(),
+        }
+    }
+
+    /// Every fixture's declarations are the same made from every prim's facts as from
+    /// only what [`PrimReading`] says lint reads: `lpe.lint(stage)` may skip the rest.
+    /// Planted faults, seen failing: `RenderSettings` dropped from [`READ_PRIM_TYPES`]
+    /// (karma_settings.usda's namespaces are lost); [`PrimReading::of_type`] answering
+    /// `Values` for the typed prims (their paths are lost).
+    #[test]
+    fn what_lint_collects_of_each_fixture_makes_the_same_document() {
+        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/testdata/usd");
+        let mut seen = 0;
+        for entry in std::fs::read_dir(&dir).unwrap() {
+            let path = entry.unwrap().path();
+            if !is_usda(&path) {
+                continue;
+            }
+            let facts = facts_of(&path, &Limits::default(), true).unwrap();
+            let whole = format!("{:?}", document(&path, &facts));
+            let collected = format!("{:?}", document(&path, &as_collected(&facts)));
+            assert_eq!(whole, collected, "{}", path.display());
+            seen += 1;
+        }
+        assert!(seen >= 10, "{seen} fixtures");
+    }
+
+    /// Each kind of prim read as lint needs it, worked by hand: what every reading keeps
+    /// and what the document makes of it. Planted faults, seen failing: an `lpe:`
+    /// attribute read as `Values` (which would lose the typeless prim's path and
+    /// property names, so its partition and dialect; the fixtures keep theirs on
+    /// RenderSettings and do not see it); the group attributes read as `Nothing`;
+    /// `of_property` comparing the prefix without its colon (`lpedata` declares);
+    /// `RenderSettings` dropped from [`READ_PRIM_TYPES`].
+    #[test]
+    fn each_kind_of_prim_is_read_as_much_as_the_document_needs() {
+        use PrimReading::{Declarations, Nothing, Values};
+        assert_eq!(PrimReading::of_type("RenderVar"), Declarations);
+        assert_eq!(PrimReading::of_type("RenderProduct"), Declarations);
+        assert_eq!(PrimReading::of_type("RenderSettings"), Declarations);
+        assert_eq!(PrimReading::of_type("Mesh"), Nothing);
+        assert_eq!(PrimReading::of_type("RectLight"), Nothing);
+        assert_eq!(PrimReading::of_type(""), Nothing);
+        assert_eq!(
+            PrimReading::of_property("lpe:partition:groups"),
+            Declarations
+        );
+        assert_eq!(PrimReading::of_property("lpe:dialect"), Declarations);
+        assert_eq!(PrimReading::of_property("lpedata"), Nothing);
+        for group in LIGHT_GROUP_ATTRIBUTES
+            .iter()
+            .chain(&OBJECT_GROUP_ATTRIBUTES)
+        {
+            assert_eq!(PrimReading::of_property(group), Values, "{group}");
+        }
+        assert_eq!(PrimReading::of_property("sourceName"), Values);
+        assert_eq!(PrimReading::of_property("points"), Nothing);
+        assert_eq!(PrimReading::of_property("primvars:karma:object"), Nothing);
+
+        let prim = |path: &str, type_name: &str, values: &[(&str, &str)]| PrimFacts {
+            path: path.to_string(),
+            name: path.rsplit('/').next().unwrap().to_string(),
+            type_name: type_name.to_string(),
+            properties: values.iter().map(|(n, _)| n.to_string()).collect(),
+            values: values
+                .iter()
+                .map(|(n, v)| (n.to_string(), Some(v.to_string())))
+                .collect(),
+            ordered_vars: Vec::new(),
+        };
+        let facts = StageFacts {
+            prims: vec![
+                prim(
+                    "/World/floor",
+                    "Mesh",
+                    &[("primvars:karma:object:lpetag", "floor")],
+                ),
+                prim(
+                    "/World/key",
+                    "RectLight",
+                    &[("inputs:karma:light:lpetag", "key")],
+                ),
+                prim("/World/plain", "Xform", &[("points", "")]),
+                prim(
+                    "/World/wall",
+                    "Mesh",
+                    &[("primvars:karma:object:lpetag", "floor")],
+                ),
+                prim(
+                    "/World/notes",
+                    "",
+                    &[("lpe:dialect", "osl"), ("lpe:partition:groups", "a,b")],
+                ),
+            ],
+            types: ["Mesh", "RectLight", "Xform", ""].map(String::from).into(),
+        };
+        let collected = as_collected(&facts);
+        // The declaring prim whole; the two meshes' group once, the light's.
+        let kept: Vec<_> = collected
+            .prims
+            .iter()
+            .map(|p| {
+                (
+                    p.path.as_str(),
+                    p.type_name.as_str(),
+                    p.properties.len(),
+                    p.values[0].0.as_str(),
+                )
+            })
+            .collect();
+        assert_eq!(
+            kept,
+            [
+                ("/World/notes", "", 2, "lpe:dialect"),
+                ("", "", 0, "inputs:karma:light:lpetag"),
+                ("", "", 0, "primvars:karma:object:lpetag"),
+            ]
+        );
+        let file = Path::new("stage.usda");
+        let doc = document(file, &collected).unwrap();
+        let set = |v: &[&str]| Some(v.iter().map(|s| s.to_string()).collect::<BTreeSet<_>>());
+        assert_eq!(doc.object_groups, set(&["floor"]));
+        assert_eq!(doc.light_groups, set(&["key"]));
+        assert_eq!(doc.dialect.map(|d| d.dialect), Some(DialectName::Osl));
+        let partitions: Vec<_> = doc
+            .partitions
+            .iter()
+            .map(|p| (p.name.as_str(), p.members.join(","), p.location.to_string()))
+            .collect();
+        assert_eq!(
+            partitions,
+            [(
+                "groups",
+                "a,b".to_string(),
+                "</World/notes>.lpe:partition:groups".to_string()
+            )]
+        );
     }
 
     /// A prim whose group attribute follows heavy values with brackets and quotes in

@@ -46,9 +46,7 @@ from ._lpe import (
     partition,
 )
 from ._lpe import USD_ORDERED_VARS as _USD_ORDERED_VARS
-from ._lpe import USD_READ_ATTRIBUTES as _USD_READ_ATTRIBUTES
-from ._lpe import USD_READ_PREFIX as _USD_READ_PREFIX
-from ._lpe import USD_READ_PRIM_TYPES as _USD_READ_PRIM_TYPES
+from ._lpe import StageReading as _StageReading
 from ._lpe import lint_json as _lint_json
 from ._lpe import lint_stage_json as _lint_stage_json
 
@@ -159,45 +157,35 @@ def stage_name(stage) -> str:
     return layer.realPath or layer.identifier
 
 
-def _as_text(value):
-    """An attribute's value as lint reads it: a string or token (``str``) or an asset
-    path's authored path; ``None`` for any other value."""
-    if isinstance(value, str):
-        return value
-    path = getattr(value, "path", None)  # Sdf.AssetPath
-    return path if isinstance(path, str) else None
-
-
 def _stage_facts(stage):
-    """What lint reads of a composed stage, through pxr's traversal and attribute
-    queries (the native module names what: the USD reader's conventions): the prims
-    of the types it reads and those holding an attribute it reads, as ``(path, type,
-    authored property names, [(attribute, text)], orderedVars target names)``, and the
-    type names of every prim. No value lint does not read is fetched."""
-    exact = frozenset(_USD_READ_ATTRIBUTES)
-    prefix = _USD_READ_PREFIX
-    typed = frozenset(_USD_READ_PRIM_TYPES)
-    # One C-level search of the joined names tells whether any starts with the prefix.
-    marker = "\0" + prefix
-    prims = []
-    types = set()
-    for prim in stage.Traverse():
-        ty = prim.GetTypeName()
-        types.add(ty)
-        names = prim.GetAuthoredPropertyNames()
-        if (ty not in typed and exact.isdisjoint(names)
-                and marker not in "\0" + "\0".join(names)):
-            continue
-        values = []
-        for n in names:
-            if n in exact or n.startswith(prefix):
-                attr = prim.GetAttribute(n)
-                if attr:  # not a relationship of that name
-                    values.append((n, _as_text(attr.Get())))
-        rel = prim.GetRelationship(_USD_ORDERED_VARS) if ty in typed else None
-        ordered = [t.name for t in rel.GetTargets()] if rel else []
-        prims.append((prim.GetPath().pathString, ty, names, values, ordered))
-    return prims, sorted(types)
+    """What lint reads of a composed stage, as a completed ``_lpe.StageReading``
+    (``facts()`` shows it). Every prim of ``stage.Traverse()`` gives its type name and
+    authored property names, and the Rust reader's conventions say which prims lint
+    reads; of those, only the attributes lint reads are fetched (their values), and only
+    the prims that declare something (RenderVars, RenderProducts, RenderSettings, prims
+    with ``lpe:`` attributes) give their paths and ``orderedVars``. Each query runs over
+    all prims through ``map``: pxr is called from C, with no Python code per prim."""
+    from pxr import Usd
+
+    prims = list(stage.Traverse())
+    reading = _StageReading(
+        map(Usd.Prim.GetTypeName, prims), map(Usd.Prim.GetAuthoredPropertyNames, prims)
+    )
+    at, names = reading.wanted()
+    # An attribute that is not one (a relationship of a name lint reads) gets no value.
+    values = map(Usd.Attribute.Get, map(Usd.Prim.GetAttribute, map(prims.__getitem__, at), names))
+    reading.complete(
+        values,
+        lambda i: prims[i].GetPath().pathString,
+        lambda i: _ordered_vars(prims[i]),
+    )
+    return reading
+
+
+def _ordered_vars(product):
+    """The prim names of a RenderProduct's ``orderedVars`` targets, in order."""
+    rel = product.GetRelationship(_USD_ORDERED_VARS)
+    return [t.name for t in rel.GetTargets()] if rel else []
 
 
 def lint(
@@ -239,10 +227,9 @@ def lint(
         else:
             raise TypeError("a partition is 'a,b,c' or a list of AOV names")
     if _is_stage(files_or_stage):
-        prims, types = _stage_facts(files_or_stage)
         out = _lint_stage_json(
-            prims, types, stage_name(files_or_stage), parts, universe, dialect, ini,
-            register, renderer, profile,
+            _stage_facts(files_or_stage), stage_name(files_or_stage), parts, universe,
+            dialect, ini, register, renderer, profile,
         )
     else:
         if isinstance(files_or_stage, (str, _os.PathLike)):
