@@ -8,6 +8,7 @@
 //! | ini | whole file | [`Limits::ini_bytes`] (1 MiB) |
 
 mod common;
+pub mod flat;
 pub mod ini;
 pub mod rib;
 pub mod skim;

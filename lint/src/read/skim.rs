@@ -79,18 +79,34 @@ type Result<T> = std::result::Result<T, SkimError>;
 /// `input` with the values of attributes `keep` refuses dropped (module docs); at most
 /// `limit` bytes of text are kept.
 pub fn skim(input: impl Read, keep: impl Fn(&str) -> bool, limit: u64) -> Result<String> {
-    let mut s = Skim {
-        src: Src::new(input),
-        out: Vec::new(),
-        stack: Vec::new(),
-        head: Vec::new(),
-        value_pending: false,
-        dict_next: false,
-        limit,
-    };
+    let mut s = Skim::new(input, limit, None);
     s.run(&keep)?;
+    as_str(s.out)
+}
+
+/// [`skim`], but the kept text is handed to `sink` in pieces as it is made instead of
+/// held whole: a piece ends between tokens, outside any `( )`, `[ ]` or dictionary (in a
+/// prim body or at the top level), once [`PIECE_BYTES`] are kept, and the last piece
+/// ends the text. `limit` bounds each piece. `sink` returns false to stop the pass (the
+/// result is then `Ok(false)`; `Ok(true)` when the whole input was passed).
+pub fn skim_pieces(
+    input: impl Read,
+    keep: impl Fn(&str) -> bool,
+    limit: u64,
+    sink: &mut dyn FnMut(&str) -> bool,
+) -> Result<bool> {
+    let mut s = Skim::new(input, limit, Some(sink));
+    s.run(&keep)?;
+    Ok(!s.stopped && s.hand_over()?)
+}
+
+/// How much kept text [`skim_pieces`] gathers before it hands a piece over.
+pub const PIECE_BYTES: usize = 64 << 10;
+
+/// Kept text as a string.
+fn as_str(out: Vec<u8>) -> Result<String> {
     // Every byte copied came from validated UTF-8 and cuts fall between tokens.
-    String::from_utf8(s.out).map_err(|e| SkimError::NotText {
+    String::from_utf8(out).map_err(|e| SkimError::NotText {
         offset: e.utf8_error().valid_up_to() as u64,
     })
 }
@@ -273,7 +289,7 @@ impl<R: Read> Src<R> {
     }
 }
 
-struct Skim<R> {
+struct Skim<'s, R> {
     src: Src<R>,
     out: Vec<u8>,
     stack: Vec<Ctx>,
@@ -284,9 +300,40 @@ struct Skim<R> {
     /// The `{` after this `=` opens a dictionary or samples, not a body.
     dict_next: bool,
     limit: u64,
+    /// Where [`skim_pieces`] hands the kept text; `None`: it is held in `out`.
+    sink: Option<&'s mut dyn FnMut(&str) -> bool>,
+    /// The sink asked to stop.
+    stopped: bool,
 }
 
-impl<R: Read> Skim<R> {
+impl<'s, R: Read> Skim<'s, R> {
+    fn new(input: R, limit: u64, sink: Option<&'s mut dyn FnMut(&str) -> bool>) -> Self {
+        Skim {
+            src: Src::new(input),
+            out: Vec::new(),
+            stack: Vec::new(),
+            head: Vec::new(),
+            value_pending: false,
+            dict_next: false,
+            limit,
+            sink,
+            stopped: false,
+        }
+    }
+
+    /// Hands the kept text so far to the sink, if there is one; false if it asks to stop.
+    fn hand_over(&mut self) -> Result<bool> {
+        let Some(sink) = self.sink.as_mut() else {
+            return Ok(true);
+        };
+        let piece = as_str(std::mem::take(&mut self.out))?;
+        let go_on = sink(&piece);
+        self.out = piece.into_bytes();
+        self.out.clear();
+        self.stopped = !go_on;
+        Ok(go_on)
+    }
+
     /// In a prim body or at the layer's top level, where statements start.
     fn in_body(&self) -> bool {
         matches!(self.stack.last(), None | Some(Ctx::Body))
@@ -325,6 +372,13 @@ impl<R: Read> Skim<R> {
             }
             if self.out.len() as u64 > self.limit {
                 return Err(SkimError::TooLarge { limit: self.limit });
+            }
+            if self.sink.is_some()
+                && self.out.len() >= PIECE_BYTES
+                && self.in_body()
+                && !self.hand_over()?
+            {
+                return Ok(());
             }
         }
         if let Some(ctx) = self.stack.last() {

@@ -117,14 +117,31 @@ const GEOMETRY_TYPES: [&str; 13] = [
     "TetMesh",
 ];
 
-/// Reads the declarations of a USD stage.
+/// Reads the declarations of a USD stage: a `.usda` layer that composes nothing
+/// straight from its text ([`super::flat`]), any other through `openusd`.
 pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
-    read_as(path, limits, true)
+    read_as(path, limits, Via::Flat)
 }
 
-/// [`read`], with `.usda` layers skimmed or (`skimming` false, for tests that check the
-/// skim changes no finding) parsed whole.
-fn read_as(path: &Path, limits: &Limits, skimming: bool) -> Result<Document, ReadError> {
+/// How [`read_as`] reads a stage: the three must give the same document.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Via {
+    /// A flat `.usda` layer without `openusd`; anything else as [`Via::Composed`].
+    Flat,
+    /// Through `openusd`, every `.usda` layer skimmed first.
+    Composed,
+    /// Through `openusd`, every layer parsed whole.
+    Whole,
+}
+
+/// [`read`] by the path `via` says (tests check every path gives the same document).
+fn read_as(path: &Path, limits: &Limits, via: Via) -> Result<Document, ReadError> {
+    if via == Via::Flat && is_usda(path) {
+        if let Ok(doc) = super::flat::read(path, limits)? {
+            return Ok(doc);
+        }
+    }
+    let skimming = via != Via::Whole;
     let usd_err = |message: String| ReadError::Usd {
         path: path.to_path_buf(),
         message,
@@ -144,21 +161,8 @@ fn read_as(path: &Path, limits: &Limits, skimming: bool) -> Result<Document, Rea
             source,
         };
         let file = std::fs::File::open(path).map_err(io_err)?;
-        let text =
-            skim(io::BufReader::new(file), lint_reads, limits.usd_bytes).map_err(|e| match e {
-                SkimError::Io(source) => io_err(source),
-                SkimError::NotText { offset } => ReadError::NotText {
-                    path: path.to_path_buf(),
-                    offset,
-                },
-                SkimError::TooLarge { limit } => ReadError::TooLarge {
-                    path: path.to_path_buf(),
-                    bytes: std::fs::metadata(path).map_or(0, |m| m.len()),
-                    limit,
-                    what: "USD text (besides skipped values)",
-                },
-                e @ SkimError::Syntax { .. } => usd_err(e.to_string()),
-            })?;
+        let text = skim(io::BufReader::new(file), lint_reads, limits.usd_bytes)
+            .map_err(|e| skim_error(path, e))?;
         let canonical = path.canonicalize().map_err(io_err)?;
         resolver.root = Mutex::new(Some((canonical, text.into_bytes())));
     } else {
@@ -226,6 +230,30 @@ fn read_as(path: &Path, limits: &Limits, skimming: bool) -> Result<Document, Rea
     document(path, &facts)
 }
 
+/// The read error of a skim of the root layer `path`, with its kind and position.
+pub(crate) fn skim_error(path: &Path, e: SkimError) -> ReadError {
+    match e {
+        SkimError::Io(source) => ReadError::Io {
+            path: path.to_path_buf(),
+            source,
+        },
+        SkimError::NotText { offset } => ReadError::NotText {
+            path: path.to_path_buf(),
+            offset,
+        },
+        SkimError::TooLarge { limit } => ReadError::TooLarge {
+            path: path.to_path_buf(),
+            bytes: std::fs::metadata(path).map_or(0, |m| m.len()),
+            limit,
+            what: "USD text (besides skipped values)",
+        },
+        e @ SkimError::Syntax { .. } => ReadError::Usd {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        },
+    }
+}
+
 /// The relationship of a RenderProduct listing its RenderVars in order.
 pub const ORDERED_VARS: &str = "orderedVars";
 
@@ -267,16 +295,52 @@ pub struct PrimFacts {
 
 /// The declarations of a stage `file` whose prims are `facts` (module docs).
 pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> {
-    let mut doc = Document::new(file, Format::Usd);
-    let mut lights = BTreeSet::new();
-    let mut objects = BTreeSet::new();
-    let mut has_lights = facts.types.iter().any(|t| t.ends_with("Light"));
-    let mut has_objects = facts
-        .types
-        .iter()
-        .any(|t| GEOMETRY_TYPES.contains(&t.as_str()));
-    let mut declared = None;
+    let mut builder = DocumentBuilder::new(file);
+    for t in &facts.types {
+        builder.prim_type(t);
+    }
     for prim in &facts.prims {
+        builder.prim(prim)?;
+    }
+    Ok(builder.finish())
+}
+
+/// [`document`] one prim at a time, for readers that stream a stage instead of holding
+/// its [`StageFacts`] ([`super::flat`]): the prims must come in traversal order, and
+/// every type traversed must be named through [`DocumentBuilder::prim_type`].
+pub struct DocumentBuilder {
+    doc: Document,
+    lights: BTreeSet<String>,
+    objects: BTreeSet<String>,
+    has_lights: bool,
+    has_objects: bool,
+    declared: Option<(DialectName, Location)>,
+}
+
+impl DocumentBuilder {
+    /// A builder for the stage `file`, with no prim yet.
+    pub fn new(file: &Path) -> DocumentBuilder {
+        DocumentBuilder {
+            doc: Document::new(file, Format::Usd),
+            lights: BTreeSet::new(),
+            objects: BTreeSet::new(),
+            has_lights: false,
+            has_objects: false,
+            declared: None,
+        }
+    }
+
+    /// Records that a prim of type `type_name` (`""` for none) was traversed: lights and
+    /// geometry make groups checkable.
+    pub fn prim_type(&mut self, type_name: &str) {
+        self.has_lights |= type_name.ends_with("Light");
+        self.has_objects |= GEOMETRY_TYPES.contains(&type_name);
+    }
+
+    /// Reads one prim (its type is not recorded: see [`DocumentBuilder::prim_type`]).
+    pub fn prim(&mut self, prim: &PrimFacts) -> Result<(), ReadError> {
+        let file = self.doc.file.clone();
+        let doc = &mut self.doc;
         let p = &prim.path;
         let text = |attr: &str| -> Option<String> {
             prim.values
@@ -307,14 +371,14 @@ pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> 
         }
         for attr in LIGHT_GROUP_ATTRIBUTES {
             if let Some(g) = text(attr) {
-                has_lights = true;
-                lights.insert(g);
+                self.has_lights = true;
+                self.lights.insert(g);
             }
         }
         for attr in OBJECT_GROUP_ATTRIBUTES {
             if let Some(g) = text(attr) {
-                has_objects = true;
-                objects.insert(g);
+                self.has_objects = true;
+                self.objects.insert(g);
             }
         }
         for prop in &prim.properties {
@@ -327,11 +391,11 @@ pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> 
                 }
             }
             if prop == RENDERER_ATTRIBUTE {
-                declare_renderer(&mut doc.renderer, file, text(prop), at(prop))?;
+                declare_renderer(&mut doc.renderer, &file, text(prop), at(prop))?;
                 continue;
             }
             if prop == DIALECT_ATTRIBUTE {
-                declare_dialect(&mut declared, file, text(prop).as_deref(), at(prop))?;
+                declare_dialect(&mut self.declared, &file, text(prop).as_deref(), at(prop))?;
                 continue;
             }
             let name = match prop.strip_prefix("lpe:partition") {
@@ -348,14 +412,20 @@ pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> 
                 location: at(prop),
             });
         }
+        Ok(())
     }
-    doc.dialect = declared.map(|(dialect, at)| DialectDecl {
-        dialect,
-        location: Some(at),
-    });
-    doc.light_groups = has_lights.then_some(lights);
-    doc.object_groups = has_objects.then_some(objects);
-    Ok(doc)
+
+    /// The document of the prims read.
+    pub fn finish(self) -> Document {
+        let mut doc = self.doc;
+        doc.dialect = self.declared.map(|(dialect, at)| DialectDecl {
+            dialect,
+            location: Some(at),
+        });
+        doc.light_groups = self.has_lights.then_some(self.lights);
+        doc.object_groups = self.has_objects.then_some(self.objects);
+        doc
+    }
 }
 
 /// Whether `path` names a text layer by its extension: the layers the skim reads.
@@ -555,8 +625,8 @@ mod tests {
                 continue;
             }
             let limits = Limits::default();
-            let skimmed = format!("{:?}", read_as(&path, &limits, true));
-            let whole = format!("{:?}", read_as(&path, &limits, false));
+            let skimmed = format!("{:?}", read_as(&path, &limits, Via::Composed));
+            let whole = format!("{:?}", read_as(&path, &limits, Via::Whole));
             assert_eq!(skimmed, whole, "{}", path.display());
             seen += 1;
         }

@@ -1,0 +1,754 @@
+//! A `.usda` layer that composes nothing, read straight from its skimmed text without the
+//! USD library: lint's facts are collected prim by prim as the skim
+//! ([`super::skim::skim_pieces`]) hands its text over, so neither time nor memory
+//! follows the prim count the way composing does (`openusd` spends about 60 µs and
+//! 8 KB on every prim it keeps).
+//!
+//! When a layer has no composition arc, the composed stage is the layer itself: its
+//! prims in the order they are written, each with the properties written in its body.
+//! This reader takes a layer as flat only when it can see that, and hands it back
+//! ([`NotFlat`], with the line and the reason) for [`super::usd`] to compose through
+//! `openusd` as soon as it meets anything else:
+//!
+//! - layer metadata other than [`LAYER_METADATA`] (`subLayers`, `relocates`, ...);
+//! - prim metadata other than [`PRIM_METADATA`] (`references`, `payload`, `inherits`,
+//!   `specializes`, `variantSets`, `variants`, `instanceable`, `clips`, ...), or an
+//!   `active` that is not `true` or `false`;
+//! - an `over` or `class` prim, a `variantSet` or `reorder` statement, two sibling prims
+//!   of one name, a property after a child prim, a name that is no plain identifier;
+//! - an attribute lint reads ([`lint_reads`]) that is not a `string` or `token` holding
+//!   one plain quoted string (no escape, not triple-quoted) or `None`, that is authored
+//!   twice, with time samples, a connection or a list operation; a RenderProduct's
+//!   `orderedVars` that is not one relationship to absolute prim paths;
+//! - an attribute type that is no USD value type, a statement of any other shape, a
+//!   first line other than `#usda 1.0`.
+//!
+//! What it collects is a [`PrimFacts`] per prim, handed to the USD reader's own
+//! [`DocumentBuilder`] in traversal order (a prim when its first child starts or its
+//! body closes), so the conventions (attribute names, `sourceType` spellings, which
+//! prims are read) stay defined once, in [`super::usd`]. Inactive prims (`active =
+//! false`) and their descendants are skipped, as `openusd`'s default traversal skips
+//! them. A read error (a dialect conflict, an unknown renderer) is held until the end of
+//! the layer: if the layer turns out not to be flat, the composed reading decides.
+//!
+//! Text the USD library would refuse is handed back as not flat wherever this reader
+//! does not recognise a statement, so the library reports it; the skim's own errors
+//! (unterminated strings and brackets, bad bytes) are the same on both paths, with their
+//! line and column or byte offset.
+//!
+//! Memory: the skim's piece ([`super::skim::PIECE_BYTES`], more only for one statement
+//! kept whole), the open prims' paths and one 8-byte hash per child name of each open
+//! prim (to see a sibling named twice), the current prim's kept properties, and the
+//! document (the AOVs, partitions and the distinct group labels). It does not grow with
+//! the geometry, nor with the number of prims beyond those hashes.
+
+use std::collections::HashSet;
+use std::hash::{DefaultHasher, Hash, Hasher};
+use std::path::Path;
+
+use crate::decl::Document;
+use crate::error::ReadError;
+use crate::read::common::Limits;
+use crate::read::skim::skim_pieces;
+use crate::read::usd::{
+    lint_reads, skim_error, DocumentBuilder, PrimFacts, ORDERED_VARS, READ_PRIM_TYPES,
+};
+
+/// Layer metadata that changes nothing lint reads.
+pub const LAYER_METADATA: [&str; 17] = [
+    "colorConfiguration",
+    "colorManagementSystem",
+    "comment",
+    "customLayerData",
+    "defaultPrim",
+    "doc",
+    "documentation",
+    "endFrame",
+    "endTimeCode",
+    "framesPerSecond",
+    "kilogramsPerUnit",
+    "metersPerUnit",
+    "owner",
+    "renderSettingsPrimPath",
+    "startFrame",
+    "startTimeCode",
+    "timeCodesPerSecond",
+];
+
+/// Prim metadata that changes nothing lint reads (`active` is read; `apiSchemas` adds
+/// no authored property).
+pub const PRIM_METADATA: [&str; 11] = [
+    "active",
+    "apiSchemas",
+    "assetInfo",
+    "comment",
+    "customData",
+    "displayGroupOrder",
+    "displayName",
+    "doc",
+    "documentation",
+    "hidden",
+    "kind",
+];
+
+/// The value types of USD attributes (`Sdf.ValueTypeNames`), each also as an array.
+const VALUE_TYPES: [&str; 56] = [
+    "bool",
+    "uchar",
+    "int",
+    "uint",
+    "int64",
+    "uint64",
+    "half",
+    "float",
+    "double",
+    "timecode",
+    "string",
+    "token",
+    "asset",
+    "opaque",
+    "group",
+    "pathExpression",
+    "dictionary",
+    "int2",
+    "int3",
+    "int4",
+    "half2",
+    "half3",
+    "half4",
+    "float2",
+    "float3",
+    "float4",
+    "double2",
+    "double3",
+    "double4",
+    "point3h",
+    "point3f",
+    "point3d",
+    "vector3h",
+    "vector3f",
+    "vector3d",
+    "normal3h",
+    "normal3f",
+    "normal3d",
+    "color3h",
+    "color3f",
+    "color3d",
+    "color4h",
+    "color4f",
+    "color4d",
+    "quath",
+    "quatf",
+    "quatd",
+    "matrix2d",
+    "matrix3d",
+    "matrix4d",
+    "frame4d",
+    "texCoord2h",
+    "texCoord2f",
+    "texCoord2d",
+    "texCoord3h",
+    "texCoord3f",
+];
+
+/// Why a layer is not read flat: the first thing seen that may compose or that this
+/// reader leaves to the USD library.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NotFlat {
+    /// The 1-based line where it was seen.
+    pub line: usize,
+    /// What it is (`a \`references\` prim metadata`).
+    pub why: String,
+}
+
+/// The document of the `.usda` layer `path` if it composes nothing (module docs), or
+/// why it must be composed. Skim errors are errors here as on the composed path.
+pub fn read(path: &Path, limits: &Limits) -> Result<Result<Document, NotFlat>, ReadError> {
+    let io_err = |source| ReadError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let file = std::fs::File::open(path).map_err(io_err)?;
+    let mut reader = Reader::new(path);
+    let mut sink = |piece: &str| reader.piece(piece).is_ok();
+    let whole = skim_pieces(
+        std::io::BufReader::new(file),
+        lint_reads,
+        limits.usd_bytes,
+        &mut sink,
+    )
+    .map_err(|e| skim_error(path, e))?;
+    if let Some(not_flat) = reader.not_flat {
+        return Ok(Err(not_flat));
+    }
+    debug_assert!(whole);
+    reader.finish()
+}
+
+/// One token of skimmed text.
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum Tok {
+    /// A line end.
+    Nl,
+    /// A run of bytes up to a delimiter: a keyword, a type, a name, a number.
+    Word(String),
+    /// A quoted string: its text between the quotes when plain (`"..."` or `'...'` with
+    /// no backslash nor line end), `None` otherwise.
+    Str(Option<String>),
+    /// A path, `<...>`: its text.
+    Path(String),
+    /// An asset path, `@...@`.
+    Asset,
+    /// `( ) [ ] { } = , ;`.
+    Punct(u8),
+}
+
+/// Bytes that end a word, as the skim has them.
+fn delimits(b: u8) -> bool {
+    matches!(
+        b,
+        b' ' | b'\t'
+            | b'\r'
+            | b'\n'
+            | b'#'
+            | b'"'
+            | b'\''
+            | b'@'
+            | b'<'
+            | b'('
+            | b')'
+            | b'['
+            | b']'
+            | b'{'
+            | b'}'
+            | b'='
+            | b','
+            | b';'
+    )
+}
+
+/// The tokens of a piece of skimmed text, which ends between tokens. `Err(())` for a
+/// token cut by the end (which the skim never hands over).
+fn tokens(text: &str, out: &mut Vec<Tok>) -> Result<(), ()> {
+    let b = text.as_bytes();
+    let mut i = 0;
+    while i < b.len() {
+        let c = b[i];
+        match c {
+            b'\n' => {
+                out.push(Tok::Nl);
+                i += 1;
+            }
+            b' ' | b'\t' | b'\r' => i += 1,
+            b'#' => {
+                while i < b.len() && b[i] != b'\n' {
+                    i += 1;
+                }
+            }
+            b'"' | b'\'' | b'@' | b'<' => {
+                let triple = c != b'<' && b[i..].starts_with(&[c, c, c]);
+                let open = if triple { 3 } else { 1 };
+                let (close, escapes): (&[u8], bool) = match (c, triple) {
+                    (b'<', _) => (b">", false),
+                    (b'@', false) => (b"@", false),
+                    (b'@', true) => (b"@@@", true),
+                    (_, false) => (std::slice::from_ref(&b[i]), true),
+                    (_, true) => (&b[i..i + 3], true),
+                };
+                let (end, plain) = quoted_end(b, i + open, close, escapes).ok_or(())?;
+                let inner = &text[i + open..end];
+                out.push(match c {
+                    b'<' => Tok::Path(inner.to_string()),
+                    b'@' => Tok::Asset,
+                    _ => Tok::Str((plain && !triple).then(|| inner.to_string())),
+                });
+                i = end + close.len();
+            }
+            b'(' | b')' | b'[' | b']' | b'{' | b'}' | b'=' | b',' | b';' => {
+                out.push(Tok::Punct(c));
+                i += 1;
+            }
+            _ => {
+                let start = i;
+                while i < b.len() && !delimits(b[i]) {
+                    i += 1;
+                }
+                out.push(Tok::Word(text[start..i].to_string()));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// Where the quoted text from `start` ends (the offset of its `close`), and whether it
+/// is plain: no backslash (when `escapes`) and no line end.
+fn quoted_end(b: &[u8], start: usize, close: &[u8], escapes: bool) -> Option<(usize, bool)> {
+    let mut j = start;
+    let mut plain = true;
+    while j < b.len() {
+        if escapes && b[j] == b'\\' {
+            plain = false;
+            j += 2;
+            continue;
+        }
+        if b[j..].starts_with(close) {
+            return Some((j, plain));
+        }
+        plain &= b[j] != b'\n';
+        j += 1;
+    }
+    None
+}
+
+/// Whether `name` is a plain identifier: what a prim name is.
+fn is_identifier(name: &str) -> bool {
+    let mut bytes = name.bytes();
+    bytes
+        .next()
+        .is_some_and(|b| b.is_ascii_alphabetic() || b == b'_')
+        && bytes.all(|b| b.is_ascii_alphanumeric() || b == b'_')
+}
+
+/// Whether `name` is a property name: identifiers joined by `:`.
+fn is_property_name(name: &str) -> bool {
+    name.split(':').all(is_identifier)
+}
+
+/// An open prim.
+struct Frame {
+    /// What lint reads of it, so far.
+    facts: PrimFacts,
+    /// It is traversed: it and its ancestors are active.
+    traversed: bool,
+    /// Its facts were handed to the builder (its first child started).
+    handed: bool,
+    /// Whether lint reads it: its type is read, or it holds an attribute lint reads.
+    read: bool,
+    /// A hash of each child's name.
+    children: HashSet<u64>,
+}
+
+impl Frame {
+    fn new(path: String, name: String, type_name: String, traversed: bool) -> Frame {
+        let read = READ_PRIM_TYPES.contains(&type_name.as_str());
+        Frame {
+            facts: PrimFacts {
+                path,
+                name,
+                type_name,
+                ..PrimFacts::default()
+            },
+            traversed,
+            handed: false,
+            read,
+            children: HashSet::new(),
+        }
+    }
+}
+
+/// What a statement is, from its first token.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    /// `def ... {`: ends at the `{` outside brackets.
+    Prim,
+    /// The layer's `( ... )`: ends at its `)`.
+    LayerMetadata,
+    /// A property: ends at a line end or `;` outside brackets.
+    Property,
+}
+
+/// The reader's state across pieces.
+struct Reader {
+    builder: DocumentBuilder,
+    /// The pseudo-root, then the open prims.
+    frames: Vec<Frame>,
+    /// The statement being read, and its bracket depth.
+    stmt: Vec<Tok>,
+    kind: Kind,
+    depth: usize,
+    /// Line of the token being read.
+    line: usize,
+    /// The statement's first line.
+    stmt_line: usize,
+    /// The `#usda 1.0` line was seen.
+    started: bool,
+    /// A prim or the layer metadata was seen: no layer metadata may follow.
+    past_metadata: bool,
+    not_flat: Option<NotFlat>,
+    /// The first read error, held until the layer is known to be flat.
+    error: Option<ReadError>,
+    scratch: Vec<Tok>,
+}
+
+impl Reader {
+    fn new(path: &Path) -> Reader {
+        Reader {
+            builder: DocumentBuilder::new(path),
+            frames: vec![Frame::new(
+                String::new(),
+                String::new(),
+                String::new(),
+                true,
+            )],
+            stmt: Vec::new(),
+            kind: Kind::Property,
+            depth: 0,
+            line: 1,
+            stmt_line: 1,
+            started: false,
+            past_metadata: false,
+            not_flat: None,
+            error: None,
+            scratch: Vec::new(),
+        }
+    }
+
+    fn not_flat(&mut self, line: usize, why: impl Into<String>) -> Result<(), ()> {
+        self.not_flat = Some(NotFlat {
+            line,
+            why: why.into(),
+        });
+        Err(())
+    }
+
+    /// Reads a piece of skimmed text; `Err` once the layer is known not to be flat.
+    fn piece(&mut self, text: &str) -> Result<(), ()> {
+        if !self.started {
+            let header = text.strip_prefix("#usda 1.0");
+            if !header.is_some_and(|rest| rest.is_empty() || rest.starts_with(['\n', '\r', ' '])) {
+                return self.not_flat(1, "a first line other than `#usda 1.0`");
+            }
+            self.started = true;
+        }
+        let mut toks = std::mem::take(&mut self.scratch);
+        toks.clear();
+        if tokens(text, &mut toks).is_err() {
+            return self.not_flat(self.line, "a token the skim cut");
+        }
+        let result = toks.drain(..).try_for_each(|t| self.token(t));
+        self.scratch = toks;
+        result
+    }
+
+    fn token(&mut self, t: Tok) -> Result<(), ()> {
+        let line = self.line;
+        if t == Tok::Nl {
+            self.line += 1;
+        }
+        if self.stmt.is_empty() {
+            match &t {
+                Tok::Nl | Tok::Punct(b';') => return Ok(()),
+                Tok::Punct(b'}') => return self.close(line),
+                Tok::Punct(b'(') if self.frames.len() == 1 && !self.past_metadata => {
+                    self.kind = Kind::LayerMetadata;
+                }
+                Tok::Word(w) if matches!(w.as_str(), "def" | "over" | "class") => {
+                    self.kind = Kind::Prim;
+                }
+                Tok::Word(_) if self.frames.len() > 1 => self.kind = Kind::Property,
+                _ => return self.not_flat(line, "a statement of another shape"),
+            }
+            self.stmt_line = line;
+            self.depth = 0;
+        }
+        match (&t, self.kind) {
+            (Tok::Punct(b'{'), Kind::Prim) if self.depth == 0 => return self.open_prim(),
+            (Tok::Punct(b'(' | b'[' | b'{'), _) => self.depth += 1,
+            (Tok::Punct(b')' | b']' | b'}'), _) if self.depth > 0 => {
+                self.depth -= 1;
+                if self.depth == 0 && self.kind == Kind::LayerMetadata {
+                    self.stmt.push(t);
+                    return self.layer_metadata();
+                }
+            }
+            (Tok::Punct(b'}'), Kind::Property) => {
+                self.property()?;
+                return self.close(line);
+            }
+            (Tok::Nl | Tok::Punct(b';'), Kind::Property)
+                if self.depth == 0 && self.stmt.last() != Some(&Tok::Punct(b'=')) =>
+            {
+                return self.property();
+            }
+            _ => {}
+        }
+        if t != Tok::Nl || self.depth > 0 {
+            self.stmt.push(t);
+        }
+        Ok(())
+    }
+
+    /// The layer's metadata, whole in `stmt`.
+    fn layer_metadata(&mut self) -> Result<(), ()> {
+        self.past_metadata = true;
+        let stmt = std::mem::take(&mut self.stmt);
+        match metadata(&stmt, &LAYER_METADATA) {
+            Ok(_) => Ok(()),
+            Err(why) => self.not_flat(self.stmt_line, why),
+        }
+    }
+
+    /// `def Type "name" (metadata)`, whole in `stmt`, whose body opens.
+    fn open_prim(&mut self) -> Result<(), ()> {
+        self.past_metadata = true;
+        let stmt = std::mem::take(&mut self.stmt);
+        let line = self.stmt_line;
+        let (specifier, type_name, name, rest) = match stmt.as_slice() {
+            [Tok::Word(s), Tok::Word(t), Tok::Str(Some(n)), rest @ ..] => (s, t.as_str(), n, rest),
+            [Tok::Word(s), Tok::Str(Some(n)), rest @ ..] => (s, "", n, rest),
+            _ => return self.not_flat(line, "a prim statement of another shape"),
+        };
+        if specifier != "def" {
+            return self.not_flat(line, format!("an `{specifier}` prim"));
+        }
+        if !is_identifier(name) || !(type_name.is_empty() || is_identifier(type_name)) {
+            return self.not_flat(line, format!("a prim named `{name}` of type `{type_name}`"));
+        }
+        let active = match rest {
+            [] => true,
+            [Tok::Punct(b'('), .., Tok::Punct(b')')] => match metadata(rest, &PRIM_METADATA) {
+                Ok(active) => active.unwrap_or(true),
+                Err(why) => return self.not_flat(line, why),
+            },
+            _ => return self.not_flat(line, "a prim statement of another shape"),
+        };
+        let parent = self.frames.last_mut().expect("the pseudo-root stays");
+        let mut hasher = DefaultHasher::new();
+        name.hash(&mut hasher);
+        if !parent.children.insert(hasher.finish()) {
+            return self.not_flat(line, format!("a second prim named `{name}` among siblings"));
+        }
+        let path = format!("{}/{name}", parent.facts.path);
+        let traversed = parent.traversed && active;
+        self.hand(self.frames.len() - 1);
+        if traversed {
+            self.builder.prim_type(type_name);
+        }
+        let frame = Frame::new(path, name.clone(), type_name.to_string(), traversed);
+        self.frames.push(frame);
+        Ok(())
+    }
+
+    /// Hands the facts of the open prim `frames[i]` to the builder, once, if lint reads it.
+    fn hand(&mut self, i: usize) {
+        let frame = &mut self.frames[i];
+        if frame.handed || i == 0 {
+            return;
+        }
+        frame.handed = true;
+        if !(frame.traversed && frame.read) || self.error.is_some() {
+            return;
+        }
+        if let Err(e) = self.builder.prim(&frame.facts) {
+            self.error = Some(e);
+        }
+    }
+
+    /// A prim's `}`.
+    fn close(&mut self, line: usize) -> Result<(), ()> {
+        if self.frames.len() == 1 {
+            return self.not_flat(line, "a `}` outside a prim");
+        }
+        self.hand(self.frames.len() - 1);
+        self.frames.pop();
+        Ok(())
+    }
+
+    /// A property statement, whole in `stmt`.
+    fn property(&mut self) -> Result<(), ()> {
+        let stmt = std::mem::take(&mut self.stmt);
+        let line = self.stmt_line;
+        match self.property_in(&stmt) {
+            Ok(()) => Ok(()),
+            Err(why) => self.not_flat(line, why),
+        }
+    }
+
+    fn property_in(&mut self, stmt: &[Tok]) -> Result<(), String> {
+        let frame = self.frames.last_mut().expect("a property is in a prim");
+        if frame.handed {
+            return Err("a property after a child prim".into());
+        }
+        let other = || "a statement of another shape".to_string();
+        let word = |i: usize| match stmt.get(i) {
+            Some(Tok::Word(w)) => Some(w.as_str()),
+            _ => None,
+        };
+        let mut i = 0;
+        if let Some(w @ ("variantSet" | "reorder")) = word(0) {
+            return Err(format!("a `{w}` statement"));
+        }
+        let list_op = matches!(word(0), Some("prepend" | "append" | "add" | "delete"));
+        i += usize::from(list_op);
+        i += usize::from(word(i) == Some("custom"));
+        i += usize::from(matches!(word(i), Some("uniform" | "varying" | "config")));
+        let type_name = word(i).ok_or_else(other)?;
+        i += 1;
+        let relationship = type_name == "rel";
+        let mut array = false;
+        if !relationship && stmt.get(i) == Some(&Tok::Punct(b'[')) {
+            if stmt.get(i + 1) != Some(&Tok::Punct(b']')) {
+                return Err(other());
+            }
+            array = true;
+            i += 2;
+        }
+        if !relationship && !VALUE_TYPES.contains(&type_name) {
+            return Err(format!("an attribute of type `{type_name}`"));
+        }
+        let full = word(i).ok_or_else(other)?;
+        i += 1;
+        let (name, suffix) = match full.split_once('.') {
+            Some((name, suffix)) => (name, Some(suffix)),
+            None => (full, None),
+        };
+        if !is_property_name(name)
+            || !matches!(suffix, None | Some("timeSamples" | "connect" | "spline"))
+        {
+            return Err(format!("a property named `{full}`"));
+        }
+        if list_op && !(relationship || suffix == Some("connect")) {
+            return Err(other());
+        }
+        // The value, if any, then metadata, if any.
+        let mut value: &[Tok] = &[];
+        if stmt.get(i) == Some(&Tok::Punct(b'=')) {
+            let end = stmt[i + 1..]
+                .iter()
+                .position(|t| *t == Tok::Punct(b'('))
+                .map_or(stmt.len(), |k| i + 1 + k);
+            value = &stmt[i + 1..end];
+            i = end;
+        }
+        match stmt.get(i) {
+            None => {}
+            Some(Tok::Punct(b'(')) if stmt.last() == Some(&Tok::Punct(b')')) => {}
+            Some(_) => return Err(other()),
+        }
+        let reads = lint_reads(name);
+        let ordered = name == ORDERED_VARS && frame.facts.type_name == "RenderProduct";
+        let fresh = !frame.facts.properties.iter().any(|p| p == name);
+        if (reads || ordered) && !fresh {
+            return Err(format!("`{name}` authored twice"));
+        }
+        if reads {
+            if relationship || suffix.is_some() || array || !matches!(type_name, "string" | "token")
+            {
+                return Err(format!(
+                    "`{full}` as {type_name} that lint cannot read flat"
+                ));
+            }
+            let text = match value {
+                [] => None,
+                [Tok::Word(w)] if w == "None" => None,
+                [Tok::Str(Some(s))] => Some(s.clone()),
+                _ => return Err(format!("a value of `{name}` that lint cannot read flat")),
+            };
+            frame.facts.values.push((name.to_string(), text));
+            frame.read = true;
+        }
+        if ordered {
+            if !relationship || list_op || suffix.is_some() {
+                return Err(format!("`{full}` that is no plain relationship"));
+            }
+            frame.facts.ordered_vars = targets(value)
+                .ok_or_else(|| format!("`{name}` targets that lint cannot read flat"))?;
+        }
+        if fresh && (reads || ordered || frame.facts.type_name == "RenderSettings") {
+            frame.facts.properties.push(name.to_string());
+        }
+        Ok(())
+    }
+
+    /// The document, if the layer ended flat.
+    fn finish(mut self) -> Result<Result<Document, NotFlat>, ReadError> {
+        if !self.stmt.is_empty() {
+            if self.kind != Kind::Property || self.property().is_err() {
+                return Ok(Err(self.not_flat.unwrap_or(NotFlat {
+                    line: self.stmt_line,
+                    why: "a statement left open".into(),
+                })));
+            }
+            if let Some(not_flat) = self.not_flat {
+                return Ok(Err(not_flat));
+            }
+        }
+        if self.frames.len() > 1 {
+            return Ok(Err(NotFlat {
+                line: self.line,
+                why: "a prim left open".into(),
+            }));
+        }
+        match self.error {
+            Some(e) => Err(e),
+            None => Ok(Ok(self.builder.finish())),
+        }
+    }
+}
+
+/// Checks metadata `( ... )` (whole, parentheses included): every key must be
+/// `allowed`. Returns the `active` value, if there is one.
+fn metadata(toks: &[Tok], allowed: &[&str]) -> Result<Option<bool>, String> {
+    let mut depth = 0;
+    let mut active = None;
+    for (i, t) in toks.iter().enumerate() {
+        match t {
+            Tok::Punct(b'(' | b'[' | b'{') => depth += 1,
+            Tok::Punct(b')' | b']' | b'}') => depth -= 1,
+            Tok::Punct(b'=') if depth == 1 => {
+                let key = match i.checked_sub(1).map(|k| &toks[k]) {
+                    Some(Tok::Word(k)) => k.as_str(),
+                    _ => return Err("metadata of another shape".into()),
+                };
+                if !allowed.contains(&key) {
+                    return Err(format!("`{key}` metadata"));
+                }
+                if key == "active" {
+                    active = match toks.get(i + 1) {
+                        Some(Tok::Word(w)) if w == "true" => Some(true),
+                        Some(Tok::Word(w)) if w == "false" => Some(false),
+                        _ => return Err("an `active` that is neither `true` nor `false`".into()),
+                    };
+                }
+            }
+            _ => {}
+        }
+    }
+    Ok(active)
+}
+
+/// The prim names of relationship targets `</a/b>` or `[</a/b>, ...]` (or `None`), if
+/// every target is an absolute prim path.
+fn targets(value: &[Tok]) -> Option<Vec<String>> {
+    let name = |t: &Tok| match t {
+        Tok::Path(p) => {
+            let rest = p.strip_prefix('/')?;
+            rest.split('/')
+                .all(is_identifier)
+                .then(|| rest.rsplit('/').next().unwrap_or_default().to_string())
+        }
+        _ => None,
+    };
+    match value {
+        [] => Some(Vec::new()),
+        [Tok::Word(w)] if w == "None" => Some(Vec::new()),
+        [t @ Tok::Path(_)] => Some(vec![name(t)?]),
+        [Tok::Punct(b'['), inner @ .., Tok::Punct(b']')] => {
+            let mut names = Vec::new();
+            let mut comma = true;
+            for t in inner {
+                match t {
+                    Tok::Nl => {}
+                    Tok::Punct(b',') if !comma => comma = true,
+                    Tok::Path(_) if comma => {
+                        names.push(name(t)?);
+                        comma = false;
+                    }
+                    _ => return None,
+                }
+            }
+            Some(names)
+        }
+        _ => None,
+    }
+}
