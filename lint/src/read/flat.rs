@@ -499,7 +499,7 @@ impl Reader {
             _ => return self.not_flat(line, "a prim statement of another shape"),
         };
         if specifier != "def" {
-            return self.not_flat(line, format!("an `{specifier}` prim"));
+            return self.not_flat(line, format!("a prim specified `{specifier}`"));
         }
         if !is_identifier(name) || !(type_name.is_empty() || is_identifier(type_name)) {
             return self.not_flat(line, format!("a prim named `{name}` of type `{type_name}`"));
@@ -750,5 +750,284 @@ fn targets(value: &[Tok]) -> Option<Vec<String>> {
             Some(names)
         }
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::read::usd::read_composed;
+
+    /// A scratch `.usda` file holding `text`, unique to the test `name`.
+    fn layer(name: &str, text: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("lpe-flat-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        let path = dir.join(format!("{name}.usda"));
+        std::fs::write(&path, text).unwrap();
+        path
+    }
+
+    /// Why `text` is not read flat (panics if it is).
+    fn not_flat(name: &str, text: &str) -> NotFlat {
+        let path = layer(name, text);
+        match read(&path, &Limits::default()) {
+            Ok(Err(n)) => n,
+            other => panic!("{name}: {other:?}"),
+        }
+    }
+
+    /// A stage with every fact lint reads: RenderVars with every `sourceType`
+    /// spelling, a raw one and one without `sourceType`, `orderedVars`, the group
+    /// attributes of every delegate, partitions, the dialect and renderer, RenderSettings
+    /// namespaces, an inactive prim with facts below it, a typeless prim, unread values
+    /// dropped by the skim, and a relationship and metadata lint does not read.
+    const EVERY_FACT: &str = r#"#usda 1.0
+(
+    doc = "every fact"
+    defaultPrim = "Render"
+    metersPerUnit = 0.01
+)
+
+def Scope "Render" (
+    kind = "group"
+)
+{
+    def RenderSettings "settings" (
+        prepend apiSchemas = ["KarmaSettingsAPI"]
+    )
+    {
+        rel products = </Render/product>
+        int karma:global:samples = 8
+        custom string lpe:partition = "diffuse, specular rest"
+        custom string lpe:partition:lights = "diffuse"
+        custom token lpe:dialect = "osl"
+        custom string lpe:renderer = 'karma'
+        uniform token arnold:sampling = "x"
+    }
+
+    def RenderProduct "product"
+    {
+        rel orderedVars = [
+            </Render/diffuse>,
+            </Render/specular>, </Render/rest>
+        ]
+        uniform token productName = "beauty.exr"
+    }
+
+    def RenderVar "diffuse"
+    {
+        uniform token sourceType = "lpe"
+        uniform string sourceName = "C<RD>[<L.'key'>O]"
+    }
+
+    def RenderVar "specular"
+    {
+        string sourceName = "C<RS>.*<L.'fill'>"
+        token sourceType = 'lpe'
+        uniform token dataType = "color3f"
+    }
+
+    def RenderVar "rest"
+    {
+        uniform string sourceType = "lpe"
+        uniform string sourceName = "C.*<R.'floor'>.*[LO]"
+    }
+
+    def RenderVar "beauty"
+    {
+        uniform string sourceName = "Ci"
+        uniform token sourceType = "raw"
+    }
+
+    def RenderVar "plain"
+    {
+        uniform string sourceName = "C<RD>L"
+    }
+
+    def Scope "off" (
+        active = false
+    )
+    {
+        def RenderVar "hidden"
+        {
+            uniform token sourceType = "lpe"
+            uniform string sourceName = "C<TD>L"
+        }
+    }
+}
+
+def Xform "World"
+{
+    def RectLight "key"
+    {
+        string inputs:karma:light:lpetag = "key"
+        float inputs:intensity = 2
+    }
+
+    def SphereLight "fill"
+    {
+        string ri:light:lightGroup = "fill"
+        string inputs:ri:light:lightGroup = "fill2"
+        string primvars:arnold:aov = "fill3"
+    }
+
+    def Mesh "floor"
+    {
+        point3f[] points = [(0, 0, 0), (1, 0, 0), (1, 1, 0)]
+        int[] faceVertexCounts = [3]
+        int[] faceVertexIndices = [0, 1, 2]
+        float[] primvars:weights.timeSamples = {
+            1: [1, 2, 3],
+        }
+        string primvars:karma:object:lpetag = "floor"
+        rel material:binding = </World/mat>
+    }
+
+    def "loose"
+    {
+        string primvars:ri:attributes:identifier:lpegroup = "loose"
+    }
+
+    def Sphere "ball" (
+        active = true
+    )
+    {
+        string primvars:karma:object:lpetag = None
+    }
+}
+"#;
+
+    /// The generated stage with every fact kind reads flat and exactly as composed.
+    /// Planted faults, each seen failing: `hand` skipping prims of a read type that hold
+    /// no read attribute (the RenderProduct's `orderedVars` lost); the RenderSettings'
+    /// unread properties not recorded (its `karma` and `arnold` namespaces lost);
+    /// `targets` keeping the whole path (the ordered vars `/Render/diffuse`...).
+    #[test]
+    fn every_fact_kind_reads_as_composed() {
+        let path = layer("every_fact", EVERY_FACT);
+        let flat = read(&path, &Limits::default()).unwrap().unwrap();
+        let composed = read_composed(&path, &Limits::default()).unwrap();
+        assert_eq!(format!("{flat:?}"), format!("{composed:?}"));
+        // What was read, spelled out, so that both readers dropping a fact fails too.
+        assert_eq!(flat.aovs.len(), 3);
+        assert_eq!(flat.aovs[1].source, "C<RS>.*<L.'fill'>");
+        assert_eq!(
+            flat.ordered_vars,
+            Some(vec!["diffuse".into(), "specular".into(), "rest".into()])
+        );
+        let names = |s: &Option<std::collections::BTreeSet<String>>| {
+            s.as_ref()
+                .unwrap()
+                .iter()
+                .cloned()
+                .collect::<Vec<_>>()
+                .join(",")
+        };
+        assert_eq!(names(&flat.light_groups), "fill,fill2,fill3,key");
+        assert_eq!(names(&flat.object_groups), "floor,loose");
+        assert_eq!(flat.partitions.len(), 2);
+        assert_eq!(flat.partitions[0].members, ["diffuse", "specular", "rest"]);
+        assert_eq!(
+            flat.settings_namespaces.keys().cloned().collect::<Vec<_>>(),
+            ["arnold", "karma", "lpe"]
+        );
+        assert_eq!(flat.renderer.as_ref().unwrap().0, "karma");
+        assert!(flat.dialect.is_some());
+    }
+
+    /// A read error found in a flat layer is the composed reading's error.
+    #[test]
+    fn a_read_error_is_the_composed_one() {
+        let text = "#usda 1.0\ndef Scope \"a\"\n{\n    custom string lpe:dialect = \"osl\"\n}\ndef Scope \"b\"\n{\n    custom string lpe:dialect = \"renderman\"\n}\n";
+        let path = layer("conflict", text);
+        let flat = read(&path, &Limits::default()).unwrap_err().to_string();
+        let composed = read_composed(&path, &Limits::default())
+            .unwrap_err()
+            .to_string();
+        assert_eq!(flat, composed);
+        assert!(flat.contains("</b>.lpe:dialect"), "{flat}");
+    }
+
+    /// Text the skim refuses is an error at its line and column on the flat path, as on
+    /// the composed one; text of a shape the flat reader does not know goes to the USD
+    /// library, whose judgement stands.
+    #[test]
+    fn malformed_text_is_an_error_with_its_position() {
+        let path = layer(
+            "open_string",
+            "#usda 1.0\ndef X \"x\"\n{\n    string a = \"open\n",
+        );
+        let e = read(&path, &Limits::default()).unwrap_err().to_string();
+        assert!(
+            e.ends_with("4:16: end of file inside the string starting here"),
+            "{e}"
+        );
+        let garbage = "#usda 1.0\ndef X \"x\"\n{\n    this is not usd\n}\n";
+        assert_eq!(not_flat("garbage", garbage).line, 4);
+        let path = layer("garbage", garbage);
+        assert_eq!(
+            format!("{:?}", crate::read::usd::read(&path, &Limits::default())),
+            format!("{:?}", read_composed(&path, &Limits::default()))
+        );
+    }
+
+    /// One test per thing that composes or that the flat reader leaves to the USD
+    /// library: each is handed back, with its line and what it is. Planted faults, each
+    /// seen failing its test: `references` in [`PRIM_METADATA`]; `subLayers` in
+    /// [`LAYER_METADATA`]; the `over` check (`specifier != "def"`) dropped; the
+    /// `variantSet` statement check dropped.
+    macro_rules! composes {
+        ($($test:ident: $line:expr, $why:expr, $text:expr;)*) => {$(
+            #[test]
+            fn $test() {
+                let n = not_flat(stringify!($test), $text);
+                assert_eq!((n.line, n.why.as_str()), ($line, $why));
+            }
+        )*};
+    }
+
+    composes! {
+        sublayers_compose: 2, "`subLayers` metadata",
+            "#usda 1.0\n(\n    subLayers = [@a.usda@]\n)\n";
+        references_compose: 2, "`references` metadata",
+            "#usda 1.0\ndef X \"x\" (\n    prepend references = @a.usda@</b>\n)\n{\n}\n";
+        payloads_compose: 2, "`payload` metadata",
+            "#usda 1.0\ndef X \"x\" (payload = @a.usda@)\n{\n}\n";
+        inherits_compose: 3, "`inherits` metadata",
+            "#usda 1.0\n\ndef X \"x\" (\n    inherits = </c>\n)\n{\n}\n";
+        specializes_compose: 2, "`specializes` metadata",
+            "#usda 1.0\ndef X \"x\" (specializes = </c>)\n{\n}\n";
+        variant_sets_compose: 2, "`variantSets` metadata",
+            "#usda 1.0\ndef X \"x\" (prepend variantSets = \"v\")\n{\n}\n";
+        variant_selections_compose: 2, "`variants` metadata",
+            "#usda 1.0\ndef X \"x\" (variants = { string v = \"a\" })\n{\n}\n";
+        variant_set_statements_compose: 4, "a `variantSet` statement",
+            "#usda 1.0\ndef X \"x\"\n{\n    variantSet \"v\" = {\n        \"a\" {\n        }\n    }\n}\n";
+        instancing_composes: 2, "`instanceable` metadata",
+            "#usda 1.0\ndef X \"x\" (instanceable = true)\n{\n}\n";
+        overs_compose: 2, "a prim specified `over`",
+            "#usda 1.0\nover \"x\"\n{\n}\n";
+        classes_compose: 4, "a prim specified `class`",
+            "#usda 1.0\ndef X \"x\"\n{\n    class \"c\"\n    {\n    }\n}\n";
+        relocates_compose: 2, "`relocates` metadata",
+            "#usda 1.0\n(\n    relocates = { </a>: </b> }\n)\n";
+        clips_compose: 2, "`clips` metadata",
+            "#usda 1.0\ndef X \"x\" (clips = { dictionary c = {} })\n{\n}\n";
+        reorders_are_composed: 4, "a `reorder` statement",
+            "#usda 1.0\ndef X \"x\"\n{\n    reorder nameChildren = [\"b\", \"a\"]\n}\n";
+        siblings_of_one_name_are_composed: 5, "a second prim named `a` among siblings",
+            "#usda 1.0\ndef X \"a\"\n{\n}\ndef Y \"a\"\n{\n}\n";
+        properties_after_children_are_composed: 7, "a property after a child prim",
+            "#usda 1.0\ndef X \"x\"\n{\n    def Y \"y\"\n    {\n    }\n    float f = 1\n}\n";
+        escaped_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
+            "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = \"C\\\"L\"\n}\n";
+        timesampled_values_are_composed: 4, "`sourceName.timeSamples` as string that lint cannot read flat",
+            "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName.timeSamples = { 1: \"CL\" }\n}\n";
+        relative_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
+            "#usda 1.0\ndef RenderProduct \"p\"\n{\n    rel orderedVars = <../v>\n}\n";
+        unknown_types_are_composed: 4, "an attribute of type `flaot`",
+            "#usda 1.0\ndef X \"x\"\n{\n    flaot f\n}\n";
+        other_headers_are_composed: 1, "a first line other than `#usda 1.0`",
+            "#sdf 1.4.32\ndef X \"x\"\n{\n}\n";
     }
 }
