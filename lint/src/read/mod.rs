@@ -2,7 +2,7 @@
 //!
 //! | format | read | limit |
 //! |---|---|---|
-//! | USD text (`.usda`) | streamed through [`skim`], which drops the values lint never reads; the rest by `openusd` | [`Limits::usd_bytes`] (64 MiB) of kept text; any file size |
+//! | USD text (`.usda`) | streamed through [`skim`], which drops the values lint never reads; a layer that composes nothing read from that text prim by prim ([`flat`]), any other by `openusd` | [`Limits::usd_bytes`] (64 MiB) of kept text (read flat: per piece of it); any file size |
 //! | USD otherwise (`.usdc`, `.usdz`, `.usd`) | whole file, by `openusd` | [`Limits::usd_bytes`] (64 MiB) |
 //! | RIB | streamed line by line, only `DisplayChannel` lines kept | [`Limits::line_bytes`] per line (1 MiB), [`Limits::channels`] channels (4096); any file size |
 //! | ini | whole file | [`Limits::ini_bytes`] (1 MiB) |
