@@ -491,9 +491,17 @@ impl Reader {
     /// `def Type "name" (metadata)`, whole in `stmt`, whose body opens.
     fn open_prim(&mut self) -> Result<(), ()> {
         self.past_metadata = true;
-        let stmt = std::mem::take(&mut self.stmt);
+        let mut stmt = std::mem::take(&mut self.stmt);
+        let result = self.open_prim_in(&stmt);
+        // The statement's buffer serves the next one.
+        stmt.clear();
+        self.stmt = stmt;
+        result
+    }
+
+    fn open_prim_in(&mut self, stmt: &[Tok]) -> Result<(), ()> {
         let line = self.stmt_line;
-        let (specifier, type_name, name, rest) = match stmt.as_slice() {
+        let (specifier, type_name, name, rest) = match stmt {
             [Tok::Word(s), Tok::Word(t), Tok::Str(Some(n)), rest @ ..] => (s, t.as_str(), n, rest),
             [Tok::Word(s), Tok::Str(Some(n)), rest @ ..] => (s, "", n, rest),
             _ => return self.not_flat(line, "a prim statement of another shape"),
@@ -518,7 +526,10 @@ impl Reader {
         if !parent.children.insert(hasher.finish()) {
             return self.not_flat(line, format!("a second prim named `{name}` among siblings"));
         }
-        let path = format!("{}/{name}", parent.facts.path);
+        let mut path = String::with_capacity(parent.facts.path.len() + 1 + name.len());
+        path.push_str(&parent.facts.path);
+        path.push('/');
+        path.push_str(name);
         let traversed = parent.traversed && active;
         self.hand(self.frames.len() - 1);
         if traversed {
@@ -556,11 +567,13 @@ impl Reader {
 
     /// A property statement, whole in `stmt`.
     fn property(&mut self) -> Result<(), ()> {
-        let stmt = std::mem::take(&mut self.stmt);
-        let line = self.stmt_line;
-        match self.property_in(&stmt) {
+        let mut stmt = std::mem::take(&mut self.stmt);
+        let result = self.property_in(&stmt);
+        stmt.clear();
+        self.stmt = stmt;
+        match result {
             Ok(()) => Ok(()),
-            Err(why) => self.not_flat(line, why),
+            Err(why) => self.not_flat(self.stmt_line, why),
         }
     }
 

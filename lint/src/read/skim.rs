@@ -139,6 +139,36 @@ fn stops_skip(b: u8) -> bool {
     SKIP_STOPS[b as usize]
 }
 
+/// The words of the statement being read in a body, as far as its `=` needs them
+/// (`custom`, `float3`, `points`: the first, the last, whether one is `rel`), kept in
+/// buffers that are reused from statement to statement.
+#[derive(Default)]
+struct Head {
+    /// How many words were read.
+    words: usize,
+    first: String,
+    last: String,
+    rel: bool,
+}
+
+impl Head {
+    fn clear(&mut self) {
+        self.words = 0;
+        self.rel = false;
+    }
+
+    fn push(&mut self, word: &str) {
+        if self.words == 0 {
+            self.first.clear();
+            self.first.push_str(word);
+        }
+        self.last.clear();
+        self.last.push_str(word);
+        self.rel |= word == "rel";
+        self.words += 1;
+    }
+}
+
 /// What the innermost open bracket is.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Ctx {
@@ -294,7 +324,7 @@ struct Skim<'s, R> {
     out: Vec<u8>,
     stack: Vec<Ctx>,
     /// The words of the statement being read in a body (`custom`, `float3`, `points`).
-    head: Vec<String>,
+    head: Head,
     /// An `=` was copied in a body: the next token is its value, not a statement word.
     value_pending: bool,
     /// The `{` after this `=` opens a dictionary or samples, not a body.
@@ -312,7 +342,7 @@ impl<'s, R: Read> Skim<'s, R> {
             src: Src::new(input),
             out: Vec::new(),
             stack: Vec::new(),
-            head: Vec::new(),
+            head: Head::default(),
             value_pending: false,
             dict_next: false,
             limit,
@@ -351,7 +381,11 @@ impl<'s, R: Read> Skim<'s, R> {
     fn run(&mut self, keep: &dyn Fn(&str) -> bool) -> Result<()> {
         while let Some(b) = self.src.peek()? {
             match b {
-                b' ' | b'\t' | b'\r' | b'\n' => {
+                b' ' | b'\t' | b'\r' => {
+                    let blank = |b| matches!(b, b' ' | b'\t' | b'\r');
+                    self.src.run_until(|b| !blank(b), Some(&mut self.out));
+                }
+                b'\n' => {
                     self.src.bump();
                     self.out.push(b);
                 }
@@ -393,20 +427,20 @@ impl<'s, R: Read> Skim<'s, R> {
     }
 
     fn word(&mut self) -> Result<()> {
-        let mut word = Vec::new();
+        let start = self.out.len();
         while let Some(b) = self.src.peek()? {
             if delimits(b) {
                 break;
             }
-            self.src.run_until(delimits, Some(&mut word));
+            self.src.run_until(delimits, Some(&mut self.out));
         }
-        self.out.extend_from_slice(&word);
         if self.in_body() {
             if self.value_pending {
                 self.other_token();
             } else {
                 // Validated UTF-8, cut at ASCII delimiters.
-                self.head.push(String::from_utf8_lossy(&word).into_owned());
+                let word = std::str::from_utf8(&self.out[start..]).unwrap_or_default();
+                self.head.push(word);
             }
         }
         Ok(())
@@ -460,18 +494,19 @@ impl<'s, R: Read> Skim<'s, R> {
             self.out.push(b'=');
             return Ok(());
         }
-        let head = std::mem::take(&mut self.head);
-        let attribute = head.len() >= 2
-            && !matches!(head[0].as_str(), "variantSet" | "reorder")
-            && !head.iter().any(|w| w == "rel");
-        let (name, suffix) = match head.last() {
-            Some(last) => match last.split_once('.') {
-                Some((name, suffix)) => (name, Some(suffix)),
-                None => (last.as_str(), None),
-            },
-            None => ("", None),
+        let head = &self.head;
+        let attribute = head.words >= 2
+            && !matches!(head.first.as_str(), "variantSet" | "reorder")
+            && !head.rel;
+        let (name, suffix) = match head.last.split_once('.') {
+            _ if head.words == 0 => ("", None),
+            Some((name, suffix)) => (name, Some(suffix)),
+            None => (head.last.as_str(), None),
         };
-        if !attribute || keep(name) {
+        let kept = !attribute || keep(name);
+        let suffix = suffix.map(|s| s == "timeSamples");
+        self.head.clear();
+        if kept {
             self.out.push(b'=');
             self.value_pending = true;
             self.dict_next = attribute;
@@ -482,7 +517,7 @@ impl<'s, R: Read> Skim<'s, R> {
                 // The declaration stays; its `=` and value go.
                 self.skip_value()?;
             }
-            Some("timeSamples") => {
+            Some(true) => {
                 self.out.push(b'=');
                 self.skip_space()?;
                 let (line, column) = (self.src.line, self.src.column);
@@ -496,7 +531,7 @@ impl<'s, R: Read> Skim<'s, R> {
                 self.skip_inside(b'}', line, column)?;
                 self.out.push(b'}');
             }
-            Some(_) => {
+            Some(false) => {
                 // `.connect`, `.spline`: small, copied.
                 self.out.push(b'=');
                 self.value_pending = true;
