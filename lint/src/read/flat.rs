@@ -185,22 +185,44 @@ pub fn read(path: &Path, limits: &Limits) -> Result<Result<Document, NotFlat>, R
     reader.finish()
 }
 
-/// One token of skimmed text.
-#[derive(Clone, Debug, PartialEq, Eq)]
+/// Where a token's text is in the reader's text: byte offsets, start and end.
+type Span = (usize, usize);
+
+/// One token of skimmed text; its text is a [`Span`] of the text being read, so that
+/// reading a token allocates nothing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Tok {
     /// A line end.
     Nl,
     /// A run of bytes up to a delimiter: a keyword, a type, a name, a number.
-    Word(String),
+    Word(Span),
     /// A quoted string: its text between the quotes when plain (`"..."` or `'...'` with
     /// no backslash nor line end), `None` otherwise.
-    Str(Option<String>),
+    Str(Option<Span>),
     /// A path, `<...>`: its text.
-    Path(String),
+    Path(Span),
     /// An asset path, `@...@`.
     Asset,
     /// `( ) [ ] { } = , ;`.
     Punct(u8),
+}
+
+impl Tok {
+    /// The token with its spans `base` bytes earlier: its text moved to the front.
+    fn shifted(self, base: usize) -> Tok {
+        let back = |(start, end): Span| (start - base, end - base);
+        match self {
+            Tok::Word(w) => Tok::Word(back(w)),
+            Tok::Str(s) => Tok::Str(s.map(back)),
+            Tok::Path(p) => Tok::Path(back(p)),
+            t => t,
+        }
+    }
+}
+
+/// The text of `span` in `text`.
+fn at(text: &str, (start, end): Span) -> &str {
+    &text[start..end]
 }
 
 /// Bytes that end a word, as the skim has them.
@@ -227,16 +249,16 @@ fn delimits(b: u8) -> bool {
     )
 }
 
-/// The tokens of a piece of skimmed text, which ends between tokens. `Err(())` for a
-/// token cut by the end (which the skim never hands over).
-fn tokens(text: &str, out: &mut Vec<Tok>) -> Result<(), ()> {
+/// The tokens of `text` from byte `from`, each with its offset; the text ends between
+/// tokens. `Err(())` for a token cut by the end (which the skim never hands over).
+fn tokens(text: &str, from: usize, out: &mut Vec<(usize, Tok)>) -> Result<(), ()> {
     let b = text.as_bytes();
-    let mut i = 0;
+    let mut i = from;
     while i < b.len() {
         let c = b[i];
         match c {
             b'\n' => {
-                out.push(Tok::Nl);
+                out.push((i, Tok::Nl));
                 i += 1;
             }
             b' ' | b'\t' | b'\r' => i += 1,
@@ -256,16 +278,19 @@ fn tokens(text: &str, out: &mut Vec<Tok>) -> Result<(), ()> {
                     (_, true) => (&b[i..i + 3], true),
                 };
                 let (end, plain) = quoted_end(b, i + open, close, escapes).ok_or(())?;
-                let inner = &text[i + open..end];
-                out.push(match c {
-                    b'<' => Tok::Path(inner.to_string()),
-                    b'@' => Tok::Asset,
-                    _ => Tok::Str((plain && !triple).then(|| inner.to_string())),
-                });
+                let inner = (i + open, end);
+                out.push((
+                    i,
+                    match c {
+                        b'<' => Tok::Path(inner),
+                        b'@' => Tok::Asset,
+                        _ => Tok::Str((plain && !triple).then_some(inner)),
+                    },
+                ));
                 i = end + close.len();
             }
             b'(' | b')' | b'[' | b']' | b'{' | b'}' | b'=' | b',' | b';' => {
-                out.push(Tok::Punct(c));
+                out.push((i, Tok::Punct(c)));
                 i += 1;
             }
             _ => {
@@ -273,7 +298,7 @@ fn tokens(text: &str, out: &mut Vec<Tok>) -> Result<(), ()> {
                 while i < b.len() && !delimits(b[i]) {
                     i += 1;
                 }
-                out.push(Tok::Word(text[start..i].to_string()));
+                out.push((start, Tok::Word((start, i))));
             }
         }
     }
@@ -364,6 +389,10 @@ struct Reader {
     frames: Vec<Frame>,
     /// The statement being read, and its bracket depth.
     stmt: Vec<Tok>,
+    /// The text the statement's tokens are in, from the statement's start (the rest of
+    /// a piece is dropped once read), and where the statement starts in it.
+    text: String,
+    stmt_start: usize,
     kind: Kind,
     depth: usize,
     /// Line of the token being read.
@@ -377,7 +406,7 @@ struct Reader {
     not_flat: Option<NotFlat>,
     /// The first read error, held until the layer is known to be flat.
     error: Option<ReadError>,
-    scratch: Vec<Tok>,
+    scratch: Vec<(usize, Tok)>,
 }
 
 impl Reader {
@@ -391,6 +420,8 @@ impl Reader {
                 true,
             )],
             stmt: Vec::new(),
+            text: String::new(),
+            stmt_start: 0,
             kind: Kind::Property,
             depth: 0,
             line: 1,
@@ -420,17 +451,32 @@ impl Reader {
             }
             self.started = true;
         }
+        let from = self.text.len();
+        self.text.push_str(text);
         let mut toks = std::mem::take(&mut self.scratch);
         toks.clear();
-        if tokens(text, &mut toks).is_err() {
+        if tokens(&self.text, from, &mut toks).is_err() {
             return self.not_flat(self.line, "a token the skim cut");
         }
-        let result = toks.drain(..).try_for_each(|t| self.token(t));
+        let result = toks.drain(..).try_for_each(|(at, t)| self.token(at, t));
         self.scratch = toks;
-        result
+        result?;
+        // Only an open statement's text is kept, moved to the front.
+        if self.stmt.is_empty() {
+            self.text.clear();
+        } else {
+            let base = self.stmt_start;
+            self.text.drain(..base);
+            for t in &mut self.stmt {
+                *t = t.shifted(base);
+            }
+            self.stmt_start = 0;
+        }
+        Ok(())
     }
 
-    fn token(&mut self, t: Tok) -> Result<(), ()> {
+    /// Reads the token `t`, at byte `offset` of the text.
+    fn token(&mut self, offset: usize, t: Tok) -> Result<(), ()> {
         let line = self.line;
         if t == Tok::Nl {
             self.line += 1;
@@ -442,13 +488,14 @@ impl Reader {
                 Tok::Punct(b'(') if self.frames.len() == 1 && !self.past_metadata => {
                     self.kind = Kind::LayerMetadata;
                 }
-                Tok::Word(w) if matches!(w.as_str(), "def" | "over" | "class") => {
+                Tok::Word(w) if matches!(at(&self.text, *w), "def" | "over" | "class") => {
                     self.kind = Kind::Prim;
                 }
                 Tok::Word(_) if self.frames.len() > 1 => self.kind = Kind::Property,
                 _ => return self.not_flat(line, "a statement of another shape"),
             }
             self.stmt_line = line;
+            self.stmt_start = offset;
             self.depth = 0;
         }
         match (&t, self.kind) {
@@ -482,7 +529,7 @@ impl Reader {
     fn layer_metadata(&mut self) -> Result<(), ()> {
         self.past_metadata = true;
         let stmt = std::mem::take(&mut self.stmt);
-        match metadata(&stmt, &LAYER_METADATA) {
+        match metadata(&stmt, &self.text, &LAYER_METADATA) {
             Ok(_) => Ok(()),
             Err(why) => self.not_flat(self.stmt_line, why),
         }
@@ -501,23 +548,30 @@ impl Reader {
 
     fn open_prim_in(&mut self, stmt: &[Tok]) -> Result<(), ()> {
         let line = self.stmt_line;
+        let text = &self.text;
         let (specifier, type_name, name, rest) = match stmt {
-            [Tok::Word(s), Tok::Word(t), Tok::Str(Some(n)), rest @ ..] => (s, t.as_str(), n, rest),
-            [Tok::Word(s), Tok::Str(Some(n)), rest @ ..] => (s, "", n, rest),
+            [Tok::Word(s), Tok::Word(t), Tok::Str(Some(n)), rest @ ..] => {
+                (at(text, *s), at(text, *t), at(text, *n), rest)
+            }
+            [Tok::Word(s), Tok::Str(Some(n)), rest @ ..] => (at(text, *s), "", at(text, *n), rest),
             _ => return self.not_flat(line, "a prim statement of another shape"),
         };
         if specifier != "def" {
-            return self.not_flat(line, format!("a prim specified `{specifier}`"));
+            let why = format!("a prim specified `{specifier}`");
+            return self.not_flat(line, why);
         }
-        if !is_identifier(name) || !(type_name.is_empty() || is_identifier(type_name)) {
+        let (type_name, name) = (type_name.to_string(), name.to_string());
+        if !is_identifier(&name) || !(type_name.is_empty() || is_identifier(&type_name)) {
             return self.not_flat(line, format!("a prim named `{name}` of type `{type_name}`"));
         }
         let active = match rest {
             [] => true,
-            [Tok::Punct(b'('), .., Tok::Punct(b')')] => match metadata(rest, &PRIM_METADATA) {
-                Ok(active) => active.unwrap_or(true),
-                Err(why) => return self.not_flat(line, why),
-            },
+            [Tok::Punct(b'('), .., Tok::Punct(b')')] => {
+                match metadata(rest, text, &PRIM_METADATA) {
+                    Ok(active) => active.unwrap_or(true),
+                    Err(why) => return self.not_flat(line, why),
+                }
+            }
             _ => return self.not_flat(line, "a prim statement of another shape"),
         };
         let parent = self.frames.last_mut().expect("the pseudo-root stays");
@@ -529,13 +583,13 @@ impl Reader {
         let mut path = String::with_capacity(parent.facts.path.len() + 1 + name.len());
         path.push_str(&parent.facts.path);
         path.push('/');
-        path.push_str(name);
+        path.push_str(&name);
         let traversed = parent.traversed && active;
         self.hand(self.frames.len() - 1);
         if traversed {
-            self.builder.prim_type(type_name);
+            self.builder.prim_type(&type_name);
         }
-        let frame = Frame::new(path, name.clone(), type_name.to_string(), traversed);
+        let frame = Frame::new(path, name, type_name, traversed);
         self.frames.push(frame);
         Ok(())
     }
@@ -583,8 +637,9 @@ impl Reader {
             return Err("a property after a child prim".into());
         }
         let other = || "a statement of another shape".to_string();
+        let text = &self.text;
         let word = |i: usize| match stmt.get(i) {
-            Some(Tok::Word(w)) => Some(w.as_str()),
+            Some(Tok::Word(w)) => Some(at(text, *w)),
             _ => None,
         };
         let mut i = 0;
@@ -653,8 +708,8 @@ impl Reader {
             }
             let text = match value {
                 [] => None,
-                [Tok::Word(w)] if w == "None" => None,
-                [Tok::Str(Some(s))] => Some(s.clone()),
+                [Tok::Word(w)] if at(text, *w) == "None" => None,
+                [Tok::Str(Some(s))] => Some(at(text, *s).to_string()),
                 _ => return Err(format!("a value of `{name}` that lint cannot read flat")),
             };
             frame.facts.values.push((name.to_string(), text));
@@ -664,7 +719,7 @@ impl Reader {
             if !relationship || list_op || suffix.is_some() {
                 return Err(format!("`{full}` that is no plain relationship"));
             }
-            frame.facts.ordered_vars = targets(value)
+            frame.facts.ordered_vars = targets(value, text)
                 .ok_or_else(|| format!("`{name}` targets that lint cannot read flat"))?;
         }
         if fresh && (reads || ordered || frame.facts.type_name == "RenderSettings") {
@@ -701,7 +756,7 @@ impl Reader {
 
 /// Checks metadata `( ... )` (whole, parentheses included): every key must be
 /// `allowed`. Returns the `active` value, if there is one.
-fn metadata(toks: &[Tok], allowed: &[&str]) -> Result<Option<bool>, String> {
+fn metadata(toks: &[Tok], text: &str, allowed: &[&str]) -> Result<Option<bool>, String> {
     let mut depth = 0;
     let mut active = None;
     for (i, t) in toks.iter().enumerate() {
@@ -710,7 +765,7 @@ fn metadata(toks: &[Tok], allowed: &[&str]) -> Result<Option<bool>, String> {
             Tok::Punct(b')' | b']' | b'}') => depth -= 1,
             Tok::Punct(b'=') if depth == 1 => {
                 let key = match i.checked_sub(1).map(|k| &toks[k]) {
-                    Some(Tok::Word(k)) => k.as_str(),
+                    Some(Tok::Word(k)) => at(text, *k),
                     _ => return Err("metadata of another shape".into()),
                 };
                 if !allowed.contains(&key) {
@@ -718,8 +773,8 @@ fn metadata(toks: &[Tok], allowed: &[&str]) -> Result<Option<bool>, String> {
                 }
                 if key == "active" {
                     active = match toks.get(i + 1) {
-                        Some(Tok::Word(w)) if w == "true" => Some(true),
-                        Some(Tok::Word(w)) if w == "false" => Some(false),
+                        Some(Tok::Word(w)) if at(text, *w) == "true" => Some(true),
+                        Some(Tok::Word(w)) if at(text, *w) == "false" => Some(false),
                         _ => return Err("an `active` that is neither `true` nor `false`".into()),
                     };
                 }
@@ -732,9 +787,10 @@ fn metadata(toks: &[Tok], allowed: &[&str]) -> Result<Option<bool>, String> {
 
 /// The prim names of relationship targets `</a/b>` or `[</a/b>, ...]` (or `None`), if
 /// every target is an absolute prim path.
-fn targets(value: &[Tok]) -> Option<Vec<String>> {
+fn targets(value: &[Tok], text: &str) -> Option<Vec<String>> {
     let name = |t: &Tok| match t {
         Tok::Path(p) => {
+            let p = at(text, *p);
             let rest = p.strip_prefix('/')?;
             rest.split('/')
                 .all(is_identifier)
@@ -744,7 +800,7 @@ fn targets(value: &[Tok]) -> Option<Vec<String>> {
     };
     match value {
         [] => Some(Vec::new()),
-        [Tok::Word(w)] if w == "None" => Some(Vec::new()),
+        [Tok::Word(w)] if at(text, *w) == "None" => Some(Vec::new()),
         [t @ Tok::Path(_)] => Some(vec![name(t)?]),
         [Tok::Punct(b'['), inner @ .., Tok::Punct(b']')] => {
             let mut names = Vec::new();
@@ -946,6 +1002,37 @@ def Xform "World"
         );
         assert_eq!(flat.renderer.as_ref().unwrap().0, "karma");
         assert!(flat.dialect.is_some());
+    }
+
+    /// A stage of many pieces (the skim hands its text over every 64 KiB, between
+    /// tokens, so statements are cut anywhere outside brackets) reads flat as composed:
+    /// prim statements over several lines, properties with metadata, groups on every
+    /// prim. Planted faults, each seen failing: the open statement's tokens not moved
+    /// with its text at a piece's end (`shifted(0)`); the text kept from the piece's
+    /// start instead of the statement's.
+    #[test]
+    fn statements_cut_between_pieces_read_as_composed() {
+        let mut text = String::from("#usda 1.0\ndef Xform \"World\"\n{\n");
+        for i in 0..1500 {
+            text.push_str(&format!(
+                "    def Mesh \"m{i}\" (\n        kind = \"component\"\n        active = {}\n    )\n    {{\n        \
+                 point3f[] points = [(0, 1, 2), (3, 4, {i})] (\n            interpolation = \"vertex\"\n        )\n        \
+                 uniform token primvars:karma:object:lpetag = \"g{}\"\n    }}\n",
+                i % 5 != 0,
+                i % 37
+            ));
+        }
+        text.push_str("}\n");
+        assert!(
+            text.len() > 5 * crate::read::skim::PIECE_BYTES,
+            "{}",
+            text.len()
+        );
+        let path = layer("pieces", &text);
+        let flat = read(&path, &Limits::default()).unwrap().unwrap();
+        let composed = read_composed(&path, &Limits::default()).unwrap();
+        assert_eq!(format!("{flat:?}"), format!("{composed:?}"));
+        assert_eq!(flat.object_groups.unwrap().len(), 37);
     }
 
     /// A read error found in a flat layer is the composed reading's error.

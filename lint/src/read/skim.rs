@@ -752,6 +752,10 @@ mod tests {
         );
     }
 
+    /// Metadata, variant sets, `reorder`, relationships, connections and kept
+    /// dictionaries are copied. Planted faults, each seen failing: [`Head`] never seeing
+    /// `rel` (the relationship's targets dropped); its first word replaced by every
+    /// later one (the `variantSet` statement's `=` read as an attribute's).
     #[test]
     fn statements_outside_attribute_values_are_copied() {
         let text = "def X \"x\" (\n    variants = {\n        string v = \"a\"\n    }\n    prepend variantSets = \"v\"\n)\n{\n    variantSet \"v\" = {\n        \"a\" (doc = \"[\") {\n            float f = 1\n            custom string lpe:dialect = \"osl\"\n        }\n    }\n    reorder properties = [\"f\"]\n    prepend rel r = [</a>, </b>]\n    float g.connect = </a.f>\n    dictionary d = {\n        string k = \"v\"\n    }\n}\n";
