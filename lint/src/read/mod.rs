@@ -35,13 +35,25 @@ pub fn format_of(path: &Path) -> Option<Format> {
 /// Reads one file with the reader its extension names.
 pub fn read_file(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
     match format_of(path) {
-        Some(Format::Usd) => usd::read(path, limits),
+        Some(Format::Usd) => read_usd(path, limits),
         Some(Format::Rib) => rib::read(path, limits),
         Some(Format::Ini) => ini::read(path, limits),
         None => Err(ReadError::UnknownFormat {
             path: path.to_path_buf(),
         }),
     }
+}
+
+/// Reads a USD stage: a `.usda` file that composes nothing straight from its skimmed
+/// text ([`flat`]), any other composed through `openusd` ([`usd::read`]), to the same
+/// document.
+pub fn read_usd(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
+    if usd::is_usda(path) {
+        if let Ok(doc) = flat::read(path, limits)? {
+            return Ok(doc);
+        }
+    }
+    usd::read(path, limits)
 }
 
 #[cfg(test)]

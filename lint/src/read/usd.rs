@@ -41,11 +41,10 @@
 //! `lpe:...`) are dropped unparsed, so reading a shot costs what its declarations cost,
 //! not what its point arrays do. Binary layers (`.usdc`, `.usdz`) are read whole.
 //!
-//! A `.usda` file that composes nothing (no arc, no `over` or `class` prim: see
-//! [`super::flat`]) is read straight from its skimmed text, prim by prim, without
-//! composing it through `openusd` (about 60 µs and 8 KB a prim); any other is composed.
-//! Both paths make the document through one [`DocumentBuilder`], and
-//! [`read_composed`] is the composed path alone, which the tests hold the flat one to.
+//! This module is the composed reading, and the conventions every reading follows: a
+//! `.usda` file that composes nothing is read without `openusd` by the flat reader
+//! (`read/flat.rs`, which `lpe_lint::read::read_usd` tries first), through the same
+//! [`DocumentBuilder`] and [`lint_reads`]; the tests hold it to [`read`].
 
 use std::collections::BTreeSet;
 use std::io;
@@ -123,37 +122,16 @@ const GEOMETRY_TYPES: [&str; 13] = [
     "TetMesh",
 ];
 
-/// Reads the declarations of a USD stage: a `.usda` layer that composes nothing
-/// straight from its text ([`super::flat`]), any other through `openusd`.
+/// Reads the declarations of a USD stage composed through `openusd`, every `.usda`
+/// layer skimmed first (`lpe_lint::read::read_usd` reads a `.usda` that composes nothing
+/// without composing it, to the same document).
 pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
-    read_as(path, limits, Via::Flat)
+    read_as(path, limits, true)
 }
 
-/// [`read`], but every stage through `openusd`, flat or not: what [`read`] must agree
-/// with (the tests compare the two on every fixture).
-pub fn read_composed(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
-    read_as(path, limits, Via::Composed)
-}
-
-/// How [`read_as`] reads a stage: the three must give the same document.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Via {
-    /// A flat `.usda` layer without `openusd`; anything else as [`Via::Composed`].
-    Flat,
-    /// Through `openusd`, every `.usda` layer skimmed first.
-    Composed,
-    /// Through `openusd`, every layer parsed whole.
-    Whole,
-}
-
-/// [`read`] by the path `via` says (tests check every path gives the same document).
-fn read_as(path: &Path, limits: &Limits, via: Via) -> Result<Document, ReadError> {
-    if via == Via::Flat && is_usda(path) {
-        if let Ok(doc) = super::flat::read(path, limits)? {
-            return Ok(doc);
-        }
-    }
-    let skimming = via != Via::Whole;
+/// [`read`], with `.usda` layers skimmed or (`skimming` false, for tests that check the
+/// skim changes no finding) parsed whole.
+fn read_as(path: &Path, limits: &Limits, skimming: bool) -> Result<Document, ReadError> {
     let usd_err = |message: String| ReadError::Usd {
         path: path.to_path_buf(),
         message,
@@ -318,8 +296,9 @@ pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> 
 }
 
 /// [`document`] one prim at a time, for readers that stream a stage instead of holding
-/// its [`StageFacts`] ([`super::flat`]): the prims must come in traversal order, and
-/// every type traversed must be named through [`DocumentBuilder::prim_type`].
+/// its [`StageFacts`] (the flat reader, `read/flat.rs`): the prims must come in
+/// traversal order, and every type traversed must be named through
+/// [`DocumentBuilder::prim_type`].
 pub struct DocumentBuilder {
     doc: Document,
     lights: BTreeSet<String>,
@@ -441,7 +420,7 @@ impl DocumentBuilder {
 }
 
 /// Whether `path` names a text layer by its extension: the layers the skim reads.
-fn is_usda(path: &Path) -> bool {
+pub(crate) fn is_usda(path: &Path) -> bool {
     path.extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case("usda"))
@@ -626,17 +605,11 @@ mod profile_tests {
 mod tests {
     use super::*;
 
-    /// Every fixture (and every layer it composes) reads the same flat, skimmed and
-    /// whole, and the fixtures without composition arcs are read flat. Planted faults,
-    /// each seen failing: the flat reader dropping `sourceName` values (an AOV's source
-    /// empty); `open_prim` ignoring `active = false` (the inactive RenderVar of
-    /// solaris_karma read); prims of a read type without a read attribute not handed
-    /// over (`orderedVars` lost); a RenderSettings' unread properties not recorded (its
-    /// namespaces lost); `orderedVars` targets kept as whole paths.
+    /// Every fixture (and every layer it composes) reads the same skimmed as whole.
     #[test]
-    fn the_skim_and_the_flat_reader_change_nothing_lint_reads() {
+    fn the_skim_changes_nothing_lint_reads() {
         let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/testdata");
-        let (mut seen, mut flat) = (0, 0);
+        let mut seen = 0;
         for dir in ["usd", "lint"] {
             for entry in std::fs::read_dir(root.join(dir)).unwrap() {
                 let path = entry.unwrap().path();
@@ -644,19 +617,13 @@ mod tests {
                     continue;
                 }
                 let limits = Limits::default();
-                let skimmed = format!("{:?}", read_as(&path, &limits, Via::Composed));
-                let whole = format!("{:?}", read_as(&path, &limits, Via::Whole));
+                let skimmed = format!("{:?}", read_as(&path, &limits, true));
+                let whole = format!("{:?}", read_as(&path, &limits, false));
                 assert_eq!(skimmed, whole, "{}", path.display());
-                let read = format!("{:?}", read_as(&path, &limits, Via::Flat));
-                assert_eq!(read, skimmed, "{}", path.display());
-                if let Ok(Ok(doc)) = super::super::flat::read(&path, &limits) {
-                    assert_eq!(format!("{:?}", Ok::<_, ReadError>(doc)), skimmed);
-                    flat += 1;
-                }
                 seen += 1;
             }
         }
-        assert_eq!((seen, flat), (11, 9), "fixtures seen, read flat");
+        assert_eq!(seen, 11, "fixtures");
     }
 
     /// A prim whose group attribute follows heavy values with brackets and quotes in
