@@ -830,13 +830,28 @@ fn targets(value: &[Tok], text: &str) -> Option<Vec<String>> {
 mod tests {
     use super::*;
 
+    /// A scratch `.usda` file, removed when dropped.
+    struct Scratch(std::path::PathBuf);
+
+    impl std::ops::Deref for Scratch {
+        type Target = Path;
+        fn deref(&self) -> &Path {
+            &self.0
+        }
+    }
+
+    impl Drop for Scratch {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_file(&self.0);
+        }
+    }
+
     /// A scratch `.usda` file holding `text`, unique to the test `name`.
-    fn layer(name: &str, text: &str) -> std::path::PathBuf {
-        let dir = std::env::temp_dir().join(format!("lpe-flat-{}", std::process::id()));
-        std::fs::create_dir_all(&dir).unwrap();
-        let path = dir.join(format!("{name}.usda"));
+    fn layer(name: &str, text: &str) -> Scratch {
+        let path =
+            std::env::temp_dir().join(format!("lpe-flat-{}-{name}.usda", std::process::id()));
         std::fs::write(&path, text).unwrap();
-        path
+        Scratch(path)
     }
 
     /// Why `text` is not read flat (panics if it is).
