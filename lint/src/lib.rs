@@ -3,7 +3,8 @@
 //! Lighting pipelines declare LPE AOVs in three places; this crate reads each into one
 //! [`Document`] model, keeping where every declaration sits so a checker can point at it:
 //!
-//! - USD stages ([`read::usd`], through the `openusd` crate): `RenderVar` prims with
+//! - USD stages ([`read::usd`], through the `openusd` crate, or [`read::flat`] for a
+//!   `.usda` that composes nothing, both behind [`read::read_usd`]): `RenderVar` prims with
 //!   `sourceType = "lpe"`, `RenderProduct.orderedVars`, the light-group and object-group
 //!   attributes the render delegates read, declared partitions
 //!   (`custom string lpe:partition` on a `RenderSettings` prim) and the declared dialect

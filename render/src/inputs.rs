@@ -113,7 +113,7 @@ pub fn gather<D: SceneDialect>(sources: &Sources) -> Result<Inputs<D>, SourceErr
         push_channels(&mut aovs, read, path)?;
     }
     if let Some(path) = sources.usd {
-        let stage = lpe_lint::read::usd::read(path, &lpe_lint::read::Limits::default())?;
+        let stage = lpe_lint::read::read_usd(path, &lpe_lint::read::Limits::default())?;
         let mut read = usd_render_vars(&stage);
         for w in &mut read.warnings {
             *w = format!("{}: {w}", path.display());

@@ -87,7 +87,7 @@ fn load<E>(
     }
     let files = [
         (&args.display, read::rib::read as fn(&_, &_) -> _),
-        (&args.usd, read::usd::read),
+        (&args.usd, read::read_usd),
         (&args.from, read::read_file),
     ];
     for (file, reader) in files {

@@ -79,18 +79,34 @@ type Result<T> = std::result::Result<T, SkimError>;
 /// `input` with the values of attributes `keep` refuses dropped (module docs); at most
 /// `limit` bytes of text are kept.
 pub fn skim(input: impl Read, keep: impl Fn(&str) -> bool, limit: u64) -> Result<String> {
-    let mut s = Skim {
-        src: Src::new(input),
-        out: Vec::new(),
-        stack: Vec::new(),
-        head: Vec::new(),
-        value_pending: false,
-        dict_next: false,
-        limit,
-    };
+    let mut s = Skim::new(input, limit, None);
     s.run(&keep)?;
+    as_str(s.out)
+}
+
+/// [`skim`], but the kept text is handed to `sink` in pieces as it is made instead of
+/// held whole: a piece ends between tokens, outside any `( )`, `[ ]` or dictionary (in a
+/// prim body or at the top level), once [`PIECE_BYTES`] are kept, and the last piece
+/// ends the text. `limit` bounds each piece. `sink` returns false to stop the pass (the
+/// result is then `Ok(false)`; `Ok(true)` when the whole input was passed).
+pub fn skim_pieces(
+    input: impl Read,
+    keep: impl Fn(&str) -> bool,
+    limit: u64,
+    sink: &mut dyn FnMut(&str) -> bool,
+) -> Result<bool> {
+    let mut s = Skim::new(input, limit, Some(sink));
+    s.run(&keep)?;
+    Ok(!s.stopped && s.hand_over()?)
+}
+
+/// How much kept text [`skim_pieces`] gathers before it hands a piece over.
+pub const PIECE_BYTES: usize = 64 << 10;
+
+/// Kept text as a string.
+fn as_str(out: Vec<u8>) -> Result<String> {
     // Every byte copied came from validated UTF-8 and cuts fall between tokens.
-    String::from_utf8(s.out).map_err(|e| SkimError::NotText {
+    String::from_utf8(out).map_err(|e| SkimError::NotText {
         offset: e.utf8_error().valid_up_to() as u64,
     })
 }
@@ -121,6 +137,36 @@ fn delimits(b: u8) -> bool {
 #[inline]
 fn stops_skip(b: u8) -> bool {
     SKIP_STOPS[b as usize]
+}
+
+/// The words of the statement being read in a body, as far as its `=` needs them
+/// (`custom`, `float3`, `points`: the first, the last, whether one is `rel`), kept in
+/// buffers that are reused from statement to statement.
+#[derive(Default)]
+struct Head {
+    /// How many words were read.
+    words: usize,
+    first: String,
+    last: String,
+    rel: bool,
+}
+
+impl Head {
+    fn clear(&mut self) {
+        self.words = 0;
+        self.rel = false;
+    }
+
+    fn push(&mut self, word: &str) {
+        if self.words == 0 {
+            self.first.clear();
+            self.first.push_str(word);
+        }
+        self.last.clear();
+        self.last.push_str(word);
+        self.rel |= word == "rel";
+        self.words += 1;
+    }
 }
 
 /// What the innermost open bracket is.
@@ -273,20 +319,51 @@ impl<R: Read> Src<R> {
     }
 }
 
-struct Skim<R> {
+struct Skim<'s, R> {
     src: Src<R>,
     out: Vec<u8>,
     stack: Vec<Ctx>,
     /// The words of the statement being read in a body (`custom`, `float3`, `points`).
-    head: Vec<String>,
+    head: Head,
     /// An `=` was copied in a body: the next token is its value, not a statement word.
     value_pending: bool,
     /// The `{` after this `=` opens a dictionary or samples, not a body.
     dict_next: bool,
     limit: u64,
+    /// Where [`skim_pieces`] hands the kept text; `None`: it is held in `out`.
+    sink: Option<&'s mut dyn FnMut(&str) -> bool>,
+    /// The sink asked to stop.
+    stopped: bool,
 }
 
-impl<R: Read> Skim<R> {
+impl<'s, R: Read> Skim<'s, R> {
+    fn new(input: R, limit: u64, sink: Option<&'s mut dyn FnMut(&str) -> bool>) -> Self {
+        Skim {
+            src: Src::new(input),
+            out: Vec::new(),
+            stack: Vec::new(),
+            head: Head::default(),
+            value_pending: false,
+            dict_next: false,
+            limit,
+            sink,
+            stopped: false,
+        }
+    }
+
+    /// Hands the kept text so far to the sink, if there is one; false if it asks to stop.
+    fn hand_over(&mut self) -> Result<bool> {
+        let Some(sink) = self.sink.as_mut() else {
+            return Ok(true);
+        };
+        let piece = as_str(std::mem::take(&mut self.out))?;
+        let go_on = sink(&piece);
+        self.out = piece.into_bytes();
+        self.out.clear();
+        self.stopped = !go_on;
+        Ok(go_on)
+    }
+
     /// In a prim body or at the layer's top level, where statements start.
     fn in_body(&self) -> bool {
         matches!(self.stack.last(), None | Some(Ctx::Body))
@@ -304,7 +381,11 @@ impl<R: Read> Skim<R> {
     fn run(&mut self, keep: &dyn Fn(&str) -> bool) -> Result<()> {
         while let Some(b) = self.src.peek()? {
             match b {
-                b' ' | b'\t' | b'\r' | b'\n' => {
+                b' ' | b'\t' | b'\r' => {
+                    let blank = |b| matches!(b, b' ' | b'\t' | b'\r');
+                    self.src.run_until(|b| !blank(b), Some(&mut self.out));
+                }
+                b'\n' => {
                     self.src.bump();
                     self.out.push(b);
                 }
@@ -326,6 +407,13 @@ impl<R: Read> Skim<R> {
             if self.out.len() as u64 > self.limit {
                 return Err(SkimError::TooLarge { limit: self.limit });
             }
+            if self.sink.is_some()
+                && self.out.len() >= PIECE_BYTES
+                && self.in_body()
+                && !self.hand_over()?
+            {
+                return Ok(());
+            }
         }
         if let Some(ctx) = self.stack.last() {
             let (line, column) = (self.src.line, self.src.column);
@@ -339,20 +427,20 @@ impl<R: Read> Skim<R> {
     }
 
     fn word(&mut self) -> Result<()> {
-        let mut word = Vec::new();
+        let start = self.out.len();
         while let Some(b) = self.src.peek()? {
             if delimits(b) {
                 break;
             }
-            self.src.run_until(delimits, Some(&mut word));
+            self.src.run_until(delimits, Some(&mut self.out));
         }
-        self.out.extend_from_slice(&word);
         if self.in_body() {
             if self.value_pending {
                 self.other_token();
             } else {
                 // Validated UTF-8, cut at ASCII delimiters.
-                self.head.push(String::from_utf8_lossy(&word).into_owned());
+                let word = std::str::from_utf8(&self.out[start..]).unwrap_or_default();
+                self.head.push(word);
             }
         }
         Ok(())
@@ -406,18 +494,19 @@ impl<R: Read> Skim<R> {
             self.out.push(b'=');
             return Ok(());
         }
-        let head = std::mem::take(&mut self.head);
-        let attribute = head.len() >= 2
-            && !matches!(head[0].as_str(), "variantSet" | "reorder")
-            && !head.iter().any(|w| w == "rel");
-        let (name, suffix) = match head.last() {
-            Some(last) => match last.split_once('.') {
-                Some((name, suffix)) => (name, Some(suffix)),
-                None => (last.as_str(), None),
-            },
-            None => ("", None),
+        let head = &self.head;
+        let attribute = head.words >= 2
+            && !matches!(head.first.as_str(), "variantSet" | "reorder")
+            && !head.rel;
+        let (name, suffix) = match head.last.split_once('.') {
+            _ if head.words == 0 => ("", None),
+            Some((name, suffix)) => (name, Some(suffix)),
+            None => (head.last.as_str(), None),
         };
-        if !attribute || keep(name) {
+        let kept = !attribute || keep(name);
+        let suffix = suffix.map(|s| s == "timeSamples");
+        self.head.clear();
+        if kept {
             self.out.push(b'=');
             self.value_pending = true;
             self.dict_next = attribute;
@@ -428,7 +517,7 @@ impl<R: Read> Skim<R> {
                 // The declaration stays; its `=` and value go.
                 self.skip_value()?;
             }
-            Some("timeSamples") => {
+            Some(true) => {
                 self.out.push(b'=');
                 self.skip_space()?;
                 let (line, column) = (self.src.line, self.src.column);
@@ -442,7 +531,7 @@ impl<R: Read> Skim<R> {
                 self.skip_inside(b'}', line, column)?;
                 self.out.push(b'}');
             }
-            Some(_) => {
+            Some(false) => {
                 // `.connect`, `.spline`: small, copied.
                 self.out.push(b'=');
                 self.value_pending = true;
@@ -663,6 +752,10 @@ mod tests {
         );
     }
 
+    /// Metadata, variant sets, `reorder`, relationships, connections and kept
+    /// dictionaries are copied. Planted faults, each seen failing: [`Head`] never seeing
+    /// `rel` (the relationship's targets dropped); its first word replaced by every
+    /// later one (the `variantSet` statement's `=` read as an attribute's).
     #[test]
     fn statements_outside_attribute_values_are_copied() {
         let text = "def X \"x\" (\n    variants = {\n        string v = \"a\"\n    }\n    prepend variantSets = \"v\"\n)\n{\n    variantSet \"v\" = {\n        \"a\" (doc = \"[\") {\n            float f = 1\n            custom string lpe:dialect = \"osl\"\n        }\n    }\n    reorder properties = [\"f\"]\n    prepend rel r = [</a>, </b>]\n    float g.connect = </a.f>\n    dictionary d = {\n        string k = \"v\"\n    }\n}\n";

@@ -40,6 +40,11 @@
 //! ([`lint_reads`]: all but `sourceType`, `sourceName`, the group attributes and
 //! `lpe:...`) are dropped unparsed, so reading a shot costs what its declarations cost,
 //! not what its point arrays do. Binary layers (`.usdc`, `.usdz`) are read whole.
+//!
+//! This module is the composed reading, and the conventions every reading follows: a
+//! `.usda` file that composes nothing is read without `openusd` by the flat reader
+//! (`read/flat.rs`, which `lpe_lint::read::read_usd` tries first), through the same
+//! [`DocumentBuilder`] and [`lint_reads`]; the tests hold it to [`read`].
 
 use std::collections::BTreeSet;
 use std::io;
@@ -157,7 +162,9 @@ const GEOMETRY_TYPES: [&str; 13] = [
     "TetMesh",
 ];
 
-/// Reads the declarations of a USD stage.
+/// Reads the declarations of a USD stage composed through `openusd`, every `.usda`
+/// layer skimmed first (`lpe_lint::read::read_usd` reads a `.usda` that composes nothing
+/// without composing it, to the same document).
 pub fn read(path: &Path, limits: &Limits) -> Result<Document, ReadError> {
     read_as(path, limits, true)
 }
@@ -190,21 +197,8 @@ fn facts_of(path: &Path, limits: &Limits, skimming: bool) -> Result<StageFacts, 
             source,
         };
         let file = std::fs::File::open(path).map_err(io_err)?;
-        let text =
-            skim(io::BufReader::new(file), lint_reads, limits.usd_bytes).map_err(|e| match e {
-                SkimError::Io(source) => io_err(source),
-                SkimError::NotText { offset } => ReadError::NotText {
-                    path: path.to_path_buf(),
-                    offset,
-                },
-                SkimError::TooLarge { limit } => ReadError::TooLarge {
-                    path: path.to_path_buf(),
-                    bytes: std::fs::metadata(path).map_or(0, |m| m.len()),
-                    limit,
-                    what: "USD text (besides skipped values)",
-                },
-                e @ SkimError::Syntax { .. } => usd_err(e.to_string()),
-            })?;
+        let text = skim(io::BufReader::new(file), lint_reads, limits.usd_bytes)
+            .map_err(|e| skim_error(path, e))?;
         let canonical = path.canonicalize().map_err(io_err)?;
         resolver.root = Mutex::new(Some((canonical, text.into_bytes())));
     } else {
@@ -272,6 +266,30 @@ fn facts_of(path: &Path, limits: &Limits, skimming: bool) -> Result<StageFacts, 
     Ok(facts)
 }
 
+/// The read error of a skim of the root layer `path`, with its kind and position.
+pub(crate) fn skim_error(path: &Path, e: SkimError) -> ReadError {
+    match e {
+        SkimError::Io(source) => ReadError::Io {
+            path: path.to_path_buf(),
+            source,
+        },
+        SkimError::NotText { offset } => ReadError::NotText {
+            path: path.to_path_buf(),
+            offset,
+        },
+        SkimError::TooLarge { limit } => ReadError::TooLarge {
+            path: path.to_path_buf(),
+            bytes: std::fs::metadata(path).map_or(0, |m| m.len()),
+            limit,
+            what: "USD text (besides skipped values)",
+        },
+        e @ SkimError::Syntax { .. } => ReadError::Usd {
+            path: path.to_path_buf(),
+            message: e.to_string(),
+        },
+    }
+}
+
 /// The relationship of a RenderProduct listing its RenderVars in order.
 pub const ORDERED_VARS: &str = "orderedVars";
 
@@ -314,16 +332,53 @@ pub struct PrimFacts {
 
 /// The declarations of a stage `file` whose prims are `facts` (module docs).
 pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> {
-    let mut doc = Document::new(file, Format::Usd);
-    let mut lights = BTreeSet::new();
-    let mut objects = BTreeSet::new();
-    let mut has_lights = facts.types.iter().any(|t| t.ends_with("Light"));
-    let mut has_objects = facts
-        .types
-        .iter()
-        .any(|t| GEOMETRY_TYPES.contains(&t.as_str()));
-    let mut declared = None;
+    let mut builder = DocumentBuilder::new(file);
+    for t in &facts.types {
+        builder.prim_type(t);
+    }
     for prim in &facts.prims {
+        builder.prim(prim)?;
+    }
+    Ok(builder.finish())
+}
+
+/// [`document`] one prim at a time, for readers that stream a stage instead of holding
+/// its [`StageFacts`] (the flat reader, `read/flat.rs`): the prims must come in
+/// traversal order, and every type traversed must be named through
+/// [`DocumentBuilder::prim_type`].
+pub struct DocumentBuilder {
+    doc: Document,
+    lights: BTreeSet<String>,
+    objects: BTreeSet<String>,
+    has_lights: bool,
+    has_objects: bool,
+    declared: Option<(DialectName, Location)>,
+}
+
+impl DocumentBuilder {
+    /// A builder for the stage `file`, with no prim yet.
+    pub fn new(file: &Path) -> DocumentBuilder {
+        DocumentBuilder {
+            doc: Document::new(file, Format::Usd),
+            lights: BTreeSet::new(),
+            objects: BTreeSet::new(),
+            has_lights: false,
+            has_objects: false,
+            declared: None,
+        }
+    }
+
+    /// Records that a prim of type `type_name` (`""` for none) was traversed: lights and
+    /// geometry make groups checkable.
+    pub fn prim_type(&mut self, type_name: &str) {
+        self.has_lights |= type_name.ends_with("Light");
+        self.has_objects |= GEOMETRY_TYPES.contains(&type_name);
+    }
+
+    /// Reads one prim (its type is not recorded: see [`DocumentBuilder::prim_type`]).
+    pub fn prim(&mut self, prim: &PrimFacts) -> Result<(), ReadError> {
+        let file = self.doc.file.clone();
+        let doc = &mut self.doc;
         let p = &prim.path;
         let text = |attr: &str| -> Option<String> {
             prim.values
@@ -354,14 +409,14 @@ pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> 
         }
         for attr in LIGHT_GROUP_ATTRIBUTES {
             if let Some(g) = text(attr) {
-                has_lights = true;
-                lights.insert(g);
+                self.has_lights = true;
+                self.lights.insert(g);
             }
         }
         for attr in OBJECT_GROUP_ATTRIBUTES {
             if let Some(g) = text(attr) {
-                has_objects = true;
-                objects.insert(g);
+                self.has_objects = true;
+                self.objects.insert(g);
             }
         }
         for prop in &prim.properties {
@@ -374,11 +429,11 @@ pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> 
                 }
             }
             if prop == RENDERER_ATTRIBUTE {
-                declare_renderer(&mut doc.renderer, file, text(prop), at(prop))?;
+                declare_renderer(&mut doc.renderer, &file, text(prop), at(prop))?;
                 continue;
             }
             if prop == DIALECT_ATTRIBUTE {
-                declare_dialect(&mut declared, file, text(prop).as_deref(), at(prop))?;
+                declare_dialect(&mut self.declared, &file, text(prop).as_deref(), at(prop))?;
                 continue;
             }
             let name = match prop.strip_prefix("lpe:partition") {
@@ -395,18 +450,24 @@ pub fn document(file: &Path, facts: &StageFacts) -> Result<Document, ReadError> 
                 location: at(prop),
             });
         }
+        Ok(())
     }
-    doc.dialect = declared.map(|(dialect, at)| DialectDecl {
-        dialect,
-        location: Some(at),
-    });
-    doc.light_groups = has_lights.then_some(lights);
-    doc.object_groups = has_objects.then_some(objects);
-    Ok(doc)
+
+    /// The document of the prims read.
+    pub fn finish(self) -> Document {
+        let mut doc = self.doc;
+        doc.dialect = self.declared.map(|(dialect, at)| DialectDecl {
+            dialect,
+            location: Some(at),
+        });
+        doc.light_groups = self.has_lights.then_some(self.lights);
+        doc.object_groups = self.has_objects.then_some(self.objects);
+        doc
+    }
 }
 
 /// Whether `path` names a text layer by its extension: the layers the skim reads.
-fn is_usda(path: &Path) -> bool {
+pub(crate) fn is_usda(path: &Path) -> bool {
     path.extension()
         .and_then(|e| e.to_str())
         .is_some_and(|e| e.eq_ignore_ascii_case("usda"))
@@ -594,20 +655,22 @@ mod tests {
     /// Every fixture (and every layer it composes) reads the same skimmed as whole.
     #[test]
     fn the_skim_changes_nothing_lint_reads() {
-        let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/testdata/usd");
+        let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../tests/testdata");
         let mut seen = 0;
-        for entry in std::fs::read_dir(&dir).unwrap() {
-            let path = entry.unwrap().path();
-            if !is_usda(&path) {
-                continue;
+        for dir in ["usd", "lint"] {
+            for entry in std::fs::read_dir(root.join(dir)).unwrap() {
+                let path = entry.unwrap().path();
+                if !is_usda(&path) {
+                    continue;
+                }
+                let limits = Limits::default();
+                let skimmed = format!("{:?}", read_as(&path, &limits, true));
+                let whole = format!("{:?}", read_as(&path, &limits, false));
+                assert_eq!(skimmed, whole, "{}", path.display());
+                seen += 1;
             }
-            let limits = Limits::default();
-            let skimmed = format!("{:?}", read_as(&path, &limits, true));
-            let whole = format!("{:?}", read_as(&path, &limits, false));
-            assert_eq!(skimmed, whole, "{}", path.display());
-            seen += 1;
         }
-        assert!(seen >= 10, "{seen} fixtures");
+        assert_eq!(seen, 11, "fixtures");
     }
 
     /// `facts` as `lpe.lint(stage)` collects them: the prims whose [`PrimReading`] is
