@@ -101,6 +101,15 @@ pub(crate) fn nfa_only() -> Options {
     }
 }
 
+/// What [`Fast`] compiles for a few paths: the lazy DFA over a bare NFA.
+pub(crate) fn few_paths() -> Options {
+    Options {
+        dfa_budget: 0,
+        few_paths: true,
+        ..Options::default()
+    }
+}
+
 impl<D: Dialect> Engine<D> for Fast {
     fn name(&self) -> &'static str {
         "fast"
@@ -114,20 +123,19 @@ impl<D: Dialect> Engine<D> for Fast {
         compile_set(exprs, registration, &Options::default())
     }
 
-    /// The lazy DFA (`dfa_budget` 0, the default cache): the NFA is all it compiles, and
-    /// it builds the DFA rows that the paths it is asked about reach. Building the whole
-    /// minimized DFA of a counted repetition costs as much as matching thousands of paths;
-    /// a batch line whose expression does not repeat would pay it for one path.
+    /// The lazy DFA (`dfa_budget` 0, the default cache) over an NFA compiled for a few
+    /// paths ([`Options::few_paths`]: no per-byte step tables, no merging of co-active
+    /// positions): the bare NFA is all it compiles, and it builds the DFA rows that the
+    /// paths it is asked about reach. Building the whole minimized DFA of a counted
+    /// repetition costs as much as matching thousands of paths, and the step tables of a
+    /// 200-position NFA (256 KiB) several times a line's answer: a batch line whose
+    /// expression does not repeat would pay them for one path.
     fn compile_for_few_paths(
         &self,
         exprs: &[D::Lpe],
         registration: &D::Registration,
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
-        let lazy = Options {
-            dfa_budget: 0,
-            ..Options::default()
-        };
-        compile_set(exprs, registration, &lazy)
+        compile_set(exprs, registration, &few_paths())
     }
 }
 

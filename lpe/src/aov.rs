@@ -277,7 +277,7 @@ impl<D: Dialect> AovSet<D> {
         let classes = D::classes(&builder.atoms, exprs)?;
         // Borrowed from `aovs`: the analysis outlives the builder, which the NFA consumes.
         let atoms = builder.atoms.clone();
-        let nfa = Nfa::new(builder, parts, &classes, opts.nfa_budget);
+        let nfa = Nfa::new(builder, parts, &classes, opts);
         Ok((classes, nfa, atoms))
     }
 
