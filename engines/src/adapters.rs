@@ -1,7 +1,7 @@
 //! The workspace's own matchers behind [`Engine`]: the backtracking reference and lpe's
 //! AOV set in its two stepping modes, each written once for every dialect.
 
-use lpe::{AovMask, AovSet, Dialect, Options};
+use lpe::{AovMask, AovSet, Dialect, Options, PathMatcher};
 
 use crate::dialect::ReferenceDialect;
 use crate::engine::{fits_mask, Engine, EngineError, Matcher};
@@ -73,6 +73,21 @@ impl<D: Dialect> Matcher<D> for AovSetMatcher<D> {
     }
 }
 
+/// A lazy set that answers a few paths: on its bitset NFA's wide state when it fits one
+/// ([`AovSet::nfa`]), which steps without the lazy DFA's registry and per-thread cache
+/// (a registry entry and a cache row allocated per step, for one path, cost more than
+/// the step); through the lazy DFA otherwise.
+struct FewPathsMatcher<D: Dialect>(AovSet<D>);
+
+impl<D: Dialect> Matcher<D> for FewPathsMatcher<D> {
+    fn which(&self, path: &D::Path) -> AovMask {
+        match self.0.nfa() {
+            Some(nfa) => nfa.match_vertices(D::vertices(path)),
+            None => self.0.match_path(path),
+        }
+    }
+}
+
 /// The expressions as AOVs named by their index.
 fn numbered<T: Clone>(exprs: &[T]) -> Vec<(String, T)> {
     exprs
@@ -123,10 +138,10 @@ impl<D: Dialect> Engine<D> for Fast {
         compile_set(exprs, registration, &Options::default())
     }
 
-    /// The lazy DFA (`dfa_budget` 0, the default cache) over an NFA compiled for a few
-    /// paths ([`Options::few_paths`]: no per-byte step tables, no merging of co-active
-    /// positions): the bare NFA is all it compiles, and it builds the DFA rows that the
-    /// paths it is asked about reach. Building the whole minimized DFA of a counted
+    /// The lazy DFA (`dfa_budget` 0) over an NFA compiled for a few paths
+    /// ([`Options::few_paths`]: no per-byte step tables, no merging of co-active
+    /// positions, no emptiness search), stepped on the NFA's wide state when it fits one
+    /// ([`FewPathsMatcher`]): the bare NFA is all it compiles. Building the whole minimized DFA of a counted
     /// repetition costs as much as matching thousands of paths, and the step tables of a
     /// 200-position NFA (256 KiB) several times a line's answer: a batch line whose
     /// expression does not repeat would pay them for one path.
@@ -135,7 +150,8 @@ impl<D: Dialect> Engine<D> for Fast {
         exprs: &[D::Lpe],
         registration: &D::Registration,
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
-        compile_set(exprs, registration, &few_paths())
+        let set = AovSet::<D>::compile_under(&numbered(exprs), registration, &few_paths())?;
+        Ok(Box::new(FewPathsMatcher(set)))
     }
 }
 

@@ -24,12 +24,14 @@ pub struct Options {
     /// on every path.
     pub max_path_len: Option<u32>,
     /// The caller will step only a few paths with the set (a batch line whose expression
-    /// does not repeat), so compiling skips the work that only many steps repay: the
-    /// NFA's per-byte step tables (its steps OR the follow rows of the active positions
-    /// instead) and the merging of positions always active together. Answers are the
-    /// same either way; [`crate::automata::automaton::Automaton::nfa_positions`] then
-    /// counts the unmerged positions. With `dfa_budget: 0` as well, a compile is little
-    /// more than the Glushkov construction. Default `false`.
+    /// does not repeat) and wants only their answers, so compiling skips the work that
+    /// only many steps repay: the NFA's per-byte step tables (its steps OR the follow
+    /// rows of the active positions instead), the merging of positions always active
+    /// together, and the search for AOVs that can match no path
+    /// ([`crate::AovSet::warnings`] is then empty). Answers are the same either way;
+    /// [`crate::automata::automaton::Automaton::nfa_positions`] counts the unmerged
+    /// positions. With `dfa_budget: 0` as well, a compile is little more than the
+    /// Glushkov construction. Default `false`.
     pub few_paths: bool,
 }
 
