@@ -168,3 +168,68 @@ impl<D: Dialect> Engine<D> for BitsetNfa {
         compile_set(exprs, registration, &nfa_only())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! The fast engine's compile for a few paths against the reference on generated
+    //! cases, in both dialects: the differential runs compare [`Engine::compile`] only.
+    //! Caught when planted: the few-paths matcher answering from the NFA's start state
+    //! (whatever the path), and `Nfa::new`'s counting sort of the follow edges not
+    //! advancing past a written target (both dialects disagree).
+
+    use lpe::osl::Osl;
+    use lpe::renderman::RenderMan;
+
+    use super::*;
+    use crate::differential::{run_cases, Generate, Run};
+
+    /// [`Fast`] as it compiles for a few paths, through [`Engine::compile`] so that the
+    /// differential run asks it.
+    struct FewPaths;
+
+    impl<D: Dialect> Engine<D> for FewPaths {
+        fn name(&self) -> &'static str {
+            "fast-few-paths"
+        }
+
+        fn compile(
+            &self,
+            exprs: &[D::Lpe],
+            registration: &D::Registration,
+        ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+            Fast.compile_for_few_paths(exprs, registration)
+        }
+    }
+
+    fn agrees<D: Generate>(cases: u64, max_size: usize) {
+        let args = Run {
+            cases,
+            seed: 3,
+            first: 0,
+            max_size,
+            paths: 4,
+            max_failures: 1,
+        };
+        let t = run_cases::<D>(&args, &[&Reference, &FewPaths]);
+        if let Some((i, c)) = t.failures.first() {
+            panic!("case {i}:\n{c}");
+        }
+        assert_eq!(t.uncompared, 0, "{:?}", t.skips);
+        assert!(
+            t.matched > 0 && t.matched < t.pairs,
+            "{} of {}",
+            t.matched,
+            t.pairs
+        );
+    }
+
+    #[test]
+    fn few_paths_answers_as_the_reference() {
+        agrees::<RenderMan>(300, 10);
+    }
+
+    #[test]
+    fn few_paths_answers_as_the_reference_in_the_osl_dialect() {
+        agrees::<Osl>(400, 8);
+    }
+}

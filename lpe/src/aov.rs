@@ -553,7 +553,7 @@ mod tests {
     /// positions (four 64-bit words a state), whose tables take `16 KiB * 4^2` = 256 KiB,
     /// while its follow rows take 202 * 4 * 8 bytes (6.3 KiB). Caught when planted:
     /// `Nfa::new` taking the table budget from `nfa_budget` whatever `few_paths` says
-    /// (the few-paths set held 262 KiB).
+    /// (the few-paths set held 266 KiB).
     #[test]
     fn a_few_paths_compile_builds_no_step_tables() {
         let tables = 256 << 10;
@@ -592,8 +592,8 @@ mod tests {
     /// algebra (a complement that matches where its operand does not) and a set wider
     /// than the NFA's wide state (303 positions), on the DFA, the lazy DFA with and
     /// without a cache, and the NFA's wide state ([`AovSet::nfa`]). Caught when planted:
-    /// `Adjacency::new` dropping the last position's edges (the chain's answers), and
-    /// merged positions' rows written to the unmerged numbers.
+    /// `Adjacency::new`'s counting sort not advancing past a written target (a position
+    /// kept one successor of several).
     #[test]
     fn answers_are_the_same_with_few_paths_on_and_off() {
         let srcs = [
