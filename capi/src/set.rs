@@ -154,6 +154,8 @@ fn compile(
         lazy_cache: o.lazy_cache,
         nfa_budget: o.nfa_budget,
         max_path_len: (o.max_path_len > 0).then_some(o.max_path_len),
+        // A C caller steps a set for a whole render: never only a few paths.
+        ..Options::default()
     });
     let registered = given.map_or(std::ptr::null(), |o| o.osl_registered);
     let profile = renderer_profile(given.map_or(std::ptr::null(), |o| o.renderer), dialect)?;

@@ -1,7 +1,7 @@
 //! The workspace's own matchers behind [`Engine`]: the backtracking reference and lpe's
 //! AOV set in its two stepping modes, each written once for every dialect.
 
-use lpe::{AovMask, AovSet, Dialect, Options};
+use lpe::{AovMask, AovSet, Dialect, Options, PathMatcher};
 
 use crate::dialect::ReferenceDialect;
 use crate::engine::{fits_mask, Engine, EngineError, Matcher};
@@ -73,6 +73,21 @@ impl<D: Dialect> Matcher<D> for AovSetMatcher<D> {
     }
 }
 
+/// A lazy set that answers a few paths: on its bitset NFA's wide state when it fits one
+/// ([`AovSet::nfa`]), which steps without the lazy DFA's registry and per-thread cache
+/// (a registry entry and a cache row allocated per step, for one path, cost more than
+/// the step); through the lazy DFA otherwise.
+struct FewPathsMatcher<D: Dialect>(AovSet<D>);
+
+impl<D: Dialect> Matcher<D> for FewPathsMatcher<D> {
+    fn which(&self, path: &D::Path) -> AovMask {
+        match self.0.nfa() {
+            Some(nfa) => nfa.match_vertices(D::vertices(path)),
+            None => self.0.match_path(path),
+        }
+    }
+}
+
 /// The expressions as AOVs named by their index.
 fn numbered<T: Clone>(exprs: &[T]) -> Vec<(String, T)> {
     exprs
@@ -101,6 +116,15 @@ pub(crate) fn nfa_only() -> Options {
     }
 }
 
+/// What [`Fast`] compiles for a few paths: the lazy DFA over a bare NFA.
+pub(crate) fn few_paths() -> Options {
+    Options {
+        dfa_budget: 0,
+        few_paths: true,
+        ..Options::default()
+    }
+}
+
 impl<D: Dialect> Engine<D> for Fast {
     fn name(&self) -> &'static str {
         "fast"
@@ -114,20 +138,20 @@ impl<D: Dialect> Engine<D> for Fast {
         compile_set(exprs, registration, &Options::default())
     }
 
-    /// The lazy DFA (`dfa_budget` 0, the default cache): the NFA is all it compiles, and
-    /// it builds the DFA rows that the paths it is asked about reach. Building the whole
-    /// minimized DFA of a counted repetition costs as much as matching thousands of paths;
-    /// a batch line whose expression does not repeat would pay it for one path.
+    /// The lazy DFA (`dfa_budget` 0) over an NFA compiled for a few paths
+    /// ([`Options::few_paths`]: no per-byte step tables, no merging of co-active
+    /// positions, no emptiness search), stepped on the NFA's wide state when it fits one
+    /// ([`FewPathsMatcher`]): the bare NFA is all it compiles. Building the whole minimized DFA of a counted
+    /// repetition costs as much as matching thousands of paths, and the step tables of a
+    /// 200-position NFA (256 KiB) several times a line's answer: a batch line whose
+    /// expression does not repeat would pay them for one path.
     fn compile_for_few_paths(
         &self,
         exprs: &[D::Lpe],
         registration: &D::Registration,
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
-        let lazy = Options {
-            dfa_budget: 0,
-            ..Options::default()
-        };
-        compile_set(exprs, registration, &lazy)
+        let set = AovSet::<D>::compile_under(&numbered(exprs), registration, &few_paths())?;
+        Ok(Box::new(FewPathsMatcher(set)))
     }
 }
 
@@ -142,5 +166,70 @@ impl<D: Dialect> Engine<D> for BitsetNfa {
         registration: &D::Registration,
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
         compile_set(exprs, registration, &nfa_only())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    //! The fast engine's compile for a few paths against the reference on generated
+    //! cases, in both dialects: the differential runs compare [`Engine::compile`] only.
+    //! Caught when planted: the few-paths matcher answering from the NFA's start state
+    //! (whatever the path), and `Nfa::new`'s counting sort of the follow edges not
+    //! advancing past a written target (both dialects disagree).
+
+    use lpe::osl::Osl;
+    use lpe::renderman::RenderMan;
+
+    use super::*;
+    use crate::differential::{run_cases, Generate, Run};
+
+    /// [`Fast`] as it compiles for a few paths, through [`Engine::compile`] so that the
+    /// differential run asks it.
+    struct FewPaths;
+
+    impl<D: Dialect> Engine<D> for FewPaths {
+        fn name(&self) -> &'static str {
+            "fast-few-paths"
+        }
+
+        fn compile(
+            &self,
+            exprs: &[D::Lpe],
+            registration: &D::Registration,
+        ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+            Fast.compile_for_few_paths(exprs, registration)
+        }
+    }
+
+    fn agrees<D: Generate>(cases: u64, max_size: usize) {
+        let args = Run {
+            cases,
+            seed: 3,
+            first: 0,
+            max_size,
+            paths: 4,
+            max_failures: 1,
+        };
+        let t = run_cases::<D>(&args, &[&Reference, &FewPaths]);
+        if let Some((i, c)) = t.failures.first() {
+            panic!("case {i}:\n{c}");
+        }
+        assert_eq!(t.uncompared, 0, "{:?}", t.skips);
+        assert!(
+            t.matched > 0 && t.matched < t.pairs,
+            "{} of {}",
+            t.matched,
+            t.pairs
+        );
+    }
+
+    #[test]
+    fn few_paths_answers_as_the_reference() {
+        agrees::<RenderMan>(300, 10);
+    }
+
+    #[test]
+    fn few_paths_answers_as_the_reference_in_the_osl_dialect() {
+        agrees::<Osl>(400, 8);
     }
 }

@@ -214,10 +214,17 @@ impl<D: Dialect> AovSet<D> {
             visible,
         } = Hidden::of(aovs)?;
         let (classes, nfa, atoms) = Self::build_nfa(&operands, opts)?;
-        let warnings = Hidden::plain_warnings(
-            aovs,
-            &emptiness::empty_aovs(&nfa, &classes, D::SHAPE, &atoms, &hidden_names, &operands),
-        );
+        // A set for a few paths is asked for answers, not findings: the emptiness
+        // search (four searches and a message for an AOV that matches nothing) would
+        // cost a third of its compile.
+        let warnings = if opts.few_paths {
+            Vec::new()
+        } else {
+            Hidden::plain_warnings(
+                aovs,
+                &emptiness::empty_aovs(&nfa, &classes, D::SHAPE, &atoms, &hidden_names, &operands),
+            )
+        };
         let attempt = Options {
             dfa_budget: opts.dfa_budget.min(D::DFA_ATTEMPT_BUDGET),
             ..opts.clone()
@@ -277,7 +284,7 @@ impl<D: Dialect> AovSet<D> {
         let classes = D::classes(&builder.atoms, exprs)?;
         // Borrowed from `aovs`: the analysis outlives the builder, which the NFA consumes.
         let atoms = builder.atoms.clone();
-        let nfa = Nfa::new(builder, parts, &classes, opts.nfa_budget);
+        let nfa = Nfa::new(builder, parts, &classes, opts);
         Ok((classes, nfa, atoms))
     }
 
@@ -531,6 +538,127 @@ mod tests {
         for (n, want) in [(300, true), (299, false), (301, false)] {
             let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
             assert_eq!(s.match_path(&p).contains(0), want, "{n}");
+        }
+    }
+
+    fn few_paths() -> Options {
+        Options {
+            dfa_budget: 0,
+            few_paths: true,
+            ..Options::default()
+        }
+    }
+
+    /// A compile for a few paths builds no per-byte step tables: `C.{199}[LO]` keeps 202
+    /// positions (four 64-bit words a state), whose tables take `16 KiB * 4^2` = 256 KiB,
+    /// while its follow rows take 202 * 4 * 8 bytes (6.3 KiB). Caught when planted:
+    /// `Nfa::new` taking the table budget from `nfa_budget` whatever `few_paths` says
+    /// (the few-paths set held 266 KiB).
+    #[test]
+    fn a_few_paths_compile_builds_no_step_tables() {
+        let tables = 256 << 10;
+        let lazy = set(&["C.{199}[LO]"], &nfa_only());
+        let few = set(&["C.{199}[LO]"], &few_paths());
+        assert_eq!((lazy.nfa_positions(), few.nfa_positions()), (202, 202));
+        assert!(lazy.memory_bytes() >= tables, "{}", lazy.memory_bytes());
+        assert!(few.memory_bytes() < tables / 16, "{}", few.memory_bytes());
+        // Tables or not, the same answers: exactly 199 scattering vertices between.
+        for (n, want) in [(199, true), (198, false), (200, false)] {
+            let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
+            for s in [&lazy, &few] {
+                assert_eq!(s.match_path(&p).contains(0), want, "{n}");
+            }
+        }
+    }
+
+    /// A compile for a few paths keeps positions always active together apart, and
+    /// searches for no empty AOV: `C<RD>L` and `C<RD>O` share their `C<RD>` positions
+    /// (merged: the start, `C`, `<RD>`, `L`, `O`: 5; apart: 7), `C.*` adds its `C`
+    /// (which ends it, so merges with no other) and `.`, and it (never an emitter) warns
+    /// only in a full compile. Caught when planted: merging whatever
+    /// `few_paths` says (5 positions), and the warnings searched for anyway.
+    #[test]
+    fn a_few_paths_compile_merges_nothing_and_searches_no_warnings() {
+        let srcs = ["C<RD>L", "C<RD>O", "C.*"];
+        let full = set(&srcs, &nfa_only());
+        let few = set(&srcs, &few_paths());
+        assert_eq!((full.nfa_positions(), few.nfa_positions()), (7, 9));
+        assert_eq!(full.warnings().len(), 1, "{:?}", full.warnings());
+        assert!(few.warnings().is_empty(), "{:?}", few.warnings());
+    }
+
+    /// Every way of compiling answers alike, with and without `few_paths` (expected
+    /// answers worked by hand): plain AOVs sharing a prefix, a counted repetition, set
+    /// algebra (a complement that matches where its operand does not) and a set wider
+    /// than the NFA's wide state (303 positions), on the DFA, the lazy DFA with and
+    /// without a cache, and the NFA's wide state ([`AovSet::nfa`]). Caught when planted:
+    /// `Adjacency::new`'s counting sort not advancing past a written target (a position
+    /// kept one successor of several).
+    #[test]
+    fn answers_are_the_same_with_few_paths_on_and_off() {
+        let srcs = [
+            "C<RD>L",
+            "C<RD>.*O",
+            "C.{2}[LO]",
+            "C.*L - C<RD>L",
+            "C(.{100}){3}L",
+        ];
+        let cases: [(&str, [bool; 5]); 7] = [
+            ("C RD L", [true, false, false, false, false]),
+            ("C RD RS O", [false, true, true, false, false]),
+            ("C RD O", [false, true, false, false, false]),
+            ("C RS RD L", [false, false, true, true, false]),
+            ("C RS L", [false, false, false, true, false]),
+            ("C L", [false, false, false, true, false]),
+            ("C RD RD L", [false, false, true, true, false]),
+        ];
+        let long: Path = format!("C{} L", " RS".repeat(300)).parse().unwrap();
+        let base = [
+            Options::default(),
+            nfa_only(),
+            Options {
+                lazy_cache: 0,
+                ..nfa_only()
+            },
+        ];
+        for opts in base.iter().flat_map(|o| {
+            [
+                o.clone(),
+                Options {
+                    few_paths: true,
+                    ..o.clone()
+                },
+            ]
+        }) {
+            let s = set(&srcs, &opts);
+            for (p, want) in &cases {
+                let got = s.match_path(&p.parse().unwrap());
+                assert_eq!(
+                    (0..5).map(|i| got.contains(i)).collect::<Vec<_>>(),
+                    want,
+                    "{p} {opts:?}"
+                );
+            }
+            assert_eq!(
+                (0..5)
+                    .map(|i| s.match_path(&long).contains(i))
+                    .collect::<Vec<_>>(),
+                [false, false, false, true, true],
+                "{opts:?}"
+            );
+            // The narrower sets on the NFA's wide state, as the few-paths engine steps them.
+            let narrow = set(&srcs[..4], &opts);
+            if let Some(nfa) = narrow.nfa() {
+                for (p, want) in &cases {
+                    let path: Path = p.parse().unwrap();
+                    let got = crate::PathMatcher::match_vertices(&nfa, path.vertices());
+                    assert_eq!(
+                        (0..4).map(|i| got.contains(i)).collect::<Vec<_>>(),
+                        want[..4],
+                        "{p} {opts:?}"
+                    );
+                }
+            }
         }
     }
 

@@ -15,13 +15,15 @@
 //! number of active positions. The tables cost `16 KiB * words^2` (`words` = 64-position
 //! words); [`crate::aov::Options::nfa_budget`] bounds them. A set too large for tables
 //! (thousands of positions) keeps only one follow row per position and ORs the rows of
-//! the active positions: slower, and used only to build its DFA.
+//! the active positions: slower, and used only to build its DFA. So does a set compiled
+//! for a few paths ([`crate::aov::Options::few_paths`]): building the tables would cost
+//! more than all the steps they save (a 200-position set's take 256 KiB).
 //!
 //! Many AOVs share one automaton, and a final position names the AOV it ends
 //! ([`Nfa::matches`]). Positions that are always active together (the `C<RD>` that
-//! begins several AOVs) are kept once (`coactive`), and positions no path can use are
-//! dropped, so a set's position count is what its automaton needs, not its source's
-//! atom count.
+//! begins several AOVs) are kept once (`coactive`; not for a few paths), and positions no
+//! path can use are dropped, so a set's position count is what its automaton needs, not
+//! its source's atom count.
 
 use std::hash::Hash;
 
@@ -30,6 +32,7 @@ use crate::fxhash::FxMap;
 use crate::automata::coactive;
 use crate::automata::ir::{Node, Regex, Repetition, VertexClasses};
 use crate::automata::mask::{AovMask, NFA_STATE_WORDS};
+use crate::automata::options::Options;
 use crate::bits::{self, set};
 
 /// What the Glushkov construction computes for one subexpression.
@@ -49,13 +52,19 @@ impl Frag {
     }
 }
 
-/// The Glushkov construction: positions, their atoms and follow lists.
+/// The Glushkov construction: positions, their atoms and follow edges.
 pub(crate) struct Builder<'a, A> {
     /// Distinct atoms, in first-seen order; positions refer to them by index.
     pub atoms: Vec<&'a A>,
     atom_ids: FxMap<&'a A, u32>,
     atom_of: Vec<u32>,
-    follow: Vec<Vec<u32>>,
+    /// `(p, q)`: `q` may follow `p` (duplicates allowed). One list for all positions,
+    /// not a list per position: a compile for a few paths is mostly allocation, and a
+    /// list per position was one allocation per position.
+    edges: Vec<(u32, u32)>,
+    /// First and last lists of finished fragments, emptied, for the next ones: a chain
+    /// of atoms (`.{199}`) then allocates none per atom.
+    spare: Vec<Vec<u32>>,
     /// The path length repetitions are [`Repetition::bounded`] by.
     max_path_len: Option<u32>,
 }
@@ -67,7 +76,8 @@ impl<'a, A: Eq + Hash> Builder<'a, A> {
             atom_ids: FxMap::default(),
             // Position 0: the start, reading no atom.
             atom_of: vec![u32::MAX],
-            follow: vec![Vec::new()],
+            edges: Vec::new(),
+            spare: Vec::new(),
             max_path_len,
         }
     }
@@ -79,13 +89,27 @@ impl<'a, A: Eq + Hash> Builder<'a, A> {
             self.atoms.push(atom);
         }
         self.atom_of.push(a);
-        self.follow.push(Vec::new());
         (self.atom_of.len() - 1) as u32
     }
 
     fn link(&mut self, from: &[u32], to: &[u32]) {
         for &p in from {
-            self.follow[p as usize].extend_from_slice(to);
+            self.edges.extend(to.iter().map(|&q| (p, q)));
+        }
+    }
+
+    /// The list `[p]`, in a spare list if there is one.
+    fn single(&mut self, p: u32) -> Vec<u32> {
+        let mut v = self.spare.pop().unwrap_or_default();
+        v.push(p);
+        v
+    }
+
+    /// Keeps `v`'s allocation for a later [`Builder::single`].
+    fn recycle(&mut self, mut v: Vec<u32>) {
+        if v.capacity() > 0 {
+            v.clear();
+            self.spare.push(v);
         }
     }
 
@@ -95,10 +119,12 @@ impl<'a, A: Eq + Hash> Builder<'a, A> {
         if a.nullable {
             first.extend_from_slice(&b.first);
         }
+        self.recycle(b.first);
         let mut last = b.last;
         if b.nullable {
             last.extend_from_slice(&a.last);
         }
+        self.recycle(a.last);
         Frag {
             first,
             last,
@@ -111,8 +137,8 @@ impl<'a, A: Eq + Hash> Builder<'a, A> {
             Node::Atom(a) => {
                 let p = self.position(a);
                 Frag {
-                    first: vec![p],
-                    last: vec![p],
+                    first: self.single(p),
+                    last: self.single(p),
                     nullable: false,
                 }
             }
@@ -129,9 +155,11 @@ impl<'a, A: Eq + Hash> Builder<'a, A> {
                 };
                 for e in es {
                     let f = self.build(e);
-                    out.first.extend(f.first);
-                    out.last.extend(f.last);
+                    out.first.extend_from_slice(&f.first);
+                    out.last.extend_from_slice(&f.last);
                     out.nullable |= f.nullable;
+                    self.recycle(f.first);
+                    self.recycle(f.last);
                 }
                 out
             }
@@ -236,6 +264,39 @@ const MERGE_BUDGET: usize = 1 << 20;
 /// Most refinement rounds merging co-active positions may take.
 const MERGE_ROUNDS: usize = 64;
 
+/// Edges grouped by their source: one list of all targets and where each source's begin,
+/// two allocations for any number of positions.
+struct Adjacency {
+    /// `starts[p]..starts[p + 1]` are `p`'s targets in `targets`.
+    starts: Vec<u32>,
+    targets: Vec<u32>,
+}
+
+impl Adjacency {
+    /// The edges `(from, to)` over positions `0..n`, by a counting sort on `from`.
+    fn new(n: usize, edges: impl Iterator<Item = (u32, u32)> + Clone) -> Adjacency {
+        let mut starts = vec![0u32; n + 1];
+        for (p, _) in edges.clone() {
+            starts[p as usize + 1] += 1;
+        }
+        for p in 0..n {
+            starts[p + 1] += starts[p];
+        }
+        let mut next = starts.clone();
+        let mut targets = vec![0u32; starts[n] as usize];
+        for (p, q) in edges {
+            targets[next[p as usize] as usize] = q;
+            next[p as usize] += 1;
+        }
+        Adjacency { starts, targets }
+    }
+
+    /// The targets of the edges from `p`.
+    fn of(&self, p: usize) -> &[u32] {
+        &self.targets[self.starts[p] as usize..self.starts[p + 1] as usize]
+    }
+}
+
 /// Bytes of follow tables for a state of `words` words.
 pub(crate) fn table_bytes(words: usize) -> usize {
     words * 8 * 256 * words * 8
@@ -245,20 +306,26 @@ impl Nfa {
     /// Tabulates a finished construction. Positions that cannot be reached from the start
     /// or cannot reach a final position are dropped: they never change an answer, and
     /// dropping them makes [`Nfa::is_dead`] exact and the DFA smaller.
+    ///
+    /// Its per-byte step tables are built when they fit [`Options::nfa_budget`], and
+    /// positions always active together are merged, unless [`Options::few_paths`] says
+    /// that the steps to come would not repay either.
     pub(crate) fn new<A>(
         builder: Builder<'_, A>,
         parts: Parts,
         alphabet: &impl VertexClasses,
-        table_budget: usize,
+        opts: &Options,
     ) -> Nfa {
+        let table_budget = if opts.few_paths { 0 } else { opts.nfa_budget };
         let Builder {
+            atoms,
             atom_of,
-            mut follow,
+            mut edges,
             ..
         } = builder;
         let n = atom_of.len();
         for first in &parts.aov_first {
-            follow[0].extend_from_slice(first);
+            edges.extend(first.iter().map(|&q| (0, q)));
         }
         let mut aov_of = vec![u32::MAX; n];
         for (i, last) in parts.aov_last.iter().enumerate() {
@@ -266,34 +333,35 @@ impl Nfa {
                 aov_of[p as usize] = i as u32;
             }
         }
+        // `[a * classes + c]`: whether distinct atom `a` accepts class `c`, asked once per
+        // atom rather than per position (a chain `.{199}` has one atom).
+        let classes = alphabet.class_count();
+        let accepts: Vec<bool> = (0..atoms.len())
+            .flat_map(|a| (0..classes).map(move |c| (a, c)))
+            .map(|(a, c)| alphabet.accepts(c, a))
+            .collect();
+        let accepts_of = |a: u32| &accepts[a as usize * classes..][..classes];
         // Keep positions reachable from the start and co-reachable to a final.
         // A position whose atom accepts no vertex (`<CD>`) is never entered: leave it
         // out of the search, so that every kept position can really lead to a match and
         // the empty set is the only dead state, minimized or not.
         let live_pos: Vec<bool> = atom_of
             .iter()
-            .map(|&a| {
-                a != u32::MAX
-                    && (0..alphabet.class_count()).any(|c| alphabet.accepts(c, a as usize))
-            })
+            .map(|&a| a != u32::MAX && accepts_of(a).contains(&true))
             .collect();
         let live = |q: u32| live_pos[q as usize];
+        let succs = Adjacency::new(n, edges.iter().copied());
         let mut reach = vec![false; n];
         reach[0] = true;
         let mut stack = vec![0usize];
         while let Some(p) = stack.pop() {
-            for &q in &follow[p] {
+            for &q in succs.of(p) {
                 if live(q) && !std::mem::replace(&mut reach[q as usize], true) {
                     stack.push(q as usize);
                 }
             }
         }
-        let mut preds = vec![Vec::new(); n];
-        for (p, qs) in follow.iter().enumerate() {
-            for &q in qs {
-                preds[q as usize].push(p as u32);
-            }
-        }
+        let preds = Adjacency::new(n, edges.iter().map(|&(p, q)| (q, p)));
         let mut coreach = vec![false; n];
         let mut stack: Vec<usize> = (1..n)
             .filter(|&p| aov_of[p] != u32::MAX && live(p as u32))
@@ -302,7 +370,7 @@ impl Nfa {
             coreach[p] = true;
         }
         while let Some(q) = stack.pop() {
-            for &p in &preds[q] {
+            for &p in preds.of(q) {
                 if (p == 0 || live(p)) && !std::mem::replace(&mut coreach[p as usize], true) {
                     stack.push(p as usize);
                 }
@@ -317,39 +385,37 @@ impl Nfa {
                 kept.push(p);
             }
         }
+        // Edges between kept positions, renumbered.
+        let kept_edges = || {
+            edges.iter().filter_map(|&(p, q)| {
+                let (p, q) = (renumber[p as usize], renumber[q as usize]);
+                (p != u32::MAX && q != u32::MAX).then_some((p, q))
+            })
+        };
         // One position per block of positions always active together: same atom, same
         // AOV ended (a position names one), predecessors in the same blocks.
-        let block = {
+        let block = if opts.few_paths {
+            (0..kept.len() as u32).collect()
+        } else {
             let key: Vec<(u32, u32)> = kept
                 .iter()
                 .map(|&old| (atom_of[old], aov_of[old]))
                 .collect();
             let mut preds = vec![Vec::new(); kept.len()];
-            for (p, &old) in kept.iter().enumerate() {
-                for &q in &follow[old] {
-                    if let Some(q) = renumber.get(q as usize).filter(|&&q| q != u32::MAX) {
-                        preds[*q as usize].push(p as u32);
-                    }
-                }
+            for (p, q) in kept_edges() {
+                preds[q as usize].push(p);
             }
             let edges: usize = preds.iter().map(Vec::len).sum();
             let budget = MERGE_BUDGET.min(MERGE_ROUNDS * (kept.len() + edges + 1));
             coactive::co_active_blocks(&key, &preds, budget)
                 .unwrap_or_else(|| (0..kept.len() as u32).collect())
         };
-        for r in renumber.iter_mut().filter(|r| **r != u32::MAX) {
-            *r = block[*r as usize];
-        }
         let positions = block.iter().max().map_or(0, |&b| b as usize + 1);
         let words = positions.div_ceil(64);
         let mut rows = vec![0u64; positions * words];
-        for (&new, &old) in block.iter().zip(&kept) {
-            for &q in &follow[old] {
-                let q = renumber[q as usize];
-                if q != u32::MAX {
-                    set(&mut rows[new as usize * words..][..words], q as usize);
-                }
-            }
+        for (p, q) in kept_edges() {
+            let (p, q) = (block[p as usize] as usize, block[q as usize] as usize);
+            set(&mut rows[p * words..][..words], q);
         }
         // Chunk tables: entry `b` is entry `b` without its lowest bit, plus that bit's row.
         // Every chunk of every word, those past the last position too: the inlined wide
@@ -383,7 +449,6 @@ impl Nfa {
                 }
             }
         }
-        let classes = alphabet.class_count();
         let mut accept = vec![0u64; classes * words];
         let mut finals = vec![0u64; words];
         let mut new_atom_of = vec![u32::MAX; positions];
@@ -396,10 +461,8 @@ impl Nfa {
             if aov_of[old] != u32::MAX {
                 set(&mut finals, new);
             }
-            for c in 0..classes {
-                if alphabet.accepts(c, a as usize) {
-                    set(&mut accept[c * words..][..words], new);
-                }
+            for (c, _) in accepts_of(a).iter().enumerate().filter(|(_, &yes)| yes) {
+                set(&mut accept[c * words..][..words], new);
             }
         }
         let mut start_matches = AovMask::EMPTY;
@@ -591,18 +654,27 @@ mod tests {
     use crate::renderman::parse;
     use crate::rng::SplitMix64;
 
-    /// `Options::default().nfa_budget`, spelled out so that the automata need not see
-    /// the facade.
+    /// `Options::default().nfa_budget`, spelled out so that the tests do not depend on
+    /// the default.
     const DEFAULT_NFA_BUDGET: usize = 16 << 20;
 
     /// The NFA of `srcs` with the given table budget, and its class count.
     fn nfa(srcs: &[&str], table_budget: usize) -> (Nfa, usize) {
+        let opts = Options {
+            nfa_budget: table_budget,
+            ..Options::default()
+        };
+        nfa_with(srcs, &opts)
+    }
+
+    /// The NFA of `srcs` compiled with `opts`, and its class count.
+    fn nfa_with(srcs: &[&str], opts: &Options) -> (Nfa, usize) {
         let lpes: Vec<_> = srcs.iter().map(|s| parse(s).unwrap()).collect();
         let (builder, parts) = Builder::of_all(lpes.iter().map(|l| &l.expr), None);
         let labels = lpes.iter().flat_map(|l| l.expr.labels()).collect();
         let alphabet = Alphabet::new(&builder.atoms, labels);
         let classes = alphabet.class_count();
-        (Nfa::new(builder, parts, &alphabet, table_budget), classes)
+        (Nfa::new(builder, parts, &alphabet, opts), classes)
     }
 
     #[test]

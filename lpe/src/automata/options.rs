@@ -1,5 +1,5 @@
 //! The knobs of compiling a set: memory budgets of the DFA, the lazy DFA's cache and the
-//! NFA, and the longest path the caller will step.
+//! NFA, the longest path the caller will step, and whether it will step only a few.
 
 /// Compile-time knobs.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -23,6 +23,16 @@ pub struct Options {
     /// automata); answers for longer paths are then unspecified. Default `None`: exact
     /// on every path.
     pub max_path_len: Option<u32>,
+    /// The caller will step only a few paths with the set (a batch line whose expression
+    /// does not repeat) and wants only their answers, so compiling skips the work that
+    /// only many steps repay: the NFA's per-byte step tables (its steps OR the follow
+    /// rows of the active positions instead), the merging of positions always active
+    /// together, and the search for AOVs that can match no path
+    /// ([`crate::AovSet::warnings`] is then empty). Answers are the same either way;
+    /// [`crate::automata::automaton::Automaton::nfa_positions`] counts the unmerged
+    /// positions. With `dfa_budget: 0` as well, a compile is little more than the
+    /// Glushkov construction. Default `false`.
+    pub few_paths: bool,
 }
 
 impl Default for Options {
@@ -32,6 +42,7 @@ impl Default for Options {
             lazy_cache: 2 << 20,
             nfa_budget: 16 << 20,
             max_path_len: None,
+            few_paths: false,
         }
     }
 }
