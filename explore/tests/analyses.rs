@@ -444,3 +444,38 @@ fn paths_stop_at_the_step_limit_and_say_so() {
     assert_eq!(v["aovs"][0]["shortest"], json!([]));
     assert_eq!(v["aovs"][1]["shortest"].as_array().unwrap().len(), 3);
 }
+
+/// A list whose `paths` search takes exactly [`lpe_explore::paths::MAX_STEPS`] steps
+/// finishes; one step more would stop it. `a = C<RD>{20}L` has no path within 12
+/// vertices, so the search goes through all 12 lengths. `b = C(…)L` with 246 operands
+/// `(<RS'kN'><RS'kN'>*)` and one `<RS'q'>`; `z = C<RD>{30}(…)L` with `m` operands
+/// `<TS'zM'>`, which no walk of 12 vertices reaches but which are classes: 4 + 246 + 1 +
+/// `m` classes (`C`, `L`, `RD`, the rest; the labelled ones). Walks per length, each
+/// stepped over every class: the start, `C`; then at length 2 the `RD` chain's state,
+/// the 246 states of `kN` and the one of `q`: 248; from length 3 to 11 the chain, the
+/// 246 `kN` loops and 3 walks kept of the accepted state after `L`: 250 each. 1 + 1 +
+/// 248 + 9 × 250 = 2 500 walks; with `m = 149`, 400 classes: 1 000 000 steps, not
+/// truncated; with `m = 150`, 1 002 500: truncated.
+///
+/// Kills the mutants `paths.rs` shortest: `steps > MAX_STEPS` as `>=` or `==`.
+#[test]
+fn the_step_limit_is_exact() {
+    let aovs = |m: usize| {
+        let k: Vec<String> = (0..246)
+            .map(|n| format!("(<RS'k{n}'><RS'k{n}'>*)"))
+            .collect();
+        let z: Vec<String> = (0..m).map(|n| format!("<TS'z{n}'>")).collect();
+        format!(
+            "a = C<RD>{{20}}L\nb = C({}|<RS'q'>)L\nz = C<RD>{{30}}({})L",
+            k.join("|"),
+            z.join("|")
+        )
+    };
+    for (m, truncated) in [(149, false), (150, true)] {
+        let (status, v) = ask("paths", json!({ "aovs": aovs(m) }));
+        assert_eq!(status, 200, "{v}");
+        assert_eq!(v["truncated"], truncated, "m = {m}");
+    }
+    let (_, g) = ask("graph", json!({ "aovs": aovs(149) }));
+    assert_eq!(g["classes"].as_array().unwrap().len(), 400);
+}
