@@ -126,25 +126,17 @@ pub(crate) fn check_in<D: ExploreDialect>(request: &Request, setting: &Setting) 
     }
 }
 
-/// `e` placed in the line: its span moved by where the expression starts. A failure
-/// reported in another text (a macro's body) is underlined as the whole expression,
-/// with that text named in the message.
+/// `e` placed in the line: its span moved by where the expression starts. Both dialects
+/// report a failure in the text they were given (RenderMan a macro's own failure at
+/// the macro's name), so the span is always in the expression.
 fn placed(line: &Line, e: &ParseFailure) -> LineError {
-    let (span, message) = if e.source == line.source {
-        let at = line.offset;
-        (at + e.span.start..at + e.span.end, e.message.clone())
-    } else {
-        (
-            line.offset..line.offset + line.source.len(),
-            format!("{} (in `{}`)", e.message, e.source),
-        )
-    };
-    let (caret, column, length) = caret(&line.text, span);
+    let at = line.offset;
+    let (caret, column, length) = caret(&line.text, at + e.span.start..at + e.span.end);
     LineError {
         line: line.number,
         column,
         length,
-        message,
+        message: e.message.clone(),
         hint: e.help.clone(),
         caret,
     }

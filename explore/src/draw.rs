@@ -293,8 +293,10 @@ impl RenderBackend for Canvas {
         head: (bool, bool),
         look: &StyleAttr,
         properties: Option<String>,
-        text: &str,
+        _text: &str,
     ) {
+        // No text: the library moves every edge's label onto a connector node of its own
+        // before drawing (`VisualGraph::split_text_edges`), drawn by `draw_text`.
         // A path is an exit vector then entry vectors: a cubic Bézier, then smooth
         // continuations through each point (the library's own SVG backend reads it so).
         let [first, second, rest @ ..] = path else {
@@ -342,10 +344,6 @@ impl RenderBackend for Canvas {
             look.line_color.to_web_color(),
             look.line_width
         );
-        if !text.is_empty() {
-            let mid = path[path.len() / 2].0;
-            self.draw_text(mid, text, look);
-        }
     }
 
     fn create_clip(&mut self, _xy: Point, _size: Point, _rounded_px: usize) -> ClipHandle {

@@ -115,7 +115,8 @@ mod tests {
     }
 
     /// Caught a planted fault: the column counted bytes (`é` is two), putting the caret
-    /// one place too far right.
+    /// one place too far right. Kills the mutant `end += 1` as `end -= 1` (a span ending
+    /// inside `é` cut before it).
     #[test]
     fn caret_counts_characters_and_hides_tabs() {
         let (text, column, length) = caret("é\tab", 3..5);
@@ -129,5 +130,9 @@ mod tests {
         let (text, column, length) = caret("aéb", 2..3);
         assert_eq!(text, "aéb\n ^");
         assert_eq!((column, length), (2, 1));
+        // A span ending inside a character is widened to its end.
+        let (text, column, length) = caret("aéb", 0..2);
+        assert_eq!(text, "aéb\n^^");
+        assert_eq!((column, length), (1, 2));
     }
 }

@@ -141,7 +141,7 @@ fn shortest<D: Dialect + Checked>(
                 let mut longer = walk.clone();
                 longer.push(v.clone());
                 for i in set.matches(t).iter() {
-                    if i < found.len() && found[i].len() < SHORTEST && confirmed(set, i, &longer) {
+                    if found[i].len() < SHORTEST && confirmed(set, i, &longer) {
                         found[i].push(longer.clone());
                     }
                 }

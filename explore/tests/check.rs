@@ -1,7 +1,7 @@
 //! The `check` view and the request errors every view shares, through [`answer`] as the
 //! server calls it, against values worked out by hand from the text.
 
-use lpe_explore::{answer, MAX_BODY_BYTES};
+use lpe_explore::{answer, ApiError, MAX_BODY_BYTES};
 use serde_json::Value;
 
 /// The reply of `view` for `body`, its status and its JSON.
@@ -162,4 +162,103 @@ fn bad_requests_get_their_status() {
         .as_str()
         .unwrap()
         .contains("over the limit of 1048576"));
+}
+
+/// An error whose span is longer than one character is underlined whole, from where
+/// the expression starts in its line: `holdoutz;` is an unknown prefix of 9 characters
+/// at character 5 of `a = holdoutz;C.*L`.
+///
+/// Kills the mutant `check.rs` placed: `at + e.span.end` as `at - e.span.end` (the
+/// end before the start, clamped to the line's end: 13 carets).
+#[test]
+fn a_long_span_is_underlined_whole() {
+    let (_, v) = ask("check", r#"{"aovs": "a = holdoutz;C.*L"}"#);
+    let e = &v["lines"][0]["error"];
+    assert_eq!(e["message"], "unknown prefix `holdoutz`");
+    assert_eq!(
+        (e["column"].as_u64(), e["length"].as_u64()),
+        (Some(5), Some(9))
+    );
+    assert_eq!(e["caret"], "a = holdoutz;C.*L\n    ^^^^^^^^^");
+}
+
+/// A `dialect` that names the renderer's own dialect is no conflict: karma reads OSL.
+///
+/// Kills the mutant `request.rs` setting: the conflict guard `d != p.dialect()` as
+/// `true` (every request naming both refused).
+#[test]
+fn a_dialect_agreeing_with_the_renderer_is_accepted() {
+    let (status, v) = ask(
+        "check",
+        r#"{"aovs": "a = C<RD>L", "renderer": "karma", "dialect": "osl"}"#,
+    );
+    assert_eq!(status, 200, "{v}");
+    assert_eq!(
+        (v["dialect"].as_str(), v["renderer"].as_str()),
+        (Some("osl"), Some("karma"))
+    );
+    assert_eq!(v["lines"][0]["canonical"], "<C.><RD><L.>");
+}
+
+/// The body limit is exact: a body of exactly [`MAX_BODY_BYTES`] bytes (an empty list
+/// padded with blanks, which JSON allows) is read, one byte more is a 413.
+///
+/// Kills the mutant `request.rs` from_body: `body.len() > MAX_BODY_BYTES` as `>=`.
+#[test]
+fn the_body_limit_is_exact() {
+    let body = |len: usize| {
+        let head = r#"{"aovs": """#;
+        format!("{head}{}}}", " ".repeat(len - head.len() - 1))
+    };
+    assert_eq!(body(MAX_BODY_BYTES).len(), MAX_BODY_BYTES);
+    let (status, v) = ask("check", &body(MAX_BODY_BYTES));
+    assert_eq!(status, 200, "{v}");
+    assert_eq!(v["lines"], serde_json::json!([]));
+    let (status, v) = ask("check", &body(MAX_BODY_BYTES + 1));
+    assert_eq!(status, 413);
+    assert_eq!(
+        v["error"],
+        "the body is 1048577 bytes, over the limit of 1048576"
+    );
+}
+
+/// An [`ApiError`] prints as its status and message (the `Display` that makes it a
+/// `std::error::Error` for Rust callers).
+///
+/// Kills the mutant `request.rs`: `Display for ApiError` writing nothing.
+#[test]
+fn an_api_error_prints_its_status_and_message() {
+    assert_eq!(
+        ApiError::bad_request("no `aovs`").to_string(),
+        "400 no `aovs`"
+    );
+    assert_eq!(
+        ApiError::unprocessable("line 1 column 2").to_string(),
+        "422 line 1 column 2"
+    );
+}
+
+/// A renderer's profile registers what its renderer adds to the dialect: karma's
+/// `unoccluded;` prefix (profile/data/karma.toml) reads under `"renderer": "karma"` and
+/// is an unknown label in plain OSL.
+///
+/// Kills the mutant `request.rs` Setting::registration as `Default::default()` (the
+/// profile ignored).
+#[test]
+fn a_renderer_s_profile_registers_its_additions() {
+    let aovs = "b = unoccluded;C<RD>L";
+    let (_, v) = ask(
+        "check",
+        &serde_json::json!({"aovs": aovs, "renderer": "karma"}).to_string(),
+    );
+    assert_eq!(v["lines"][0]["canonical"], "unoccluded;<C.><RD><L.>", "{v}");
+    let (_, v) = ask(
+        "check",
+        &serde_json::json!({"aovs": aovs, "dialect": "osl"}).to_string(),
+    );
+    assert_eq!(v["lines"][0]["ok"], false, "{v}");
+    assert_eq!(
+        v["lines"][0]["error"]["message"],
+        "Unrecognized basic label: u"
+    );
 }
