@@ -245,3 +245,93 @@ fn the_views_read_ini_macros_expanded() {
     assert_eq!(key["canonical"], "C<RD>.*<L.'key'>", "{key}");
     assert!(written["files"][1]["aovs"].as_array().unwrap().is_empty());
 }
+
+/// `--dialect` and `--renderer` choose how every file is read, and the page says how
+/// each was read: `C<TG>L` (a glossy transmission, OSL only) is a parse error in
+/// RenderMan's dialect and reads in OSL's and under Karma; a stage that names its
+/// renderer says where. Faults caught: `--dialect` or `--renderer` not handed to lint
+/// (the list is read in RenderMan's dialect), the sentence empty or any other.
+#[test]
+fn the_dialect_and_renderer_arguments_choose_the_reading_the_page_names() {
+    let dir = scratch("reading");
+    let list = dir.join("aovs.txt");
+    std::fs::write(&list, "glossy = C<TG>L\n").unwrap();
+    let out = dir.join("report.html");
+    let read = |file: &str, args: &[&str]| -> Value {
+        let mut all = vec!["report", file, "--html", out.to_str().unwrap()];
+        all.extend(args);
+        let (code, _, stderr) = lpe_check(&all);
+        assert_eq!(code, 0, "{stderr}");
+        data(&std::fs::read_to_string(&out).unwrap())["files"][0].clone()
+    };
+    let list = list.to_str().unwrap();
+    let kinds = |entry: &Value| -> Vec<String> {
+        entry["findings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|f| f["kind"].as_str().unwrap().to_string())
+            .collect()
+    };
+    let plain = read(list, &[]);
+    assert_eq!(plain["reading"], "Read in the renderman dialect.");
+    assert_eq!(kinds(&plain), ["parse_error"]);
+    let osl = read(list, &["--dialect", "osl"]);
+    assert_eq!(osl["reading"], "Read in the osl dialect.");
+    assert_eq!(kinds(&osl), Vec::<String>::new());
+    assert!(
+        osl["views"]["check"]["lines"][0]["error"].is_null(),
+        "{osl}"
+    );
+    let karma = read(list, &["--renderer", "karma"]);
+    assert_eq!(
+        karma["reading"],
+        "Read as Karma (Houdini Solaris) does (karma)."
+    );
+    assert_eq!(kinds(&karma), Vec::<String>::new());
+    let stage = "tests/testdata/usd/karma_settings.usda";
+    assert_eq!(
+        read(stage, &[])["reading"],
+        format!(
+            "Read as Karma (Houdini Solaris) does (karma), named by {stage} (the `karma:` \
+             attributes of </settings>)."
+        )
+    );
+}
+
+/// An AOV list of exactly the explorer's body limit (1 MiB) is read; one byte more is
+/// an error naming the file, its size and the limit (exit 2), and no page is written.
+/// Faults caught: the size check as `>=` (the list at the limit refused) or as `==`
+/// (the larger list read).
+#[test]
+fn an_aov_list_is_read_up_to_1_mib() {
+    let dir = scratch("limit");
+    let list = dir.join("big.txt");
+    let out = dir.join("report.html");
+    let run = || {
+        lpe_check(&[
+            "report",
+            list.to_str().unwrap(),
+            "--html",
+            out.to_str().unwrap(),
+        ])
+    };
+    // One AOV, then a comment up to the limit.
+    let mut text = String::from("d = C<RD>L\n#");
+    text.push_str(&"x".repeat((1 << 20) - text.len()));
+    std::fs::write(&list, &text).unwrap();
+    let (code, _, stderr) = run();
+    assert_eq!(code, 0, "{stderr}");
+    let entry = &data(&std::fs::read_to_string(&out).unwrap())["files"][0];
+    assert_eq!(entry["aovs"][0]["name"], "d");
+    std::fs::remove_file(&out).unwrap();
+    text.push('x');
+    std::fs::write(&list, &text).unwrap();
+    let (code, _, stderr) = run();
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("big.txt: 1048577 bytes, over the 1048576-byte limit for AOV list files"),
+        "{stderr}"
+    );
+    assert!(!out.exists());
+}

@@ -410,3 +410,86 @@ impl Graph {
         Ok(None)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::budget::{AnalysisBudget, Meter};
+    use super::super::dnf::Conjunct;
+    use super::super::problem::Problem;
+    use super::super::search::analysis_options;
+    use crate::renderman::{self, RenderMan};
+
+    /// The letter-order search of [`Graph::first_in_order`] gets half the steps left, no
+    /// more: given exactly the steps that search takes, it stops at half of them and the
+    /// witness it was handed stands, half the steps charged; given twice as many, it
+    /// finishes and its own witness replaces the one handed in. Fault caught: `left() /
+    /// 2` as `* 2` (the search gets every step left and finishes in the first case).
+    #[test]
+    fn the_letter_order_search_gets_half_the_steps_left() {
+        let aovs = [("a".to_string(), renderman::parse("C<RD>L").unwrap())];
+        let problem = Problem::<RenderMan>::new(&aovs, &analysis_options()).unwrap();
+        let q = Conjunct {
+            must: vec![0],
+            must_not: vec![],
+        };
+        // The steps of the letter-order search for a witness of 3 letters: the camera,
+        // a diffuse reflection, a light.
+        let plenty = 1 << 20;
+        let mut probe = Meter::new(&AnalysisBudget::steps(plenty));
+        let first = problem.graph.first_of_length(&q, 3, &mut probe).unwrap();
+        let first = first.expect("C<RD>L has paths of 3 vertices");
+        let cost = plenty - probe.left();
+        assert!(cost >= 2, "{cost}");
+        // A stand-in for the breadth-first search's witness, no path at all, so that
+        // which of the two comes back shows.
+        let handed = vec![u32::MAX; 3];
+        let mut meter = Meter::new(&AnalysisBudget::steps(cost));
+        assert_eq!(
+            problem.graph.first_in_order(&q, handed.clone(), &mut meter),
+            handed
+        );
+        assert_eq!(meter.left(), cost - cost / 2);
+        let mut meter = Meter::new(&AnalysisBudget::steps(2 * cost));
+        assert_eq!(problem.graph.first_in_order(&q, handed, &mut meter), first);
+        assert_eq!(meter.left(), cost);
+    }
+
+    /// The failures the letter-order search remembers are keyed by the letters left
+    /// after the node: `C<RD>?<RS><TS>L` and `C<RS>?<RD><TS>L` each have one word of 5
+    /// vertices with the optional bounce taken, and whichever of `<RD>`, `<RS>` comes
+    /// first in letter order, one of the two searches reaches the bounce after the
+    /// optional one first after 2 letters (the optional one skipped), where it fails
+    /// with 3 left, and then after 3 letters, where the word goes on with 2. Both find their word of 5 and none of 6.
+    /// Fault caught: the letters left at a failure as `len / depth` instead of `len -
+    /// depth` (a failure with 3 left is taken for one with 2: the word is missed, the
+    /// search runs out and, popping its root, divides by zero).
+    #[test]
+    fn a_failure_is_remembered_with_the_letters_left_after_it() {
+        let aovs = [
+            (
+                "a".to_string(),
+                renderman::parse("C<RD>?<RS><TS>L").unwrap(),
+            ),
+            (
+                "b".to_string(),
+                renderman::parse("C<RS>?<RD><TS>L").unwrap(),
+            ),
+        ];
+        let problem = Problem::<RenderMan>::new(&aovs, &analysis_options()).unwrap();
+        for operand in [0, 1] {
+            let q = Conjunct {
+                must: vec![operand],
+                must_not: vec![],
+            };
+            let budget = AnalysisBudget::steps(1 << 20);
+            let found = |len| {
+                problem
+                    .graph
+                    .first_of_length(&q, len, &mut Meter::new(&budget))
+                    .unwrap()
+            };
+            assert_eq!(found(5).map(|w| w.len()), Some(5), "{operand}");
+            assert_eq!(found(6), None, "{operand}");
+        }
+    }
+}

@@ -34,7 +34,8 @@ impl From<Undecided> for Stop {
 
 /// Expressions compiled for the NFA route.
 pub(super) struct Problem<D: Dialect> {
-    graph: Graph,
+    /// The operands' NFA the searches run on.
+    pub(super) graph: Graph,
     /// Per letter of the graph, its representative vertex.
     vertices: Vec<D::Vertex>,
     /// Per expression, its formula over the operands.

@@ -232,7 +232,7 @@ fn answer(mut stream: TcpStream, response: &Response, limits: &Limits, unread: O
     }
 }
 
-fn write_response(stream: &mut TcpStream, r: &Response) -> io::Result<()> {
+fn write_response(stream: &mut impl Write, r: &Response) -> io::Result<()> {
     let mut head = format!(
         "HTTP/1.1 {} {}\r\nContent-Type: {}\r\nContent-Length: {}\r\nConnection: close\r\n\
          Cache-Control: no-store\r\nX-Content-Type-Options: nosniff\r\n",
@@ -554,5 +554,180 @@ mod tests {
         assert!(read(busy).starts_with("HTTP/1.1 200 "));
         assert!(read(queued).starts_with("HTTP/1.1 200 "));
         assert!(read(ask("/")).starts_with("HTTP/1.1 200 "));
+    }
+    /// A handler runs with room for deep recursion (the reference matcher recurses a few
+    /// frames per path vertex): one that takes 16 MiB of stack, 8 times a spawned
+    /// thread's default, answers. Fault caught: the workers' `256 << 20` bytes of stack
+    /// as `256 >> 20` (0: the smallest stack the system allows, and the test process
+    /// dies of a stack overflow).
+    #[test]
+    fn a_handler_has_room_for_deep_recursion() {
+        /// Recurses `n` deep on frames of at least 1 KiB; 0.
+        fn deep(n: usize) -> usize {
+            let frame = std::hint::black_box([0u8; 1024]);
+            if n == 0 {
+                return usize::from(frame[0]);
+            }
+            deep(n - 1) + usize::from(std::hint::black_box(frame[n % 1024]))
+        }
+        let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+        let port = listener.local_addr().unwrap().port();
+        std::thread::spawn(move || {
+            serve(listener, &limits(), |_: &Request| {
+                Response::json(200, deep(16 << 10).to_string())
+            })
+        });
+        let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
+        s.write_all(b"GET / HTTP/1.1\r\n\r\n").unwrap();
+        let mut out = String::new();
+        s.read_to_string(&mut out).unwrap();
+        assert!(out.starts_with("HTTP/1.1 200 OK"), "{out}");
+        assert!(out.ends_with("\r\n\r\n0"), "{out}");
+    }
+
+    /// A reader that hands out its bytes, then fails with an error of `kind`.
+    struct FailAfter<'a>(&'a [u8], io::ErrorKind);
+
+    impl Read for FailAfter<'_> {
+        fn read(&mut self, out: &mut [u8]) -> io::Result<usize> {
+            if self.0.is_empty() {
+                return Err(io::Error::new(self.1, "planted"));
+            }
+            let n = self.0.len().min(out.len());
+            out[..n].copy_from_slice(&self.0[..n]);
+            self.0 = &self.0[n..];
+            Ok(n)
+        }
+    }
+
+    /// A client that stops sending (the read timeout: `WouldBlock` or `TimedOut`) gets
+    /// 408 with the limit, in the head and in the body; any other read error is a 400
+    /// that says what failed. Faults caught: either match guard `is_timeout(&e)` as
+    /// `true` or `false`, `is_timeout` as `true` or `false`.
+    #[test]
+    fn a_client_that_stops_sending_gets_408_and_a_failed_read_400() {
+        let head: &[u8] = b"GET / HTTP/1.1\r\nHost: x\r\n";
+        let body: &[u8] = b"POST / HTTP/1.1\r\nContent-Length: 4\r\n\r\nab";
+        let stopped = "the request did not arrive within 1 s";
+        let failed = "reading the request: planted";
+        for text in [head, body] {
+            for (kind, status, message) in [
+                (io::ErrorKind::WouldBlock, 408, stopped),
+                (io::ErrorKind::TimedOut, 408, stopped),
+                (io::ErrorKind::ConnectionReset, 400, failed),
+            ] {
+                let r = read_request(&mut FailAfter(text, kind), &limits()).unwrap_err();
+                let said: serde_json::Value = serde_json::from_slice(&r.response.body).unwrap();
+                assert_eq!(
+                    (r.response.status, said["error"].as_str().unwrap()),
+                    (status, message),
+                    "{kind:?} after {}",
+                    String::from_utf8_lossy(text)
+                );
+            }
+        }
+    }
+
+    /// The head goes out with the status's reason phrase (RFC 9110), the fixed headers,
+    /// the response's own and the body. Faults caught: each arm of `reason` deleted (its
+    /// status then goes out as `Status`), `reason` as `""` or `"xyzzy"`.
+    #[test]
+    fn a_response_goes_out_with_its_reason_phrase_and_headers() {
+        let phrases = [
+            (200, "OK"),
+            (400, "Bad Request"),
+            (403, "Forbidden"),
+            (404, "Not Found"),
+            (405, "Method Not Allowed"),
+            (408, "Request Timeout"),
+            (411, "Length Required"),
+            (413, "Content Too Large"),
+            (422, "Unprocessable Content"),
+            (431, "Request Header Fields Too Large"),
+            (500, "Internal Server Error"),
+            (503, "Service Unavailable"),
+            (418, "Status"),
+        ];
+        for (status, phrase) in phrases {
+            let mut r = Response::json(status, "{}".into());
+            r.headers.push(("X-Test", "1".into()));
+            let mut out = Vec::new();
+            write_response(&mut out, &r).unwrap();
+            assert_eq!(
+                String::from_utf8(out).unwrap(),
+                format!(
+                    "HTTP/1.1 {status} {phrase}\r\nContent-Type: application/json\r\n\
+                     Content-Length: 2\r\nConnection: close\r\nCache-Control: no-store\r\n\
+                     X-Content-Type-Options: nosniff\r\nX-Test: 1\r\n\r\n{{}}"
+                )
+            );
+        }
+    }
+
+    /// After a refusal the worker waits for what the client still owes (up to 2 s) and
+    /// no longer: a client that sends nothing more holds it about 2 s, not the request
+    /// timeout (30 s here), and one that sends more than the refused body and a head
+    /// is cut off once it has read that much. Either way the next client is answered
+    /// after. Faults caught: the drain's `||` as `&&` (the read timeout never set: the
+    /// worker waits 30 s); its deadline now - 2 s, `left > 0` as `==` (no wait: the next
+    /// client answered at once); `unread + max_head` as `-` (0 - 64 wraps) or `*`,
+    /// `left > 0` as `>=` (the worker reads on to the deadline).
+    #[test]
+    fn a_refused_client_holds_its_worker_for_at_most_2_s() {
+        let listener = TcpListener::bind("127.0.0.1:0").unwrap();
+        let port = listener.local_addr().unwrap().port();
+        // A queue of 4: the next client may come before the worker took the last.
+        let limits = Limits {
+            queue: 4,
+            timeout: Duration::from_secs(30),
+            ..limits()
+        };
+        std::thread::spawn(move || {
+            serve(listener, &limits, |_: &Request| {
+                Response::json(200, "{}".into())
+            })
+        });
+        let connect = || TcpStream::connect(("127.0.0.1", port)).unwrap();
+        // How long the next client waits for its answer, which must be a 200.
+        let next_waits = || {
+            let started = Instant::now();
+            let mut s = connect();
+            s.set_read_timeout(Some(Duration::from_secs(10))).unwrap();
+            s.write_all(b"GET / HTTP/1.1\r\n\r\n").unwrap();
+            let mut out = String::new();
+            s.read_to_string(&mut out).unwrap();
+            assert!(out.starts_with("HTTP/1.1 200 OK"), "{out}");
+            started.elapsed()
+        };
+        // A body of 11 bytes over the limit of 10, none of it sent.
+        let mut silent = connect();
+        silent
+            .write_all(b"POST / HTTP/1.1\r\nContent-Length: 11\r\n\r\n")
+            .unwrap();
+        let mut answer = vec![0u8; 13];
+        silent.read_exact(&mut answer).unwrap();
+        assert_eq!(answer, b"HTTP/1.1 413 ");
+        let waited = next_waits();
+        assert!(
+            waited >= Duration::from_secs(1) && waited < Duration::from_secs(5),
+            "{waited:?}"
+        );
+        // A body over the limit sent whole and 400 000 bytes more, the socket left open:
+        // the worker reads the body and at most a head more (unread + 64 bytes; with 11,
+        // fewer than the head, with 100 000, far fewer than unread times 64), then
+        // closes.
+        let mut floods = Vec::new();
+        for length in [11, 100_000] {
+            let mut flood = connect();
+            let mut raw =
+                format!("POST / HTTP/1.1\r\nContent-Length: {length}\r\n\r\n").into_bytes();
+            raw.resize(raw.len() + length + 400_000, b'x');
+            // The server may close while this is still being sent: the write may fail.
+            let _ = flood.write_all(&raw);
+            let waited = next_waits();
+            assert!(waited < Duration::from_secs(1), "{length}: {waited:?}");
+            floods.push(flood);
+        }
+        drop((silent, floods));
     }
 }

@@ -88,6 +88,13 @@ fn with_data(data: &Value) -> String {
 mod tests {
     use super::*;
 
+    /// The data `page` was written with, read back from its data slot.
+    fn data_of(page: &str) -> Value {
+        let start = page.find(r#"id="lpe-data">"#).unwrap() + r#"id="lpe-data">"#.len();
+        let end = start + page[start..].find("</script>").unwrap();
+        serde_json::from_str(&page[start..end]).unwrap()
+    }
+
     /// The data reaches the page once and parses back whole, `</script>` in a name
     /// included. Fault caught: the data written unescaped (the page's script element
     /// ends inside it and the JSON read back is cut).
@@ -95,12 +102,28 @@ mod tests {
     fn data_survives_text_that_would_close_the_script() {
         assert_eq!(PAGE.matches(DATA_SLOT).count(), 1);
         let files = json!([{ "name": "a</script><script>alert(1)</script>.usda" }]);
-        let page = report(files.clone());
-        let start = page.find(r#"id="lpe-data">"#).unwrap() + r#"id="lpe-data">"#.len();
-        let end = start + page[start..].find("</script>").unwrap();
-        let data: Value = serde_json::from_str(&page[start..end]).unwrap();
+        let data = data_of(&report(files.clone()));
         assert_eq!(data["files"], files);
         assert_eq!(data["mode"], "report");
+    }
+
+    /// The served page starts in the language `serve` was given and offers both
+    /// dialects. Fault caught: `Start::json` as `null` (the page starts in its own
+    /// default, whatever `--renderer` said).
+    #[test]
+    fn the_served_page_starts_in_the_given_language() {
+        let data = data_of(&serving(&Start::new(None, Some("karma")).unwrap()));
+        assert_eq!(data["mode"], "serve");
+        assert_eq!(
+            data["start"],
+            json!({ "dialect": "osl", "renderer": "karma" })
+        );
+        let data = data_of(&serving(&Start::new(None, None).unwrap()));
+        assert_eq!(
+            data["start"],
+            json!({ "dialect": "renderman", "renderer": null })
+        );
+        assert_eq!(data["languages"]["dialects"], json!(["renderman", "osl"]));
     }
 
     /// Fault caught: a contradicting `--dialect` accepted.
