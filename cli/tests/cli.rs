@@ -178,7 +178,7 @@ fn a_default_diff_run_covers_every_grammar_production() {
     ];
     for (dialect, total, values) in [
         ("renderman", 77, [&both[..], &lobes[..]].concat()),
-        ("osl", 60, both.to_vec()),
+        ("osl", 66, both.to_vec()),
     ] {
         let (code, out, err) = lpe_check(&["diff", "--dialect", dialect, "--coverage"], "");
         assert_eq!(code, 0, "{out}{err}");
