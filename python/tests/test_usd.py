@@ -477,6 +477,20 @@ def test_the_renderer_is_named_by_an_lpe_attribute_or_the_settings_namespaces():
         assert f.message.startswith(KARMA_NEVER), declare
 
 
+def test_a_dialect_or_renderer_given_to_lint_outranks_the_one_the_stage_names():
+    # The stage names Karma, which labels no vertex S; the caller's choice wins, as on
+    # `lpe-check lint --dialect/--renderer`: RenderMan and hdPrman produce S vertices,
+    # so `C<RS>.*L` is no `never_produced` there. Planted fault, seen failing (by
+    # python/mutants.py): the stage's renderer taken when only one of dialect and
+    # renderer is unset (`&&` as `||`).
+    stage = Usd.Stage.CreateInMemory()
+    render_var(stage, "/Render/spec", "C<RS>.*L")
+    attribute(stage.DefinePrim("/World/notes"), "lpe:renderer", "karma")
+    assert [f.kind for f in lpe.lint(stage).findings] == ["never_produced"]
+    for given in ({"dialect": "renderman"}, {"renderer": "hdprman"}):
+        assert [f.kind for f in lpe.lint(stage, **given).findings] == [], given
+
+
 def test_a_relationship_with_a_group_attributes_name_carries_no_group():
     # Only an attribute's value is a group: the light carries none, and reading it
     # raises nothing.
