@@ -141,10 +141,10 @@ impl<D: Dialect> Engine<D> for Fast {
     /// The lazy DFA (`dfa_budget` 0) over an NFA compiled for a few paths
     /// ([`Options::few_paths`]: no per-byte step tables, no merging of co-active
     /// positions, no emptiness search), stepped on the NFA's wide state when it fits one
-    /// ([`FewPathsMatcher`]): the bare NFA is all it compiles. Building the whole minimized DFA of a counted
-    /// repetition costs as much as matching thousands of paths, and the step tables of a
-    /// 200-position NFA (256 KiB) several times a line's answer: a batch line whose
-    /// expression does not repeat would pay them for one path.
+    /// ([`FewPathsMatcher`]): the bare NFA is all it compiles. Building the whole
+    /// minimized DFA of a counted repetition costs as much as matching thousands of
+    /// paths, and the step tables of a 200-position NFA (256 KiB) several times a line's
+    /// answer: a batch line whose expression does not repeat would pay them for one path.
     fn compile_for_few_paths(
         &self,
         exprs: &[D::Lpe],
