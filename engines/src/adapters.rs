@@ -1,7 +1,7 @@
 //! The workspace's own matchers behind [`Engine`]: the backtracking reference and lpe's
 //! AOV set in its two stepping modes, each written once for every dialect.
 
-use lpe::{AovMask, AovSet, Dialect, Options, PathMatcher};
+use lpe::{AovMask, AovSet, Dialect, DirectSet, Options};
 
 use crate::dialect::ReferenceDialect;
 use crate::engine::{fits_mask, Engine, EngineError, Matcher};
@@ -73,18 +73,12 @@ impl<D: Dialect> Matcher<D> for AovSetMatcher<D> {
     }
 }
 
-/// A lazy set that answers a few paths: on its bitset NFA's wide state when it fits one
-/// ([`AovSet::nfa`]), which steps without the lazy DFA's registry and per-thread cache
-/// (a registry entry and a cache row allocated per step, for one path, cost more than
-/// the step); through the lazy DFA otherwise.
-struct FewPathsMatcher<D: Dialect>(AovSet<D>);
+/// A set that answers a few paths on the expression trees themselves ([`DirectSet`]).
+struct DirectMatcher<D: Dialect>(DirectSet<D>);
 
-impl<D: Dialect> Matcher<D> for FewPathsMatcher<D> {
+impl<D: Dialect> Matcher<D> for DirectMatcher<D> {
     fn which(&self, path: &D::Path) -> AovMask {
-        match self.0.nfa() {
-            Some(nfa) => nfa.match_vertices(D::vertices(path)),
-            None => self.0.match_path(path),
-        }
+        self.0.match_path(path)
     }
 }
 
@@ -116,15 +110,6 @@ pub(crate) fn nfa_only() -> Options {
     }
 }
 
-/// What [`Fast`] compiles for a few paths: the lazy DFA over a bare NFA.
-pub(crate) fn few_paths() -> Options {
-    Options {
-        dfa_budget: 0,
-        few_paths: true,
-        ..Options::default()
-    }
-}
-
 impl<D: Dialect> Engine<D> for Fast {
     fn name(&self) -> &'static str {
         "fast"
@@ -138,20 +123,17 @@ impl<D: Dialect> Engine<D> for Fast {
         compile_set(exprs, registration, &Options::default())
     }
 
-    /// The lazy DFA (`dfa_budget` 0) over an NFA compiled for a few paths
-    /// ([`Options::few_paths`]: no per-byte step tables, no merging of co-active
-    /// positions, no emptiness search), stepped on the NFA's wide state when it fits one
-    /// ([`FewPathsMatcher`]): the bare NFA is all it compiles. Building the whole
-    /// minimized DFA of a counted repetition costs as much as matching thousands of
-    /// paths, and the step tables of a 200-position NFA (256 KiB) several times a line's
-    /// answer: a batch line whose expression does not repeat would pay them for one path.
+    /// The expression trees evaluated on each path ([`DirectSet`]): compiling is one
+    /// walk of the tree and the vertex classes, where the NFA unrolls every counted
+    /// repetition (`.{150}` is 150 positions) and the DFA determinizes it, which a batch
+    /// line whose expression does not repeat would pay for one path.
     fn compile_for_few_paths(
         &self,
         exprs: &[D::Lpe],
-        registration: &D::Registration,
+        _: &D::Registration,
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
-        let set = AovSet::<D>::compile_under(&numbered(exprs), registration, &few_paths())?;
-        Ok(Box::new(FewPathsMatcher(set)))
+        let set = DirectSet::<D>::compile(&numbered(exprs))?;
+        Ok(Box::new(DirectMatcher(set)))
     }
 }
 

@@ -64,16 +64,18 @@ use crate::dialect::{Dialect, DialectLpe};
 
 /// The hidden AOVs of a set: every operand of set algebra is one, a plain AOV is one
 /// operand.
-struct Hidden<'a, E> {
-    operands: Vec<&'a E>,
+pub(crate) struct Hidden<'a, E> {
+    pub(crate) operands: Vec<&'a E>,
     /// Per hidden AOV, the name of the AOV it belongs to.
     names: Vec<String>,
     /// With set algebra: the visible masks as formulas over the hidden ones.
-    visible: Option<Visible>,
+    pub(crate) visible: Option<Visible>,
 }
 
 impl<'a, E> Hidden<'a, E> {
-    fn of<L: SetExpr<Operand = E>>(aovs: &'a [(String, L)]) -> Result<Self, CompileError> {
+    pub(crate) fn of<L: SetExpr<Operand = E>>(
+        aovs: &'a [(String, L)],
+    ) -> Result<Self, CompileError> {
         if aovs.len() > MAX_AOVS {
             return Err(CompileError::TooManyAovs(aovs.len()));
         }

@@ -49,7 +49,7 @@ pub trait Dialect: Copy + Default + fmt::Debug + Send + Sync + 'static {
     /// One operand: a regular expression over vertex patterns.
     type Expr: Regex<Atom = Self::Atom> + Clone + fmt::Debug + fmt::Display + Send + Sync;
     /// One vertex pattern.
-    type Atom: Eq + Hash + Clone + fmt::Debug + fmt::Display;
+    type Atom: Eq + Hash + Clone + fmt::Debug + fmt::Display + Send + Sync;
     /// One vertex of a path.
     type Vertex: Clone + fmt::Debug + fmt::Display + PartialEq + Send + Sync;
     /// A path, with its text notation.
@@ -88,6 +88,11 @@ pub trait Dialect: Copy + Default + fmt::Debug + Send + Sync + 'static {
         atoms: &[&Self::Atom],
         operands: &[&Self::Expr],
     ) -> Result<Self::Classes, CompileError>;
+    /// Whether `atom` accepts `vertex`: what [`Dialect::classes`] tabulates for a whole
+    /// set, decided for one vertex from the two alone. For matching a few paths
+    /// ([`crate::DirectSet`]), where building the classes costs more than asking about
+    /// the vertices of the paths.
+    fn accepts(atom: &Self::Atom, vertex: &Self::Vertex) -> bool;
     /// An expression every path the analyses report must also match, for a dialect whose
     /// [`Dialect::SHAPE`] alone admits sequences that are no paths; `None`: the shape
     /// is the whole domain.

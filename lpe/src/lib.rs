@@ -24,7 +24,8 @@
 //!   minimized DFA and the lazy DFA.
 //! - The facade ([`aov`]): [`AovSet`] compiles a list of AOVs of any dialect under
 //!   [`Options`] into one automaton and steps it; [`CompileError`] says why a set did
-//!   not compile.
+//!   not compile. [`direct`]'s [`DirectSet`] answers whole paths on the expression
+//!   trees, with no automaton: for a set asked about a few paths.
 //! - The seam ([`matcher`]): [`PathMatcher`], the incremental matcher trait renderers
 //!   program against; [`AovSet`] implements it.
 //! - The formal side ([`analysis`]): emptiness warnings (on the NFA alone), equivalence
@@ -106,6 +107,7 @@ pub mod aov;
 pub mod automata;
 mod bits;
 pub mod dialect;
+pub mod direct;
 pub mod fxhash;
 pub mod limits;
 pub mod matcher;
@@ -123,5 +125,6 @@ pub use automata::error::CompileError;
 pub use automata::mask::{AovMask, Class, State, MAX_AOVS};
 pub use automata::mask::{LabelId, NfaState};
 pub use dialect::{Dialect, DialectLpe};
+pub use direct::DirectSet;
 pub use matcher::PathMatcher;
 pub use registry::{DialectName, UnknownDialect};

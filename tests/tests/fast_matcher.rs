@@ -1,4 +1,9 @@
-//! The fast matcher (`lpe::aov`: DFA and bitset NFA) against the reference matcher.
+//! The fast matcher (`lpe::aov`: DFA and bitset NFA) and `lpe::DirectSet` (the trees
+//! evaluated on each path, what the fast engine compiles for a few paths) against the
+//! reference matcher. `DirectSet` shares lpe's parser and set-algebra formulas with the
+//! `AovSet`, not its atoms' acceptance (asked per vertex, where the `AovSet` tabulates
+//! classes: `renderman::alphabet`'s tests hold the two to each other on every vertex)
+//! nor its matching; the reference shares none of it.
 //!
 //! Expected answers always come from `reference`, never from the code under test. Random
 //! paths rarely match random expressions, so every case also samples paths *from* the
@@ -16,6 +21,7 @@ use lpe::renderman::macros::BASIC;
 use lpe::renderman::path::{Path, Vertex, VertexType};
 use lpe::renderman::{parse, Lpe, Parser, RenderMan};
 use lpe::rng::SplitMix64 as Rng;
+use lpe::DirectSet;
 use lpe_testkit::strategy;
 use lpe_tests::{expr_set, framed, named, vertex_pool};
 use proptest::prelude::*;
@@ -99,7 +105,7 @@ struct Stats {
     skipped: Cell<u64>,
 }
 
-/// Fast DFA, bitset NFA and reference agree on every path; incremental stepping from a
+/// Fast DFA, bitset NFA, direct set and reference agree on every path; incremental stepping from a
 /// saved state agrees with matching the spliced path; an AOV flagged empty matches
 /// nothing.
 fn check_set(exprs: &[Lpe], paths: &[Path], stats: &Stats) -> Result<(), TestCaseError> {
@@ -115,6 +121,7 @@ fn check_set(exprs: &[Lpe], paths: &[Path], stats: &Stats) -> Result<(), TestCas
             return Ok(());
         }
     };
+    let direct = DirectSet::compile(&aovs).expect("a set the AovSet compiles compiles directly");
     let empty: Vec<usize> = fast.warnings().iter().map(|w| w.aov).collect();
     for p in paths {
         let want: Vec<bool> = exprs
@@ -123,11 +130,19 @@ fn check_set(exprs: &[Lpe], paths: &[Path], stats: &Stats) -> Result<(), TestCas
             .collect();
         let got_fast = fast.match_path(p);
         let got_nfa = nfa.match_path(p);
+        let got_direct = direct.match_path(p);
         for (i, &w) in want.iter().enumerate() {
             stats.comparisons.set(stats.comparisons.get() + 1);
             stats.matches.set(stats.matches.get() + u64::from(w));
             prop_assert_eq!(got_fast.contains(i), w, "fast: `{}` on `{}`", exprs[i], p);
             prop_assert_eq!(got_nfa.contains(i), w, "nfa: `{}` on `{}`", exprs[i], p);
+            prop_assert_eq!(
+                got_direct.contains(i),
+                w,
+                "direct: `{}` on `{}`",
+                exprs[i],
+                p
+            );
             prop_assert!(
                 !(w && empty.contains(&i)),
                 "`{}` warned empty, matches `{}`",

@@ -193,6 +193,9 @@ impl Dialect for Letters {
     fn classes(atoms: &[&Atom], operands: &[&Expr]) -> Result<Alphabet, CompileError> {
         RenderMan::classes(atoms, operands)
     }
+    fn accepts(atom: &Atom, vertex: &Vertex) -> bool {
+        RenderMan::accepts(atom, vertex)
+    }
     fn alt(alternatives: Vec<Expr>) -> Expr {
         RenderMan::alt(alternatives)
     }

@@ -17,6 +17,8 @@
 //!   with the visible masks of set algebra;
 //! - `shape`: small DFAs over vertex places (camera, scatter, emitter) that searches run in
 //!   product with, so they visit only sequences of a path's shape;
+//! - `direct`: a whole path matched on the expression trees themselves, with no
+//!   automaton built, for a set asked about a few paths;
 //! - `emptiness`: which AOVs can match no path, a search on the NFA alone (no DFA, no
 //!   `AovSet`), so compiling a set can warn about them.
 //!
@@ -25,6 +27,7 @@
 pub mod automaton;
 pub(crate) mod coactive;
 pub(crate) mod dfa;
+pub(crate) mod direct;
 pub(crate) mod emptiness;
 pub mod error;
 pub mod ir;

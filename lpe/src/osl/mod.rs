@@ -110,6 +110,10 @@ impl Dialect for Osl {
         })
     }
 
+    fn accepts(atom: &VertexPattern, vertex: &Vertex) -> bool {
+        atom.accepts(&vertex.symbols)
+    }
+
     fn domain(registration: &Registered) -> Option<Lpe> {
         Some(parse(UNIVERSE, registration).expect("the OSL domain parses"))
     }

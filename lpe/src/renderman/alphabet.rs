@@ -294,7 +294,7 @@ impl Alphabet {
         // the label: their masks are worked out once.
         let blind: Vec<Option<TeMask>> = atoms
             .iter()
-            .map(|a| (!mentions_label(a)).then(|| atom_mask(a, 0, &labels)))
+            .map(|a| (!mentions_label(a)).then(|| atom_mask(a, &|_| false)))
             .collect();
         // Per label symbol, the 51 `(type, event)` pairs start as one block, and each atom
         // splits every block into the pairs it accepts and the rest. A block is
@@ -308,7 +308,8 @@ impl Alphabet {
             blocks.push((ALL_TYPE_EVENTS, l));
             sigs.resize(sigs.len() + words, 0);
             for (a, atom) in atoms.iter().enumerate() {
-                let accepted = blind[a].unwrap_or_else(|| atom_mask(atom, l, &labels));
+                let accepted =
+                    blind[a].unwrap_or_else(|| atom_mask(atom, &|name| label_is(name, l, &labels)));
                 for b in first..blocks.len() {
                     let (pairs, _) = blocks[b];
                     let (inside, outside) = (pairs & accepted, pairs & !accepted);
@@ -551,11 +552,21 @@ fn mentions_label(atom: &Atom) -> bool {
     }
 }
 
-/// The `(type, event)` pairs `atom` accepts with label symbol `l`.
-fn atom_mask(atom: &Atom, l: usize, labels: &LabelTable) -> TeMask {
-    let any = |items: &[Item]| items.iter().fold(0, |m, i| m | item_mask(i, l, labels));
+/// Whether `atom` accepts `v`: [`atom_mask`] asked about one vertex, its label compared
+/// by name, with no label table: for matching a few paths without building an alphabet
+/// ([`crate::DirectSet`]).
+pub(crate) fn atom_accepts(atom: &Atom, v: &Vertex) -> bool {
+    let te = TYPE_EVENT[type_event_code(v.ty(), v.event())];
+    atom_mask(atom, &|name| v.label() == Some(name)) >> te & 1 == 1
+}
+
+/// The `(type, event)` pairs `atom` accepts on a vertex whose label `is_label` tells
+/// (`is_label(name)`: the vertex's label is `name`; false for every name when it has
+/// none or one the expressions never mention).
+fn atom_mask(atom: &Atom, is_label: &impl Fn(&str) -> bool) -> TeMask {
+    let any = |items: &[Item]| items.iter().fold(0, |m, i| m | item_mask(i, is_label));
     match atom {
-        Atom::Item(item) => item_mask(item, l, labels),
+        Atom::Item(item) => item_mask(item, is_label),
         Atom::Class {
             negated: false,
             items,
@@ -568,7 +579,7 @@ fn atom_mask(atom: &Atom, l: usize, labels: &LabelTable) -> TeMask {
     }
 }
 
-fn item_mask(item: &Item, l: usize, labels: &LabelTable) -> TeMask {
+fn item_mask(item: &Item, is_label: &impl Fn(&str) -> bool) -> TeMask {
     match item {
         // `C`, `L`, `O`: the type, any label. `R`, `T`: the type with a D or S event.
         Item::Type(t) if t.is_scattering() => type_mask(*t) & TRANSPORT,
@@ -576,23 +587,23 @@ fn item_mask(item: &Item, l: usize, labels: &LabelTable) -> TeMask {
         // `D`, `S2`, `U3`: an R/T vertex with that event (user lobes only this way).
         Item::Event(p) => event_mask(*p),
         Item::Any => TRANSPORT,
-        Item::Label(name) if label_is(name, l, labels) => TRANSPORT,
+        Item::Label(name) if is_label(name) => TRANSPORT,
         Item::Label(_) => 0,
-        Item::Triple(t) => triple_mask(t, l, labels),
+        Item::Triple(t) => triple_mask(t, is_label),
     }
 }
 
 /// `<t e l>`: the product of what each position accepts; a negated class in a position
 /// is that position's `.` minus its items.
-fn triple_mask(t: &Triple, l: usize, labels: &LabelTable) -> TeMask {
+fn triple_mask(t: &Triple, is_label: &impl Fn(&str) -> bool) -> TeMask {
     let label_ok = match &t.label {
         // `.` in the label position: any label or none; `[^'a']` includes "no label".
         LabelPos::Any => true,
-        LabelPos::One(name) => label_is(name, l, labels),
+        LabelPos::One(name) => is_label(name),
         LabelPos::Class {
             negated,
             labels: names,
-        } => names.iter().any(|n| label_is(n, l, labels)) != *negated,
+        } => names.iter().any(|n| is_label(n)) != *negated,
     };
     if !label_ok {
         return 0;
@@ -844,6 +855,60 @@ mod tests {
             assert_eq!(al.class_count(), class_of.len(), "case {case}");
         }
     }
+    /// [`super::atom_accepts`], which decides one vertex with no label table (for
+    /// `DirectSet`), against the per-symbol predicates and the alphabet's classes, for
+    /// every atom of [`ATOMS`] on a vertex of every raw symbol: every type, event and
+    /// label symbol, a label no atom mentions included. Caught when planted: the label
+    /// compared as "has a label" rather than by name, the vertex's `(type, event)` bit
+    /// read with no event.
+    #[test]
+    fn one_vertex_is_accepted_as_its_class_is() {
+        let atoms: Vec<Atom> = ATOMS
+            .iter()
+            .map(|src| {
+                let mut one = Vec::new();
+                parse(src)
+                    .unwrap()
+                    .expr
+                    .for_each_atom(&mut |a| one.push(a.clone()));
+                one.remove(0)
+            })
+            .collect();
+        let chosen: Vec<&Atom> = atoms.iter().collect();
+        let mut labels: Vec<String> = Vec::new();
+        for a in &chosen {
+            labels.extend(Expr::Atom((*a).clone()).labels());
+        }
+        let al = Alphabet::new(&chosen, labels);
+        let stride = 1usize << al.label_shift;
+        let label_syms = al.labels.len() + 2;
+        let mut checked = 0;
+        for raw in (0..al.raw_to_class.len()).filter(|r| r % stride < label_syms) {
+            let sym = Alphabet::sym_of(&al.labels, al.label_shift, raw);
+            let label = match sym.label {
+                LabelSym::None => None,
+                LabelSym::Known(i) => Some(&*al.labels.names[i as usize]),
+                LabelSym::Other => Some("unmentioned"),
+            };
+            let v = match (sym.ty, sym.event) {
+                (VertexType::C, _) => Vertex::camera(),
+                (VertexType::L, _) => Vertex::light(label),
+                (VertexType::O, _) => Vertex::emissive(label),
+                (ty, Some(e)) => Vertex::scatter(ty, e, label),
+                (_, None) => continue,
+            };
+            let class = al.classify(&v).index();
+            for (i, a) in chosen.iter().enumerate() {
+                let want = per_symbol::atom_accepts(a, &sym, &al.labels);
+                assert_eq!(super::atom_accepts(a, &v), want, "{a:?} on {v}");
+                assert_eq!(al.accepts(class, i), want, "{a:?} on {v}");
+                checked += 1;
+            }
+        }
+        // Every raw symbol made a vertex: 51 `(type, event)` pairs by every label symbol.
+        assert_eq!(checked, 51 * label_syms * ATOMS.len());
+    }
+
     use crate::renderman::parse;
 
     fn alphabet(src: &str) -> (Alphabet, Vec<Atom>) {

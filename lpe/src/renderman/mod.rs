@@ -91,6 +91,10 @@ impl Dialect for RenderMan {
         Ok(Alphabet::new(atoms, labels))
     }
 
+    fn accepts(atom: &Atom, vertex: &Vertex) -> bool {
+        alphabet::atom_accepts(atom, vertex)
+    }
+
     fn alt(alternatives: Vec<Expr>) -> Expr {
         Expr::alt(alternatives)
     }

@@ -1,0 +1,336 @@
+//! Matching a whole path without building an automaton: each expression tree evaluated
+//! on the path, node by node, as a set of positions (bit `i`: the first `i` vertices are
+//! read). What a set asked about a single path needs: compiling is one walk of the tree,
+//! where the Glushkov NFA unrolls every counted repetition (`.{150}` is 150 positions,
+//! here one node) and the DFA determinizes it.
+//!
+//! A node maps the set of positions it may start at to the set it may end at:
+//! - an atom reads one vertex: `(S & accepted) << 1`, `accepted` the positions whose
+//!   vertex the atom accepts;
+//! - a sequence applies its parts in turn, an alternation unites its alternatives;
+//! - `e{n,m}` unites `T_n ..= T_m`, where `T_0 = S` and `T_(k+1)` is `e` applied to
+//!   `T_k` ([`Program::repeat`] says why that stops within `len + 2` applications).
+//!
+//! The expression matches the path when the root, started at `{0}`, can end at `len`.
+
+use std::collections::HashMap;
+use std::hash::Hash;
+
+use crate::automata::ir::{Node, Regex, Repetition};
+use crate::automata::mask::AovMask;
+
+/// The trees of a set's hidden AOVs, flattened in preorder so that evaluating a path
+/// walks a slice, with each distinct atom numbered in first-seen order.
+#[derive(Clone, Debug)]
+pub(crate) struct Program {
+    ops: Vec<Op>,
+    /// Per hidden AOV, the index of its root in `ops`.
+    roots: Vec<u32>,
+    /// How many distinct atoms the `Op::Atom`s number.
+    atoms: usize,
+}
+
+/// One node of a flattened tree. `end` is the index just past the node's subtree, so
+/// the children of a sequence or an alternation are found by jumping from one `end` to
+/// the next.
+#[derive(Clone, Copy, Debug)]
+enum Op {
+    Atom(u32),
+    Concat {
+        end: u32,
+    },
+    Alt {
+        end: u32,
+    },
+    /// The body is the next node.
+    Repeat {
+        rep: Repetition,
+        end: u32,
+    },
+    Empty,
+}
+
+impl Program {
+    /// The program of `exprs`, one hidden AOV each, in order, and their distinct atoms in
+    /// first-seen order.
+    pub(crate) fn new<'a, E: Regex>(exprs: &[&'a E]) -> (Program, Vec<&'a E::Atom>)
+    where
+        E::Atom: Eq + Hash,
+    {
+        let mut flat = Flatten {
+            ops: Vec::new(),
+            atoms: Vec::new(),
+            index: HashMap::new(),
+        };
+        let roots = exprs
+            .iter()
+            .map(|e| {
+                let root = flat.ops.len() as u32;
+                flat.push(*e);
+                root
+            })
+            .collect();
+        let program = Program {
+            ops: flat.ops,
+            roots,
+            atoms: flat.atoms.len(),
+        };
+        (program, flat.atoms)
+    }
+
+    /// The hidden AOVs matching the whole path of `len` vertices, where distinct atom `a`
+    /// accepts vertex `i` when `accepts(a, i)`.
+    pub(crate) fn matches(&self, len: usize, accepts: impl Fn(usize, usize) -> bool) -> AovMask {
+        if len < u64::BITS as usize {
+            self.matches_on::<u64>(len, accepts)
+        } else {
+            self.matches_on::<Wide>(len, accepts)
+        }
+    }
+
+    fn matches_on<P: Positions>(
+        &self,
+        len: usize,
+        accepts: impl Fn(usize, usize) -> bool,
+    ) -> AovMask {
+        let mut accepted = vec![P::none(len); self.atoms];
+        for (a, acc) in accepted.iter_mut().enumerate() {
+            for i in 0..len {
+                if accepts(a, i) {
+                    acc.insert(i);
+                }
+            }
+        }
+        let eval = Eval {
+            ops: &self.ops,
+            accepted: &accepted,
+        };
+        let mut start = P::none(len);
+        start.insert(0);
+        self.roots
+            .iter()
+            .enumerate()
+            .filter(|(_, &root)| eval.run(root as usize, &start).0.contains(len))
+            .map(|(hidden, _)| hidden)
+            .collect()
+    }
+
+    /// Bytes held.
+    pub(crate) fn memory_bytes(&self) -> usize {
+        self.ops.capacity() * std::mem::size_of::<Op>() + self.roots.capacity() * 4
+    }
+}
+
+/// The flattening walk of [`Program::new`].
+struct Flatten<'a, A> {
+    ops: Vec<Op>,
+    atoms: Vec<&'a A>,
+    index: HashMap<&'a A, u32>,
+}
+
+impl<'a, A: Eq + Hash> Flatten<'a, A> {
+    fn push<E: Regex<Atom = A>>(&mut self, e: &'a E) {
+        let at = self.ops.len();
+        match e.node() {
+            Node::Atom(a) => {
+                let next = self.atoms.len() as u32;
+                let id = *self.index.entry(a).or_insert(next);
+                if id == next {
+                    self.atoms.push(a);
+                }
+                self.ops.push(Op::Atom(id));
+            }
+            Node::Empty => self.ops.push(Op::Empty),
+            Node::Concat(es) | Node::Alt(es) => {
+                self.ops.push(Op::Empty);
+                for e in es {
+                    self.push(e);
+                }
+                let end = self.ops.len() as u32;
+                self.ops[at] = match e.node() {
+                    Node::Concat(_) => Op::Concat { end },
+                    _ => Op::Alt { end },
+                };
+            }
+            Node::Repeat(body, rep) => {
+                self.ops.push(Op::Empty);
+                self.push(body);
+                let end = self.ops.len() as u32;
+                self.ops[at] = Op::Repeat { rep, end };
+            }
+        }
+    }
+}
+
+/// One path's evaluation: the program and, per distinct atom, the positions whose
+/// vertex it accepts.
+struct Eval<'p, P> {
+    ops: &'p [Op],
+    accepted: &'p [P],
+}
+
+impl<P: Positions> Eval<'_, P> {
+    /// Where the node at `at` may end when started anywhere in `start`, and the index
+    /// past its subtree.
+    fn run(&self, at: usize, start: &P) -> (P, usize) {
+        match self.ops[at] {
+            Op::Atom(a) => (start.read(&self.accepted[a as usize]), at + 1),
+            Op::Empty => (start.clone(), at + 1),
+            Op::Concat { end } => {
+                let end = end as usize;
+                let mut s = start.clone();
+                let mut child = at + 1;
+                while child < end {
+                    // Every later part reads from nowhere once nothing is left.
+                    if s.is_empty() {
+                        return (s, end);
+                    }
+                    (s, child) = self.run(child, &s);
+                }
+                (s, end)
+            }
+            Op::Alt { end } => {
+                let end = end as usize;
+                let mut out = P::none_like(start);
+                let mut child = at + 1;
+                while child < end {
+                    let (s, next) = self.run(child, start);
+                    out.union(&s);
+                    child = next;
+                }
+                (out, end)
+            }
+            Op::Repeat { rep, end } => (self.repeat(at + 1, rep, start), end as usize),
+        }
+    }
+
+    /// `e{n,m}` on `start`: the union of `T_n ..= T_m`, `T_0 = start`, `T_(k+1)` the body
+    /// `e` applied to `T_k`. It stops early, and within `len + 2` applications of the
+    /// body whatever `n` and `m` are (so `.{100000}` costs what `.{len + 1}` does):
+    /// - Below `n`: at an empty `T_k` (every later one is empty), or at `T_(k+1) = T_k`
+    ///   (every later one is the same set, so the union is that set). One of the two
+    ///   comes within `len + 1` steps: a body that cannot match the empty sequence moves
+    ///   the first position of `T_k` forward at every step, so `T_k` is empty by
+    ///   `k = len + 1`; one that can keeps every position (`T_k` within `T_(k+1)`), so
+    ///   the sets grow until they stop growing, at most `len + 1` times.
+    /// - From `n` on: at a `T_k` inside the union `U` so far (`T_n ..= T_(k-1)`). Every
+    ///   later set is then inside `U` too: `T_(k+1)` is the body applied to `T_k`, which
+    ///   is within the body applied to `U`, that is `T_(n+1) ..= T_k`, within `U`. Each
+    ///   step that does not stop adds a position to `U`, of which there are `len + 1`.
+    ///
+    /// `m < n` repeats `n` times, as the NFA builds it.
+    fn repeat(&self, body: usize, rep: Repetition, start: &P) -> P {
+        let mut t = start.clone();
+        let mut k = 0u32;
+        while k < rep.min {
+            let (next, _) = self.run(body, &t);
+            k += 1;
+            if next.is_empty() || next == t {
+                return next;
+            }
+            t = next;
+        }
+        let max = rep.max.map(|m| m.max(rep.min));
+        let mut out = t.clone();
+        while max.is_none_or(|m| k < m) {
+            let (next, _) = self.run(body, &t);
+            k += 1;
+            if next.is_subset(&out) {
+                break;
+            }
+            out.union(&next);
+            t = next;
+        }
+        out
+    }
+}
+
+/// A set of positions `0..=len` of a path of `len` vertices.
+trait Positions: Clone + PartialEq {
+    /// The empty set, for a path of `len` vertices.
+    fn none(len: usize) -> Self;
+    /// The empty set, of the width of `like`.
+    fn none_like(like: &Self) -> Self;
+    fn insert(&mut self, i: usize);
+    fn contains(&self, i: usize) -> bool;
+    fn is_empty(&self) -> bool;
+    fn is_subset(&self, of: &Self) -> bool;
+    fn union(&mut self, other: &Self);
+    /// Reads one vertex: the positions after the ones of `self` whose vertex is in
+    /// `accepted`.
+    fn read(&self, accepted: &Self) -> Self;
+}
+
+/// A path of fewer than 64 vertices: its `len + 1` positions fit a word.
+impl Positions for u64 {
+    fn none(_: usize) -> Self {
+        0
+    }
+    fn none_like(_: &Self) -> Self {
+        0
+    }
+    fn insert(&mut self, i: usize) {
+        *self |= 1 << i;
+    }
+    fn contains(&self, i: usize) -> bool {
+        self >> i & 1 == 1
+    }
+    fn is_empty(&self) -> bool {
+        *self == 0
+    }
+    fn is_subset(&self, of: &Self) -> bool {
+        self & !of == 0
+    }
+    fn union(&mut self, other: &Self) {
+        *self |= other;
+    }
+    fn read(&self, accepted: &Self) -> Self {
+        // No position past `len` is ever set: `accepted` has bits below `len` only.
+        (self & accepted) << 1
+    }
+}
+
+/// A longer path: a word per 64 positions.
+#[derive(Clone, PartialEq, Debug)]
+struct Wide(Vec<u64>);
+
+impl Positions for Wide {
+    fn none(len: usize) -> Self {
+        Wide(vec![0; (len + 1).div_ceil(64)])
+    }
+    fn none_like(like: &Self) -> Self {
+        Wide(vec![0; like.0.len()])
+    }
+    fn insert(&mut self, i: usize) {
+        self.0[i / 64] |= 1 << (i % 64);
+    }
+    fn contains(&self, i: usize) -> bool {
+        self.0[i / 64] >> (i % 64) & 1 == 1
+    }
+    fn is_empty(&self) -> bool {
+        self.0.iter().all(|&w| w == 0)
+    }
+    fn is_subset(&self, of: &Self) -> bool {
+        self.0.iter().zip(&of.0).all(|(a, b)| a & !b == 0)
+    }
+    fn union(&mut self, other: &Self) {
+        for (a, b) in self.0.iter_mut().zip(&other.0) {
+            *a |= b;
+        }
+    }
+    fn read(&self, accepted: &Self) -> Self {
+        let mut carry = 0;
+        let words = self
+            .0
+            .iter()
+            .zip(&accepted.0)
+            .map(|(s, a)| {
+                let w = s & a;
+                let shifted = w << 1 | carry;
+                carry = w >> 63;
+                shifted
+            })
+            .collect();
+        Wide(words)
+    }
+}
