@@ -48,6 +48,18 @@ pub trait Engine<D: Dialect>: Sync {
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
         self.compile(exprs, registration)
     }
+
+    /// Compiles a set that will answer some hundreds of paths (a batch expression that
+    /// has repeated, but not yet thousands of times): cheap to compile and fast to step
+    /// once warm, where [`Engine::compile`] may spend as much as thousands of lines to
+    /// step fastest. By default the same as [`Engine::compile`].
+    fn compile_for_some_paths(
+        &self,
+        exprs: &[D::Lpe],
+        registration: &D::Registration,
+    ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+        self.compile(exprs, registration)
+    }
 }
 
 /// Refuses a set wider than an [`AovMask`]: the engines that answer one expression at a

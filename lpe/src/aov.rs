@@ -256,6 +256,15 @@ impl<D: Dialect> AovSet<D> {
         Ok((classes, nfa, formulas))
     }
 
+    /// Whether the NFA of the hidden AOVs `exprs` fits [`Options::nfa_budget`], counted
+    /// without building it.
+    pub(crate) fn check_positions(exprs: &[&D::Expr], opts: &Options) -> Result<(), CompileError> {
+        let positions = exprs.iter().fold(1u64, |n, e| {
+            n.saturating_add(D::positions(e, opts.max_path_len))
+        });
+        Self::check_nfa_budget(positions, opts)
+    }
+
     /// One follow row per position is the least an NFA needs: `positions^2 / 8` bytes.
     fn check_nfa_budget(positions: u64, opts: &Options) -> Result<(), CompileError> {
         let rows = positions
@@ -278,10 +287,7 @@ impl<D: Dialect> AovSet<D> {
         exprs: &[&'a D::Expr],
         opts: &Options,
     ) -> Result<(D::Classes, Nfa, Vec<&'a D::Atom>), CompileError> {
-        let positions = exprs.iter().fold(1u64, |n, e| {
-            n.saturating_add(D::positions(e, opts.max_path_len))
-        });
-        Self::check_nfa_budget(positions, opts)?;
+        Self::check_positions(exprs, opts)?;
         let (builder, parts) = Builder::of_all(exprs.iter().copied(), opts.max_path_len);
         let classes = D::classes(&builder.atoms, exprs)?;
         // Borrowed from `aovs`: the analysis outlives the builder, which the NFA consumes.

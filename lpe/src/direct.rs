@@ -22,7 +22,7 @@
 //! assert!(set.match_path(&far.parse().unwrap()).contains(0));
 //! ```
 
-use crate::aov::Hidden;
+use crate::aov::{AovSet, Hidden, Options};
 use crate::automata::direct::Program;
 use crate::automata::error::CompileError;
 use crate::automata::mask::AovMask;
@@ -52,11 +52,34 @@ impl<D: Dialect> DirectSet<D> {
         L: DialectLpe<Dialect = D>,
         D: Dialect<Lpe = L>,
     {
-        Self::compile_lpes(aovs)
+        Self::compile_lpes(aovs, None)
     }
 
-    fn compile_lpes(aovs: &[(String, D::Lpe)]) -> Result<DirectSet<D>, CompileError> {
+    /// [`DirectSet::compile`], refusing as well what an [`AovSet`](crate::AovSet)
+    /// compiled with `opts` refuses for its NFA's size ([`Options::nfa_budget`],
+    /// counted without building anything), so that a caller who answers the first
+    /// paths with this set and the rest with an `AovSet` (`lpe-check match --batch`)
+    /// refuses such an expression from its first path rather than from its
+    /// 256th.
+    pub fn compile_within<L>(
+        aovs: &[(String, L)],
+        opts: &Options,
+    ) -> Result<DirectSet<D>, CompileError>
+    where
+        L: DialectLpe<Dialect = D>,
+        D: Dialect<Lpe = L>,
+    {
+        Self::compile_lpes(aovs, Some(opts))
+    }
+
+    fn compile_lpes(
+        aovs: &[(String, D::Lpe)],
+        within: Option<&Options>,
+    ) -> Result<DirectSet<D>, CompileError> {
         let hidden = Hidden::of(aovs)?;
+        if let Some(opts) = within {
+            AovSet::<D>::check_positions(&hidden.operands, opts)?;
+        }
         let (program, atoms) = Program::new(&hidden.operands);
         Ok(DirectSet {
             atoms: atoms.into_iter().cloned().collect(),
@@ -208,6 +231,24 @@ mod tests {
         assert_eq!(answers(&s, &p("C RD'floor' L'key'")), [0, 2]);
         assert_eq!(answers(&s, &p("C RD'wall' L'key'")), [2]);
         assert_eq!(answers(&s, &p("C TS L")), [1]);
+    }
+
+    /// `compile_within` refuses what the `AovSet` refuses for its NFA's size, counted
+    /// as the `AovSet` counts (256 * 200 positions, past the 16 MiB default), while
+    /// `compile` builds it: it unrolls nothing. Caught: the budget not checked.
+    #[test]
+    fn compile_within_refuses_an_nfa_over_its_budget() {
+        let aovs: Vec<(String, Lpe)> = vec![("huge".into(), parse("C(.{256}){200}L").unwrap())];
+        let refused = DirectSet::<RenderMan>::compile_within(&aovs, &crate::Options::default());
+        assert!(
+            matches!(refused, Err(crate::CompileError::NfaOverBudget { .. })),
+            "{refused:?}"
+        );
+        assert!(crate::AovSet::compile(&aovs).is_err());
+        let built = DirectSet::<RenderMan>::compile(&aovs).unwrap();
+        assert!(built.match_path(&bounces(3)).is_empty());
+        let fits = DirectSet::<RenderMan>::compile_within(&aovs[..0], &crate::Options::default());
+        assert!(fits.is_ok_and(|s| s.is_empty()));
     }
 
     /// The OSL dialect: events of any length, custom labels through the registration.

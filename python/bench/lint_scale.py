@@ -234,12 +234,13 @@ def time_batch(lpe_check, tsv, engine):
 
 def distinct_rows(lpe_check, n, tmp):
     """`--batch` on N lines that each bring their own expression, over the first N paths
-    of the draw: both engines must give the same answers."""
+    of the draw: both engines must give the same answers (`batch_inputs.py` times more
+    shapes of input)."""
     ps = match_many.paths(n)
     tsv = os.path.join(tmp, "distinct.tsv")
     with open(tsv, "w") as f:
         for i, p in enumerate(ps):
-            f.write(f"C.{{{i % 200}}}[LO]|C<RD'l{i}'>.*L\t{p}\n")
+            f.write(f"(C.{{{i % 200}}}[LO])|(C<RD'l{i}'>.*L)\t{p}\n")
     rows, answers = [], []
     for engine in ("fast", "reference"):
         t, out = time_batch(lpe_check, tsv, engine)

@@ -15,8 +15,8 @@
 //! `--batch` streams: one line in, one line out, with bounded memory. Each distinct
 //! expression (with its registration) is parsed once and kept for the lines that repeat
 //! it ([`BatchCache`], at most [`MAX_CACHED_EXPRESSIONS`] at a time): every engine
-//! compiles it for a few paths, and again in full once [`UPGRADE_AFTER_USES`] lines
-//! have asked for it. A long run reports its progress on stderr every few seconds.
+//! compiles it for a few paths, again for some once [`SOME_PATHS_AT`] lines have asked
+//! for it, and in full at [`MANY_PATHS_AT`] lines. A long run reports its progress on stderr every few seconds.
 
 use std::process::ExitCode;
 
@@ -31,7 +31,7 @@ pub mod renderman;
 
 pub use answer::{
     answer_paths, batch, verdict, Args, BatchCache, Compiled, Expected, LineOutcome, Verdict,
-    MAX_CACHED_EXPRESSIONS, UPGRADE_AFTER_USES,
+    MANY_PATHS_AT, MAX_CACHED_EXPRESSIONS, SOME_PATHS_AT,
 };
 pub use dialect::MatchDialect;
 

@@ -6,7 +6,9 @@
 //!
 //! A node maps the set of positions it may start at to the set it may end at:
 //! - an atom reads one vertex: `(S & accepted) << 1`, `accepted` the positions whose
-//!   vertex the atom accepts;
+//!   vertex the atom accepts, asked of the dialect only at the positions some `S` has
+//!   reached (and once each): `C[…40 items…]*L` on a path whose second vertex none of
+//!   the items accepts asks 40 questions, not 40 per vertex;
 //! - a sequence applies its parts in turn, an alternation unites its alternatives;
 //! - `e{n,m}` unites `T_n ..= T_m`, where `T_0 = S` and `T_(k+1)` is `e` applied to
 //!   `T_k` ([`Program::repeat`] says why that stops within `len + 2` applications).
@@ -93,17 +95,12 @@ impl Program {
         len: usize,
         accepts: impl Fn(usize, usize) -> bool,
     ) -> AovMask {
-        let mut accepted = vec![P::none(len); self.atoms];
-        for (a, acc) in accepted.iter_mut().enumerate() {
-            for i in 0..len {
-                if accepts(a, i) {
-                    acc.insert(i);
-                }
-            }
-        }
-        let eval = Eval {
+        let mut eval = Eval {
             ops: &self.ops,
-            accepted: &accepted,
+            len,
+            accepted: vec![P::none(len); self.atoms],
+            asked: vec![P::none(len); self.atoms],
+            accepts,
         };
         let mut start = P::none(len);
         start.insert(0);
@@ -163,18 +160,36 @@ impl<'a, A: Eq + Hash> Flatten<'a, A> {
 }
 
 /// One path's evaluation: the program and, per distinct atom, the positions whose
-/// vertex it accepts.
-struct Eval<'p, P> {
+/// vertex it accepts among those asked so far.
+struct Eval<'p, P, F> {
     ops: &'p [Op],
-    accepted: &'p [P],
+    /// The path's vertices.
+    len: usize,
+    accepted: Vec<P>,
+    asked: Vec<P>,
+    /// Whether distinct atom `a` accepts vertex `i`.
+    accepts: F,
 }
 
-impl<P: Positions> Eval<'_, P> {
+impl<P: Positions, F: Fn(usize, usize) -> bool> Eval<'_, P, F> {
+    /// The positions of `start` whose vertex atom `a` accepts (before each, the vertex
+    /// asked about unless it was before).
+    fn accepted(&mut self, a: usize, start: &P) -> &P {
+        let fresh = start.minus(&self.asked[a]);
+        fresh.each(self.len, |i| {
+            if (self.accepts)(a, i) {
+                self.accepted[a].insert(i);
+            }
+        });
+        self.asked[a].union(&fresh);
+        &self.accepted[a]
+    }
+
     /// Where the node at `at` may end when started anywhere in `start`, and the index
     /// past its subtree.
-    fn run(&self, at: usize, start: &P) -> (P, usize) {
+    fn run(&mut self, at: usize, start: &P) -> (P, usize) {
         match self.ops[at] {
-            Op::Atom(a) => (start.read(&self.accepted[a as usize]), at + 1),
+            Op::Atom(a) => (start.read(self.accepted(a as usize, start)), at + 1),
             Op::Empty => (start.clone(), at + 1),
             Op::Concat { end } => {
                 let end = end as usize;
@@ -219,7 +234,7 @@ impl<P: Positions> Eval<'_, P> {
     ///   step that does not stop adds a position to `U`, of which there are `len + 1`.
     ///
     /// `m < n` repeats `n` times, as the NFA builds it.
-    fn repeat(&self, body: usize, rep: Repetition, start: &P) -> P {
+    fn repeat(&mut self, body: usize, rep: Repetition, start: &P) -> P {
         let mut t = start.clone();
         let mut k = 0u32;
         while k < rep.min {
@@ -256,6 +271,10 @@ trait Positions: Clone + PartialEq {
     fn is_empty(&self) -> bool;
     fn is_subset(&self, of: &Self) -> bool;
     fn union(&mut self, other: &Self);
+    /// The positions of `self` not in `other`.
+    fn minus(&self, other: &Self) -> Self;
+    /// Calls `f` on each position below `len`, in order.
+    fn each(&self, len: usize, f: impl FnMut(usize));
     /// Reads one vertex: the positions after the ones of `self` whose vertex is in
     /// `accepted`.
     fn read(&self, accepted: &Self) -> Self;
@@ -284,8 +303,23 @@ impl Positions for u64 {
     fn union(&mut self, other: &Self) {
         *self |= other;
     }
+    fn minus(&self, other: &Self) -> Self {
+        self & !other
+    }
+    fn each(&self, len: usize, mut f: impl FnMut(usize)) {
+        let mut rest = *self;
+        while rest != 0 {
+            let i = rest.trailing_zeros() as usize;
+            if i >= len {
+                break;
+            }
+            f(i);
+            rest &= rest - 1;
+        }
+    }
     fn read(&self, accepted: &Self) -> Self {
-        // No position past `len` is ever set: `accepted` has bits below `len` only.
+        // No position past `len` is ever set: `accepted` has bits below `len` only
+        // (`each` stops there).
         (self & accepted) << 1
     }
 }
@@ -316,6 +350,22 @@ impl Positions for Wide {
     fn union(&mut self, other: &Self) {
         for (a, b) in self.0.iter_mut().zip(&other.0) {
             *a |= b;
+        }
+    }
+    fn minus(&self, other: &Self) -> Self {
+        Wide(self.0.iter().zip(&other.0).map(|(a, b)| a & !b).collect())
+    }
+    fn each(&self, len: usize, mut f: impl FnMut(usize)) {
+        for (w, &word) in self.0.iter().enumerate() {
+            let mut rest = word;
+            while rest != 0 {
+                let i = w * 64 + rest.trailing_zeros() as usize;
+                if i >= len {
+                    return;
+                }
+                f(i);
+                rest &= rest - 1;
+            }
         }
     }
     fn read(&self, accepted: &Self) -> Self {

@@ -294,7 +294,7 @@ impl Alphabet {
         // the label: their masks are worked out once.
         let blind: Vec<Option<TeMask>> = atoms
             .iter()
-            .map(|a| (!mentions_label(a)).then(|| atom_mask(a, &|_| false)))
+            .map(|a| (!mentions_label(a)).then(|| atom_mask(a, ALL_TYPE_EVENTS, &|_| false)))
             .collect();
         // Per label symbol, the 51 `(type, event)` pairs start as one block, and each atom
         // splits every block into the pairs it accepts and the rest. A block is
@@ -308,8 +308,9 @@ impl Alphabet {
             blocks.push((ALL_TYPE_EVENTS, l));
             sigs.resize(sigs.len() + words, 0);
             for (a, atom) in atoms.iter().enumerate() {
-                let accepted =
-                    blind[a].unwrap_or_else(|| atom_mask(atom, &|name| label_is(name, l, &labels)));
+                let accepted = blind[a].unwrap_or_else(|| {
+                    atom_mask(atom, ALL_TYPE_EVENTS, &|name| label_is(name, l, &labels))
+                });
                 for b in first..blocks.len() {
                     let (pairs, _) = blocks[b];
                     let (inside, outside) = (pairs & accepted, pairs & !accepted);
@@ -556,17 +557,24 @@ fn mentions_label(atom: &Atom) -> bool {
 /// by name, with no label table: for matching a few paths without building an alphabet
 /// ([`crate::DirectSet`]).
 pub(crate) fn atom_accepts(atom: &Atom, v: &Vertex) -> bool {
-    let te = TYPE_EVENT[type_event_code(v.ty(), v.event())];
-    atom_mask(atom, &|name| v.label() == Some(name)) >> te & 1 == 1
+    let te = 1 << TYPE_EVENT[type_event_code(v.ty(), v.event())];
+    atom_mask(atom, te, &|name| v.label() == Some(name)) & te != 0
 }
 
 /// The `(type, event)` pairs `atom` accepts on a vertex whose label `is_label` tells
 /// (`is_label(name)`: the vertex's label is `name`; false for every name when it has
-/// none or one the expressions never mention).
-fn atom_mask(atom: &Atom, is_label: &impl Fn(&str) -> bool) -> TeMask {
-    let any = |items: &[Item]| items.iter().fold(0, |m, i| m | item_mask(i, is_label));
+/// none or one the expressions never mention), exact on the pairs of `care` and
+/// unspecified on the others: a label is compared only when some pair of `care` could
+/// still be accepted, which spares [`atom_accepts`] the string compares of the triples
+/// whose type or event already refuse its vertex.
+fn atom_mask(atom: &Atom, care: TeMask, is_label: &impl Fn(&str) -> bool) -> TeMask {
+    let any = |items: &[Item]| {
+        items
+            .iter()
+            .fold(0, |m, i| m | item_mask(i, care, is_label))
+    };
     match atom {
-        Atom::Item(item) => item_mask(item, is_label),
+        Atom::Item(item) => item_mask(item, care, is_label),
         Atom::Class {
             negated: false,
             items,
@@ -579,7 +587,7 @@ fn atom_mask(atom: &Atom, is_label: &impl Fn(&str) -> bool) -> TeMask {
     }
 }
 
-fn item_mask(item: &Item, is_label: &impl Fn(&str) -> bool) -> TeMask {
+fn item_mask(item: &Item, care: TeMask, is_label: &impl Fn(&str) -> bool) -> TeMask {
     match item {
         // `C`, `L`, `O`: the type, any label. `R`, `T`: the type with a D or S event.
         Item::Type(t) if t.is_scattering() => type_mask(*t) & TRANSPORT,
@@ -587,27 +595,15 @@ fn item_mask(item: &Item, is_label: &impl Fn(&str) -> bool) -> TeMask {
         // `D`, `S2`, `U3`: an R/T vertex with that event (user lobes only this way).
         Item::Event(p) => event_mask(*p),
         Item::Any => TRANSPORT,
-        Item::Label(name) if is_label(name) => TRANSPORT,
+        Item::Label(name) if TRANSPORT & care != 0 && is_label(name) => TRANSPORT,
         Item::Label(_) => 0,
-        Item::Triple(t) => triple_mask(t, is_label),
+        Item::Triple(t) => triple_mask(t, care, is_label),
     }
 }
 
 /// `<t e l>`: the product of what each position accepts; a negated class in a position
 /// is that position's `.` minus its items.
-fn triple_mask(t: &Triple, is_label: &impl Fn(&str) -> bool) -> TeMask {
-    let label_ok = match &t.label {
-        // `.` in the label position: any label or none; `[^'a']` includes "no label".
-        LabelPos::Any => true,
-        LabelPos::One(name) => is_label(name),
-        LabelPos::Class {
-            negated,
-            labels: names,
-        } => names.iter().any(|n| is_label(n)) != *negated,
-    };
-    if !label_ok {
-        return 0;
-    }
+fn triple_mask(t: &Triple, care: TeMask, is_label: &impl Fn(&str) -> bool) -> TeMask {
     let types = match &t.ty {
         TypePos::Any => SCATTERING,
         TypePos::One(ty) => type_mask(*ty),
@@ -634,7 +630,25 @@ fn triple_mask(t: &Triple, is_label: &impl Fn(&str) -> bool) -> TeMask {
             }
         }
     };
-    types & events
+    let accepted = types & events;
+    // The label last: only a pair of `care` still accepted needs it compared.
+    if accepted & care == 0 {
+        return 0;
+    }
+    let label_ok = match &t.label {
+        // `.` in the label position: any label or none; `[^'a']` includes "no label".
+        LabelPos::Any => true,
+        LabelPos::One(name) => is_label(name),
+        LabelPos::Class {
+            negated,
+            labels: names,
+        } => names.iter().any(|n| is_label(n)) != *negated,
+    };
+    if label_ok {
+        accepted
+    } else {
+        0
+    }
 }
 
 #[cfg(test)]

@@ -3,11 +3,11 @@
 //! the dialects' files ([`super::renderman`], [`super::osl`]) read it without importing
 //! the command that dispatches to them.
 
-use std::collections::HashMap;
 use std::io::{BufRead, Write};
 use std::process::ExitCode;
 use std::time::{Duration, Instant};
 
+use lpe::fxhash::FxMap;
 use lpe_engines::{Engine, EngineDialect, Matcher};
 
 use crate::input::{bad_input, DialectArgs};
@@ -76,12 +76,15 @@ pub struct Compiled<'e, D: EngineDialect> {
 type Built<'e, D> = Result<Box<dyn Matcher<D> + 'e>, String>;
 
 /// How many paths a compiled expression is expected to answer, which decides what an
-/// engine builds ([`Engine::compile_for_few_paths`] or [`Engine::compile`]).
+/// engine builds ([`Engine::compile_for_few_paths`], [`Engine::compile_for_some_paths`]
+/// or [`Engine::compile`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Expected {
-    /// A batch expression seen fewer than [`UPGRADE_AFTER_USES`] times.
+    /// A batch expression seen fewer than [`SOME_PATHS_AT`] times.
     FewPaths,
-    /// An expression argument, or a batch expression that has repeated.
+    /// A batch expression seen [`SOME_PATHS_AT`] times, but fewer than [`MANY_PATHS_AT`].
+    SomePaths,
+    /// An expression argument, or a batch expression seen [`MANY_PATHS_AT`] times.
     ManyPaths,
 }
 
@@ -99,6 +102,7 @@ impl<'e, D: EngineDialect> Compiled<'e, D> {
                 let exprs = std::slice::from_ref(lpe);
                 let built = match expected {
                     Expected::FewPaths => e.compile_for_few_paths(exprs, registration),
+                    Expected::SomePaths => e.compile_for_some_paths(exprs, registration),
                     Expected::ManyPaths => e.compile(exprs, registration),
                 }
                 .map_err(|why| format!("skip({why})"));
@@ -155,13 +159,19 @@ pub fn verdict<D: EngineDialect>(
 /// paths per AOV) compiles each of them once.
 pub const MAX_CACHED_EXPRESSIONS: usize = 1024;
 
-/// How many lines of one expression `match --batch` answers with what the engines build
-/// for a few paths ([`Expected::FewPaths`]) before it compiles the expression in full.
-/// The full compile (the fast engine's minimized DFA) can cost as much as thousands of
-/// lines: an input whose expressions rarely repeat would pay it per line, while one that
-/// repeats a few expressions (the usual shape) pays it once each and steps the full
-/// automaton from then on.
-pub const UPGRADE_AFTER_USES: u32 = 64;
+/// At which line of one expression `match --batch` compiles it again for some paths
+/// ([`Expected::SomePaths`]), having answered the lines before with what the engines
+/// build for a few ([`Expected::FewPaths`]). The fast engine's three compiles cost about
+/// one line (its tree, evaluated per path at about the reference's cost), hundreds of
+/// lines (its lazy DFA, whose cache then steps at table speed) and up to thousands (its
+/// minimized DFA): an input whose expressions repeat a few hundred times at most pays
+/// the first alone, and the usual shape (many paths per AOV) all three, once each
+/// (`python/bench/batch_inputs.py` measures the shapes between).
+pub const SOME_PATHS_AT: u32 = 256;
+
+/// At which line of one expression `match --batch` compiles it in full
+/// ([`Expected::ManyPaths`]); see [`SOME_PATHS_AT`].
+pub const MANY_PATHS_AT: u32 = 4096;
 
 /// What `match --batch` has compiled so far, by the columns of a line that decide the
 /// compiled expression (the expression, and for OSL the registration): the parsed
@@ -169,7 +179,10 @@ pub const UPGRADE_AFTER_USES: u32 = 64;
 /// parse.
 pub struct BatchCache<'e, D: EngineDialect> {
     engines: Vec<&'e dyn Engine<D>>,
-    compiled: HashMap<String, Result<Entry<'e, D>, String>>,
+    /// Keyed by a fast hash (an expression of 40 alternatives is 600 bytes, hashed per
+    /// line): the keys are the user's own input, and one who crafts colliding lines
+    /// slows only their own run.
+    compiled: FxMap<String, Result<Entry<'e, D>, String>>,
 }
 
 /// One parsed expression of a batch, what it is compiled into now, and how many lines
@@ -186,13 +199,14 @@ impl<'e, D: EngineDialect> BatchCache<'e, D> {
     pub fn new(engines: &[&'e dyn Engine<D>]) -> Self {
         BatchCache {
             engines: engines.to_vec(),
-            compiled: HashMap::new(),
+            compiled: FxMap::default(),
         }
     }
 
     /// The compiled expression for `key`: `parse` gives the registration and expression
     /// the first time it is asked for (or the line's error); the expression is compiled
-    /// for a few paths, then in full at its [`UPGRADE_AFTER_USES`]-th line.
+    /// for a few paths, for some at its [`SOME_PATHS_AT`]-th line and in full at its
+    /// [`MANY_PATHS_AT`]-th.
     pub fn get_or_compile(
         &mut self,
         key: &str,
@@ -214,13 +228,14 @@ impl<'e, D: EngineDialect> BatchCache<'e, D> {
         match self.compiled.get_mut(key).expect("inserted above") {
             Ok(entry) => {
                 entry.uses = entry.uses.saturating_add(1);
-                if entry.uses == UPGRADE_AFTER_USES {
-                    entry.compiled = Compiled::new(
-                        engines,
-                        &entry.registration,
-                        &entry.lpe,
-                        Expected::ManyPaths,
-                    );
+                let expected = match entry.uses {
+                    SOME_PATHS_AT => Some(Expected::SomePaths),
+                    MANY_PATHS_AT => Some(Expected::ManyPaths),
+                    _ => None,
+                };
+                if let Some(expected) = expected {
+                    entry.compiled =
+                        Compiled::new(engines, &entry.registration, &entry.lpe, expected);
                 }
                 Ok(&entry.compiled)
             }
@@ -374,8 +389,8 @@ mod tests {
     //! The batch cache, with an engine that counts its compiles. Checked against planted
     //! faults: a cache that never stores (every line compiles: the count test fails), a
     //! key without OSL's registration column (the second registration answers as the
-    //! first: the OSL test fails), a cache that never clears (the bound test fails), an
-    //! upgrade one line early or never, or on every line past the threshold (the upgrade
+    //! first: the OSL test fails), a cache that never clears (the bound test fails), either
+    //! upgrade one line early or never, or on every line past its threshold (the upgrade
     //! test fails), and lines compiled in full from the start (both count tests fail).
 
     use std::sync::atomic::{AtomicUsize, Ordering};
@@ -384,24 +399,30 @@ mod tests {
     use lpe::renderman::{Parser, RenderMan};
     use lpe_engines::{Engine, EngineDialect, EngineError, Matcher};
 
-    use super::{BatchCache, MAX_CACHED_EXPRESSIONS, UPGRADE_AFTER_USES};
+    use super::{BatchCache, MANY_PATHS_AT, MAX_CACHED_EXPRESSIONS, SOME_PATHS_AT};
     use crate::cmd::matching::MatchDialect;
 
-    /// The `fast` engine, counting how often it is asked to compile for a few paths and
-    /// in full.
+    /// The `fast` engine, counting how often it is asked to compile for a few paths, for
+    /// some and in full.
     #[derive(Default)]
     struct Counting {
         few: AtomicUsize,
+        some: AtomicUsize,
         full: AtomicUsize,
     }
 
     impl Counting {
-        fn counts(&self) -> (usize, usize) {
+        fn counts(&self) -> (usize, usize, usize) {
             (
                 self.few.load(Ordering::Relaxed),
+                self.some.load(Ordering::Relaxed),
                 self.full.load(Ordering::Relaxed),
             )
         }
+    }
+
+    fn fast<D: EngineDialect>() -> &'static dyn Engine<D> {
+        lpe_engines::by_name::<D>("fast").expect("the fast engine")
     }
 
     impl<D: EngineDialect> Engine<D> for Counting {
@@ -414,9 +435,7 @@ mod tests {
             registration: &D::Registration,
         ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
             self.full.fetch_add(1, Ordering::Relaxed);
-            lpe_engines::by_name::<D>("fast")
-                .expect("the fast engine")
-                .compile(exprs, registration)
+            fast::<D>().compile(exprs, registration)
         }
         fn compile_for_few_paths(
             &self,
@@ -424,9 +443,15 @@ mod tests {
             registration: &D::Registration,
         ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
             self.few.fetch_add(1, Ordering::Relaxed);
-            lpe_engines::by_name::<D>("fast")
-                .expect("the fast engine")
-                .compile_for_few_paths(exprs, registration)
+            fast::<D>().compile_for_few_paths(exprs, registration)
+        }
+        fn compile_for_some_paths(
+            &self,
+            exprs: &[D::Lpe],
+            registration: &D::Registration,
+        ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
+            self.some.fetch_add(1, Ordering::Relaxed);
+            fast::<D>().compile_for_some_paths(exprs, registration)
         }
     }
 
@@ -467,43 +492,39 @@ mod tests {
         );
         assert_eq!(
             engine.counts(),
-            (2, 0),
+            (2, 0, 0),
             "two distinct expressions, each compiled for a few paths"
         );
     }
 
     #[test]
-    fn an_expression_is_compiled_in_full_at_its_upgrade_line_and_only_then() {
+    fn an_expression_is_compiled_again_at_its_upgrade_lines_and_only_then() {
         let engine = Counting::default();
         let engines: Vec<&dyn Engine<RenderMan>> = vec![&engine];
         let mut cache = BatchCache::new(&engines);
         let parser = Parser::default();
-        // Alternating answers, so that a matcher lost or mixed up in the upgrade shows.
-        let even = |i: u32| i.is_multiple_of(2);
+        // Alternating answers, so that a matcher lost or mixed up in an upgrade shows.
         let line = |i: u32| {
-            if even(i) {
+            if i.is_multiple_of(2) {
                 "C<RD>L\tC RD L"
             } else {
                 "C<RD>L\tC RS L"
             }
         };
-        for i in 1..UPGRADE_AFTER_USES {
+        for i in 1..2 * MANY_PATHS_AT {
             let got = RenderMan::batch_line(&parser, line(i), &mut cache).to_string();
-            assert_eq!(
-                got,
-                if i % 2 == 0 { "match" } else { "no-match" },
-                "line {i}"
-            );
-            assert_eq!(engine.counts(), (1, 0), "line {i}: not yet upgraded");
-        }
-        for i in UPGRADE_AFTER_USES..3 * UPGRADE_AFTER_USES {
-            let got = RenderMan::batch_line(&parser, line(i), &mut cache).to_string();
-            assert_eq!(
-                got,
-                if i % 2 == 0 { "match" } else { "no-match" },
-                "line {i}"
-            );
-            assert_eq!(engine.counts(), (1, 1), "line {i}: upgraded once");
+            let want = if i.is_multiple_of(2) {
+                "match"
+            } else {
+                "no-match"
+            };
+            assert_eq!(got, want, "line {i}");
+            let compiled = match i {
+                _ if i < SOME_PATHS_AT => (1, 0, 0),
+                _ if i < MANY_PATHS_AT => (1, 1, 0),
+                _ => (1, 1, 1),
+            };
+            assert_eq!(engine.counts(), compiled, "line {i}");
         }
     }
 
@@ -519,7 +540,7 @@ mod tests {
         ];
         let got = answers::<Osl>(&engine, &Default::default(), &lines);
         assert_eq!(got, ["no-match", "match", "no-match"]);
-        assert_eq!(engine.counts(), (2, 0));
+        assert_eq!(engine.counts(), (2, 0, 0));
     }
 
     #[test]
