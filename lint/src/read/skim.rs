@@ -498,8 +498,9 @@ impl<'s, R: Read> Skim<'s, R> {
         let attribute = head.words >= 2
             && !matches!(head.first.as_str(), "variantSet" | "reorder")
             && !head.rel;
+        // Read only for an attribute: with fewer than two words, `last` may still be an
+        // earlier statement's.
         let (name, suffix) = match head.last.split_once('.') {
-            _ if head.words == 0 => ("", None),
             Some((name, suffix)) => (name, Some(suffix)),
             None => (head.last.as_str(), None),
         };
