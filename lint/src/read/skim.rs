@@ -498,8 +498,9 @@ impl<'s, R: Read> Skim<'s, R> {
         let attribute = head.words >= 2
             && !matches!(head.first.as_str(), "variantSet" | "reorder")
             && !head.rel;
+        // Read only for an attribute: with fewer than two words, `last` may still be an
+        // earlier statement's.
         let (name, suffix) = match head.last.split_once('.') {
-            _ if head.words == 0 => ("", None),
             Some((name, suffix)) => (name, Some(suffix)),
             None => (head.last.as_str(), None),
         };
@@ -996,5 +997,65 @@ mod tests {
             .replace("float a = 1", "float a ")
             .replace("float b = 2", "float b ");
         assert_eq!(skimmed(text), expected);
+    }
+
+    /// The pieces of `text` as [`skim_pieces`] hands them over, and its result.
+    fn pieces(text: &str, limit: u64, stop_after: usize) -> (Vec<String>, bool) {
+        let mut got = Vec::new();
+        let mut sink = |piece: &str| {
+            got.push(piece.to_string());
+            got.len() < stop_after
+        };
+        let whole = skim_pieces(text.as_bytes(), keep, limit, &mut sink).unwrap();
+        (got, whole)
+    }
+
+    /// Kept text is handed over once [`PIECE_BYTES`] (64 KiB) are kept, between tokens
+    /// where statements start: 200 comment lines of 1 024 bytes come as three pieces of
+    /// 64 lines and the last 8 lines. Planted faults (cargo-mutants), each seen
+    /// failing: `64 << 10` as `64 >> 10` and the size test `>=` as `<` (a piece per
+    /// token); the test's second and third `&&` as `||` (a piece per token in a body,
+    /// or wherever the size is short).
+    #[test]
+    fn kept_text_is_handed_over_every_64_kib_where_statements_start() {
+        let text = format!("#{}\n", "x".repeat(1022)).repeat(200);
+        let (got, whole) = pieces(&text, u64::MAX, usize::MAX);
+        let lengths: Vec<_> = got.iter().map(String::len).collect();
+        assert_eq!(lengths, [65_536, 65_536, 65_536, 8_192]);
+        assert_eq!(got.concat(), text);
+        assert!(whole);
+        // The sink asking to stop after the first piece ends the pass there.
+        let (got, whole) = pieces(&text, u64::MAX, 1);
+        assert_eq!((got.len(), got[0].len(), whole), (1, 65_536, false));
+    }
+
+    /// A piece ends only outside brackets: a kept array of 100 KiB is one piece with its
+    /// statement, the prim's end the next. The limit bounds each piece, not the text:
+    /// the same limit that refuses the text whole passes it in pieces.
+    #[test]
+    fn a_piece_ends_outside_brackets_and_the_limit_bounds_each_piece() {
+        let head = "def X \"x\"\n{\n    custom string[] lpe:xs = [\n";
+        let items = format!("\"{}\",\n", "a".repeat(1020)).repeat(100);
+        let text = format!("{head}{items}    ]\n}}\n");
+        let first = format!("{head}{items}    ]");
+        assert_eq!(first.len(), head.len() + 102_400 + 5);
+        let limit = first.len() as u64;
+        let (got, whole) = pieces(&text, limit, usize::MAX);
+        assert_eq!(got, [first, "\n}\n".to_string()]);
+        assert!(whole);
+        assert!(matches!(
+            skim(text.as_bytes(), keep, limit),
+            Err(SkimError::TooLarge { .. })
+        ));
+    }
+
+    /// A statement of one word before its `=` is no attribute (an attribute has a type
+    /// and a name): it is copied whole, for the USD library to judge. Planted fault
+    /// (cargo-mutants), seen failing: [`Head`]'s word count `+=` as `-=` (one word then
+    /// counts as two or more, and the value is dropped).
+    #[test]
+    fn a_one_word_statement_is_copied_whole() {
+        let text = "def X \"x\"\n{\n    a = 1\n}\n";
+        assert_eq!(skimmed(text), text);
     }
 }

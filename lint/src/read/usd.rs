@@ -838,6 +838,31 @@ mod tests {
         );
     }
 
+    /// Lights and geometry make a stage's groups checkable when no prim carries a group:
+    /// a `SphereLight` gives an empty set of light groups, a `TetMesh` one of object
+    /// groups, typeless, `Xform`, `Scope` and `Material` prims neither (`None`: nothing
+    /// to check against). Planted faults (cargo-mutants), each seen failing:
+    /// [`DocumentBuilder::prim_type`] doing nothing; its `has_objects |=` as `&=`.
+    #[test]
+    fn lights_and_geometry_make_groups_checkable_without_a_group() {
+        let groups = |types: &[&str]| {
+            let facts = StageFacts {
+                prims: Vec::new(),
+                types: types.iter().map(|t| t.to_string()).collect(),
+            };
+            let doc = document(Path::new("stage.usda"), &facts).unwrap();
+            (doc.light_groups, doc.object_groups)
+        };
+        let empty = Some(BTreeSet::new());
+        assert_eq!(
+            groups(&["", "Material", "SphereLight", "TetMesh", "Xform"]),
+            (empty.clone(), empty.clone())
+        );
+        assert_eq!(groups(&["SphereLight", "Xform"]), (empty.clone(), None));
+        assert_eq!(groups(&["Scope", "TetMesh"]), (None, empty));
+        assert_eq!(groups(&["", "Material", "Scope", "Xform"]), (None, None));
+    }
+
     /// A prim whose group attribute follows heavy values with brackets and quotes in
     /// strings is still read, with its value.
     #[test]
