@@ -1305,7 +1305,8 @@ def RenderVar "w"
     }
 
     /// One test per thing that composes or that the flat reader leaves to the USD
-    /// library: each is handed back, with its line and what it is. Planted faults, each
+    /// library: each is handed back, with its line and what it is (each case is spelled
+    /// `fn NAME: ...`, so that a search for the test's `fn` finds it). Planted faults, each
     /// seen failing its test: `references` in [`PRIM_METADATA`]; `subLayers` in
     /// [`LAYER_METADATA`]; the `over` check (`specifier != "def"`) dropped; the
     /// `variantSet` statement check dropped. Mutants, each seen failing its test:
@@ -1326,7 +1327,7 @@ def RenderVar "w"
     /// (`word_targets_are_composed`), its `!comma` as `true`
     /// (`leading_commas_in_targets_are_composed`).
     macro_rules! composes {
-        ($($test:ident: $line:expr, $why:expr, $text:expr;)*) => {$(
+        ($(fn $test:ident: $line:expr, $why:expr, $text:expr;)*) => {$(
             #[test]
             fn $test() {
                 let n = not_flat(stringify!($test), $text);
@@ -1336,83 +1337,83 @@ def RenderVar "w"
     }
 
     composes! {
-        sublayers_compose: 2, "`subLayers` metadata",
+        fn sublayers_compose: 2, "`subLayers` metadata",
             "#usda 1.0\n(\n    subLayers = [@a.usda@]\n)\n";
-        references_compose: 2, "`references` metadata",
+        fn references_compose: 2, "`references` metadata",
             "#usda 1.0\ndef X \"x\" (\n    prepend references = @a.usda@</b>\n)\n{\n}\n";
-        payloads_compose: 2, "`payload` metadata",
+        fn payloads_compose: 2, "`payload` metadata",
             "#usda 1.0\ndef X \"x\" (payload = @a.usda@)\n{\n}\n";
-        inherits_compose: 3, "`inherits` metadata",
+        fn inherits_compose: 3, "`inherits` metadata",
             "#usda 1.0\n\ndef X \"x\" (\n    inherits = </c>\n)\n{\n}\n";
-        specializes_compose: 2, "`specializes` metadata",
+        fn specializes_compose: 2, "`specializes` metadata",
             "#usda 1.0\ndef X \"x\" (specializes = </c>)\n{\n}\n";
-        variant_sets_compose: 2, "`variantSets` metadata",
+        fn variant_sets_compose: 2, "`variantSets` metadata",
             "#usda 1.0\ndef X \"x\" (prepend variantSets = \"v\")\n{\n}\n";
-        variant_selections_compose: 2, "`variants` metadata",
+        fn variant_selections_compose: 2, "`variants` metadata",
             "#usda 1.0\ndef X \"x\" (variants = { string v = \"a\" })\n{\n}\n";
-        variant_set_statements_compose: 4, "a `variantSet` statement",
+        fn variant_set_statements_compose: 4, "a `variantSet` statement",
             "#usda 1.0\ndef X \"x\"\n{\n    variantSet \"v\" = {\n        \"a\" {\n        }\n    }\n}\n";
-        instancing_composes: 2, "`instanceable` metadata",
+        fn instancing_composes: 2, "`instanceable` metadata",
             "#usda 1.0\ndef X \"x\" (instanceable = true)\n{\n}\n";
-        overs_compose: 2, "a prim specified `over`",
+        fn overs_compose: 2, "a prim specified `over`",
             "#usda 1.0\nover \"x\"\n{\n}\n";
-        classes_compose: 4, "a prim specified `class`",
+        fn classes_compose: 4, "a prim specified `class`",
             "#usda 1.0\ndef X \"x\"\n{\n    class \"c\"\n    {\n    }\n}\n";
-        relocates_compose: 2, "`relocates` metadata",
+        fn relocates_compose: 2, "`relocates` metadata",
             "#usda 1.0\n(\n    relocates = { </a>: </b> }\n)\n";
-        clips_compose: 2, "`clips` metadata",
+        fn clips_compose: 2, "`clips` metadata",
             "#usda 1.0\ndef X \"x\" (clips = { dictionary c = {} })\n{\n}\n";
-        reorders_are_composed: 4, "a `reorder` statement",
+        fn reorders_are_composed: 4, "a `reorder` statement",
             "#usda 1.0\ndef X \"x\"\n{\n    reorder nameChildren = [\"b\", \"a\"]\n}\n";
-        siblings_of_one_name_are_composed: 5, "a second prim named `a` among siblings",
+        fn siblings_of_one_name_are_composed: 5, "a second prim named `a` among siblings",
             "#usda 1.0\ndef X \"a\"\n{\n}\ndef Y \"a\"\n{\n}\n";
-        properties_after_children_are_composed: 7, "a property after a child prim",
+        fn properties_after_children_are_composed: 7, "a property after a child prim",
             "#usda 1.0\ndef X \"x\"\n{\n    def Y \"y\"\n    {\n    }\n    float f = 1\n}\n";
-        escaped_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
+        fn escaped_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
             "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = \"C\\\"L\"\n}\n";
-        timesampled_values_are_composed: 4, "`sourceName.timeSamples` as string that lint cannot read flat",
+        fn timesampled_values_are_composed: 4, "`sourceName.timeSamples` as string that lint cannot read flat",
             "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName.timeSamples = { 1: \"CL\" }\n}\n";
-        relative_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
+        fn relative_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
             "#usda 1.0\ndef RenderProduct \"p\"\n{\n    rel orderedVars = <../v>\n}\n";
-        unknown_types_are_composed: 4, "an attribute of type `flaot`",
+        fn unknown_types_are_composed: 4, "an attribute of type `flaot`",
             "#usda 1.0\ndef X \"x\"\n{\n    flaot f\n}\n";
-        other_headers_are_composed: 1, "a first line other than `#usda 1.0`",
+        fn other_headers_are_composed: 1, "a first line other than `#usda 1.0`",
             "#sdf 1.4.32\ndef X \"x\"\n{\n}\n";
-        asset_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
+        fn asset_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
             "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = @C<RD>L@\n}\n";
-        late_layer_metadata_is_composed: 5, "a statement of another shape",
+        fn late_layer_metadata_is_composed: 5, "a statement of another shape",
             "#usda 1.0\ndef X \"x\"\n{\n}\n(\n    doc = \"late\"\n)\n";
-        metadata_inside_a_prim_body_is_composed: 4, "a statement of another shape",
+        fn metadata_inside_a_prim_body_is_composed: 4, "a statement of another shape",
             "#usda 1.0\ndef X \"x\"\n{\n    (\n        doc = \"inside\"\n    )\n}\n";
-        top_level_properties_are_composed: 2, "a statement of another shape",
+        fn top_level_properties_are_composed: 2, "a statement of another shape",
             "#usda 1.0\nfloat f = 1\n";
-        list_operations_on_values_are_composed: 4, "a statement of another shape",
+        fn list_operations_on_values_are_composed: 4, "a statement of another shape",
             "#usda 1.0\ndef X \"x\"\n{\n    prepend float f = 1\n}\n";
-        text_after_property_metadata_is_composed: 4, "a statement of another shape",
+        fn text_after_property_metadata_is_composed: 4, "a statement of another shape",
             "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = \"CL\" (doc = \"x\") junk\n}\n";
-        read_properties_authored_twice_are_composed: 5, "`sourceName` authored twice",
+        fn read_properties_authored_twice_are_composed: 5, "`sourceName` authored twice",
             "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = \"CL\"\n    string sourceName = \"CD\"\n}\n";
-        read_arrays_are_composed: 4, "`sourceName` as string that lint cannot read flat",
+        fn read_arrays_are_composed: 4, "`sourceName` as string that lint cannot read flat",
             "#usda 1.0\ndef RenderVar \"v\"\n{\n    string[] sourceName = [\"CL\"]\n}\n";
-        unquoted_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
+        fn unquoted_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
             "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = CL\n}\n";
-        ordered_vars_as_values_are_composed: 4, "`orderedVars` that is no plain relationship",
+        fn ordered_vars_as_values_are_composed: 4, "`orderedVars` that is no plain relationship",
             "#usda 1.0\ndef RenderProduct \"p\"\n{\n    token orderedVars = \"v\"\n}\n";
-        ordered_vars_list_operations_are_composed: 4, "`orderedVars` that is no plain relationship",
+        fn ordered_vars_list_operations_are_composed: 4, "`orderedVars` that is no plain relationship",
             "#usda 1.0\ndef RenderProduct \"p\"\n{\n    prepend rel orderedVars = </v>\n}\n";
-        references_after_a_dictionary_compose: 2, "`references` metadata",
+        fn references_after_a_dictionary_compose: 2, "`references` metadata",
             "#usda 1.0\ndef X \"x\" (\n    customData = {\n        int a = 1\n    }\n    references = @a.usda@\n)\n{\n}\n";
-        other_actives_are_composed: 2, "an `active` that is neither `true` nor `false`",
+        fn other_actives_are_composed: 2, "an `active` that is neither `true` nor `false`",
             "#usda 1.0\ndef X \"x\" (active = 0)\n{\n}\n";
-        word_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
+        fn word_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
             "#usda 1.0\ndef RenderProduct \"p\"\n{\n    rel orderedVars = foo\n}\n";
-        leading_commas_in_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
+        fn leading_commas_in_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
             "#usda 1.0\ndef RenderProduct \"p\"\n{\n    rel orderedVars = [, </v>]\n}\n";
-        prim_names_are_identifiers: 2, "a prim named `1a` of type `X`",
+        fn prim_names_are_identifiers: 2, "a prim named `1a` of type `X`",
             "#usda 1.0\ndef X \"1a\"\n{\n}\n";
-        prim_types_are_identifiers: 2, "a prim named `a` of type `X-1`",
+        fn prim_types_are_identifiers: 2, "a prim named `a` of type `X-1`",
             "#usda 1.0\ndef X-1 \"a\"\n{\n}\n";
-        property_names_are_identifiers: 4, "a property named `2x`",
+        fn property_names_are_identifiers: 4, "a property named `2x`",
             "#usda 1.0\ndef X \"x\"\n{\n    float 2x = 1\n}\n";
     }
 }
