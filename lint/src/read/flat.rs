@@ -523,7 +523,10 @@ impl Reader {
             }
             _ => {}
         }
-        if t != Tok::Nl || self.depth > 0 {
+        // No statement keeps a line end: inside brackets it separates as a space does
+        // (the USD library reads `doc\n= "x"` and `active =\nfalse` in metadata), and
+        // outside them it ends a property (above) or is a space.
+        if t != Tok::Nl {
             self.stmt.push(t);
         }
         Ok(())
@@ -598,10 +601,11 @@ impl Reader {
         Ok(())
     }
 
-    /// Hands the facts of the open prim `frames[i]` to the builder, once, if lint reads it.
+    /// Hands the facts of the open prim `frames[i]` to the builder, once, if lint reads it
+    /// (never the pseudo-root, which has no type and no property).
     fn hand(&mut self, i: usize) {
         let frame = &mut self.frames[i];
-        if frame.handed || i == 0 {
+        if frame.handed {
             return;
         }
         frame.handed = true;
@@ -733,22 +737,13 @@ impl Reader {
     }
 
     /// The document, if the layer ended flat.
-    fn finish(mut self) -> Result<Result<Document, NotFlat>, ReadError> {
+    fn finish(self) -> Result<Result<Document, NotFlat>, ReadError> {
+        // Only a prim statement without its `{` can be open here: the skim refuses text
+        // that ends inside brackets or a prim, where every other statement is.
         if !self.stmt.is_empty() {
-            if self.kind != Kind::Property || self.property().is_err() {
-                return Ok(Err(self.not_flat.unwrap_or(NotFlat {
-                    line: self.stmt_line,
-                    why: "a statement left open".into(),
-                })));
-            }
-            if let Some(not_flat) = self.not_flat {
-                return Ok(Err(not_flat));
-            }
-        }
-        if self.frames.len() > 1 {
             return Ok(Err(NotFlat {
-                line: self.line,
-                why: "a prim left open".into(),
+                line: self.stmt_line,
+                why: "a statement left open".into(),
             }));
         }
         match self.error {
@@ -811,7 +806,6 @@ fn targets(value: &[Tok], text: &str) -> Option<Vec<String>> {
             let mut comma = true;
             for t in inner {
                 match t {
-                    Tok::Nl => {}
                     Tok::Punct(b',') if !comma => comma = true,
                     Tok::Path(_) if comma => {
                         names.push(name(t)?);
@@ -859,6 +853,19 @@ mod tests {
         let path = layer(name, text);
         match read(&path, &Limits::default()) {
             Ok(Err(n)) => n,
+            other => panic!("{name}: {other:?}"),
+        }
+    }
+
+    /// The AOVs of `text` read flat, as `name=source` (panics if it is not read flat).
+    fn flat_aovs(name: &str, text: &str) -> Vec<String> {
+        let path = layer(name, text);
+        match read(&path, &Limits::default()) {
+            Ok(Ok(doc)) => doc
+                .aovs
+                .iter()
+                .map(|a| format!("{}={}", a.name, a.source))
+                .collect(),
             other => panic!("{name}: {other:?}"),
         }
     }
@@ -1124,13 +1131,203 @@ def Xform "World"
         );
     }
 
+    /// Quoted text of every kind lint does not read (triple-quoted strings holding a
+    /// quote, a `)` and a line end; escaped quotes; asset paths, tripled too; an empty
+    /// string) is passed over as one token, in layer and prim metadata, and the layer
+    /// reads flat. Mutants, each seen failing: a triple quote not recognised (`c != b'<'`
+    /// as `==`); a triple quote's closer taken from `i - 3` or `i * 3`; an escape stepping
+    /// back (`j += 2` as `-=`: a loop).
+    #[test]
+    fn quoted_metadata_of_every_kind_is_passed_over() {
+        let text = r#"#usda 1.0
+(
+    doc = """A "flat" layer: a ) and a ' inside,
+over two lines"""
+    customLayerData = {
+        asset a = @x.usda@
+        asset b = @@@odd@name.usda@@@
+        string s = "say \"hi\" (twice"
+        string t = 'it\'s ) here'
+        string u = ""
+    }
+)
+
+def Scope "Render" (
+    doc = """5" tall"""
+)
+{
+    def RenderVar "v"
+    {
+        uniform token sourceType = "lpe"
+        uniform string sourceName = "C<RD>L"
+    }
+}
+"#;
+        assert_eq!(flat_aovs("quoted_metadata", text), ["v=C<RD>L"]);
+        // The USD library reads the layer the same.
+        let path = layer("quoted_metadata_composed", text);
+        let composed = read_composed(&path, &Limits::default()).unwrap();
+        assert_eq!(
+            format!("{:?}", read(&path, &Limits::default())),
+            format!("{:?}", Ok::<_, ReadError>(Ok::<_, NotFlat>(composed)))
+        );
+    }
+
+    /// A layer may end without a line end, in a comment: it reads flat. Mutant, seen
+    /// failing: the comment's scan bounded by `i <= b.len()` (an index past the end).
+    #[test]
+    fn a_layer_may_end_in_a_comment_without_a_line_end() {
+        let text = "#usda 1.0\ndef RenderVar \"v\"\n{\n    token sourceType = \"lpe\"\n    string sourceName = \"CL\"\n}\n# end";
+        assert_eq!(flat_aovs("comment_at_end", text), ["v=CL"]);
+    }
+
+    /// A layer that ends inside a prim is the skim's error, at the end of the file, on
+    /// the flat path as on the composed one: so the reader never finishes with a prim
+    /// or a property open, and has no check of its own for one.
+    #[test]
+    fn a_layer_ending_inside_a_prim_is_an_error_at_its_end() {
+        for (name, text, at) in [
+            (
+                "open_prim",
+                "#usda 1.0\ndef RenderVar \"v\"\n{\n    token sourceType = \"lpe\"\n",
+                "5:1",
+            ),
+            (
+                "open_property",
+                "#usda 1.0\ndef X \"x\"\n{\n    float f = 1",
+                "4:16",
+            ),
+        ] {
+            let path = layer(name, text);
+            let e = read(&path, &Limits::default()).unwrap_err().to_string();
+            assert!(
+                e.ends_with(&format!("{at}: end of file before the closing `}}`")),
+                "{name}: {e}"
+            );
+        }
+    }
+
+    /// A layer ending in a word (a statement begun and never finished) is handed back
+    /// at the statement's line. Mutant, seen failing: the word's scan bounded by
+    /// `i <= b.len()` (an index past the end).
+    #[test]
+    fn a_layer_ending_in_a_word_is_a_statement_left_open() {
+        let n = not_flat("word_at_end", "#usda 1.0\ndef X \"x\"\n{\n}\ndef");
+        assert_eq!((n.line, n.why.as_str()), (5, "a statement left open"));
+    }
+
+    /// Property statements of every shape the flat reader takes: a value followed by
+    /// metadata, list operations on a relationship and on a connection, a statement
+    /// ended by its prim's `}` on the same line. They read flat, as the USD library reads
+    /// them. Mutants, each seen failing: the value's end searched from `i - 1` or `i * 1`
+    /// (`stmt[i + 1..]`), or placed at `i - 1 + k`; a list operation's `i +=` as `-=` or
+    /// `*=`; the list-operation check's `!` deleted, its `||` as `&&`, its `== connect`
+    /// as `!=`; the `}` that ends a property not closing its prim (the arm deleted, or
+    /// the closer arm's guard `depth > 0` as `true` or `>=`).
+    #[test]
+    fn property_statements_of_every_flat_shape_read_as_composed() {
+        let text = r#"#usda 1.0
+def RenderVar "v"
+{
+    uniform token sourceType = "lpe" (doc = "the type")
+    uniform string sourceName = "C<RD>L" (
+        doc = "the expression"
+    )
+    prepend rel r = </v>
+    append float inputs:x.connect = </v.outputs:y>
+}
+def RenderVar "w"
+{
+    token sourceType = "lpe"
+    string sourceName = "C<TD>L" }
+"#;
+        assert_eq!(flat_aovs("property_shapes", text), ["v=C<RD>L", "w=C<TD>L"]);
+        let path = layer("property_shapes_composed", text);
+        let composed = read_composed(&path, &Limits::default()).unwrap();
+        assert_eq!(
+            format!("{:?}", read(&path, &Limits::default())),
+            format!("{:?}", Ok::<_, ReadError>(Ok::<_, NotFlat>(composed)))
+        );
+    }
+
+    /// Line ends inside metadata, before or after a `=`, separate as spaces do: the
+    /// layer reads flat, with `active =` on one line and `false` on the next making the
+    /// prim inactive, as the USD library reads it. Planted fault, seen failing: line ends
+    /// kept inside brackets (`t != Tok::Nl || self.depth > 0`: these layers handed back).
+    #[test]
+    fn line_ends_in_metadata_separate_as_spaces() {
+        let text = "#usda 1.0\n(\n    doc\n        = \"x\"\n)\n\
+                    def RenderVar \"v\" (\n    doc\n    = \"y\"\n)\n{\n    token sourceType = \"lpe\"\n    string sourceName = \"CL\"\n}\n\
+                    def RenderVar \"w\" (\n    active =\n        false\n)\n{\n    token sourceType = \"lpe\"\n    string sourceName = \"CD\"\n}\n";
+        assert_eq!(flat_aovs("metadata_lines", text), ["v=CL"]);
+        let path = layer("metadata_lines_composed", text);
+        let composed = read_composed(&path, &Limits::default()).unwrap();
+        assert_eq!(
+            format!("{:?}", read(&path, &Limits::default())),
+            format!("{:?}", Ok::<_, ReadError>(Ok::<_, NotFlat>(composed)))
+        );
+    }
+
+    /// A read attribute declared without a value, or holding `None`, reads flat as no
+    /// value: the RenderVars' AOVs have an empty source, as the USD library reads them.
+    /// Mutants, each seen failing: the value arm `[]` deleted; the `None` arm's guard as
+    /// `true` (an unquoted word read as `None`, `unquoted_values_are_composed`).
+    #[test]
+    fn a_read_attribute_without_a_value_reads_as_none() {
+        let text = "#usda 1.0\ndef RenderVar \"v\"\n{\n    token sourceType = \"lpe\"\n    string sourceName\n}\n\
+                    def RenderVar \"w\"\n{\n    token sourceType = \"lpe\"\n    string sourceName = None\n}\n";
+        assert_eq!(flat_aovs("no_value", text), ["v=", "w="]);
+        let path = layer("no_value_composed", text);
+        let composed = read_composed(&path, &Limits::default()).unwrap();
+        assert_eq!(
+            format!("{:?}", read(&path, &Limits::default())),
+            format!("{:?}", Ok::<_, ReadError>(Ok::<_, NotFlat>(composed)))
+        );
+    }
+
+    /// `orderedVars` with no value, `None`, one target or a list of them reads flat, and
+    /// the first RenderProduct with targets gives the AOV names, as the USD library
+    /// reads them. Mutants, each seen failing: the arms `[]` and `[Tok::Path]` of
+    /// `targets` deleted; the `None` arm's guard as `false` or its `==` as `!=` (and as
+    /// `true`: `word_targets_are_composed`).
+    #[test]
+    fn ordered_vars_of_every_flat_shape_read_as_composed() {
+        let text = "#usda 1.0\ndef Scope \"Render\"\n{\n\
+                    def RenderProduct \"a\"\n{\n    rel orderedVars\n}\n\
+                    def RenderProduct \"b\"\n{\n    rel orderedVars = None\n}\n\
+                    def RenderProduct \"c\"\n{\n    rel orderedVars = </Render/v>\n}\n\
+                    def RenderProduct \"d\"\n{\n    rel orderedVars = [</Render/w>, </Render/v>,]\n}\n}\n";
+        let path = layer("ordered_vars", text);
+        let flat = read(&path, &Limits::default()).unwrap().unwrap();
+        assert_eq!(flat.ordered_vars, Some(vec!["v".to_string()]));
+        let composed = read_composed(&path, &Limits::default()).unwrap();
+        assert_eq!(format!("{flat:?}"), format!("{composed:?}"));
+    }
+
     /// One test per thing that composes or that the flat reader leaves to the USD
-    /// library: each is handed back, with its line and what it is. Planted faults, each
+    /// library: each is handed back, with its line and what it is (each case is spelled
+    /// `fn NAME: ...`, so that a search for the test's `fn` finds it). Planted faults, each
     /// seen failing its test: `references` in [`PRIM_METADATA`]; `subLayers` in
     /// [`LAYER_METADATA`]; the `over` check (`specifier != "def"`) dropped; the
-    /// `variantSet` statement check dropped.
+    /// `variantSet` statement check dropped. Mutants, each seen failing its test:
+    /// `is_identifier` as `true`, its `&&` as `||`, its `b == b'_'` as `!=`, the prim
+    /// name check's `||` as `&&` (`prim_names_are_identifiers`); `is_property_name` as
+    /// `true` (`property_names_are_identifiers`); the asset arm of `tokens` deleted
+    /// (`asset_values_are_composed`); the layer metadata's guard as `true`, its `&&` as
+    /// `||` (`late_layer_metadata_is_composed`); a property's guard `frames.len() > 1`
+    /// as `true` or `>=` (`top_level_properties_are_composed`); the guard on text after
+    /// a property's metadata as `true` (`text_after_property_metadata_is_composed`);
+    /// `(reads || ordered) && !fresh` with `&&` for `||`
+    /// (`read_properties_authored_twice_are_composed`); the read attribute's `|| array`
+    /// as `&&` (`read_arrays_are_composed`); each `||` of the `orderedVars` shape check
+    /// as `&&` (the two `ordered_vars_` tests); `metadata`'s closers not counted (the arm
+    /// deleted, `-=` as `+=` or `/=`) and its `depth == 1` as `true`
+    /// (`references_after_a_dictionary_compose`); `active`'s `false` guard as `true`
+    /// (`other_actives_are_composed`); the `None` guard of `targets` as `true`
+    /// (`word_targets_are_composed`), its `!comma` as `true`
+    /// (`leading_commas_in_targets_are_composed`).
     macro_rules! composes {
-        ($($test:ident: $line:expr, $why:expr, $text:expr;)*) => {$(
+        ($(fn $test:ident: $line:expr, $why:expr, $text:expr;)*) => {$(
             #[test]
             fn $test() {
                 let n = not_flat(stringify!($test), $text);
@@ -1140,47 +1337,83 @@ def Xform "World"
     }
 
     composes! {
-        sublayers_compose: 2, "`subLayers` metadata",
+        fn sublayers_compose: 2, "`subLayers` metadata",
             "#usda 1.0\n(\n    subLayers = [@a.usda@]\n)\n";
-        references_compose: 2, "`references` metadata",
+        fn references_compose: 2, "`references` metadata",
             "#usda 1.0\ndef X \"x\" (\n    prepend references = @a.usda@</b>\n)\n{\n}\n";
-        payloads_compose: 2, "`payload` metadata",
+        fn payloads_compose: 2, "`payload` metadata",
             "#usda 1.0\ndef X \"x\" (payload = @a.usda@)\n{\n}\n";
-        inherits_compose: 3, "`inherits` metadata",
+        fn inherits_compose: 3, "`inherits` metadata",
             "#usda 1.0\n\ndef X \"x\" (\n    inherits = </c>\n)\n{\n}\n";
-        specializes_compose: 2, "`specializes` metadata",
+        fn specializes_compose: 2, "`specializes` metadata",
             "#usda 1.0\ndef X \"x\" (specializes = </c>)\n{\n}\n";
-        variant_sets_compose: 2, "`variantSets` metadata",
+        fn variant_sets_compose: 2, "`variantSets` metadata",
             "#usda 1.0\ndef X \"x\" (prepend variantSets = \"v\")\n{\n}\n";
-        variant_selections_compose: 2, "`variants` metadata",
+        fn variant_selections_compose: 2, "`variants` metadata",
             "#usda 1.0\ndef X \"x\" (variants = { string v = \"a\" })\n{\n}\n";
-        variant_set_statements_compose: 4, "a `variantSet` statement",
+        fn variant_set_statements_compose: 4, "a `variantSet` statement",
             "#usda 1.0\ndef X \"x\"\n{\n    variantSet \"v\" = {\n        \"a\" {\n        }\n    }\n}\n";
-        instancing_composes: 2, "`instanceable` metadata",
+        fn instancing_composes: 2, "`instanceable` metadata",
             "#usda 1.0\ndef X \"x\" (instanceable = true)\n{\n}\n";
-        overs_compose: 2, "a prim specified `over`",
+        fn overs_compose: 2, "a prim specified `over`",
             "#usda 1.0\nover \"x\"\n{\n}\n";
-        classes_compose: 4, "a prim specified `class`",
+        fn classes_compose: 4, "a prim specified `class`",
             "#usda 1.0\ndef X \"x\"\n{\n    class \"c\"\n    {\n    }\n}\n";
-        relocates_compose: 2, "`relocates` metadata",
+        fn relocates_compose: 2, "`relocates` metadata",
             "#usda 1.0\n(\n    relocates = { </a>: </b> }\n)\n";
-        clips_compose: 2, "`clips` metadata",
+        fn clips_compose: 2, "`clips` metadata",
             "#usda 1.0\ndef X \"x\" (clips = { dictionary c = {} })\n{\n}\n";
-        reorders_are_composed: 4, "a `reorder` statement",
+        fn reorders_are_composed: 4, "a `reorder` statement",
             "#usda 1.0\ndef X \"x\"\n{\n    reorder nameChildren = [\"b\", \"a\"]\n}\n";
-        siblings_of_one_name_are_composed: 5, "a second prim named `a` among siblings",
+        fn siblings_of_one_name_are_composed: 5, "a second prim named `a` among siblings",
             "#usda 1.0\ndef X \"a\"\n{\n}\ndef Y \"a\"\n{\n}\n";
-        properties_after_children_are_composed: 7, "a property after a child prim",
+        fn properties_after_children_are_composed: 7, "a property after a child prim",
             "#usda 1.0\ndef X \"x\"\n{\n    def Y \"y\"\n    {\n    }\n    float f = 1\n}\n";
-        escaped_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
+        fn escaped_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
             "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = \"C\\\"L\"\n}\n";
-        timesampled_values_are_composed: 4, "`sourceName.timeSamples` as string that lint cannot read flat",
+        fn timesampled_values_are_composed: 4, "`sourceName.timeSamples` as string that lint cannot read flat",
             "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName.timeSamples = { 1: \"CL\" }\n}\n";
-        relative_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
+        fn relative_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
             "#usda 1.0\ndef RenderProduct \"p\"\n{\n    rel orderedVars = <../v>\n}\n";
-        unknown_types_are_composed: 4, "an attribute of type `flaot`",
+        fn unknown_types_are_composed: 4, "an attribute of type `flaot`",
             "#usda 1.0\ndef X \"x\"\n{\n    flaot f\n}\n";
-        other_headers_are_composed: 1, "a first line other than `#usda 1.0`",
+        fn other_headers_are_composed: 1, "a first line other than `#usda 1.0`",
             "#sdf 1.4.32\ndef X \"x\"\n{\n}\n";
+        fn asset_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
+            "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = @C<RD>L@\n}\n";
+        fn late_layer_metadata_is_composed: 5, "a statement of another shape",
+            "#usda 1.0\ndef X \"x\"\n{\n}\n(\n    doc = \"late\"\n)\n";
+        fn metadata_inside_a_prim_body_is_composed: 4, "a statement of another shape",
+            "#usda 1.0\ndef X \"x\"\n{\n    (\n        doc = \"inside\"\n    )\n}\n";
+        fn top_level_properties_are_composed: 2, "a statement of another shape",
+            "#usda 1.0\nfloat f = 1\n";
+        fn list_operations_on_values_are_composed: 4, "a statement of another shape",
+            "#usda 1.0\ndef X \"x\"\n{\n    prepend float f = 1\n}\n";
+        fn text_after_property_metadata_is_composed: 4, "a statement of another shape",
+            "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = \"CL\" (doc = \"x\") junk\n}\n";
+        fn read_properties_authored_twice_are_composed: 5, "`sourceName` authored twice",
+            "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = \"CL\"\n    string sourceName = \"CD\"\n}\n";
+        fn read_arrays_are_composed: 4, "`sourceName` as string that lint cannot read flat",
+            "#usda 1.0\ndef RenderVar \"v\"\n{\n    string[] sourceName = [\"CL\"]\n}\n";
+        fn unquoted_values_are_composed: 4, "a value of `sourceName` that lint cannot read flat",
+            "#usda 1.0\ndef RenderVar \"v\"\n{\n    string sourceName = CL\n}\n";
+        fn ordered_vars_as_values_are_composed: 4, "`orderedVars` that is no plain relationship",
+            "#usda 1.0\ndef RenderProduct \"p\"\n{\n    token orderedVars = \"v\"\n}\n";
+        fn ordered_vars_list_operations_are_composed: 4, "`orderedVars` that is no plain relationship",
+            "#usda 1.0\ndef RenderProduct \"p\"\n{\n    prepend rel orderedVars = </v>\n}\n";
+        fn references_after_a_dictionary_compose: 2, "`references` metadata",
+            "#usda 1.0\ndef X \"x\" (\n    customData = {\n        int a = 1\n    }\n    references = @a.usda@\n)\n{\n}\n";
+        fn other_actives_are_composed: 2, "an `active` that is neither `true` nor `false`",
+            "#usda 1.0\ndef X \"x\" (active = 0)\n{\n}\n";
+        fn word_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
+            "#usda 1.0\ndef RenderProduct \"p\"\n{\n    rel orderedVars = foo\n}\n";
+        fn leading_commas_in_targets_are_composed: 4, "`orderedVars` targets that lint cannot read flat",
+            "#usda 1.0\ndef RenderProduct \"p\"\n{\n    rel orderedVars = [, </v>]\n}\n";
+        fn prim_names_are_identifiers: 2, "a prim named `1a` of type `X`",
+            "#usda 1.0\ndef X \"1a\"\n{\n}\n";
+        fn prim_types_are_identifiers: 2, "a prim named `a` of type `X-1`",
+            "#usda 1.0\ndef X-1 \"a\"\n{\n}\n";
+        fn property_names_are_identifiers: 4, "a property named `2x`",
+            "#usda 1.0\ndef X \"x\"\n{\n    float 2x = 1\n}\n";
     }
 }
