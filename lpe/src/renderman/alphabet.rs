@@ -796,9 +796,9 @@ mod tests {
         "[^U 'c']",
     ];
 
-    #[test]
-    fn classes_are_the_raw_symbols_every_atom_answers_alike() {
-        let atoms: Vec<Atom> = ATOMS
+    /// The atom of each of [`ATOMS`].
+    fn parsed_atoms() -> Vec<Atom> {
+        ATOMS
             .iter()
             .map(|src| {
                 let mut one = Vec::new();
@@ -809,7 +809,12 @@ mod tests {
                 assert_eq!(one.len(), 1, "{src}");
                 one.remove(0)
             })
-            .collect();
+            .collect()
+    }
+
+    #[test]
+    fn classes_are_the_raw_symbols_every_atom_answers_alike() {
+        let atoms = parsed_atoms();
         let mut rng = crate::rng::SplitMix64::new(7);
         for case in 0..300 {
             // All atoms, then random subsets in random order, with and without a label
@@ -877,17 +882,7 @@ mod tests {
     /// read with no event.
     #[test]
     fn one_vertex_is_accepted_as_its_class_is() {
-        let atoms: Vec<Atom> = ATOMS
-            .iter()
-            .map(|src| {
-                let mut one = Vec::new();
-                parse(src)
-                    .unwrap()
-                    .expr
-                    .for_each_atom(&mut |a| one.push(a.clone()));
-                one.remove(0)
-            })
-            .collect();
+        let atoms = parsed_atoms();
         let chosen: Vec<&Atom> = atoms.iter().collect();
         let mut labels: Vec<String> = Vec::new();
         for a in &chosen {
