@@ -170,16 +170,25 @@ impl<D: Dialect> Engine<D> for Fast {
         exprs: &[D::Lpe],
         registration: &D::Registration,
     ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
-        let opts = Options {
-            dfa_budget: 0,
-            few_paths: true,
-            lazy_cache: SOME_PATHS_CACHE,
-            ..Options::default()
-        };
-        let set = AovSet::<D>::compile_under(&numbered(exprs), registration, &opts)?;
-        let cache = RefCell::new(set.cache());
-        Ok(Box::new(OwnCacheMatcher(set, cache)))
+        Ok(Box::new(some_paths_matcher(exprs, registration)?))
     }
+}
+
+/// What [`Fast`] compiles for some paths, as its own type (for the tests, which look
+/// at the automaton and the cache).
+fn some_paths_matcher<D: Dialect>(
+    exprs: &[D::Lpe],
+    registration: &D::Registration,
+) -> Result<OwnCacheMatcher<D>, EngineError> {
+    let opts = Options {
+        dfa_budget: 0,
+        few_paths: true,
+        lazy_cache: SOME_PATHS_CACHE,
+        ..Options::default()
+    };
+    let set = AovSet::<D>::compile_under(&numbered(exprs), registration, &opts)?;
+    let cache = RefCell::new(set.cache());
+    Ok(OwnCacheMatcher(set, cache))
 }
 
 impl<D: Dialect> Engine<D> for BitsetNfa {
@@ -242,6 +251,46 @@ mod tests {
         ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
             Fast.compile_for_some_paths(exprs, registration)
         }
+    }
+
+    /// The some-paths set is what [`Fast::compile_for_some_paths`] promises: a lazy DFA
+    /// (no minimized DFA built) over an NFA without its step tables (the 16 positions of
+    /// `C.*<RD>.{11}L` make a one-word state, whose per-byte tables take up to 16 KiB:
+    /// [`Options::nfa_budget`]; with them the set takes more), stepped through a 64 KiB
+    /// cache of its own. That expression's lazy DFA has a state per
+    /// choice of which of the last 12 vertices were diffuse (4 096), and a path of 20 000
+    /// pseudo-random diffuse and specular bounces visits most of them: more rows than 64
+    /// KiB holds, so the cache is cleared, where the default 2 MiB would hold them all.
+    /// The path ends in a diffuse bounce, 11 specular ones and the light: it matches.
+    /// Caught: the cache's size 64 << 10 as 64 >> 10 (no caching: no rows), and each of
+    /// `dfa_budget`, `few_paths` and `lazy_cache` left at its default (the DFA built,
+    /// the step tables built, the cache never cleared).
+    #[test]
+    fn the_some_paths_set_is_lazy_over_a_bare_nfa_with_a_small_cache_of_its_own() {
+        let lpe = lpe::renderman::parse("C.*<RD>.{11}L").unwrap();
+        let m = some_paths_matcher::<RenderMan>(&[lpe], &Default::default()).unwrap();
+        assert!(!m.0.automaton().uses_dfa());
+        assert!(m.0.memory_bytes() < 16 << 10, "{}", m.0.memory_bytes());
+        let mut x = 12345u64;
+        let mut text = String::from("C");
+        for _ in 0..20_000 {
+            x = x
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            text.push_str(if x >> 63 == 1 { " RD" } else { " RS" });
+        }
+        text.push_str(" RD");
+        text.push_str(&" RS".repeat(11));
+        text.push_str(" L");
+        let path: lpe::renderman::Path = text.parse().unwrap();
+        assert_eq!(m.which(&path).iter().collect::<Vec<_>>(), [0]);
+        let cache = m.1.borrow();
+        assert!(
+            cache.rows() > 0 && cache.clears() > 0,
+            "rows {}, clears {}",
+            cache.rows(),
+            cache.clears()
+        );
     }
 
     fn agrees<D: Generate>(cases: u64, max_size: usize) {

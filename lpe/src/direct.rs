@@ -130,6 +130,7 @@ mod tests {
     //! would give the same sets.
 
     use crate::osl::{self, Osl, Registered};
+    use crate::renderman::ast::Atom;
     use crate::renderman::{parse, Lpe, Path, RenderMan};
 
     use super::DirectSet;
@@ -251,7 +252,9 @@ mod tests {
         assert!(fits.is_ok_and(|s| s.is_empty()));
     }
 
-    /// The OSL dialect: events of any length, custom labels through the registration.
+    /// The OSL dialect: events of any length, custom labels through the registration;
+    /// `<RD>` refuses a specular reflection. Caught: OSL's `accepts` answering true
+    /// (`C<RD>{2}L` matches `C R,S R,D L`).
     #[test]
     fn osl_paths() {
         let reg = Registered::none();
@@ -264,5 +267,71 @@ mod tests {
         let one: osl::Path = "C,_ R,D,_ L,_".parse().unwrap();
         assert_eq!(s.match_path(&two).iter().collect::<Vec<_>>(), [0, 1]);
         assert_eq!(s.match_path(&one).iter().collect::<Vec<_>>(), [1]);
+        let specular: osl::Path = "C,_ R,S,_ R,D,_ L,_".parse().unwrap();
+        assert_eq!(s.match_path(&specular).iter().collect::<Vec<_>>(), [1]);
+    }
+
+    /// An alternation with more of its sequence after it: `C((<RD><RD>)|<RS>)<RD>L`
+    /// reads the alternation, then `<RD>` from where it ended. On `C RD RD L` neither
+    /// alternative leaves a diffuse vertex before the light, so it does not match; it
+    /// matches with a third diffuse vertex or a specular one first. Caught: the
+    /// alternation's loop running the node after its last alternative as one more
+    /// (`<=` for `<` on its end: `<RD>` read from where the alternation starts lets
+    /// `C RD RD L` match).
+    #[test]
+    fn an_alternation_ends_at_its_last_alternative() {
+        let s = set(&["C((<RD><RD>)|<RS>)<RD>L"]);
+        let p = |t: &str| -> Path { t.parse().unwrap() };
+        assert_eq!(answers(&s, &p("C RD RD L")), Vec::<usize>::new());
+        assert_eq!(answers(&s, &p("C RD RD RD L")), [0]);
+        assert_eq!(answers(&s, &p("C RS RD L")), [0]);
+        assert_eq!(answers(&s, &p("C RS L")), Vec::<usize>::new());
+    }
+
+    /// An empty sequence inside a tree (`osl::Expr::Empty`, which the OSL parser leaves
+    /// only as a whole expression, built here by hand as a caller of the public tree
+    /// may): `C () <RD> L` reads `C`, nothing, a diffuse reflection and a light.
+    /// Caught: the empty node's subtree ending at its own index (the sequence runs it
+    /// forever) or at the index before it (`C` read again at the second vertex: no
+    /// match).
+    #[test]
+    fn an_empty_sequence_inside_a_tree_reads_nothing() {
+        let reg = Registered::none();
+        let mut lpe = osl::parse("C<RD>L", &reg).unwrap();
+        let osl::Expr::Concat(parts) = &mut lpe.expr else {
+            panic!("C<RD>L parses as a sequence: {:?}", lpe.expr)
+        };
+        parts.insert(1, osl::Expr::Empty);
+        let s = DirectSet::<Osl>::compile(&[("gap".to_string(), lpe)]).unwrap();
+        let rd: osl::Path = "C,_ R,D,_ L,_".parse().unwrap();
+        let rs: osl::Path = "C,_ R,S,_ L,_".parse().unwrap();
+        assert_eq!(s.match_path(&rd).iter().collect::<Vec<_>>(), [0]);
+        assert!(s.match_path(&rs).is_empty());
+    }
+
+    /// `len` counts the AOVs given (an AOV of set algebra is one, whatever its
+    /// operands), `is_empty` tells a set of none. Caught: `len` as 0 or 1, `is_empty`
+    /// as true.
+    #[test]
+    fn the_set_counts_its_aovs_not_their_operands() {
+        let s = set(&["C.*L - C.*DL", "CDL", "CSL"]);
+        assert_eq!(s.len(), 3);
+        assert!(!s.is_empty());
+        let none = set(&[]);
+        assert_eq!(none.len(), 0);
+        assert!(none.is_empty());
+    }
+
+    /// The bytes held: the three distinct atoms of `C<RD>L` and `C<RD><RD>L` (`C`,
+    /// `<RD>`, `L`), collected into a vector of exactly three, each the size of an
+    /// [`Atom`], plus the flattened trees' own count. Caught: the sum's `+` as `-` or
+    /// `*`, the atoms' `*` as `+` or `/`, the whole as 0 or 1.
+    #[test]
+    fn memory_counts_the_atoms_and_the_trees() {
+        let s = set(&["C<RD>L", "C<RD><RD>L"]);
+        assert_eq!((s.atoms.len(), s.atoms.capacity()), (3, 3));
+        let trees = s.program.memory_bytes();
+        assert!(trees > 0);
+        assert_eq!(s.memory_bytes(), 3 * std::mem::size_of::<Atom>() + trees);
     }
 }

@@ -384,3 +384,58 @@ impl Positions for Wide {
         Wide(words)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    //! The evaluation's own accounting, with answers and counts worked out by hand (the
+    //! answers themselves are tested through [`crate::DirectSet`]).
+
+    use std::cell::Cell;
+
+    use crate::renderman::parse;
+
+    use super::{Op, Program};
+
+    /// The bytes held: the capacity of the ops (not their number) and four bytes a
+    /// root. Caught: the sum's `+` as `-` or `*`, either `*` as `+` or `/`, the whole
+    /// as 0 or 1.
+    #[test]
+    fn memory_counts_the_ops_and_four_bytes_a_root() {
+        let p = Program {
+            ops: Vec::with_capacity(10),
+            roots: Vec::with_capacity(3),
+            atoms: 0,
+        };
+        assert_eq!((p.ops.capacity(), p.roots.capacity()), (10, 3));
+        assert_eq!(p.memory_bytes(), 10 * std::mem::size_of::<Op>() + 3 * 4);
+    }
+
+    /// The dialect is asked about an atom on a vertex only where some set reaches it,
+    /// and once: `C<RD>*<RD>*L` (atoms `C`, `<RD>`, `L`) on `C`, `n` diffuse vertices,
+    /// `L` asks `C` about vertex 0, `<RD>` about vertices 1 to `n + 1` (the first loop
+    /// stops at the light; the second reaches nothing new), `L` about the same `n + 1`:
+    /// `2n + 3` questions, on one word (`n` = 3) and on two (`n` = 68). Caught: the
+    /// positions still to ask taken as `start | !asked` (every vertex not yet asked,
+    /// on either width), and as `start ^ !asked`.
+    #[test]
+    fn each_atom_is_asked_once_about_each_vertex_it_reaches() {
+        let lpe = parse("C<RD>*<RD>*L").unwrap();
+        let (program, atoms) = Program::new(&[&lpe.expr]);
+        let names: Vec<String> = atoms.iter().map(|a| a.to_string()).collect();
+        assert_eq!(names, ["C", "<RD>", "L"]);
+        for n in [3, 68] {
+            let len = n + 2;
+            let asked = Cell::new(0);
+            let hit = program.matches(len, |a, i| {
+                asked.set(asked.get() + 1);
+                match a {
+                    0 => i == 0,
+                    1 => (1..=n).contains(&i),
+                    _ => i == n + 1,
+                }
+            });
+            assert_eq!(hit.iter().collect::<Vec<_>>(), [0], "n = {n}");
+            assert_eq!(asked.get(), 2 * n + 3, "n = {n}");
+        }
+    }
+}
