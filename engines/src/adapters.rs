@@ -75,9 +75,10 @@ impl<D: Dialect> Matcher<D> for AovSetMatcher<D> {
     }
 }
 
-/// A lazy set stepped through a cache of its own ([`AovSet::cache`]), not the
-/// thread's: a batch whose lines take turns between expressions would otherwise hand the
-/// thread's cache from set to set, and each set would start it over on every line.
+/// A lazy set stepped through a cache of its own
+/// ([`Automaton::cache`](lpe::aov::Automaton::cache)), not the thread's: a batch whose
+/// lines take turns between expressions would otherwise hand the thread's cache from set
+/// to set, and each set would start it over on every line.
 struct OwnCacheMatcher<D: Dialect>(AovSet<D>, RefCell<Cache>);
 
 impl<D: Dialect> Matcher<D> for OwnCacheMatcher<D> {
