@@ -256,7 +256,7 @@ mod tests {
     /// `<RD>` refuses a specular reflection. Caught: OSL's `accepts` answering true
     /// (`C<RD>{2}L` matches `C R,S R,D L`).
     #[test]
-    fn osl_paths() {
+    fn the_osl_dialect_matches_by_event_symbols() {
         let reg = Registered::none();
         let aovs = vec![
             ("d".to_string(), osl::parse("C<RD>{2}L", &reg).unwrap()),
