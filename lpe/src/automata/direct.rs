@@ -11,15 +11,15 @@
 //!   the items accepts asks 40 questions, not 40 per vertex;
 //! - a sequence applies its parts in turn, an alternation unites its alternatives;
 //! - `e{n,m}` unites `T_n ..= T_m`, where `T_0 = S` and `T_(k+1)` is `e` applied to
-//!   `T_k` ([`Program::repeat`] says why that stops within `len + 2` applications).
+//!   `T_k` ([`Eval::repeat`] says why that stops within `len + 2` applications).
 //!
 //! The expression matches the path when the root, started at `{0}`, can end at `len`.
 
-use std::collections::HashMap;
 use std::hash::Hash;
 
 use crate::automata::ir::{Node, Regex, Repetition};
 use crate::automata::mask::AovMask;
+use crate::fxhash::FxMap;
 
 /// The trees of a set's hidden AOVs, flattened in preorder so that evaluating a path
 /// walks a slice, with each distinct atom numbered in first-seen order.
@@ -62,7 +62,7 @@ impl Program {
         let mut flat = Flatten {
             ops: Vec::new(),
             atoms: Vec::new(),
-            index: HashMap::new(),
+            index: FxMap::default(),
         };
         let roots = exprs
             .iter()
@@ -122,12 +122,11 @@ impl Program {
 struct Flatten<'a, A> {
     ops: Vec<Op>,
     atoms: Vec<&'a A>,
-    index: HashMap<&'a A, u32>,
+    index: FxMap<&'a A, u32>,
 }
 
 impl<'a, A: Eq + Hash> Flatten<'a, A> {
     fn push<E: Regex<Atom = A>>(&mut self, e: &'a E) {
-        let at = self.ops.len();
         match e.node() {
             Node::Atom(a) => {
                 let next = self.atoms.len() as u32;
@@ -138,24 +137,22 @@ impl<'a, A: Eq + Hash> Flatten<'a, A> {
                 self.ops.push(Op::Atom(id));
             }
             Node::Empty => self.ops.push(Op::Empty),
-            Node::Concat(es) | Node::Alt(es) => {
-                self.ops.push(Op::Empty);
-                for e in es {
-                    self.push(e);
-                }
-                let end = self.ops.len() as u32;
-                self.ops[at] = match e.node() {
-                    Node::Concat(_) => Op::Concat { end },
-                    _ => Op::Alt { end },
-                };
-            }
+            Node::Concat(es) => self.push_parent(es, |end| Op::Concat { end }),
+            Node::Alt(es) => self.push_parent(es, |end| Op::Alt { end }),
             Node::Repeat(body, rep) => {
-                self.ops.push(Op::Empty);
-                self.push(body);
-                let end = self.ops.len() as u32;
-                self.ops[at] = Op::Repeat { rep, end };
+                self.push_parent(std::slice::from_ref(body), |end| Op::Repeat { rep, end })
             }
         }
+    }
+
+    /// A node over `children`, written once they are (`op` gets the index past them).
+    fn push_parent<E: Regex<Atom = A>>(&mut self, children: &'a [E], op: impl Fn(u32) -> Op) {
+        let at = self.ops.len();
+        self.ops.push(Op::Empty);
+        for e in children {
+            self.push(e);
+        }
+        self.ops[at] = op(self.ops.len() as u32);
     }
 }
 
