@@ -71,10 +71,7 @@ pub fn run(cfg: &Config, paths: &[Path]) -> Result<(Vec<Row>, Vec<Disagreement>)
             check("nfa", &mut |p| Some(set.match_path(p)));
             let mut cache = set.cache();
             check("lazy DFA, own cache", &mut |p| {
-                let s = p.vertices().iter().fold(set.start(), |s, v| {
-                    set.step_with(&mut cache, s, set.classify(v))
-                });
-                Some(set.matches_with(&mut cache, s))
+                Some(set.match_path_with(&mut cache, p))
             });
             if let Some(wide) = set.nfa() {
                 check("bitset NFA", &mut |p| {

@@ -75,20 +75,14 @@ impl<D: Dialect> Matcher<D> for AovSetMatcher<D> {
     }
 }
 
-/// A lazy set stepped through a cache of its own
-/// ([`Automaton::cache`](lpe::aov::Automaton::cache)), not the thread's: a batch whose
-/// lines take turns between expressions would otherwise hand the thread's cache from set
-/// to set, and each set would start it over on every line.
+/// A lazy set stepped through a cache of its own ([`AovSet::match_path_with`]), not the
+/// thread's, which a batch whose lines take turns between expressions would hand from
+/// set to set.
 struct OwnCacheMatcher<D: Dialect>(AovSet<D>, RefCell<Cache>);
 
 impl<D: Dialect> Matcher<D> for OwnCacheMatcher<D> {
     fn which(&self, path: &D::Path) -> AovMask {
-        let set = &self.0;
-        let mut cache = self.1.borrow_mut();
-        let s = D::vertices(path).iter().fold(set.start(), |s, v| {
-            set.step_with(&mut cache, s, set.classify(v))
-        });
-        set.matches_with(&mut cache, s)
+        self.0.match_path_with(&mut self.1.borrow_mut(), path)
     }
 }
 

@@ -331,6 +331,17 @@ impl<D: Dialect> AovSet<D> {
         self.matches(s)
     }
 
+    /// [`AovSet::match_path`] through a caller-owned `cache` ([`AovSet::cache`]) instead
+    /// of the thread's: a caller that takes turns between sets on one thread (a batch
+    /// whose lines alternate expressions) keeps each set's transitions, where the
+    /// thread's cache, holding one set at a time, would start over at every switch.
+    pub fn match_path_with(&self, cache: &mut Cache, path: &D::Path) -> AovMask {
+        let s = D::vertices(path).iter().fold(self.start(), |s, v| {
+            self.step_with(cache, s, self.classify(v))
+        });
+        self.matches_with(cache, s)
+    }
+
     /// The name of the set's dialect ([`Dialect::NAME`]).
     pub fn dialect(&self) -> &'static str {
         D::NAME
@@ -547,6 +558,33 @@ mod tests {
             let p: Path = format!("C{} L", " RD".repeat(n)).parse().unwrap();
             assert_eq!(s.match_path(&p).contains(0), want, "{n}");
         }
+    }
+
+    /// Two lazy sets taking turns, each through its own cache, answer as worked out by
+    /// hand (`C<RD>+L`: diffuse bounces only; `C.*<RS>L`: a specular last bounce), and
+    /// each cache keeps its rows across the turns. Caught: `match_path_with` stepping
+    /// the thread's cache (2 rows each: the end states alone), or reading matches from
+    /// the start state.
+    #[test]
+    fn a_set_stepped_through_its_own_cache_keeps_it_between_turns() {
+        let diffuse = set(&["C<RD>+L"], &nfa_only());
+        let specular = set(&["C.*<RS>L"], &nfa_only());
+        assert!(!diffuse.uses_dfa() && !specular.uses_dfa());
+        let (mut a, mut b) = (diffuse.cache(), specular.cache());
+        let p = |t: &str| -> Path { t.parse().unwrap() };
+        for _ in 0..2 {
+            assert!(diffuse.match_path_with(&mut a, &p("C RD RD L")).contains(0));
+            assert!(!specular
+                .match_path_with(&mut b, &p("C RD RD L"))
+                .contains(0));
+            assert!(!diffuse.match_path_with(&mut a, &p("C RD RS L")).contains(0));
+            assert!(specular
+                .match_path_with(&mut b, &p("C RD RS L"))
+                .contains(0));
+        }
+        // The steps are stored, not only the two end states whose matches are read.
+        assert!(a.rows() > 2 && b.rows() > 2, "{} {}", a.rows(), b.rows());
+        assert_eq!((a.clears(), b.clears()), (0, 0));
     }
 
     fn few_paths() -> Options {

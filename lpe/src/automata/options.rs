@@ -23,8 +23,8 @@ pub struct Options {
     /// automata); answers for longer paths are then unspecified. Default `None`: exact
     /// on every path.
     pub max_path_len: Option<u32>,
-    /// The caller will step only a few paths with the set (a batch line whose expression
-    /// does not repeat) and wants only their answers, so compiling skips the work that
+    /// The caller will step only some hundreds of paths with the set (`lpe-check match
+    /// --batch` on an expression's 256th to 4 095th lines) and wants only their answers, so compiling skips the work that
     /// only many steps repay: the NFA's per-byte step tables (its steps OR the follow
     /// rows of the active positions instead), the merging of positions always active
     /// together, and the search for AOVs that can match no path
