@@ -716,8 +716,12 @@ impl<'a> Parser<'a> {
                         return Err(self.err(ErrorKind::EmptyAlternative, at));
                     };
                     self.pos += 1;
-                    if matches!(self.head(), Some(')' | '|')) {
-                        return Err(self.err(ErrorKind::EmptyAlternative, self.pos));
+                    match self.head() {
+                        None => return Err(self.err(ErrorKind::UnclosedParen, self.src.len())),
+                        Some(')' | '|') => {
+                            return Err(self.err(ErrorKind::EmptyAlternative, self.pos));
+                        }
+                        Some(_) => {}
                     }
                     alts.extend(self.slot_item()?);
                     items.push((prev_at, alts));

@@ -536,6 +536,12 @@ fn error_messages() {
             "Reached end of line looking for )",
         ),
         (
+            "C<(*|",
+            K::UnclosedParen,
+            5,
+            "Reached end of line looking for )",
+        ),
+        (
             "C<RD",
             K::UnclosedGroup,
             4,
