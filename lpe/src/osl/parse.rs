@@ -643,8 +643,9 @@ impl<'a> Parser<'a> {
     fn group(&mut self) -> Result<Expr> {
         let at = self.pos;
         self.pos += 1;
-        // Per item, its alternative symbol sequences (one for a plain slot).
-        let mut items: Vec<Vec<Vec<SymbolPattern>>> = Vec::new();
+        // Per item, its alternative symbol sequences (one for a plain slot); a count past
+        // the limit is reported at the group's `<`.
+        let mut items: Vec<(usize, Vec<Vec<SymbolPattern>>)> = Vec::new();
         loop {
             match self.head() {
                 None => return Err(self.err(ErrorKind::UnclosedGroup, self.src.len())),
@@ -652,17 +653,14 @@ impl<'a> Parser<'a> {
                     self.pos += 1;
                     break;
                 }
-                Some(_) => items.push(self.slot_item()?),
+                Some(_) => items.push((at, self.slot_item()?)),
             }
         }
         let customs = items.len().saturating_sub(2);
         while items.len() < 2 {
-            items.push(vec![vec![SymbolPattern::Any]]);
+            items.push((at, vec![vec![SymbolPattern::Any]]));
         }
-        let mut ways: Vec<Vec<SymbolPattern>> = vec![Vec::new()];
-        for alts in &items {
-            ways = self.then(ways, alts, at)?;
-        }
+        let ways = self.product(&items)?;
         let mut vertices: Vec<Expr> = ways.into_iter().map(|w| self.vertex(w, customs)).collect();
         Ok(if vertices.len() == 1 {
             vertices.pop().expect("one")
@@ -671,26 +669,53 @@ impl<'a> Parser<'a> {
         })
     }
 
-    /// Every sequence of `prefixes` followed by every one of `alts`, within
-    /// [`MAX_GROUP_ALTERNATIVES`] (an error at `at` past it).
-    fn then(
+    /// Every sequence made of one alternative of each item, in order (the items'
+    /// product, the last item's alternative varying fastest), within
+    /// [`MAX_GROUP_ALTERNATIVES`]: past it, an error at the position paired with the item
+    /// that took the count past it. Each sequence is built once, so the time is the size
+    /// of the product (at most the limit times the items' text), where extending every
+    /// partial sequence item by item took that size times the number of items.
+    fn product(
         &self,
-        prefixes: Vec<Vec<SymbolPattern>>,
-        alts: &[Vec<SymbolPattern>],
-        at: usize,
+        items: &[(usize, Vec<Vec<SymbolPattern>>)],
     ) -> Result<Vec<Vec<SymbolPattern>>> {
-        if prefixes.len().saturating_mul(alts.len()) > MAX_GROUP_ALTERNATIVES {
-            return Err(self.err(
-                ErrorKind::TooManyAlternatives {
-                    max: MAX_GROUP_ALTERNATIVES,
-                },
-                at,
-            ));
+        let mut count = 1usize;
+        for (at, alts) in items {
+            count = count.saturating_mul(alts.len());
+            if count > MAX_GROUP_ALTERNATIVES {
+                return Err(self.err(
+                    ErrorKind::TooManyAlternatives {
+                        max: MAX_GROUP_ALTERNATIVES,
+                    },
+                    *at,
+                ));
+            }
         }
-        Ok(prefixes
+        let mut ways = Vec::with_capacity(count);
+        if count == 0 {
+            return Ok(ways);
+        }
+        let longest: usize = items
             .iter()
-            .flat_map(|p| alts.iter().map(move |a| [&p[..], &a[..]].concat()))
-            .collect())
+            .map(|(_, alts)| alts.iter().map(Vec::len).max().unwrap_or(0))
+            .sum();
+        // Which alternative of each item the next sequence takes.
+        let mut choice = vec![0usize; items.len()];
+        loop {
+            let mut way = Vec::with_capacity(longest);
+            for ((_, alts), &c) in items.iter().zip(&choice) {
+                way.extend_from_slice(&alts[c]);
+            }
+            ways.push(way);
+            let Some(k) = (0..items.len())
+                .rev()
+                .find(|&k| choice[k] + 1 < items[k].1.len())
+            else {
+                return Ok(ways);
+            };
+            choice[k] += 1;
+            choice[k + 1..].fill(0);
+        }
     }
 
     /// `( ... )` inside `<>`, after the `(`, through its `)`: a sequence of slot items,
@@ -732,11 +757,7 @@ impl<'a> Parser<'a> {
                 }
             }
         }
-        let mut ways: Vec<Vec<SymbolPattern>> = vec![Vec::new()];
-        for (at, alts) in &items {
-            ways = self.then(ways, alts, *at)?;
-        }
-        Ok(ways)
+        self.product(&items)
     }
 
     /// One item inside `<>` (a slot, or an item of a `( … )` or `[ … ]` there): its

@@ -249,7 +249,11 @@ fn parentheses_inside_a_group_put_a_sequence_in_one_slot() {
     assert_eq!(err("<(R||T)D>"), (K::EmptyAlternative, 4));
     let wide = "<(1|2|3|4)(1|2|3|4)(1|2|3|4)(1|2|3|4)(1|2)>";
     assert_eq!(wide.matches('(').count(), 5);
-    assert!(matches!(err(wide).0, K::TooManyAlternatives { max: 256 }));
+    assert_eq!(err(wide), (K::TooManyAlternatives { max: 256 }, 0));
+    // Inside a `( … )`, at the item that takes the count past the bound.
+    let inner = "<R((1|2|3|4)(1|2|3|4)(1|2|3|4)(1|2|3|4)(1|2))>";
+    let at = inner.rfind("(1|2)").unwrap();
+    assert_eq!(err(inner), (K::TooManyAlternatives { max: 256 }, at));
     assert!(parse("<(1|2|3|4)(1|2|3|4)(1|2|3|4)(1|2|3|4)>", &none()).is_ok());
 }
 
