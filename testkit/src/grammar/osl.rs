@@ -125,6 +125,7 @@ pub fn source(c: &mut impl Choices, reg: &Shorthand, cfg: &Config, cov: &mut Cov
         reg,
         cfg,
         group_room: false,
+        nested_room: false,
     };
     if cfg.set_algebra && c.chance(12) {
         g.algebra(c, 0);
@@ -141,6 +142,12 @@ struct Gen<'a, 'c> {
     /// Whether the current `<…>` may still take a group: one per pattern keeps the
     /// product of alternatives far below the parser's bound.
     group_room: bool,
+    /// Whether the current group may still take a nested group. With one, a group of
+    /// at most three `|`-joined sequences of two items stands for at most 16 vertex
+    /// patterns (`|` joins the items beside it: `a b|c d|e f` is `a`, `b|c`, `d|e`,
+    /// `f`; a nested group, of plain items, stands for at most 4, so the product is at
+    /// most 4 * 2 * 2 * 1 or 1 * 5 * 2 * 1); with one in every item it reached 400.
+    nested_room: bool,
 }
 
 impl Gen<'_, '_> {
@@ -466,8 +473,13 @@ impl Gen<'_, '_> {
                 }
                 self.w.raw("]");
             }
-            5 if depth < 2 && (depth > 0 || self.group_room) => {
+            5 if depth == 0 && self.group_room => {
                 self.group_room = false;
+                self.nested_room = true;
+                self.group(c, slot, depth)
+            }
+            5 if depth == 1 && self.nested_room => {
+                self.nested_room = false;
                 self.group(c, slot, depth)
             }
             6 => {
@@ -610,5 +622,39 @@ mod tests {
                     .map_err(|e| e.message())
             },
         );
+    }
+
+    /// Groups nest in groups as often as a source can make them: the slot-item choice
+    /// (`below(14)`) answers "group" 3 times in 5, and every group spells 2 or 3
+    /// alternatives of 2 items each. The products of alternatives stay within the parser's bound, 256
+    /// vertex patterns per `<…>`.
+    ///
+    /// Fault it catches: a nested group allowed in every item of a group (as it was:
+    /// `<.((GD|GD|GD)(DD|DD|DD)|([11])b|(GD|GD|GD)(D.|..|..))..>` spells 400, found by
+    /// the `osl_differential` fuzz target as a documented text the parser rejects).
+    #[test]
+    fn group_heavy_texts_stay_within_the_parsers_bound() {
+        struct GroupHeavy(lpe::rng::SplitMix64);
+        impl Choices for GroupHeavy {
+            fn below(&mut self, n: usize) -> usize {
+                match n {
+                    14 if self.0.below(5) < 3 => 5,
+                    // `chance(50)` false: 2 or 3 alternatives; 2 items each.
+                    100 => 50 + self.0.below(50),
+                    2 => 1,
+                    _ => self.0.below(n),
+                }
+            }
+        }
+        let cfg = Config::default();
+        let reg = Registered::none();
+        let mut source_of = GroupHeavy(lpe::rng::SplitMix64::new(11));
+        let mut cov = coverage();
+        for i in 0..20_000 {
+            let text = source(&mut source_of, &Shorthand::of(&[], &[]), &cfg, &mut cov);
+            if let Err(e) = lpe::osl::parse(&text, &reg) {
+                panic!("text {i} `{text}` does not parse: {}", e.message());
+            }
+        }
     }
 }
