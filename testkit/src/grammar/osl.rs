@@ -626,8 +626,8 @@ mod tests {
 
     /// Groups nest in groups as often as a source can make them: the slot-item choice
     /// (`below(14)`) answers "group" 3 times in 5, and every group spells 2 or 3
-    /// alternatives of 2 items each. The products of alternatives stay within the parser's bound, 256
-    /// vertex patterns per `<…>`.
+    /// alternatives of 2 items each. The products of alternatives stay within the
+    /// parser's bound, 256 vertex patterns per `<…>`.
     ///
     /// Fault it catches: a nested group allowed in every item of a group (as it was:
     /// `<.((GD|GD|GD)(DD|DD|DD)|([11])b|(GD|GD|GD)(D.|..|..))..>` spells 400, found by
