@@ -693,6 +693,9 @@ impl<'a> Parser<'a> {
         }
         let mut ways = Vec::with_capacity(count);
         if count == 0 {
+            // An item with no alternatives leaves none. The parser's items all have one
+            // at least (`[]` is one pattern, the empty set), so this only keeps the
+            // indexing below from reading an empty item.
             return Ok(ways);
         }
         let longest: usize = items
