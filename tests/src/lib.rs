@@ -17,13 +17,20 @@ use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};
 
 /// `PROPTEST_CASES` if set, else `default`. An explicit case count in a config would
-/// otherwise override the variable, and it is documented to raise every suite.
+/// otherwise override the variable, and it is documented to raise every suite. The
+/// rejections a run may make grow with its cases: `osl_matching` rejects about one
+/// draw in twenty (no text of it parses), so proptest's fixed 1 024 aborted it from
+/// about 20 000 cases on.
 pub fn cases(default: u32) -> Config {
     let n = std::env::var("PROPTEST_CASES")
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(default);
-    Config::with_cases(n)
+    let config = Config::with_cases(n);
+    Config {
+        max_global_rejects: config.max_global_rejects.max(n),
+        ..config
+    }
 }
 
 /// A runner for properties driven by hand (to gather statistics across cases), with
