@@ -213,30 +213,19 @@ mod tests {
     use super::*;
     use crate::differential::{run_cases, Generate, Run};
 
-    /// [`Fast`] as it compiles for a few paths, through [`Engine::compile`] so that the
-    /// differential run asks it.
-    struct FewPaths;
-
-    impl<D: Dialect> Engine<D> for FewPaths {
-        fn name(&self) -> &'static str {
-            "fast-few-paths"
-        }
-
-        fn compile(
-            &self,
-            exprs: &[D::Lpe],
-            registration: &D::Registration,
-        ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
-            Fast.compile_for_few_paths(exprs, registration)
-        }
+    /// [`Fast`] as it compiles for a few paths or for some paths, through
+    /// [`Engine::compile`] so that the differential run asks it.
+    enum FastFor {
+        FewPaths,
+        SomePaths,
     }
 
-    /// [`Fast`] as it compiles for some paths, likewise.
-    struct SomePaths;
-
-    impl<D: Dialect> Engine<D> for SomePaths {
+    impl<D: Dialect> Engine<D> for FastFor {
         fn name(&self) -> &'static str {
-            "fast-some-paths"
+            match self {
+                FastFor::FewPaths => "fast-few-paths",
+                FastFor::SomePaths => "fast-some-paths",
+            }
         }
 
         fn compile(
@@ -244,7 +233,10 @@ mod tests {
             exprs: &[D::Lpe],
             registration: &D::Registration,
         ) -> Result<Box<dyn Matcher<D> + '_>, EngineError> {
-            Fast.compile_for_some_paths(exprs, registration)
+            match self {
+                FastFor::FewPaths => Fast.compile_for_few_paths(exprs, registration),
+                FastFor::SomePaths => Fast.compile_for_some_paths(exprs, registration),
+            }
         }
     }
 
@@ -297,7 +289,10 @@ mod tests {
             paths: 4,
             max_failures: 1,
         };
-        let t = run_cases::<D>(&args, &[&Reference, &FewPaths, &SomePaths]);
+        let t = run_cases::<D>(
+            &args,
+            &[&Reference, &FastFor::FewPaths, &FastFor::SomePaths],
+        );
         if let Some((i, c)) = t.failures.first() {
             panic!("case {i}:\n{c}");
         }
