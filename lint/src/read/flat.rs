@@ -857,6 +857,16 @@ mod tests {
         }
     }
 
+    /// `text` read flat (panics if it is not), after checking that the USD library
+    /// reads it the same.
+    fn flat_as_composed(name: &str, text: &str) -> Document {
+        let path = layer(name, text);
+        let flat = read(&path, &Limits::default()).unwrap().unwrap();
+        let composed = read_composed(&path, &Limits::default()).unwrap();
+        assert_eq!(format!("{flat:?}"), format!("{composed:?}"), "{name}");
+        flat
+    }
+
     /// The AOVs of `text` read flat, as `name=source` (panics if it is not read flat).
     fn flat_aovs(name: &str, text: &str) -> Vec<String> {
         let path = layer(name, text);
@@ -998,10 +1008,7 @@ def Xform "World"
     /// `targets` keeping the whole path (the ordered vars `/Render/diffuse`...).
     #[test]
     fn every_fact_kind_reads_as_composed() {
-        let path = layer("every_fact", EVERY_FACT);
-        let flat = read(&path, &Limits::default()).unwrap().unwrap();
-        let composed = read_composed(&path, &Limits::default()).unwrap();
-        assert_eq!(format!("{flat:?}"), format!("{composed:?}"));
+        let flat = flat_as_composed("every_fact", EVERY_FACT);
         // What was read, spelled out, so that both readers dropping a fact fails too.
         assert_eq!(flat.aovs.len(), 3);
         assert_eq!(flat.aovs[1].source, "C<RS>.*<L.'fill'>");
@@ -1053,10 +1060,7 @@ def Xform "World"
             "{}",
             text.len()
         );
-        let path = layer("pieces", &text);
-        let flat = read(&path, &Limits::default()).unwrap().unwrap();
-        let composed = read_composed(&path, &Limits::default()).unwrap();
-        assert_eq!(format!("{flat:?}"), format!("{composed:?}"));
+        let flat = flat_as_composed("pieces", &text);
         assert_eq!(flat.object_groups.unwrap().len(), 37);
     }
 
@@ -1165,12 +1169,7 @@ def Scope "Render" (
 "#;
         assert_eq!(flat_aovs("quoted_metadata", text), ["v=C<RD>L"]);
         // The USD library reads the layer the same.
-        let path = layer("quoted_metadata_composed", text);
-        let composed = read_composed(&path, &Limits::default()).unwrap();
-        assert_eq!(
-            format!("{:?}", read(&path, &Limits::default())),
-            format!("{:?}", Ok::<_, ReadError>(Ok::<_, NotFlat>(composed)))
-        );
+        flat_as_composed("quoted_metadata_composed", text);
     }
 
     /// A layer may end without a line end, in a comment: it reads flat. Mutant, seen
@@ -1242,12 +1241,7 @@ def RenderVar "w"
     string sourceName = "C<TD>L" }
 "#;
         assert_eq!(flat_aovs("property_shapes", text), ["v=C<RD>L", "w=C<TD>L"]);
-        let path = layer("property_shapes_composed", text);
-        let composed = read_composed(&path, &Limits::default()).unwrap();
-        assert_eq!(
-            format!("{:?}", read(&path, &Limits::default())),
-            format!("{:?}", Ok::<_, ReadError>(Ok::<_, NotFlat>(composed)))
-        );
+        flat_as_composed("property_shapes_composed", text);
     }
 
     /// Line ends inside metadata, before or after a `=`, separate as spaces do: the
@@ -1260,12 +1254,7 @@ def RenderVar "w"
                     def RenderVar \"v\" (\n    doc\n    = \"y\"\n)\n{\n    token sourceType = \"lpe\"\n    string sourceName = \"CL\"\n}\n\
                     def RenderVar \"w\" (\n    active =\n        false\n)\n{\n    token sourceType = \"lpe\"\n    string sourceName = \"CD\"\n}\n";
         assert_eq!(flat_aovs("metadata_lines", text), ["v=CL"]);
-        let path = layer("metadata_lines_composed", text);
-        let composed = read_composed(&path, &Limits::default()).unwrap();
-        assert_eq!(
-            format!("{:?}", read(&path, &Limits::default())),
-            format!("{:?}", Ok::<_, ReadError>(Ok::<_, NotFlat>(composed)))
-        );
+        flat_as_composed("metadata_lines_composed", text);
     }
 
     /// A read attribute declared without a value, or holding `None`, reads flat as no
@@ -1277,12 +1266,7 @@ def RenderVar "w"
         let text = "#usda 1.0\ndef RenderVar \"v\"\n{\n    token sourceType = \"lpe\"\n    string sourceName\n}\n\
                     def RenderVar \"w\"\n{\n    token sourceType = \"lpe\"\n    string sourceName = None\n}\n";
         assert_eq!(flat_aovs("no_value", text), ["v=", "w="]);
-        let path = layer("no_value_composed", text);
-        let composed = read_composed(&path, &Limits::default()).unwrap();
-        assert_eq!(
-            format!("{:?}", read(&path, &Limits::default())),
-            format!("{:?}", Ok::<_, ReadError>(Ok::<_, NotFlat>(composed)))
-        );
+        flat_as_composed("no_value_composed", text);
     }
 
     /// `orderedVars` with no value, `None`, one target or a list of them reads flat, and
@@ -1297,11 +1281,8 @@ def RenderVar "w"
                     def RenderProduct \"b\"\n{\n    rel orderedVars = None\n}\n\
                     def RenderProduct \"c\"\n{\n    rel orderedVars = </Render/v>\n}\n\
                     def RenderProduct \"d\"\n{\n    rel orderedVars = [</Render/w>, </Render/v>,]\n}\n}\n";
-        let path = layer("ordered_vars", text);
-        let flat = read(&path, &Limits::default()).unwrap().unwrap();
+        let flat = flat_as_composed("ordered_vars", text);
         assert_eq!(flat.ordered_vars, Some(vec!["v".to_string()]));
-        let composed = read_composed(&path, &Limits::default()).unwrap();
-        assert_eq!(format!("{flat:?}"), format!("{composed:?}"));
     }
 
     /// One test per thing that composes or that the flat reader leaves to the USD
